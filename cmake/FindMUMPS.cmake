@@ -1,0 +1,15 @@
+# Sequential MUMPS from Debian's libmumps-seq-dev (the *_seq libraries and their fake MPI).
+# Defines MUMPS::MUMPS.
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h)
+foreach(lib dmumps_seq mumps_common_seq pord_seq mpiseq_seq)
+  find_library(MUMPS_${lib}_LIBRARY ${lib})
+  list(APPEND _mumps_required MUMPS_${lib}_LIBRARY)
+  list(APPEND _mumps_libs ${MUMPS_${lib}_LIBRARY})
+endforeach()
+include(FindPackageHandleStandardArgs)
+find_package_handle_standard_args(MUMPS REQUIRED_VARS MUMPS_INCLUDE_DIR ${_mumps_required})
+if(MUMPS_FOUND AND NOT TARGET MUMPS::MUMPS)
+  add_library(MUMPS::MUMPS INTERFACE IMPORTED)
+  target_include_directories(MUMPS::MUMPS INTERFACE ${MUMPS_INCLUDE_DIR})
+  target_link_libraries(MUMPS::MUMPS INTERFACE ${_mumps_libs})
+endif()

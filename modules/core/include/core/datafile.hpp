@@ -1,0 +1,71 @@
+#pragma once
+// The datafile: one card per line, `KEYWORD name=value ...`, `#` starts a comment, keywords and
+// field names are case-insensitive, lists are written `0,-2`, a value with spaces is quoted.
+// `TITLE` takes the rest of its line as free text. Every card and field is declared once in the
+// card schema (cards.cpp); reading rejects unknown cards and fields, and every error thrown from a
+// Card names the file, the line and the field.
+#include <filesystem>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sig {
+
+class Card {
+public:
+  std::string keyword; ///< upper case
+  std::string file;
+  int line = 0;
+  std::vector<std::pair<std::string, std::string>> fields; ///< lower-case names, in order
+  std::string text_value; ///< free text (TITLE)
+
+  bool has(const std::string& name) const;
+  std::string text(const std::string& name) const; ///< required field
+  std::string text(const std::string& name, const std::string& fallback) const;
+  double real(const std::string& name) const;
+  double real(const std::string& name, double fallback) const;
+  long integer(const std::string& name) const;
+  long integer(const std::string& name, long fallback) const;
+  std::vector<double> reals(const std::string& name) const; ///< "1,-2.5"
+  std::vector<long> integers(const std::string& name) const;
+  /// One of `allowed` (case-insensitive, returned lower case).
+  std::string choice(const std::string& name, std::initializer_list<const char*> allowed) const;
+  std::string choice(const std::string& name, std::initializer_list<const char*> allowed,
+                     const std::string& fallback) const;
+  /// Throw InputError(file, line, name, what).
+  [[noreturn]] void fail(const std::string& name, const std::string& what) const;
+};
+
+class Datafile {
+public:
+  static Datafile read(const std::filesystem::path& path);
+  static Datafile parse(const std::string& text, const std::string& file_name);
+
+  std::string path;
+  const std::vector<Card>& cards() const { return cards_; }
+  std::vector<const Card*> all(const std::string& keyword) const;
+  const Card* find(const std::string& keyword) const; ///< nullptr if absent; error if repeated
+  const Card& require(const std::string& keyword) const; ///< error naming the file if absent
+  std::string title() const;                            ///< TITLE text or the file stem
+  std::string stem() const;
+
+private:
+  std::vector<Card> cards_;
+};
+
+struct FieldSpec {
+  const char* name;
+  const char* help;
+};
+struct CardSpec {
+  const char* keyword;
+  bool repeatable;
+  const char* help;
+  std::vector<FieldSpec> fields;
+};
+/// Every card any stage reads, with its fields and help text (README's card table).
+const std::vector<CardSpec>& card_schema();
+
+} // namespace sig

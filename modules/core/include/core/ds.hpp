@@ -1,0 +1,86 @@
+#pragma once
+// The DS container: MODULEF's "data structure" as a file. A DS is an ordered list of named,
+// typed arrays; array 0 is MODULEF's 32-word header (title, date, creator, type, level).
+// Every array carries a CRC-32 and every write goes to a temporary file renamed into place, so a
+// reader either sees a whole, checked DS or an error naming the file and the array.
+//
+// On disk (little-endian):
+//   "SIGDS\0\0\0" (8 bytes magic), uint32 format version, uint32 number of arrays after array 0,
+//   array 0: 32 x int32 words (title 20 words, date 2, creator 6, type 1, level, state, count),
+//            uint32 CRC-32 of those 128 bytes,
+//   each array: char name[24] (NUL padded), uint32 type, uint32 rank, int64 shape[rank],
+//               uint64 payload bytes, payload, uint32 CRC-32 of everything from name to payload,
+//   "ENDS" trailer (a truncated file is caught even when it ends on an array boundary).
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace sig {
+
+enum class DsType : std::uint32_t { Int64 = 1, Float64 = 2, Text = 3 };
+
+struct DsHeader {
+  std::string title;   ///< up to 80 characters
+  std::string date;    ///< 8 characters, "yy/mm/dd" as MODULEF and FreeFem write it
+  std::string creator; ///< up to 24 characters: the stage that wrote the DS
+  std::string kind;    ///< 4 characters: NOPO, MILI, CONT, TAE, B, HIST ...
+  int level = 1;
+};
+
+struct DsArray {
+  std::string name; ///< up to 23 characters
+  DsType type = DsType::Float64;
+  std::vector<std::int64_t> shape; ///< product = number of values; rank 1 when not given
+  std::vector<char> bytes;         ///< raw little-endian payload
+  std::size_t count() const;       ///< number of values (characters for Text)
+};
+
+class Ds {
+public:
+  Ds() = default;
+  Ds(std::string kind, std::string title, std::string creator);
+
+  DsHeader header;
+  std::string source; ///< file it was read from; empty for a DS built in memory
+
+  // Writers replace an array of the same name. Shape empty = rank 1 of the data size.
+  void put(const std::string& name, std::span<const double> values,
+           std::vector<std::int64_t> shape = {});
+  void put(const std::string& name, std::span<const std::int64_t> values,
+           std::vector<std::int64_t> shape = {});
+  void put_text(const std::string& name, const std::string& text);
+  void put_scalar(const std::string& name, double value);
+  void put_int(const std::string& name, std::int64_t value);
+
+  bool has(const std::string& name) const;
+  // Readers throw sig::Error naming the DS file and the array if it is missing or of another type.
+  std::vector<double> reals(const std::string& name) const;
+  std::vector<std::int64_t> ints(const std::string& name) const;
+  std::string text(const std::string& name) const;
+  double scalar(const std::string& name) const;
+  std::int64_t integer(const std::string& name) const;
+  const std::vector<std::int64_t>& shape(const std::string& name) const;
+  const std::vector<DsArray>& arrays() const { return arrays_; }
+
+private:
+  const DsArray& find(const std::string& name, DsType type) const;
+  std::vector<DsArray> arrays_;
+};
+
+/// Write to `path` atomically: a temporary file in the same folder, flushed, then renamed.
+void write_ds(const std::filesystem::path& path, const Ds& ds);
+
+/// Read and check magic, version, every CRC and the trailer; if `expected_kind` is not empty the
+/// header type must match. Errors name the file and the array.
+Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind = "");
+
+/// Replace `path` with `contents` atomically (temporary file + rename); for text outputs
+/// (CSV, JSON, reports) so that a killed stage leaves the previous file intact.
+void write_file_atomically(const std::filesystem::path& path, const std::string& contents);
+
+/// CRC-32 (IEEE 802.3, the zlib polynomial).
+std::uint32_t crc32(const void* data, std::size_t size, std::uint32_t crc = 0);
+
+} // namespace sig
