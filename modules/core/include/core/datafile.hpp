@@ -19,8 +19,9 @@ public:
   std::string file;
   int line = 0;
   std::vector<std::pair<std::string, std::string>> fields; ///< lower-case names, in order
-  std::string text_value; ///< free text (TITLE)
+  std::string text_value;                                  ///< free text (TITLE)
 
+  // Field names given to the accessors are case-insensitive ("E" and "e" are the same field).
   bool has(const std::string& name) const;
   std::string text(const std::string& name) const; ///< required field
   std::string text(const std::string& name, const std::string& fallback) const;
@@ -30,6 +31,8 @@ public:
   long integer(const std::string& name, long fallback) const;
   std::vector<double> reals(const std::string& name) const; ///< "1,-2.5"
   std::vector<long> integers(const std::string& name) const;
+  /// A file name (required field); a relative one is taken from the datafile's folder.
+  std::filesystem::path path(const std::string& name) const;
   /// One of `allowed` (case-insensitive, returned lower case).
   std::string choice(const std::string& name, std::initializer_list<const char*> allowed) const;
   std::string choice(const std::string& name, std::initializer_list<const char*> allowed,
@@ -46,9 +49,9 @@ public:
   std::string path;
   const std::vector<Card>& cards() const { return cards_; }
   std::vector<const Card*> all(const std::string& keyword) const;
-  const Card* find(const std::string& keyword) const; ///< nullptr if absent; error if repeated
+  const Card* find(const std::string& keyword) const;    ///< nullptr if absent; error if repeated
   const Card& require(const std::string& keyword) const; ///< error naming the file if absent
-  std::string title() const;                            ///< TITLE text or the file stem
+  std::string title() const;                             ///< TITLE text or the file stem
   std::string stem() const;
 
 private:

@@ -53,6 +53,8 @@ public:
   void put_text(const std::string& name, const std::string& text);
   void put_scalar(const std::string& name, double value);
   void put_int(const std::string& name, std::int64_t value);
+  /// Insert or replace a raw array (name, type, shape and payload size are checked).
+  void put(DsArray array);
 
   bool has(const std::string& name) const;
   // Readers throw sig::Error naming the DS file and the array if it is missing or of another type.

@@ -46,7 +46,8 @@ private:
   do {                                                                                             \
     if (!(cond)) {                                                                                 \
       std::ostringstream sig_assert_stream_;                                                       \
-      sig_assert_stream_ << __FILE__ << ":" << __LINE__ << ": assertion " #cond " failed: " << msg; \
+      sig_assert_stream_ << __FILE__ << ":" << __LINE__                                            \
+                         << ": assertion " #cond " failed: " << msg;                               \
       throw ::sig::Error(sig_assert_stream_.str());                                                \
     }                                                                                              \
   } while (0)

@@ -30,7 +30,8 @@ public:
   Json(Object o) : value_(std::move(o)) {}
   template <class T> static Json array_of(const std::vector<T>& v) {
     Array a;
-    for (const auto& x : v) a.emplace_back(x);
+    for (const auto& x : v)
+      a.emplace_back(x);
     return Json(std::move(a));
   }
   static Json object() { return Json(Object{}); }

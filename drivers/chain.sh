@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# drivers/chain.sh DATAFILE [-o OUTDIR]: run a datafile's whole chain of stages, MODULEF style:
+# sig-mesh -> sig-material -> sig-contact (if the deck has a CONTACT card) -> sig-assemble ->
+# sig-solve -> sig-post. Each stage reads what the earlier ones wrote to OUTDIR
+# (default out/<datafile stem>/). Uses $SIG_BIN, or build/bin.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=${SIG_BIN:-$root/build/bin}
+if [ $# -lt 1 ]; then
+  echo "usage: drivers/chain.sh DATAFILE [-o OUTDIR]" >&2
+  exit 2
+fi
+deck=$1
+shift
+[ -r "$deck" ] || { echo "chain.sh: cannot read datafile $deck" >&2; exit 2; }
+[ -x "$bin/sig-mesh" ] || { echo "chain.sh: no executables in $bin (run drivers/run.sh)" >&2; exit 2; }
+
+stages=(mesh material)
+grep -qiE '^[[:space:]]*contact([[:space:]]|$)' "$deck" && stages+=(contact)
+stages+=(assemble solve post)
+for stage in "${stages[@]}"; do
+  "$bin/sig-$stage" "$deck" "$@"
+done

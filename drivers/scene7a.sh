@@ -1,0 +1,212 @@
+#!/usr/bin/env bash
+# drivers/scene7a.sh [--quick] [-o OUTDIR]: the Hertz half disc of thesis ch. 7.4.1 (scene 7a,
+# ../shared/SCENES.md) with every method and parameter of Tables 7.1-7.3, then its report.
+#
+#   full:    N = 128 256 512; error-vs-h study (Fig 7.10) at N = 64 128 256 512
+#   --quick: N = 128 256;     error-vs-h study at N = 64 128 256
+#
+# Per N the bulk stages (sig-mesh, sig-material, sig-contact, sig-assemble) run once into
+# OUTDIR/N<N>/base/; each method and parameter then gets OUTDIR/N<N>/<method>_<value>/ holding
+# symlinks to the base DS files, its own deck (the template with N, method and parameter
+# replaced) and what sig-solve and sig-post write there (case.b, summary.json, contact.csv, .pvd).
+# sig-solve only reads case.tae and case.cont, so a variant costs one factorization and the
+# contact iterations, not a new mesh.
+#
+# Methods and parameters (the thesis's values where it has them):
+#   pdas        gamma in 1 10 1e2 1e3 1e4           (Table 7.2)
+#   projection  c     in 1 10 1e2 1e3 1e4           (Table 7.1)
+#   alm         r     in 1 10 1e2 1e3 1e4           (r = 1e2 is the ALM column of Tables 7.1/7.2)
+#   penalty     r     in 1e2 1e3 1e4 1e5 1e6        (its error falls as 1/r: a speed/accuracy set)
+# The error-vs-h study runs PDAS gamma = 1e2 twice: on the deck's graded mesh (OUTDIR/N<N>/,
+# adding N = 64) and on the thesis's uniform mesh (MESH grading=0, OUTDIR/error/N<N>/). Only the
+# uniform mesh refines everywhere with N (the graded one refines Gamma3 but keeps its interior
+# growth law), so only it is an h-refinement in the sense of Fig 7.10.
+# Then postproc/scene7a_report.py OUTDIR writes OUTDIR/report.md and its PNGs.
+#
+# Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
+set -euo pipefail
+
+usage() {
+  cat <<EOF
+usage: drivers/scene7a.sh [--quick] [-o OUTDIR]
+  --quick     N = 128 256 (and 64 for the error-vs-h study) instead of 128 256 512
+  -o OUTDIR   results folder (default out/scene7a)
+  -h, --help  this message
+Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
+EOF
+}
+
+die() {
+  echo "scene7a.sh: error: $*" >&2
+  exit 1
+}
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=${SIG_BIN:-$root/build/bin}
+python=${PYTHON:-/usr/bin/python3}
+template=$root/datafiles/scene7a/hertz.dat
+out=out/scene7a
+quick=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    --quick) quick=1 ;;
+    -o)
+      [ $# -ge 2 ] || die "-o needs a folder"
+      out=$2
+      shift
+      ;;
+    -h | --help)
+      usage
+      exit 0
+      ;;
+    *)
+      usage >&2
+      die "unknown argument '$1'"
+      ;;
+  esac
+  shift
+done
+
+for stage in mesh material contact assemble solve post; do
+  [ -x "$bin/sig-$stage" ] || die "no executable $bin/sig-$stage (build first, or set SIG_BIN)"
+done
+[ -r "$template" ] || die "cannot read the template deck $template"
+"$python" -c 'import matplotlib, numpy' 2>/dev/null ||
+  die "$python lacks matplotlib or numpy (Debian: python3-matplotlib python3-numpy)"
+
+if [ $quick -eq 1 ]; then
+  meshes=(128 256)
+  error_meshes=(64 128 256)
+else
+  meshes=(128 256 512)
+  error_meshes=(64 128 256 512)
+fi
+sweep=(1 10 1e2 1e3 1e4)
+penalty_sweep=(1e2 1e3 1e4 1e5 1e6)
+
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+
+# The parameter a method's value sets on the SOLVER card.
+parameter_of() {
+  case $1 in
+    pdas) echo gamma ;;
+    projection) echo c ;;
+    alm | penalty) echo r ;;
+    *) die "no parameter known for method '$1'" ;;
+  esac
+}
+
+# write_deck DECK N GRADING [METHOD VALUE]: the template with MESH N= (and grading= unless
+# GRADING is empty), and the SOLVER card's method and parameter replaced. The result is checked,
+# so a template whose cards moved fails loudly here.
+write_deck() {
+  local deck=$1 n=$2 grading=$3 method=${4:-} value=${5:-}
+  local edits=(-e "/^[[:space:]]*MESH[[:space:]]/ s/([[:space:]])N=[^[:space:]]+/\1N=$n/")
+  [ -z "$grading" ] || edits+=(-e "/^[[:space:]]*MESH[[:space:]]/ s/([[:space:]])grading=[^[:space:]]+/\1grading=$grading/")
+  if [ -n "$method" ]; then
+    local name
+    name=$(parameter_of "$method")
+    edits+=(-e "/^[[:space:]]*SOLVER[[:space:]]/ {
+      s/[[:space:]](r|gamma|c)=[^[:space:]]+//g
+      s/([[:space:]])method=[^[:space:]]+/\1method=$method $name=$value/
+    }")
+  fi
+  sed -E "${edits[@]}" "$template" >"$deck"
+  grep -qE "^[[:space:]]*MESH[[:space:]].*[[:space:]]N=$n([[:space:]]|$)" "$deck" ||
+    die "$template: no MESH card with N= to replace"
+  if [ -n "$grading" ]; then
+    grep -qE "^[[:space:]]*MESH[[:space:]].*[[:space:]]grading=$grading([[:space:]]|$)" "$deck" ||
+      die "$template: no MESH card with grading= to replace"
+  fi
+  if [ -n "$method" ]; then
+    grep -qE "^[[:space:]]*SOLVER[[:space:]].*method=$method $name=$value([[:space:]]|$)" "$deck" ||
+      die "$template: no SOLVER card with method= to replace"
+  fi
+}
+
+# run_stage STAGE DECK DIR: one stage, its output kept in DIR/<stage>.log and shown on failure.
+run_stage() {
+  local stage=$1 deck=$2 dir=$3
+  if ! "$bin/sig-$stage" "$deck" -o "$dir" >"$dir/$stage.log" 2>&1; then
+    cat "$dir/$stage.log" >&2
+    echo "scene7a.sh: sig-$stage failed for $deck (log: $dir/$stage.log)" >&2
+    return 1
+  fi
+}
+
+# A variant whose stage fails (a crash, not a non-convergence: that is a result, "Nv") is listed
+# here; the other runs and the report go on, and the script exits 1 at the end.
+failed=()
+
+# base FOLDER N GRADING: mesh, materials, contact elements and the assembled system of mesh N
+# in FOLDER/N<N>/base.
+base() {
+  local n=$2 grading=$3 dir=$1/N$2/base
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  write_deck "$dir/hertz.dat" "$n" "$grading"
+  for stage in mesh material contact assemble; do
+    run_stage "$stage" "$dir/hertz.dat" "$dir" || die "cannot build the base case of N = $n"
+  done
+}
+
+# variant FOLDER N GRADING METHOD VALUE: sig-solve and sig-post in FOLDER/N<N>/<method>_<value>/
+# on the base DS files.
+variant() {
+  local n=$2 grading=$3 method=$4 value=$5
+  local dir=$1/N$n/${method}_$value
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  for ds in nopo mili cont tae; do
+    ln -s "../base/case.$ds" "$dir/case.$ds"
+  done
+  write_deck "$dir/hertz.dat" "$n" "$grading" "$method" "$value"
+  run_stage solve "$dir/hertz.dat" "$dir" && run_stage post "$dir/hertz.dat" "$dir" ||
+    failed+=("$dir")
+}
+
+{
+  echo "command: drivers/scene7a.sh $([ $quick -eq 1 ] && echo --quick) -o $out"
+  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "host: $(uname -n), $(nproc) cores"
+  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "SIG_BIN: $bin"
+  echo "template: $template"
+  echo "meshes: ${meshes[*]}"
+  echo "error_meshes: ${error_meshes[*]}"
+} >"$out/command.txt"
+cp "$template" "$out/hertz.template.dat"
+
+rm -rf "$out"/N[0-9]* "$out/error"
+start=$SECONDS
+for n in "${meshes[@]}"; do
+  t0=$SECONDS
+  base "$out" "$n" ""
+  for value in "${sweep[@]}"; do
+    variant "$out" "$n" "" pdas "$value"
+    variant "$out" "$n" "" projection "$value"
+    variant "$out" "$n" "" alm "$value"
+  done
+  for value in "${penalty_sweep[@]}"; do
+    variant "$out" "$n" "" penalty "$value"
+  done
+  echo "scene7a.sh: N = $n done ($((SECONDS - t0)) s)"
+done
+# The error-vs-h study: the graded meshes the sweep lacks, then the uniform ones.
+for n in "${error_meshes[@]}"; do
+  t0=$SECONDS
+  if [ ! -d "$out/N$n/base" ]; then
+    base "$out" "$n" ""
+    variant "$out" "$n" "" pdas 1e2
+  fi
+  base "$out/error" "$n" 0
+  variant "$out/error" "$n" 0 pdas 1e2
+  echo "scene7a.sh: N = $n (error study) done ($((SECONDS - t0)) s)"
+done
+echo "scene7a.sh: all runs done in $((SECONDS - start)) s"
+
+"$python" "$root/postproc/scene7a_report.py" "$out"
+if [ ${#failed[@]} -gt 0 ]; then
+  die "${#failed[@]} run(s) failed: ${failed[*]}"
+fi

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Sourced by run.sh and test.sh: install what is missing (Debian packages), configure and build.
+# Idempotent: with everything installed and built it only checks and returns in seconds.
+# Sets SIG_ROOT, SIG_BUILD and SIG_BIN.
+set -euo pipefail
+SIG_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+SIG_BUILD=${SIG_BUILD:-$SIG_ROOT/build}
+SIG_BIN=$SIG_BUILD/bin
+export SIG_ROOT SIG_BUILD SIG_BIN
+
+# Build and run dependencies; FreeFem++, ParaView (with xvfb) and GetFEM serve tests and
+# comparisons that skip when absent, but we install them so a fresh machine runs everything.
+packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libmumps-seq-dev libmetis-dev
+  libopenblas-dev libvtk9-dev libgtest-dev gmsh python3 python3-numpy python3-matplotlib
+  freefem++ paraview xvfb python3-getfem)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -q
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends \
+    "${missing[@]}"
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+if [ ! -f "$SIG_BUILD/CMakeCache.txt" ]; then
+  cmake -S "$SIG_ROOT" -B "$SIG_BUILD" -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$SIG_BUILD" -j "$jobs"

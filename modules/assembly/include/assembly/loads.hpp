@@ -1,0 +1,30 @@
+#pragma once
+// The load vector of the linear problem: surface tractions on referenced edges and body forces
+// on sub-domains, each the integral of the load against the P1 basis (exact for the constant
+// loads of the cards), times the thickness of the sub-domain that carries it.
+//
+//   TRACTION  ref=R f=fx,fy   constant traction g on the edges of reference R
+//   PRESSURE  ref=R p=P       normal traction g = -P n, n the outward unit normal (P > 0 pushes)
+//   BODYFORCE [region=S] f=fx,fy   force per unit volume on sub-domains S (default all)
+#include <Eigen/Core>
+
+namespace sig {
+
+class Datafile;
+struct Mesh;
+struct MaterialTable;
+struct BoundaryEdge;
+
+/// Outward unit normal of a boundary edge: pointing away from the triangle that owns it (so an
+/// edge stored in either direction gets the same normal); for an edge shared by two triangles
+/// (an interface), the right-hand normal of a -> b, i.e. the outward normal of the side on its
+/// left. Builds the edge-to-triangle map of the whole mesh on each call: meant for tests and
+/// one-off queries, not for loops over edges.
+Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge);
+
+/// f from the TRACTION, PRESSURE and BODYFORCE cards (size 2 * nodes). References and regions
+/// are checked (assembly/cards.hpp).
+Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
+                               const Datafile& datafile);
+
+} // namespace sig

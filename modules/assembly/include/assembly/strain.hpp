@@ -1,0 +1,23 @@
+#pragma once
+// Post-processing of a displacement: P1 strains and stresses are constant on each triangle.
+// Vectors are Voigt with engineering shear, eps = (e11, e22, 2 e12), sigma = (s11, s22, s12).
+#include <Eigen/Core>
+#include <vector>
+
+namespace sig {
+
+struct Mesh;
+struct MaterialTable;
+
+/// eps = B u_e on every triangle; u has 2 * nodes values (dof = 2 node + component).
+std::vector<Eigen::Vector3d> element_strains(const Mesh& mesh, const Eigen::VectorXd& u);
+
+/// sigma = D eps with the law of each triangle's sub-domain.
+std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const MaterialTable& table,
+                                              const Eigen::VectorXd& u);
+
+/// von Mises stress per triangle (with sigma33 = nu (s11 + s22) in plane strain).
+std::vector<double> element_von_mises(const Mesh& mesh, const MaterialTable& table,
+                                      const Eigen::VectorXd& u);
+
+} // namespace sig

@@ -1,0 +1,61 @@
+#pragma once
+// The linear(ized) system of small-strain elasticity on a mesh: stiffness, mass, loads and the
+// Dirichlet conditions, as the stage sig-assemble writes it to the DS "TAE". K and M share one
+// SparsityPattern (assembly/pattern.hpp): column-major, full symmetric, sorted indices.
+//
+//   DIRICHLET ref=R [ux=a] [uy=b]   fixes a component only if its field is given, on the nodes
+//                                   of reference R (edges and vertices); a dof named by several
+//                                   cards takes the value of the last one
+#include "assembly/pattern.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sig {
+
+class Datafile;
+struct Mesh;
+struct MaterialTable;
+
+struct LinearSystem {
+  Eigen::SparseMatrix<double> K;   ///< stiffness
+  Eigen::SparseMatrix<double> M;   ///< consistent mass; 0 x 0 if every density is 0
+  Eigen::VectorXd M_lumped;        ///< row sums of the consistent mass (zeros without density)
+  Eigen::VectorXd f;               ///< loads
+  std::vector<int> dirichlet_dofs; ///< sorted, unique, 0-based
+  Eigen::VectorXd dirichlet_values;
+  double assemble_seconds = 0.0; ///< wall time of assemble_system
+
+  int num_dofs() const { return static_cast<int>(f.size()); }
+};
+
+/// Stiffness sum over triangles of p1_stiffness with the law and thickness of their sub-domain.
+Eigen::SparseMatrix<double> assemble_stiffness(const Mesh& mesh, const MaterialTable& table,
+                                               const SparsityPattern& pattern);
+/// Consistent mass on the same pattern.
+Eigen::SparseMatrix<double> assemble_mass(const Mesh& mesh, const MaterialTable& table,
+                                          const SparsityPattern& pattern);
+/// Lumped (row-sum) mass, one value per dof.
+Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& table);
+
+/// The Dirichlet dofs and values of the DIRICHLET cards; a reference that no edge or vertex
+/// carries is an InputError on the card line and field 'ref'.
+void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vector<int>& dofs,
+                          Eigen::VectorXd& values);
+
+/// Everything from the mesh, the MILI table and the DIRICHLET, TRACTION, PRESSURE and
+/// BODYFORCE cards.
+LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
+                             const Datafile& datafile);
+
+/// DS "TAE": ndof; K_rowptr, K_col (1-based CSR of the full symmetric matrix), K_val; M_val
+/// (same pattern, only if M is not empty); M_lumped; f; dirichlet_dof (1-based);
+/// dirichlet_value; time_assemble (seconds).
+void write_tae(const std::filesystem::path& path, const LinearSystem& system,
+               const std::string& title);
+LinearSystem read_tae(const std::filesystem::path& path);
+
+} // namespace sig

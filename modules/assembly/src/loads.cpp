@@ -1,0 +1,125 @@
+#include "assembly/loads.hpp"
+
+#include "assembly/cards.hpp"
+#include "assembly/p1.hpp"
+#include "core/datafile.hpp"
+#include "core/error.hpp"
+#include "material/mili.hpp"
+#include "mesh/mesh.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace sig {
+
+namespace {
+
+std::uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+
+// The triangles on each side of every mesh edge, to find the sub-domain (thickness) and the
+// outward side of a referenced edge.
+class EdgeOwners {
+public:
+  struct Sides {
+    int first = -1;  ///< a triangle with this edge
+    int second = -1; ///< the other one, -1 on the boundary
+  };
+  explicit EdgeOwners(const Mesh& mesh) {
+    owners_.reserve(3 * mesh.triangles.size());
+    for (int t = 0; t < mesh.num_triangles(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        Sides& sides = owners_[edge_key(mesh.triangles[t][i], mesh.triangles[t][(i + 1) % 3])];
+        (sides.first < 0 ? sides.first : sides.second) = t;
+      }
+  }
+  /// Triangles on the edge; sig::Error if none.
+  const Sides& of(int a, int b) const {
+    const auto it = owners_.find(edge_key(a, b));
+    SIG_VERIFY(it != owners_.end(),
+               "referenced edge (" << a + 1 << ", " << b + 1 << ") is the side of no triangle");
+    return it->second;
+  }
+
+private:
+  std::unordered_map<std::uint64_t, Sides> owners_;
+};
+
+Eigen::Vector2d right_normal(const Mesh& mesh, const BoundaryEdge& edge) {
+  const Eigen::Vector2d t = mesh.nodes[edge.b] - mesh.nodes[edge.a];
+  return Eigen::Vector2d(t.y(), -t.x()).normalized();
+}
+
+Eigen::Vector2d outward_normal(const Mesh& mesh, const EdgeOwners& owners,
+                               const BoundaryEdge& edge) {
+  const EdgeOwners::Sides& sides = owners.of(edge.a, edge.b);
+  Eigen::Vector2d n = right_normal(mesh, edge);
+  if (sides.second >= 0) return n;
+  const auto& tri = mesh.triangles[sides.first];
+  const Eigen::Vector2d centroid =
+      (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]) / 3.0;
+  if (n.dot(centroid - mesh.nodes[edge.a]) > 0.0) n = -n;
+  return n;
+}
+
+Eigen::Vector2d card_vector(const Card& card, const std::string& field) {
+  const std::vector<double> v = card.reals(field);
+  if (v.size() != 2) card.fail(field, "expected two components, e.g. 0,-1");
+  return Eigen::Vector2d(v[0], v[1]);
+}
+
+void add_edge_load(const Mesh& mesh, const MaterialTable& table, const EdgeOwners& owners,
+                   const BoundaryEdge& edge, const Eigen::Vector2d& traction, Eigen::VectorXd& f) {
+  const int owner = owners.of(edge.a, edge.b).first;
+  const double thickness = table.of(mesh.subdomain[owner]).thickness;
+  const Eigen::Vector4d fe =
+      p1_edge_load(mesh.nodes[edge.a], mesh.nodes[edge.b], traction, thickness);
+  f.segment<2>(2 * edge.a) += fe.head<2>();
+  f.segment<2>(2 * edge.b) += fe.tail<2>();
+}
+
+} // namespace
+
+Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge) {
+  return outward_normal(mesh, EdgeOwners(mesh), edge);
+}
+
+Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
+                               const Datafile& datafile) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  const auto traction_cards = datafile.all("TRACTION");
+  const auto pressure_cards = datafile.all("PRESSURE");
+  if (!traction_cards.empty() || !pressure_cards.empty()) {
+    const EdgeOwners owners(mesh);
+    for (const Card* card : traction_cards) {
+      const Eigen::Vector2d traction = card_vector(*card, "f");
+      for (int ref : card_references(*card, mesh, RefSupport::edges))
+        for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
+          add_edge_load(mesh, table, owners, edge, traction, f);
+    }
+    for (const Card* card : pressure_cards) {
+      const double p = card->real("p");
+      for (int ref : card_references(*card, mesh, RefSupport::edges))
+        for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
+          add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), f);
+    }
+  }
+  for (const Card* card : datafile.all("BODYFORCE")) {
+    const Eigen::Vector2d force = card_vector(*card, "f");
+    const std::vector<int> regions = card_regions(*card, mesh);
+    for (int t = 0; t < mesh.num_triangles(); ++t) {
+      if (std::find(regions.begin(), regions.end(), mesh.subdomain[t]) == regions.end()) continue;
+      const Vector6d fe = p1_body_load(p1_area(triangle_vertices(mesh, t)), force,
+                                       table.of(mesh.subdomain[t]).thickness);
+      for (int i = 0; i < 3; ++i)
+        f.segment<2>(2 * mesh.triangles[t][i]) += fe.segment<2>(2 * i);
+    }
+  }
+  return f;
+}
+
+} // namespace sig

@@ -1,0 +1,87 @@
+#include "assembly/system.hpp"
+
+#include "assembly/cards.hpp"
+#include "assembly/loads.hpp"
+#include "assembly/p1.hpp"
+#include "core/datafile.hpp"
+#include "core/log.hpp"
+#include "material/mili.hpp"
+#include "mesh/mesh.hpp"
+
+#include <map>
+
+namespace sig {
+
+Eigen::SparseMatrix<double> assemble_stiffness(const Mesh& mesh, const MaterialTable& table,
+                                               const SparsityPattern& pattern) {
+  Eigen::SparseMatrix<double> K = pattern.zero_matrix();
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
+    pattern.add(K, t,
+                p1_stiffness(triangle_vertices(mesh, t), material.hooke.D(), material.thickness));
+  }
+  return K;
+}
+
+Eigen::SparseMatrix<double> assemble_mass(const Mesh& mesh, const MaterialTable& table,
+                                          const SparsityPattern& pattern) {
+  Eigen::SparseMatrix<double> M = pattern.zero_matrix();
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
+    pattern.add(M, t,
+                p1_consistent_mass(p1_area(triangle_vertices(mesh, t)), material.density,
+                                   material.thickness));
+  }
+  return M;
+}
+
+Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& table) {
+  Eigen::VectorXd m = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
+    const Vector6d me =
+        p1_lumped_mass(p1_area(triangle_vertices(mesh, t)), material.density, material.thickness);
+    for (int i = 0; i < 3; ++i)
+      m.segment<2>(2 * mesh.triangles[t][i]) += me.segment<2>(2 * i);
+  }
+  return m;
+}
+
+void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vector<int>& dofs,
+                          Eigen::VectorXd& values) {
+  std::map<int, double> imposed; // later cards override earlier ones
+  for (const Card* card : datafile.all("DIRICHLET")) {
+    const std::vector<int> refs = card_references(*card, mesh, RefSupport::edges_or_vertices);
+    const char* fields[2] = {"ux", "uy"};
+    if (!card->has("ux") && !card->has("uy")) card->fail("ux", "give ux=, uy= or both");
+    for (int c = 0; c < 2; ++c) {
+      if (!card->has(fields[c])) continue;
+      const double value = card->real(fields[c]);
+      for (int ref : refs)
+        for (int node : mesh.nodes_with_ref(ref))
+          imposed[2 * node + c] = value;
+    }
+  }
+  dofs.clear();
+  values.resize(static_cast<Eigen::Index>(imposed.size()));
+  for (const auto& [dof, value] : imposed) {
+    values(static_cast<Eigen::Index>(dofs.size())) = value;
+    dofs.push_back(dof);
+  }
+}
+
+LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
+                             const Datafile& datafile) {
+  const Stopwatch clock;
+  LinearSystem system;
+  const SparsityPattern pattern(mesh);
+  system.K = assemble_stiffness(mesh, table, pattern);
+  if (table.has_mass()) system.M = assemble_mass(mesh, table, pattern);
+  system.M_lumped = assemble_lumped_mass(mesh, table);
+  system.f = assemble_loads(mesh, table, datafile);
+  dirichlet_from_cards(mesh, datafile, system.dirichlet_dofs, system.dirichlet_values);
+  system.assemble_seconds = clock.seconds();
+  return system;
+}
+
+} // namespace sig

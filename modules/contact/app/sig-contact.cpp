@@ -1,0 +1,45 @@
+// sig-contact DATAFILE [-o OUTDIR]
+// Reads the CONTACT card and OUTDIR/case.nopo, builds the node-to-rigid contact elements
+// (thesis Remark 3.1: a Gamma3 node + a Lagrange node each) and writes OUTDIR/case.cont.
+// Without a CONTACT card there is no contact: nothing is written (a case.cont left by an earlier
+// run of the same case is removed so later stages cannot pick it up) and the stage exits 0.
+#include "contact/contact_elements.hpp"
+#include "core/datafile.hpp"
+#include "core/ds.hpp"
+#include "core/stage.hpp"
+#include "mesh/nopo.hpp"
+
+#include <filesystem>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  return sig::run_stage("sig-contact", [&] {
+    // 1. Arguments, datafile and mesh.
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-contact");
+    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const std::filesystem::path cont_path = args.ds_path("cont");
+
+    // 2. Contact elements from the CONTACT card, if any.
+    const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    const std::optional<sig::ContactElements> elements = sig::contact_from_cards(datafile, mesh);
+    if (!elements) {
+      std::cout << "sig-contact: no CONTACT card in " << args.datafile.string()
+                << ": no contact, nothing written\n";
+      if (std::filesystem::remove(cont_path))
+        std::cout << "sig-contact: removed " << cont_path.string() << " of an earlier run\n";
+      return;
+    }
+
+    // 3. Write the CONT DS and summarize.
+    sig::write_cont(cont_path, *elements, datafile.title());
+    const sig::ContactElements& e = *elements;
+    std::cout << "sig-contact: " << e.size() << " contact elements on reference " << e.ref
+              << " (law " << sig::contact_law_name(e.law.front()) << ", obstacle "
+              << e.obstacle.kind << ")\n"
+              << "  Lagrange nodes " << e.lagrange_node.front() + 1 << ".."
+              << e.lagrange_node.back() + 1 << " after " << e.num_nodes << " mesh nodes\n"
+              << "  gap min " << e.gap.minCoeff() << " max " << e.gap.maxCoeff() << "\n"
+              << "  total weight (Gamma3 length x thickness) " << e.weight.sum() << "\n"
+              << "  wrote " << cont_path.string() << "\n";
+  });
+}

@@ -1,0 +1,103 @@
+#include "contact/contact_elements.hpp"
+
+#include "core/ds.hpp"
+#include "core/error.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+namespace sig {
+
+void write_cont(const std::filesystem::path& path, const ContactElements& elements,
+                const std::string& title, const std::string& creator) {
+  const int m = elements.size();
+  SIG_VERIFY(static_cast<int>(elements.lagrange_node.size()) == m &&
+                 static_cast<int>(elements.normal.size()) == m && elements.gap.size() == m &&
+                 elements.weight.size() == m && static_cast<int>(elements.law.size()) == m,
+             "write_cont " << path.string() << ": arrays of different lengths");
+  std::vector<std::int64_t> node(m), lagrange(m), law(m);
+  std::vector<double> normal(2 * m);
+  for (int i = 0; i < m; ++i) { // files are 1-based
+    node[i] = elements.node[i] + 1;
+    lagrange[i] = elements.lagrange_node[i] + 1;
+    law[i] = elements.law[i];
+    normal[2 * i] = elements.normal[i].x();
+    normal[2 * i + 1] = elements.normal[i].y();
+  }
+  Ds ds("CONT", title, creator);
+  ds.put_int("num_nodes", elements.num_nodes);
+  ds.put_int("ref", elements.ref);
+  ds.put_scalar("thickness", elements.thickness);
+  ds.put("node", node);
+  ds.put("lagrange_node", lagrange);
+  ds.put("normal", normal, {m, 2});
+  ds.put("gap", std::span<const double>(elements.gap.data(), m));
+  ds.put("weight", std::span<const double>(elements.weight.data(), m));
+  ds.put("law", law);
+  ds.put_text("obstacle_kind", elements.obstacle.kind);
+  ds.put("obstacle_point", std::span<const double>(elements.obstacle.point.data(), 2));
+  ds.put("obstacle_normal", std::span<const double>(elements.obstacle.normal.data(), 2));
+  ds.put_scalar("obstacle_radius", elements.obstacle.radius);
+  write_ds(path, ds);
+}
+
+ContactElements read_cont(const std::filesystem::path& path) {
+  const Ds ds = read_ds(path, "CONT");
+  const std::string where = "CONT file " + path.string();
+  ContactElements elements;
+  elements.num_nodes = static_cast<int>(ds.integer("num_nodes"));
+  elements.ref = static_cast<int>(ds.integer("ref"));
+  elements.thickness = ds.scalar("thickness");
+  const std::vector<std::int64_t> node = ds.ints("node");
+  const std::vector<std::int64_t> lagrange = ds.ints("lagrange_node");
+  const std::vector<std::int64_t> law = ds.ints("law");
+  const std::vector<double> normal = ds.reals("normal");
+  const std::vector<double> gap = ds.reals("gap");
+  const std::vector<double> weight = ds.reals("weight");
+  const std::size_t m = node.size();
+  SIG_VERIFY(lagrange.size() == m && law.size() == m && gap.size() == m && weight.size() == m &&
+                 normal.size() == 2 * m,
+             where << ": arrays node, lagrange_node, normal, gap, weight, law disagree in length");
+  for (std::size_t i = 0; i < m; ++i) {
+    SIG_VERIFY(node[i] >= 1 && node[i] <= elements.num_nodes,
+               where << ": array node, element " << i + 1 << ": node " << node[i]
+                     << " is not in 1.." << elements.num_nodes);
+    // Lagrange nodes are numbered after the mesh nodes, in element order (Remark 3.1).
+    SIG_VERIFY(lagrange[i] == elements.num_nodes + static_cast<std::int64_t>(i) + 1,
+               where << ": array lagrange_node, element " << i + 1 << ": " << lagrange[i]
+                     << " should be " << elements.num_nodes + i + 1);
+    const Eigen::Vector2d n(normal[2 * i], normal[2 * i + 1]);
+    SIG_VERIFY(std::abs(n.norm() - 1) <= 1e-12,
+               where << ": array normal, element " << i + 1 << " is not a unit vector");
+    SIG_VERIFY(std::isfinite(gap[i]) && gap[i] >= 0,
+               where << ": array gap, element " << i + 1 << ": " << gap[i] << " is not >= 0");
+    SIG_VERIFY(std::isfinite(weight[i]) && weight[i] > 0,
+               where << ": array weight, element " << i + 1 << ": " << weight[i] << " is not > 0");
+    SIG_VERIFY(law[i] == kLawSignorini, where << ": array law, element " << i + 1 << ": law id "
+                                              << law[i] << " is unknown; known: " << kLawSignorini
+                                              << " = signorini");
+    elements.node.push_back(static_cast<int>(node[i] - 1));
+    elements.lagrange_node.push_back(static_cast<int>(lagrange[i] - 1));
+    elements.normal.push_back(n);
+    elements.law.push_back(static_cast<int>(law[i]));
+  }
+  elements.gap = Eigen::Map<const Eigen::VectorXd>(gap.data(), static_cast<Eigen::Index>(m));
+  elements.weight = Eigen::Map<const Eigen::VectorXd>(weight.data(), static_cast<Eigen::Index>(m));
+
+  elements.obstacle.kind = ds.text("obstacle_kind");
+  const std::vector<double> point = ds.reals("obstacle_point");
+  const std::vector<double> obstacle_normal = ds.reals("obstacle_normal");
+  SIG_VERIFY(point.size() == 2 && obstacle_normal.size() == 2,
+             where << ": arrays obstacle_point and obstacle_normal must hold 2 values");
+  elements.obstacle.point = {point[0], point[1]};
+  elements.obstacle.normal = {obstacle_normal[0], obstacle_normal[1]};
+  elements.obstacle.radius = ds.scalar("obstacle_radius");
+  try {
+    make_obstacle(elements.obstacle); // the description must rebuild a valid obstacle
+  } catch (const Error& e) {
+    SIG_VERIFY(false, where << ": " << e.what());
+  }
+  return elements;
+}
+
+} // namespace sig

@@ -1,0 +1,166 @@
+#include "contact/contact_elements.hpp"
+
+#include "core/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <utility>
+
+namespace sig {
+
+namespace {
+
+// Roundoff allowed on the gap of a node lying on the obstacle, relative to the shortest Gamma3
+// edge: below it a negative gap is set to 0, beyond it the node starts inside the obstacle.
+constexpr double kRoundoffGap = 1e-9;
+
+// The Gamma3 edges without repetition (an interface edge may be stored from both sides); the
+// first stored direction is kept.
+std::vector<BoundaryEdge> unique_edges(const Mesh& mesh, int ref) {
+  std::vector<BoundaryEdge> edges;
+  std::set<std::pair<int, int>> seen;
+  for (const BoundaryEdge& e : mesh.edges) {
+    if (e.ref != ref) continue;
+    if (seen.insert({std::min(e.a, e.b), std::max(e.a, e.b)}).second) edges.push_back(e);
+  }
+  return edges;
+}
+
+// The nodes of `edges` along the boundary chains they form (see build_contact_elements).
+std::vector<int> nodes_along_boundary(const std::vector<BoundaryEdge>& edges) {
+  std::map<int, std::vector<int>> neighbours; // sorted by node number
+  std::set<std::pair<int, int>> forward;      // (a, b) as stored
+  for (const BoundaryEdge& e : edges) {
+    neighbours[e.a].push_back(e.b);
+    neighbours[e.b].push_back(e.a);
+    forward.insert({e.a, e.b});
+  }
+  std::vector<int> order;
+  for (const auto& [v, nb] : neighbours)
+    if (nb.size() > 2) {
+      for (const auto& entry : neighbours)
+        order.push_back(entry.first);
+      return order;
+    }
+
+  std::set<int> visited;
+  const auto walk = [&](int start, int second) {
+    int previous = start, current = second;
+    order.push_back(start);
+    visited.insert(start);
+    while (current >= 0 && !visited.count(current)) {
+      order.push_back(current);
+      visited.insert(current);
+      int next = -1;
+      for (int candidate : neighbours.at(current))
+        if (candidate != previous) next = candidate;
+      previous = current;
+      current = next;
+    }
+  };
+  // One chain per connected component, components by their smallest node number. An open
+  // chain starts at the end whose edge leaves it (boundary direction), else at its smaller end.
+  for (const auto& [v, nb] : neighbours) {
+    if (visited.count(v)) continue;
+    std::vector<int> stack{v}, ends;
+    std::set<int> component{v};
+    while (!stack.empty()) {
+      const int w = stack.back();
+      stack.pop_back();
+      if (neighbours.at(w).size() == 1) ends.push_back(w);
+      for (int x : neighbours.at(w))
+        if (component.insert(x).second) stack.push_back(x);
+    }
+    int start = *component.begin(); // closed chain: its smallest node
+    if (!ends.empty()) {
+      std::sort(ends.begin(), ends.end());
+      const auto leaving = std::find_if(ends.begin(), ends.end(), [&](int end) {
+        return forward.count({end, neighbours.at(end).front()}) > 0;
+      });
+      start = leaving != ends.end() ? *leaving : ends.front();
+    }
+    int second = neighbours.at(start).front();
+    for (int candidate : neighbours.at(start))
+      if (forward.count({start, candidate})) second = candidate;
+    walk(start, second);
+  }
+  return order;
+}
+
+} // namespace
+
+std::string contact_law_name(int law) {
+  SIG_VERIFY(law == kLawSignorini,
+             "contact law id " << law << " is unknown; known: " << kLawSignorini << " = signorini");
+  return "signorini";
+}
+
+ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle& obstacle,
+                                       double extra_gap, double thickness) {
+  SIG_VERIFY(std::isfinite(thickness) && thickness > 0,
+             "contact elements: thickness " << thickness << " must be > 0");
+  SIG_VERIFY(std::isfinite(extra_gap) && extra_gap >= 0,
+             "contact elements: extra gap " << extra_gap << " must be >= 0");
+  const std::vector<BoundaryEdge> edges = unique_edges(mesh, ref);
+  SIG_VERIFY(!edges.empty(), "contact elements: no mesh edge carries reference " << ref);
+
+  // Tributary weights: each Gamma3 edge gives half its length to each end node.
+  std::map<int, double> weight_of;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const BoundaryEdge& e : edges) {
+    SIG_VERIFY(e.a >= 0 && e.a < mesh.num_nodes() && e.b >= 0 && e.b < mesh.num_nodes() &&
+                   e.a != e.b,
+               "contact elements: edge (" << e.a + 1 << ", " << e.b + 1 << ") with reference "
+                                          << ref << " is invalid");
+    const double length = (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
+    weight_of[e.a] += 0.5 * length * thickness;
+    weight_of[e.b] += 0.5 * length * thickness;
+    shortest = std::min(shortest, length);
+  }
+
+  ContactElements elements;
+  elements.num_nodes = mesh.num_nodes();
+  elements.ref = ref;
+  elements.thickness = thickness;
+  elements.obstacle = obstacle.description();
+  elements.node = nodes_along_boundary(edges);
+  const int m = elements.size();
+  elements.gap.resize(m);
+  elements.weight.resize(m);
+  for (int i = 0; i < m; ++i) {
+    const int k = elements.node[i];
+    const Eigen::Vector2d& x = mesh.nodes[k];
+    double distance = obstacle.signed_distance(x);
+    SIG_VERIFY(distance >= -kRoundoffGap * shortest,
+               "contact elements: node " << k + 1 << " (" << x.x() << ", " << x.y()
+                                         << ") starts inside the " << obstacle.kind()
+                                         << " obstacle (signed distance " << distance << ")");
+    distance = std::max(distance, 0.0);
+    elements.lagrange_node.push_back(elements.num_nodes + i);
+    elements.normal.push_back(obstacle.normal(x));
+    elements.gap(i) = distance + extra_gap;
+    elements.weight(i) = weight_of.at(k);
+    elements.law.push_back(kLawSignorini);
+  }
+  return elements;
+}
+
+Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(2 * elements.size());
+  for (int i = 0; i < elements.size(); ++i) {
+    const int k = elements.node[i];
+    SIG_VERIFY(k >= 0 && 2 * k + 1 < ndof,
+               "normal operator: contact node " << k + 1 << " has no dofs among " << ndof);
+    entries.emplace_back(i, 2 * k, -elements.normal[i].x());
+    entries.emplace_back(i, 2 * k + 1, -elements.normal[i].y());
+  }
+  Eigen::SparseMatrix<double> b_n(elements.size(), ndof);
+  b_n.setFromTriplets(entries.begin(), entries.end());
+  return b_n;
+}
+
+} // namespace sig

@@ -1,0 +1,81 @@
+#include "atomic_file.hpp"
+
+#include "core/ds.hpp"
+#include "core/error.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <string>
+#include <unistd.h>
+
+namespace sig {
+
+namespace {
+std::string reason() {
+  return std::strerror(errno);
+}
+
+// The rename is durable only once the folder entry is on disk too.
+void sync_folder(const std::filesystem::path& folder) {
+  const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return; // best effort: the data itself is already synced
+  ::fsync(fd);
+  ::close(fd);
+}
+} // namespace
+
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  SIG_VERIFY(!target_.filename().empty(), target_.string() << ": not a file name");
+  // Hidden, in the same folder (rename stays within one file system), unique per process.
+  std::string name = ".";
+  name.append(target_.filename().string()).append(".tmp.").append(std::to_string(::getpid()));
+  temporary_ = target_.parent_path() / name;
+  file_ = std::fopen(temporary_.c_str(), "wb");
+  SIG_VERIFY(file_ != nullptr, target_.string() << ": cannot create temporary file "
+                                                << temporary_.string() << ": " << reason());
+}
+
+AtomicFile::~AtomicFile() {
+  if (file_ == nullptr) return;
+  std::fclose(file_);
+  std::error_code ignored;
+  std::filesystem::remove(temporary_, ignored);
+}
+
+void AtomicFile::write(const void* data, std::size_t size) {
+  SIG_VERIFY(file_ != nullptr, target_.string() << ": write after commit");
+  if (size == 0) return;
+  SIG_VERIFY(std::fwrite(data, 1, size, file_) == size, target_.string()
+                                                            << ": write failed: " << reason());
+}
+
+void AtomicFile::commit() {
+  SIG_VERIFY(file_ != nullptr, target_.string() << ": committed twice");
+  const bool flushed = std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+  const int saved_errno = errno;
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  std::error_code ignored;
+  if (!flushed || !closed) {
+    errno = flushed ? errno : saved_errno;
+    const std::string why = reason();
+    std::filesystem::remove(temporary_, ignored);
+    throw Error(target_.string() + ": cannot flush " + temporary_.string() + ": " + why);
+  }
+  if (std::rename(temporary_.c_str(), target_.c_str()) != 0) {
+    const std::string why = reason();
+    std::filesystem::remove(temporary_, ignored);
+    throw Error(target_.string() + ": cannot rename " + temporary_.string() +
+                " into place: " + why);
+  }
+  sync_folder(target_.parent_path());
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
+  AtomicFile file(path);
+  file.write(contents.data(), contents.size());
+  file.commit();
+}
+
+} // namespace sig

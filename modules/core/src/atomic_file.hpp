@@ -1,0 +1,26 @@
+#pragma once
+// A file written under a temporary name in the target's folder and renamed over the target only
+// when complete and synced: readers see the old file or the new one, never half of one.
+#include <cstdio>
+#include <filesystem>
+
+namespace sig {
+
+class AtomicFile {
+public:
+  explicit AtomicFile(std::filesystem::path target);
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  /// Without commit() (an exception on the way) the temporary file is removed.
+  ~AtomicFile();
+
+  void write(const void* data, std::size_t size);
+  /// Flush, fsync, close and rename over the target.
+  void commit();
+
+private:
+  std::filesystem::path target_, temporary_;
+  std::FILE* file_ = nullptr;
+};
+
+} // namespace sig

@@ -1,0 +1,142 @@
+#include "core/datafile.hpp"
+#include "core/error.hpp"
+#include "text_case.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+namespace sig {
+
+namespace {
+const std::string* find_value(const Card& card, const std::string& name) {
+  const std::string key = to_lower(name);
+  for (const auto& [field, value] : card.fields)
+    if (field == key) return &value;
+  return nullptr;
+}
+
+// A number must fill the whole token and be finite: "1e3" and "-2.5" are numbers, "3 m", "nan"
+// and "1e999" are not.
+double parse_real(const Card& card, const std::string& name, const std::string& text) {
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (first != last && *first == '+') ++first;
+  double x = 0;
+  const auto [end, error] = std::from_chars(first, last, x);
+  if (error == std::errc::result_out_of_range)
+    card.fail(name, "number out of range: '" + text + "'");
+  if (error != std::errc() || end != last || text.empty())
+    card.fail(name, "expected a number, got '" + text + "'");
+  if (!std::isfinite(x)) card.fail(name, "expected a finite number, got '" + text + "'");
+  return x;
+}
+
+long parse_integer(const Card& card, const std::string& name, const std::string& text) {
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (first != last && *first == '+') ++first;
+  long n = 0;
+  const auto [end, error] = std::from_chars(first, last, n);
+  if (error == std::errc::result_out_of_range)
+    card.fail(name, "integer out of range: '" + text + "'");
+  if (error != std::errc() || end != last || text.empty())
+    card.fail(name, "expected an integer, got '" + text + "'");
+  return n;
+}
+
+std::vector<std::string> split_list(const Card& card, const std::string& name,
+                                    const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = text.find(',', start);
+    std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
+    const auto first = item.find_first_not_of(" \t");
+    item = first == std::string::npos
+               ? ""
+               : item.substr(first, item.find_last_not_of(" \t") + 1 - first);
+    if (item.empty()) card.fail(name, "empty item in the list '" + text + "'");
+    items.push_back(item);
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
+  }
+}
+
+std::string allowed_list(std::initializer_list<const char*> allowed) {
+  std::string list;
+  for (const char* a : allowed)
+    list.append(list.empty() ? "" : "|").append(a);
+  return list;
+}
+} // namespace
+
+bool Card::has(const std::string& name) const {
+  return find_value(*this, name) != nullptr;
+}
+
+std::string Card::text(const std::string& name) const {
+  const std::string* value = find_value(*this, name);
+  if (value == nullptr) fail(name, "missing (required by " + keyword + ")");
+  return *value;
+}
+
+std::string Card::text(const std::string& name, const std::string& fallback) const {
+  const std::string* value = find_value(*this, name);
+  return value == nullptr ? fallback : *value;
+}
+
+double Card::real(const std::string& name) const {
+  return parse_real(*this, name, text(name));
+}
+
+double Card::real(const std::string& name, double fallback) const {
+  return has(name) ? real(name) : fallback;
+}
+
+long Card::integer(const std::string& name) const {
+  return parse_integer(*this, name, text(name));
+}
+
+long Card::integer(const std::string& name, long fallback) const {
+  return has(name) ? integer(name) : fallback;
+}
+
+std::vector<double> Card::reals(const std::string& name) const {
+  std::vector<double> values;
+  for (const auto& item : split_list(*this, name, text(name)))
+    values.push_back(parse_real(*this, name, item));
+  return values;
+}
+
+std::vector<long> Card::integers(const std::string& name) const {
+  std::vector<long> values;
+  for (const auto& item : split_list(*this, name, text(name)))
+    values.push_back(parse_integer(*this, name, item));
+  return values;
+}
+
+std::filesystem::path Card::path(const std::string& name) const {
+  const std::filesystem::path given = text(name);
+  if (given.empty()) fail(name, "empty file name");
+  return given.is_absolute() ? given : std::filesystem::path(file).parent_path() / given;
+}
+
+std::string Card::choice(const std::string& name,
+                         std::initializer_list<const char*> allowed) const {
+  const std::string value = to_lower(text(name));
+  for (const char* a : allowed)
+    if (value == to_lower(a)) return value;
+  fail(name, "expected one of " + allowed_list(allowed) + ", got '" + text(name) + "'");
+}
+
+std::string Card::choice(const std::string& name, std::initializer_list<const char*> allowed,
+                         const std::string& fallback) const {
+  return has(name) ? choice(name, allowed) : fallback;
+}
+
+void Card::fail(const std::string& name, const std::string& what) const {
+  throw InputError(file, line, name, what);
+}
+
+} // namespace sig

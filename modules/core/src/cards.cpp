@@ -1,0 +1,113 @@
+#include "core/datafile.hpp"
+
+namespace sig {
+
+// Every card a stage reads. Choices are checked where they are read (Card::choice), so the help
+// text lists them for the README's card table.
+const std::vector<CardSpec>& card_schema() {
+  static const std::vector<CardSpec> schema = {
+      {"TITLE",
+       false,
+       "free text: the rest of the line is the case title (80 characters kept in DS headers)",
+       {}},
+      {"MESH",
+       false,
+       "the mesh: a generated thesis geometry or a mesh file",
+       {
+           {"generator", "half-disc | disc | ring | rectangle | square"},
+           {"file", "mesh file: gmsh .msh (2.2 or 4.1), FreeFem .msh or MODULEF .nopo; relative "
+                    "to the datafile's folder"},
+           {"R", "radius of the disc or half disc"},
+           {"N", "number of boundary segments along the arc (disc, half disc, ring)"},
+           {"center", "centre of the disc or ring: x,y"},
+           {"r_in", "inner radius of the ring"},
+           {"r_out", "outer radius of the ring"},
+           {"layers", "number of element layers across the ring"},
+           {"lx", "width of the rectangle or side of the square"},
+           {"ly", "height of the rectangle"},
+           {"nx", "number of segments along x"},
+           {"ny", "number of segments along y"},
+           {"refs", "boundary references of the generated mesh, as a list"},
+           {"grading", "mesh size ratio from the contact zone to the far boundary"},
+           {"gamma1_above",
+            "vertices with y above this value get the Gamma1 (Dirichlet) reference"},
+           {"gamma3_below", "vertices with y below this value get the Gamma3 (contact) reference"},
+       }},
+      {"MATERIAL",
+       true,
+       "constitutive law of one sub-domain",
+       {
+           {"region", "sub-domain number (1-based, as in the mesh file)"},
+           {"law", "hooke"},
+           {"E", "Young's modulus"},
+           {"nu", "Poisson's ratio, -1 < nu < 0.5"},
+           {"plane", "strain | stress"},
+           {"thickness", "out-of-plane thickness (plane stress); 1 by default"},
+           {"rho", "mass density (dynamic problems)"},
+       }},
+      {"DIRICHLET",
+       true,
+       "prescribed displacement on the vertices and edges of a boundary reference",
+       {
+           {"ref", "boundary reference number"},
+           {"ux", "prescribed horizontal displacement (omit to leave it free)"},
+           {"uy", "prescribed vertical displacement (omit to leave it free)"},
+       }},
+      {"TRACTION",
+       true,
+       "surface force per unit length on a boundary reference",
+       {
+           {"ref", "boundary reference number"},
+           {"f", "traction vector: fx,fy"},
+       }},
+      {"PRESSURE",
+       true,
+       "normal pressure on a boundary reference (positive pushes into the body)",
+       {
+           {"ref", "boundary reference number"},
+           {"p", "pressure"},
+       }},
+      {"BODYFORCE",
+       true,
+       "volume force on a sub-domain",
+       {
+           {"region", "sub-domain number"},
+           {"f", "force per unit volume: fx,fy"},
+       }},
+      {"CONTACT",
+       false,
+       "unilateral contact of a boundary reference (Gamma3) with a rigid obstacle",
+       {
+           {"ref", "boundary reference of the contact zone"},
+           {"obstacle", "plane | disc"},
+           {"point", "a point of the obstacle plane: x,y"},
+           {"normal", "outward unit normal of the obstacle: nx,ny"},
+           {"centre", "disc obstacle: centre x,y"},
+           {"radius", "disc obstacle: radius"},
+           {"law", "signorini"},
+           {"gap", "initial gap added to the geometric one"},
+       }},
+      {"SOLVER",
+       false,
+       "linear backend and contact algorithm",
+       {
+           {"linear", "cholmod | umfpack | mumps"},
+           {"method", "linear | alm | penalty | pdas | projection"},
+           {"r", "augmentation parameter (alm) or foundation stiffness (penalty)"},
+           {"gamma", "parameter of the primal-dual active set test (3.20)"},
+           {"c", "parameter of the iterative projection method (7.16)"},
+           {"eps", "tolerance of stopping test (iv): relative increment and residual"},
+           {"maxit", "maximum number of nonlinear iterations"},
+       }},
+      {"OUTPUT",
+       false,
+       "what the post-processing stage writes",
+       {
+           {"vtk", "yes | no: write .vtu/.pvd files for ParaView"},
+           {"name", "base name of the output files"},
+       }},
+  };
+  return schema;
+}
+
+} // namespace sig

@@ -1,0 +1,39 @@
+#pragma once
+// Linear isotropic elasticity (Hooke's law) for the 2D problems of the thesis: plane strain for
+// every scene (sigma33 = nu (sigma11 + sigma22), eps33 = 0) and plane stress on request. Strains
+// and stresses use Voigt vectors with the engineering shear, eps = (e11, e22, 2 e12) and
+// sigma = (s11, s22, s12), so that sigma = D eps and the energy density is eps.D.eps / 2.
+#include <Eigen/Core>
+
+namespace sig {
+
+class Card;
+
+enum class PlaneMode { strain, stress };
+
+struct Hooke {
+  double E = 1.0;  ///< Young's modulus, > 0
+  double nu = 0.0; ///< Poisson ratio, -1 < nu < 1/2
+  PlaneMode plane = PlaneMode::strain;
+
+  /// Lame's first parameter of the 3D law (plane strain) or of the reduced law (plane stress).
+  double lambda() const;
+  /// Shear modulus mu = E / (2 (1 + nu)), the same in both modes.
+  double mu() const;
+  /// The 3x3 elasticity matrix: sigma = D eps with the engineering shear in eps.
+  Eigen::Matrix3d D() const;
+  Eigen::Vector3d stress(const Eigen::Vector3d& strain) const;
+  /// W(eps) = eps.D.eps / 2, the stored energy per unit volume.
+  double energy_density(const Eigen::Vector3d& strain) const;
+  /// Out-of-plane stress: nu (s11 + s22) in plane strain, 0 in plane stress.
+  double stress33(const Eigen::Vector3d& strain) const;
+  /// von Mises equivalent stress of the 3D stress state (with sigma33 in plane strain).
+  double von_mises(const Eigen::Vector3d& strain) const;
+};
+
+/// Hooke's law of a MATERIAL card (fields E, nu, plane = strain | stress, default strain).
+/// Throws sig::InputError naming the card line and the field when E <= 0 or nu is outside
+/// (-1, 1/2): nu = 1/2 is the incompressible limit, where D does not exist.
+Hooke hooke_from_card(const Card& card);
+
+} // namespace sig

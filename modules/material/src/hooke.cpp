@@ -1,0 +1,70 @@
+#include "material/hooke.hpp"
+
+#include "core/datafile.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace sig {
+
+double Hooke::mu() const {
+  return E / (2.0 * (1.0 + nu));
+}
+
+double Hooke::lambda() const {
+  // Plane stress replaces lambda by 2 lambda mu / (lambda + 2 mu) = E nu / (1 - nu^2).
+  if (plane == PlaneMode::stress) return E * nu / (1.0 - nu * nu);
+  return E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+}
+
+Eigen::Matrix3d Hooke::D() const {
+  const double l = lambda();
+  const double m = mu();
+  Eigen::Matrix3d d;
+  d << l + 2 * m, l, 0, //
+      l, l + 2 * m, 0,  //
+      0, 0, m;
+  return d;
+}
+
+Eigen::Vector3d Hooke::stress(const Eigen::Vector3d& strain) const {
+  return D() * strain;
+}
+
+double Hooke::energy_density(const Eigen::Vector3d& strain) const {
+  return 0.5 * strain.dot(D() * strain);
+}
+
+double Hooke::stress33(const Eigen::Vector3d& strain) const {
+  if (plane == PlaneMode::stress) return 0.0;
+  const Eigen::Vector3d s = stress(strain);
+  return nu * (s(0) + s(1));
+}
+
+double Hooke::von_mises(const Eigen::Vector3d& strain) const {
+  const Eigen::Vector3d s = stress(strain);
+  const double s33 = stress33(strain);
+  const double j2 =
+      ((s(0) - s(1)) * (s(0) - s(1)) + (s(1) - s33) * (s(1) - s33) + (s33 - s(0)) * (s33 - s(0))) /
+          6.0 +
+      s(2) * s(2);
+  return std::sqrt(3.0 * j2);
+}
+
+Hooke hooke_from_card(const Card& card) {
+  Hooke law;
+  law.E = card.real("E");
+  if (!(law.E > 0.0)) {
+    std::ostringstream what;
+    what << "Young's modulus must be > 0 (got " << law.E << ")";
+    card.fail("E", what.str());
+  }
+  law.nu = card.real("nu");
+  if (!(law.nu < 0.5)) card.fail("nu", "Poisson ratio must be < 0.5 (incompressible limit)");
+  if (!(law.nu > -1.0)) card.fail("nu", "Poisson ratio must be > -1");
+  law.plane = card.choice("plane", {"strain", "stress"}, "strain") == "stress" ? PlaneMode::stress
+                                                                               : PlaneMode::strain;
+  return law;
+}
+
+} // namespace sig

@@ -1,0 +1,17 @@
+#pragma once
+// Run gmsh on a .geo script in a temporary folder and read the mesh it writes. Private to the
+// generators.
+#include "mesh/mesh.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sig {
+
+/// `gmsh NAME.geo -2 -format msh41 -setnumber KEY VALUE ...` with `script` as NAME.geo; the
+/// binary is $SIG_GMSH or `gmsh`. Throws sig::Error with the end of gmsh's log on failure.
+Mesh mesh_with_gmsh(const std::string& name, const std::string& script,
+                    const std::vector<std::pair<std::string, double>>& numbers);
+
+} // namespace sig

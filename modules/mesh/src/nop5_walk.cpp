@@ -1,0 +1,161 @@
+#include "nop5_walk.hpp"
+
+#include "core/error.hpp"
+#include "mesh/topology.hpp"
+
+#include <cstdlib>
+#include <unordered_map>
+
+namespace sig {
+namespace {
+
+struct ElementShape {
+  const char* name;
+  int vertices, edges;
+};
+
+ElementShape shape_of(std::int64_t ncge, const std::string& where) {
+  switch (ncge) {
+  case 1:
+    return {"point", 1, 0};
+  case 2:
+    return {"segment", 2, 1};
+  case 3:
+    return {"triangle", 3, 3};
+  case 4:
+    return {"quadrilateral", 4, 4};
+  default:
+    throw Error(where + ": element type NCGE = " + std::to_string(ncge) +
+                " is not a 2D element (1 point, 2 segment, 3 triangle, 4 quadrilateral)");
+  }
+}
+
+/// Builds the Mesh while NOP5 is walked: references checked for consistency, edges kept once.
+class MeshBuilder {
+public:
+  MeshBuilder(std::vector<double> coordinates, int np) {
+    for (int i = 0; i < np; ++i)
+      mesh.nodes.emplace_back(coordinates[2 * i], coordinates[2 * i + 1]);
+    mesh.vertex_ref.assign(np, 0);
+  }
+
+  void vertex_ref(int v, std::int64_t ref, const std::string& where) {
+    const int r = static_cast<int>(std::llabs(ref));
+    if (r == 0) return;
+    SIG_VERIFY(mesh.vertex_ref[v] == 0 || mesh.vertex_ref[v] == r,
+               where << ": vertex " << v + 1 << " has reference " << r << " here but "
+                     << mesh.vertex_ref[v] << " in an earlier element");
+    mesh.vertex_ref[v] = r;
+  }
+
+  /// Edge (a, b) with reference `ref`, in this direction, kept once.
+  void edge_ref(int a, int b, std::int64_t ref, const std::string& where) {
+    const int r = static_cast<int>(std::llabs(ref));
+    if (r == 0) return;
+    const auto [it, fresh] = edge_refs_.emplace(edge_key(a, b), r);
+    SIG_VERIFY(it->second == r, where << ": edge " << a + 1 << "-" << b + 1 << " has reference "
+                                      << r << " here but " << it->second
+                                      << " in an earlier element");
+    if (fresh) mesh.edges.push_back({a, b, r});
+  }
+
+  /// Triangle with the references of its sides (v0,v1), (v1,v2), (v2,v0); made
+  /// counter-clockwise, the sides keeping the direction they have in it.
+  void triangle(std::array<int, 3> v, std::array<std::int64_t, 3> side_ref, int subdomain,
+                const std::string& where) {
+    mesh.triangles.push_back(v);
+    mesh.subdomain.push_back(subdomain);
+    const bool clockwise = signed_double_area(mesh, mesh.num_triangles() - 1) < 0;
+    if (clockwise) std::swap(mesh.triangles.back()[1], mesh.triangles.back()[2]);
+    for (int j = 0; j < 3; ++j) {
+      const int a = v[j], b = v[(j + 1) % 3];
+      clockwise ? edge_ref(b, a, side_ref[j], where) : edge_ref(a, b, side_ref[j], where);
+    }
+  }
+
+  Mesh mesh;
+
+private:
+  std::unordered_map<std::uint64_t, int> edge_refs_;
+};
+
+} // namespace
+
+/// Walk NOP5 (MODULEF.md section 3.3): NCGE NMAE NDSDE NNO nodes [NPO points] [INING refs].
+Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int64_t, 27>& nop2,
+               std::vector<double> coordinates, const std::string& file) {
+  const int np = static_cast<int>(nop2[word::NP]);
+  MeshBuilder build(std::move(coordinates), np);
+  std::size_t k = 0;
+  std::int64_t triangles = 0, quadrilaterals = 0;
+  for (std::int64_t e = 1; e <= nop2[word::NE]; ++e) {
+    const std::string where =
+        file + ": NOP5 element " + std::to_string(e) + " (word " + std::to_string(k + 1) + ")";
+    auto next = [&]() {
+      SIG_VERIFY(k < nop5.size(),
+                 where << " runs past the end of NOP5 (" << nop5.size() << " words)");
+      return nop5[k++];
+    };
+    const std::int64_t ncge = next(), nmae = next(), ndsde = next(), nno = next();
+    const ElementShape shape = shape_of(ncge, where);
+    SIG_VERIFY(nno >= shape.vertices, where << ": " << nno << " nodes for a " << shape.name);
+    std::vector<std::int64_t> vertices;
+    for (std::int64_t j = 0; j < nno; ++j)
+      vertices.push_back(next());
+    if (nop2[word::NCOPNP] == 0) { // nodes are not the vertices: the point list follows
+      const std::int64_t npo = next();
+      SIG_VERIFY(npo == shape.vertices, where << ": " << npo << " points for a " << shape.name);
+      vertices.clear();
+      for (std::int64_t j = 0; j < npo; ++j)
+        vertices.push_back(next());
+    }
+    vertices.resize(shape.vertices);
+    std::array<int, 4> v{};
+    for (int j = 0; j < shape.vertices; ++j) {
+      SIG_VERIFY(vertices[j] >= 1 && vertices[j] <= np,
+                 where << ": vertex " << vertices[j] << " out of range 1.." << np);
+      v[j] = static_cast<int>(vertices[j] - 1);
+    }
+    std::array<std::int64_t, 4> edge{}; // references of local edges j -> j+1
+    if (nmae > 0) {
+      const std::int64_t ining = next();
+      const int expected = ining == 2 ? shape.edges + shape.vertices : shape.vertices;
+      SIG_VERIFY(ining == 2 || ining == 3,
+                 where << ": INING = " << ining
+                       << " is not supported (2 = edge and vertex references, 3 = vertex)");
+      SIG_VERIFY(nmae == 1 + expected, where << ": NMAE = " << nmae << " but INING = " << ining
+                                             << " needs " << 1 + expected);
+      if (ining == 2) {
+        for (int j = 0; j < shape.edges; ++j)
+          edge[j] = next();
+      }
+      for (int j = 0; j < shape.vertices; ++j)
+        build.vertex_ref(v[j], next(), where);
+    }
+    SIG_VERIFY(ndsde >= 1 || ncge < 3,
+               where << ": sub-domain NDSDE = " << ndsde << " (must be >= 1)");
+    const int subdomain = static_cast<int>(ndsde);
+    if (ncge == 3) {
+      build.triangle({v[0], v[1], v[2]}, {edge[0], edge[1], edge[2]}, subdomain, where);
+      ++triangles;
+    } else if (ncge == 4) { // split as FreeFem does: (1,2,3) + (3,4,1)
+      build.triangle({v[0], v[1], v[2]}, {edge[0], edge[1], 0}, subdomain, where);
+      build.triangle({v[2], v[3], v[0]}, {edge[2], edge[3], 0}, subdomain, where);
+      ++quadrilaterals;
+    } else if (ncge == 2) {
+      build.edge_ref(v[0], v[1], edge[0], where); // oriented below, once the triangles exist
+    }
+  }
+  SIG_VERIFY(k == nop5.size(), file << ": NOP5: the " << nop2[word::NE] << " elements use " << k
+                                    << " of its " << nop5.size() << " words");
+  SIG_VERIFY(triangles == nop2[word::NTRI] && quadrilaterals == nop2[word::NQUA],
+             file << ": NOP2 announces " << nop2[word::NTRI] << " triangles and "
+                  << nop2[word::NQUA] << " quadrilaterals, NOP5 holds " << triangles << " and "
+                  << quadrilaterals);
+  Mesh mesh = std::move(build.mesh);
+  SIG_VERIFY(orient_boundary_edges(mesh) < 0,
+             file << ": NOP5: a referenced segment is not a side of any triangle");
+  return mesh;
+}
+
+} // namespace sig

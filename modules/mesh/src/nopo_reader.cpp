@@ -1,0 +1,178 @@
+#include "core/error.hpp"
+#include "fortran_records.hpp"
+#include "mesh/nopo.hpp"
+#include "nop5_walk.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace sig {
+namespace {
+
+/// Reads the arrays of a NOPO file one after the other; an array may span several records
+/// (Simail), each record starting with an integer count word.
+class ArrayReader {
+public:
+  ArrayReader(const FortranRecords& records, int int_bytes, std::string file)
+      : records_(records), codec_{records.big_endian}, int_bytes_(int_bytes),
+        file_(std::move(file)) {}
+
+  /// `n` integers; raw() then holds their bytes (for the text words of NOP0).
+  std::vector<std::int64_t> ints(const std::string& name, std::int64_t n) {
+    std::vector<std::int64_t> values;
+    raw_.clear();
+    while (static_cast<std::int64_t>(values.size()) < n) {
+      const auto [count, body] = next_record(name, n - static_cast<std::int64_t>(values.size()));
+      SIG_VERIFY(body.size() == static_cast<std::size_t>(count * int_bytes_),
+                 where(name) << ": " << body.size() << " bytes for " << count << " words of "
+                             << int_bytes_ << " bytes");
+      for (std::int64_t k = 0; k < count; ++k)
+        values.push_back(codec_.get_int(body.data() + k * int_bytes_, int_bytes_));
+      raw_.append(body);
+    }
+    return values;
+  }
+
+  /// `n` reals in words of 4 or 8 bytes, whichever the payload size says.
+  std::vector<double> reals(const std::string& name, std::int64_t n, int& real_bytes) {
+    std::vector<double> values;
+    while (static_cast<std::int64_t>(values.size()) < n) {
+      const auto [count, body] = next_record(name, n - static_cast<std::int64_t>(values.size()));
+      const auto size = static_cast<std::int64_t>(body.size());
+      SIG_VERIFY(size == 4 * count || size == 8 * count,
+                 where(name) << ": " << size << " bytes for " << count
+                             << " reals (neither float nor double)");
+      real_bytes = static_cast<int>(size / count);
+      for (std::int64_t k = 0; k < count; ++k)
+        values.push_back(codec_.get_real(body.data() + k * real_bytes, real_bytes));
+    }
+    return values;
+  }
+
+  void skip_records(std::int64_t n, const std::string& name) {
+    SIG_VERIFY(next_ + n <= records_.payloads.size(),
+               file_ << ": the file ends before the " << n << " records of " << name);
+    next_ += n;
+  }
+  std::size_t records_left() const { return records_.payloads.size() - next_; }
+  const std::string& raw() const { return raw_; }
+  std::string where(const std::string& name) const {
+    return file_ + ": record " + std::to_string(next_) + " (" + name + ")";
+  }
+
+private:
+  std::pair<std::int64_t, std::string_view> next_record(const std::string& name,
+                                                        std::int64_t wanted) {
+    SIG_VERIFY(next_ < records_.payloads.size(),
+               file_ << ": the file ends before array " << name << " (truncated?)");
+    const std::string_view payload = records_.payloads[next_++];
+    SIG_VERIFY(payload.size() >= static_cast<std::size_t>(int_bytes_), where(name)
+                                                                           << ": no count word");
+    const std::int64_t count = codec_.get_int(payload.data(), int_bytes_);
+    SIG_VERIFY(count > 0 && count <= wanted,
+               where(name) << ": count word " << count << " where " << wanted << " words remain");
+    return {count, payload.substr(int_bytes_)};
+  }
+
+  const FortranRecords& records_;
+  WordCodec codec_;
+  int int_bytes_;
+  std::string file_;
+  std::size_t next_ = 1; // record 0 is the descriptor
+  std::string raw_;
+};
+
+std::string text_of_words(const std::string& raw, int int_bytes, int first, int count) {
+  std::string text;
+  for (int k = first; k < first + count; ++k)
+    text.append(raw, k * int_bytes, 4);
+  const auto end = text.find_last_not_of(' ');
+  return end == std::string::npos ? std::string() : text.substr(0, end + 1);
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  SIG_VERIFY(in, path.string() << ": cannot open the NOPO file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  SIG_VERIFY(!in.bad(), path.string() << ": read error");
+  return buffer.str();
+}
+
+} // namespace
+
+NopoFile read_nopo_file(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const std::string bytes = read_bytes(path);
+  const FortranRecords records = split_fortran_records(bytes, file);
+  NopoFile result;
+  result.layout.marker_bytes = records.marker_bytes;
+  result.layout.big_endian = records.big_endian;
+
+  // 1. Descriptor: 13, 6, L0..L5, T0..T5 in 14 integer words (4 or 8 bytes).
+  const std::string_view descriptor = records.payloads[0];
+  SIG_VERIFY(descriptor.size() != 208,
+             file << ": Simail 64-bit NOPO files (208-byte descriptor) are not supported");
+  SIG_VERIFY(descriptor.size() == 56 || descriptor.size() == 112,
+             file << ": record 1 has " << descriptor.size()
+                  << " bytes; a NOPO descriptor has 14 words (56 or 112 bytes)");
+  const int int_bytes = static_cast<int>(descriptor.size() / 14);
+  result.layout.int_bytes = int_bytes;
+  const WordCodec codec{records.big_endian};
+  std::array<std::int64_t, 14> desc{};
+  for (int k = 0; k < 14; ++k)
+    desc[k] = codec.get_int(descriptor.data() + k * int_bytes, int_bytes);
+  SIG_VERIFY(desc[0] == 13 && desc[1] == 6 && desc[2] == 32 && desc[4] == 27,
+             file << ": record 1 is not a NOPO descriptor (expected 13, 6, 32, L1, 27, ...)");
+  const std::int64_t l1 = desc[3], l3 = desc[5], l4 = desc[6], l5 = desc[7];
+  SIG_VERIFY(l1 >= 0 && l3 >= 0 && l4 > 0 && l5 > 0,
+             file << ": record 1: bad array lengths L1 = " << l1 << ", L3 = " << l3
+                  << ", L4 = " << l4 << ", L5 = " << l5);
+
+  // 2. The arrays, in order: NOP0, [NOP1 + NTACM arrays], NOP2, [NOP3], NOP4, NOP5.
+  ArrayReader arrays(records, int_bytes, file);
+  const std::vector<std::int64_t> nop0 = arrays.ints("NOP0", 32);
+  result.text.title = text_of_words(arrays.raw(), int_bytes, 0, 20);
+  result.text.date = text_of_words(arrays.raw(), int_bytes, 20, 2);
+  result.text.creator = text_of_words(arrays.raw(), int_bytes, 22, 6);
+  SIG_VERIFY(text_of_words(arrays.raw(), int_bytes, 28, 1) == "NOPO",
+             file << ": NOP0 word 29 is '" << text_of_words(arrays.raw(), int_bytes, 28, 1)
+                  << "', not 'NOPO'");
+  if (l1 > 0) {
+    arrays.ints("NOP1", l1);
+    arrays.skip_records(nop0[31], "the NTACM arrays"); // unverified layout (MODULEF.md 7)
+  }
+  const std::vector<std::int64_t> nop2 = arrays.ints("NOP2", 27);
+  std::copy(nop2.begin(), nop2.end(), result.nop2.begin());
+  if (l3 > 0) arrays.ints("NOP3", l3);
+  int real_bytes = 4;
+  std::vector<double> nop4 = arrays.reals("NOP4", l4, real_bytes);
+  result.layout.real_bytes = real_bytes;
+  const std::vector<std::int64_t> nop5 = arrays.ints("NOP5", l5); // trust L5 over NOP2.LNOP5
+  SIG_VERIFY(arrays.records_left() == 0,
+             file << ": " << arrays.records_left() << " unexpected records after NOP5");
+
+  // 3. Consistency of NOP2 with what this reader supports.
+  const auto& n2 = result.nop2;
+  SIG_VERIFY(n2[word::NDIM] == 2,
+             file << ": NOP2: NDIM = " << n2[word::NDIM] << ", only 2D meshes are read");
+  SIG_VERIFY(n2[word::NTACOO] <= 1, file << ": NOP2: NTACOO = " << n2[word::NTACOO]
+                                         << ", only Cartesian coordinates are read");
+  SIG_VERIFY(n2[word::NSUP] == 0, file << ": NOP2: super-elements are not supported");
+  SIG_VERIFY(n2[word::NP] > 0 && l4 == 2 * n2[word::NP],
+             file << ": NOP4 holds " << l4
+                  << " reals but NOP2 says NDIM * NP = " << 2 * n2[word::NP]);
+  SIG_VERIFY(n2[word::NE] > 0, file << ": NOP2: no element (NE = " << n2[word::NE] << ")");
+
+  // 4. Elements and references.
+  result.mesh = walk_nop5(nop5, result.nop2, std::move(nop4), file);
+  check_mesh(result.mesh, file);
+  return result;
+}
+
+Mesh read_nopo(const std::filesystem::path& path) {
+  return read_nopo_file(path).mesh;
+}
+
+} // namespace sig

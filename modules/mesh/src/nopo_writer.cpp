@@ -1,0 +1,165 @@
+#include "core/ds.hpp"
+#include "core/error.hpp"
+#include "core/stage.hpp"
+#include "fortran_records.hpp"
+#include "mesh/nopo.hpp"
+#include "mesh/topology.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+#include <unordered_map>
+
+namespace sig {
+namespace {
+
+/// NOP5 as FreeFem's Write_nop5 builds it (MODULEF.md section 5.2), and the counts NOP2 needs.
+struct Nop5 {
+  std::vector<std::int64_t> words;
+  std::int64_t elements_with_refs = 0; // NEF
+  std::int64_t largest_span = 0;       // LPGDN = max(max - min node) + 1
+  std::int64_t largest_ref = 0;        // NDSR
+};
+
+Nop5 build_nop5(const Mesh& mesh) {
+  std::unordered_map<std::uint64_t, int> edge_ref;
+  for (const auto& e : mesh.edges)
+    edge_ref.emplace(edge_key(e.a, e.b), std::abs(e.ref));
+  Nop5 nop5;
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    std::array<std::int64_t, 3> e{}, v{};
+    for (int j = 0; j < 3; ++j) {
+      const auto it = edge_ref.find(edge_key(tri[j], tri[(j + 1) % 3]));
+      e[j] = it == edge_ref.end() ? 0 : it->second;
+      v[j] = std::abs(mesh.vertex_ref[tri[j]]);
+    }
+    const bool edges = e[0] || e[1] || e[2];
+    const bool vertices = v[0] || v[1] || v[2];
+    const std::int64_t nmae = edges ? 7 : vertices ? 4 : 0;
+    nop5.words.insert(nop5.words.end(), {3, nmae, std::max(mesh.subdomain[t], 1), 3, tri[0] + 1,
+                                         tri[1] + 1, tri[2] + 1});
+    if (edges) {
+      nop5.words.insert(nop5.words.end(), {2, e[0], e[1], e[2]});
+      nop5.largest_ref = std::max({nop5.largest_ref, e[0], e[1], e[2]});
+    } else if (vertices) {
+      nop5.words.push_back(3);
+    }
+    if (nmae > 0) {
+      nop5.words.insert(nop5.words.end(), v.begin(), v.end());
+      nop5.largest_ref = std::max({nop5.largest_ref, v[0], v[1], v[2]});
+      ++nop5.elements_with_refs;
+    }
+    const auto [lo, hi] = std::minmax({tri[0], tri[1], tri[2]});
+    nop5.largest_span = std::max<std::int64_t>(nop5.largest_span, hi - lo + 1);
+  }
+  return nop5;
+}
+
+/// Text packed 4 characters per integer word, in the first 4 bytes of the word in file order
+/// (FreeFem's union of char[4] and long), blank padded to `words` words.
+void put_text(std::string& out, const std::string& text, int words, int int_bytes) {
+  std::string padded = text.substr(0, 4 * words);
+  padded.resize(4 * words, ' ');
+  for (int k = 0; k < words; ++k) {
+    out.append(padded, 4 * k, 4);
+    out.append(int_bytes - 4, '\0');
+  }
+}
+
+} // namespace
+
+NopoLayout nopo_layout(NopoVariant variant) {
+  switch (variant) {
+  case NopoVariant::ff64:
+    return {8, 8, 4, false};
+  case NopoVariant::i4r4:
+    return {4, 4, 4, false};
+  case NopoVariant::i8r8:
+    return {4, 8, 8, false};
+  }
+  return {};
+}
+
+std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOptions& options) {
+  check_mesh(mesh, "NOPO writer");
+  const NopoLayout layout = nopo_layout(variant);
+  const int wi = layout.int_bytes;
+  const WordCodec codec{options.big_endian};
+  const Nop5 nop5 = build_nop5(mesh);
+  const std::int64_t nv = mesh.num_nodes(), nt = mesh.num_triangles();
+  const std::int64_t l4 = 2 * nv, l5 = static_cast<std::int64_t>(nop5.words.size());
+  SIG_VERIFY(wi == 8 || l5 <= std::numeric_limits<std::int32_t>::max(),
+             "NOPO: the mesh is too large for 4-byte words");
+  const int subdomain_max =
+      mesh.subdomain.empty() ? 1 : *std::max_element(mesh.subdomain.begin(), mesh.subdomain.end());
+
+  const std::int64_t ndsr = options.ndsr.value_or(nop5.largest_ref);
+  const std::int64_t ndsd = std::max(1, subdomain_max);
+  // NOP2 (MODULEF.md section 3.2), the values FreeFem writes for 2D triangle meshes.
+  const std::array<std::int64_t, 27> nop2 = {2,    ndsr,
+                                             ndsd, 1,
+                                             nt,   0,
+                                             0,    nt,
+                                             0,    0,
+                                             0,    0,
+                                             0,    nop5.elements_with_refs,
+                                             nv,   0,
+                                             0,    0,
+                                             0,    0,
+                                             0,    nv,
+                                             2,    nop5.largest_span,
+                                             0,    l5,
+                                             1};
+  auto words = [&](std::int64_t count, auto&& values) {
+    std::string payload;
+    codec.put_int(payload, count, wi);
+    for (std::int64_t x : values)
+      codec.put_int(payload, x, wi);
+    return payload;
+  };
+
+  std::string file;
+  const std::array<std::int64_t, 14> descriptor = {13, 6, 32, 0, 27, 0, l4, l5, 1, 1, 1, 1, 2, 1};
+  std::string payload;
+  for (std::int64_t x : descriptor)
+    codec.put_int(payload, x, wi);
+  append_fortran_record(file, payload, layout.marker_bytes, codec);
+
+  payload.clear(); // NOP0: title, date, creator, type, NIVEAU = 0, ETAT = 1, NTACM = 0
+  codec.put_int(payload, 32, wi);
+  put_text(payload, options.text.title, 20, wi);
+  put_text(payload, options.text.date, 2, wi);
+  put_text(payload, options.text.creator, 6, wi);
+  put_text(payload, "NOPO", 1, wi);
+  for (std::int64_t x : {0, 1, 0})
+    codec.put_int(payload, x, wi);
+  append_fortran_record(file, payload, layout.marker_bytes, codec);
+
+  append_fortran_record(file, words(27, nop2), layout.marker_bytes, codec);
+
+  payload.clear(); // NOP4: the count is an integer word, the coordinates reals
+  codec.put_int(payload, l4, wi);
+  for (const auto& x : mesh.nodes) {
+    codec.put_real(payload, x.x(), layout.real_bytes);
+    codec.put_real(payload, x.y(), layout.real_bytes);
+  }
+  append_fortran_record(file, payload, layout.marker_bytes, codec);
+
+  append_fortran_record(file, words(l5, nop5.words), layout.marker_bytes, codec);
+  return file;
+}
+
+void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
+                const NopoWriteOptions& options) {
+  write_file_atomically(path, encode_nopo(mesh, variant, options));
+}
+
+void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
+                const std::string& title, const std::string& creator) {
+  NopoWriteOptions options;
+  options.text = {title, ds_date(), creator};
+  write_nopo(path, mesh, variant, options);
+}
+
+} // namespace sig

@@ -1,0 +1,73 @@
+#include "mesh/topology.hpp"
+
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+
+namespace sig {
+
+void orient_counter_clockwise(Mesh& mesh) {
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    if (signed_double_area(mesh, t) < 0) std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+  }
+}
+
+int orient_boundary_edges(Mesh& mesh) {
+  struct Side {
+    int from, to, count;
+  };
+  std::unordered_map<std::uint64_t, Side> sides;
+  sides.reserve(3 * mesh.triangles.size());
+  for (const auto& tri : mesh.triangles) {
+    for (int j = 0; j < 3; ++j) {
+      const int a = tri[j], b = tri[(j + 1) % 3];
+      auto [it, fresh] = sides.try_emplace(edge_key(a, b), Side{a, b, 0});
+      ++it->second.count;
+    }
+  }
+  std::vector<BoundaryEdge> kept;
+  kept.reserve(mesh.edges.size());
+  std::unordered_set<std::uint64_t> seen;
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    BoundaryEdge edge = mesh.edges[e];
+    const auto it = sides.find(edge_key(edge.a, edge.b));
+    if (it == sides.end()) return static_cast<int>(e);
+    if (!seen.insert(it->first).second) continue;
+    if (it->second.count == 1) {
+      edge.a = it->second.from;
+      edge.b = it->second.to;
+    }
+    kept.push_back(edge);
+  }
+  mesh.edges = std::move(kept);
+  return -1;
+}
+
+std::vector<int> drop_unused_nodes(Mesh& mesh) {
+  std::vector<int> renumber(mesh.nodes.size(), -1);
+  for (const auto& tri : mesh.triangles) {
+    for (int v : tri)
+      renumber[v] = 0;
+  }
+  int next = 0;
+  for (std::size_t i = 0; i < renumber.size(); ++i) {
+    if (renumber[i] < 0) continue;
+    renumber[i] = next;
+    mesh.nodes[next] = mesh.nodes[i];
+    if (i < mesh.vertex_ref.size()) mesh.vertex_ref[next] = mesh.vertex_ref[i];
+    ++next;
+  }
+  mesh.nodes.resize(next);
+  if (!mesh.vertex_ref.empty()) mesh.vertex_ref.resize(next);
+  for (auto& tri : mesh.triangles) {
+    for (int& v : tri)
+      v = renumber[v];
+  }
+  for (auto& edge : mesh.edges) {
+    edge.a = renumber[edge.a];
+    edge.b = renumber[edge.b];
+  }
+  return renumber;
+}
+
+} // namespace sig

@@ -1,0 +1,90 @@
+// sig-post: the solved static case for ParaView, tables and charts.
+//
+//   sig-post DATAFILE [-o OUTDIR]
+//
+// Reads OUTDIR/case.nopo, case.mili, case.b (+ case.cont when the datafile has a CONTACT card,
+// and the time_* scalars of case.tae when it exists) and writes
+//   OUTDIR/<stem>.pvd + <stem>_0000.vtu   unless the OUTPUT card says vtk=no (stem: OUTPUT
+//                                          name=, default the datafile's stem)
+//   OUTDIR/summary.json                    method, convergence, sizes, histories, times
+//   OUTDIR/contact.csv                     one row per contact element (contact cases)
+// A solution holding NaN or inf is refused: a picture of garbage helps nobody.
+#include "core/datafile.hpp"
+#include "core/ds.hpp"
+#include "core/error.hpp"
+#include "core/stage.hpp"
+#include "material/mili.hpp"
+#include "mesh/nopo.hpp"
+#include "post/contact_table.hpp"
+#include "post/solution_fields.hpp"
+#include "post/summary.hpp"
+#include "post/vtk_writer.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+int main(int argc, char** argv) {
+  return sig::run_stage("sig-post", [&] {
+    // 1. Command line, datafile and the OUTPUT card.
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-post");
+    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Card* output = datafile.find("OUTPUT");
+    const bool write_vtk =
+        output == nullptr || output->choice("vtk", {"yes", "no"}, "yes") == "yes";
+
+    // 2. Mesh, materials and the solution; refuse a displacement that is not finite.
+    const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
+    const auto b_path = args.ds_path("b");
+    const sig::Ds solution = sig::read_ds(b_path, "B");
+    const std::vector<double> u = solution.reals("u");
+    SIG_VERIFY(u.size() == 2 * mesh.nodes.size(),
+               b_path.string() << ": array 'u' holds " << u.size() << " values, the mesh has "
+                               << mesh.num_nodes() << " nodes (" << 2 * mesh.num_nodes()
+                               << " dofs)");
+    sig::verify_finite(u, b_path.string(), "u");
+
+    // 3. Contact elements joined with their final state (contact cases only).
+    std::vector<sig::ContactRow> contact;
+    sig::Ds cont;
+    const bool contact_case = datafile.find("CONTACT") != nullptr;
+    if (contact_case) {
+      sig::verify_finite(solution.reals("multiplier"), b_path.string(), "multiplier");
+      cont = sig::read_ds(args.ds_path("cont"), "CONT");
+      contact = sig::contact_rows(mesh, cont, solution);
+    }
+
+    // 4. ParaView: one .vtu (time 0) and its .pvd collection.
+    const std::string stem = output ? output->text("name", datafile.stem()) : datafile.stem();
+    if (write_vtk) {
+      const sig::SolutionFields fields = sig::solution_fields(mesh, u, materials, contact);
+      const std::string vtu = stem + "_0000.vtu";
+      sig::write_vtu(args.outdir / vtu, mesh, fields.point, fields.cell,
+                     {{"title", datafile.title()}, {"method", solution.text("method")}});
+      sig::write_pvd(args.outdir / (stem + ".pvd"), {{0.0, vtu}});
+      std::cout << (args.outdir / (stem + ".pvd")).string() << "\n"
+                << (args.outdir / vtu).string() << "\n";
+    }
+
+    // 5. summary.json with the times of every stage that recorded some.
+    std::optional<sig::Ds> tae;
+    if (std::filesystem::exists(args.ds_path("tae")))
+      tae = sig::read_ds(args.ds_path("tae"), "TAE");
+    const auto times =
+        sig::gather_times({tae ? &*tae : nullptr, contact_case ? &cont : nullptr, &solution});
+    const sig::Json summary = sig::build_summary(datafile.title(), mesh, solution, contact, times);
+    const auto summary_path = args.outdir / "summary.json";
+    sig::write_file_atomically(summary_path, summary.dump() + "\n");
+    std::cout << summary_path.string() << "\n";
+
+    // 6. contact.csv; a stale one from an earlier contact variant would mislead, so remove it.
+    const auto csv_path = args.outdir / "contact.csv";
+    if (contact_case) {
+      sig::write_file_atomically(csv_path, sig::contact_csv(contact));
+      std::cout << csv_path.string() << "\n";
+    } else {
+      std::filesystem::remove(csv_path);
+    }
+  });
+}

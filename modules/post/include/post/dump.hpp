@@ -1,0 +1,31 @@
+#pragma once
+// sig-dump: MODULEF's habit of printing a data structure, for any DS file or a NOPO mesh, as
+// readable text or as JSON with stable keys for scripts.
+#include "core/ds.hpp"
+#include "core/json.hpp"
+#include "mesh/mesh.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace sig {
+
+/// True when the file starts with the DS magic "SIGDS\0\0\0" (NOPO files do not).
+bool is_ds_file(const std::filesystem::path& path);
+
+/// "int64", "float64" or "text".
+std::string ds_type_name(DsType type);
+
+/// Header lines, then one line per array: name, type, shape and its first `max_values` values.
+std::string dump_ds_text(const Ds& ds, std::size_t max_values = 8);
+
+/// {kind, title, creator, date, arrays: [{name, type, shape}]}.
+Json dump_ds_json(const Ds& ds);
+
+/// Node, triangle and edge counts, references and sub-domains, bounding box.
+std::string dump_mesh_text(const Mesh& mesh, const std::string& title);
+
+/// {kind: "NOPO", title, nodes, triangles, boundary_edges, references, subdomains}.
+Json dump_mesh_json(const Mesh& mesh, const std::string& title);
+
+} // namespace sig

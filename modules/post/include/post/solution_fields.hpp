@@ -1,0 +1,24 @@
+#pragma once
+// What a solved static case shows in ParaView: displacement (z = 0) and, on Gamma3, the contact
+// pressure and status at the nodes; stress, von Mises and sub-domain on the triangles.
+#include "material/mili.hpp"
+#include "mesh/mesh.hpp"
+#include "post/contact_table.hpp"
+#include "post/vtk_writer.hpp"
+
+#include <vector>
+
+namespace sig {
+
+struct SolutionFields {
+  std::vector<VtkField> point; ///< displacement (3), [contact_pressure, contact_status]
+  std::vector<VtkField> cell;  ///< stress (4: s11, s22, s12, s33), von_mises, subdomain
+};
+
+/// The fields of one state; contact fields only when `contact` is not empty, 0 off Gamma3
+/// (status 1 = contact, 0 = free or not on Gamma3).
+SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,
+                               const MaterialTable& materials,
+                               const std::vector<ContactRow>& contact);
+
+} // namespace sig

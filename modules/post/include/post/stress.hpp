@@ -1,0 +1,26 @@
+#pragma once
+// Stresses for the ParaView output: the P1 strain is constant on each triangle, and the Hooke law
+// of the triangle's sub-domain (MILI) turns it into a stress, with sigma33 for plane strain.
+#include "material/mili.hpp"
+#include "mesh/mesh.hpp"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace sig {
+
+/// Small strain (e11, e22, 2 e12) of triangle t for interleaved nodal displacements
+/// u = (u1, u2) per node.
+Eigen::Vector3d triangle_strain(const Mesh& mesh, const std::vector<double>& u, int t);
+
+struct CellStress {
+  std::vector<double> stress;    ///< 4 per triangle: s11, s22, s12, s33 (0 in plane stress)
+  std::vector<double> von_mises; ///< 1 per triangle
+};
+
+/// Stress on every triangle. Throws sig::Error if a sub-domain has no material or u has the
+/// wrong size.
+CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
+                         const MaterialTable& materials);
+
+} // namespace sig

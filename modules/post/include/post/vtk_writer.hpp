@@ -1,0 +1,40 @@
+#pragma once
+// ParaView output: one .vtu per output time (the mesh with its point, cell and field data) and a
+// .pvd collection listing them with their times. Both are written atomically (temporary file in
+// the same folder, then renamed), so ParaView never opens a half-written step.
+#include "mesh/mesh.hpp"
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sig {
+
+/// A data array attached to the points or the cells of the mesh: `values` holds
+/// `components` numbers per point (or cell), interleaved.
+struct VtkField {
+  std::string name;
+  int components = 1;
+  std::vector<double> values;
+  bool integer = false; ///< written as vtkIntArray (sub-domains, statuses)
+};
+
+/// Field data of the whole grid: named strings (title, method ...).
+using VtkText = std::vector<std::pair<std::string, std::string>>;
+
+/// Write the mesh (z = 0) with its fields as a binary, compressed .vtu. Throws sig::Error when a
+/// field does not have one tuple per point (cell) or the file cannot be written.
+void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
+               const std::vector<VtkField>& point_fields, const std::vector<VtkField>& cell_fields,
+               const VtkText& field_data);
+
+struct PvdStep {
+  double time = 0;
+  std::string file; ///< .vtu name relative to the .pvd's folder
+};
+
+/// Write a ParaView collection listing the steps in order.
+void write_pvd(const std::filesystem::path& path, const std::vector<PvdStep>& steps);
+
+} // namespace sig

@@ -1,0 +1,74 @@
+#include "post/contact_table.hpp"
+
+#include "core/error.hpp"
+#include "ds_values.hpp"
+
+#include <cstdio>
+
+namespace sig {
+
+std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds& solution) {
+  const auto node = numbers(cont, "node");
+  const auto normal = numbers(cont, "normal");
+  const auto gap = numbers(cont, "gap");
+  const auto weight = numbers(cont, "weight");
+  const auto u = solution.reals("u");
+  const auto multiplier = numbers(solution, "multiplier");
+  const auto status = numbers(solution, "status");
+  const std::size_t m = node.size();
+  SIG_VERIFY(normal.size() == 2 * m && gap.size() == m && weight.size() == m,
+             cont.source << ": arrays node, normal (m x 2), gap, weight disagree for m = " << m);
+  SIG_VERIFY(multiplier.size() == m && status.size() == m,
+             solution.source << ": arrays multiplier and status hold " << multiplier.size()
+                             << " and " << status.size() << " values for " << m
+                             << " contact elements");
+  SIG_VERIFY(u.size() == 2 * mesh.nodes.size(), solution.source << ": array 'u' holds " << u.size()
+                                                                << " values for "
+                                                                << mesh.num_nodes() << " nodes");
+  std::vector<ContactRow> rows(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const int k = static_cast<int>(node[i]) - 1;
+    SIG_VERIFY(k >= 0 && k < mesh.num_nodes(), cont.source << ": array 'node' holds " << node[i]
+                                                           << " at element " << i + 1
+                                                           << ", outside 1.." << mesh.num_nodes());
+    auto& r = rows[i];
+    r.node = k + 1;
+    r.x1 = mesh.nodes[k].x();
+    r.x2 = mesh.nodes[k].y();
+    r.u1 = u[2 * k];
+    r.u2 = u[2 * k + 1];
+    // u_n = -n . u with n the obstacle's outward normal (contact/contact_elements.hpp).
+    const double un = -(r.u1 * normal[2 * i] + r.u2 * normal[2 * i + 1]);
+    r.gap = gap[i] - un;
+    r.multiplier = multiplier[i];
+    r.weight = weight[i];
+    SIG_VERIFY(weight[i] > 0,
+               cont.source << ": array 'weight' holds " << weight[i] << " at element " << i + 1);
+    r.pressure = multiplier[i] / weight[i];
+    r.contact = status[i] == 1;
+  }
+  return rows;
+}
+
+std::string contact_csv(const std::vector<ContactRow>& rows) {
+  std::string out = "node,x1,x2,u1,u2,gap,multiplier,pressure,status\n";
+  char line[512];
+  for (const auto& r : rows) {
+    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s\n", r.node,
+                  r.x1, r.x2, r.u1, r.u2, r.gap, r.multiplier, r.pressure,
+                  r.contact ? "contact" : "free");
+    out += line;
+  }
+  return out;
+}
+
+std::vector<PressureSample> pressure_samples(const std::vector<ContactRow>& rows,
+                                             double centre_x1) {
+  std::vector<PressureSample> samples;
+  samples.reserve(rows.size());
+  for (const auto& r : rows)
+    samples.push_back({r.x1 - centre_x1, r.pressure, r.weight, r.contact});
+  return samples;
+}
+
+} // namespace sig

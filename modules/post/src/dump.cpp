@@ -1,0 +1,141 @@
+#include "post/dump.hpp"
+
+#include "core/error.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace sig {
+namespace {
+
+std::string shape_text(const std::vector<std::int64_t>& shape) {
+  std::string s;
+  for (std::size_t i = 0; i < shape.size(); ++i)
+    s += (i ? " x " : "") + std::to_string(shape[i]);
+  return s;
+}
+
+std::string first_values(const Ds& ds, const DsArray& array, std::size_t max_values) {
+  std::ostringstream out;
+  out.precision(6);
+  if (array.type == DsType::Text) {
+    const std::string text = ds.text(array.name);
+    const std::size_t width = 8 * max_values;
+    out << '"' << text.substr(0, width) << (text.size() > width ? "...\"" : "\"");
+    return out.str();
+  }
+  const std::size_t n = std::min(array.count(), max_values);
+  if (array.type == DsType::Int64) {
+    const auto v = ds.ints(array.name);
+    for (std::size_t i = 0; i < n; ++i)
+      out << (i ? " " : "") << v[i];
+  } else {
+    const auto v = ds.reals(array.name);
+    for (std::size_t i = 0; i < n; ++i)
+      out << (i ? " " : "") << v[i];
+  }
+  if (array.count() > n) out << " ...";
+  return out.str();
+}
+
+} // namespace
+
+bool is_ds_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  SIG_VERIFY(in, path.string() << ": cannot open");
+  std::array<char, 8> magic{};
+  in.read(magic.data(), magic.size());
+  return in.gcount() == 8 && std::memcmp(magic.data(), "SIGDS\0\0\0", 8) == 0;
+}
+
+std::string ds_type_name(DsType type) {
+  switch (type) {
+  case DsType::Int64:
+    return "int64";
+  case DsType::Float64:
+    return "float64";
+  case DsType::Text:
+    return "text";
+  }
+  return "unknown";
+}
+
+std::string dump_ds_text(const Ds& ds, std::size_t max_values) {
+  std::ostringstream out;
+  const auto& h = ds.header;
+  out << "DS " << h.kind << "  title: " << h.title << "\n"
+      << "  date " << h.date << "  creator " << h.creator << "  level " << h.level << "  arrays "
+      << ds.arrays().size() << "\n";
+  std::size_t width = 4;
+  for (const auto& a : ds.arrays())
+    width = std::max(width, a.name.size());
+  for (const auto& a : ds.arrays()) {
+    std::string line = "  " + a.name + std::string(width - a.name.size() + 2, ' ');
+    line += ds_type_name(a.type) + " [" + shape_text(a.shape) + "]  ";
+    out << line << first_values(ds, a, max_values) << "\n";
+  }
+  return out.str();
+}
+
+Json dump_ds_json(const Ds& ds) {
+  Json::Array arrays;
+  for (const auto& a : ds.arrays()) {
+    Json entry = Json::object();
+    entry.set("name", a.name);
+    entry.set("type", ds_type_name(a.type));
+    entry.set("shape", Json::array_of(std::vector<long long>(a.shape.begin(), a.shape.end())));
+    arrays.push_back(std::move(entry));
+  }
+  Json j = Json::object();
+  j.set("kind", ds.header.kind);
+  j.set("title", ds.header.title);
+  j.set("creator", ds.header.creator);
+  j.set("date", ds.header.date);
+  j.set("arrays", Json(std::move(arrays)));
+  return j;
+}
+
+std::string dump_mesh_text(const Mesh& mesh, const std::string& title) {
+  std::ostringstream out;
+  out << "NOPO mesh  title: " << title << "\n"
+      << "  nodes " << mesh.num_nodes() << "  triangles " << mesh.num_triangles()
+      << "  referenced edges " << mesh.edges.size() << "\n";
+  out << "  references";
+  for (int r : mesh.references()) {
+    out << "  " << r << " (" << mesh.edges_with_ref(r).size() << " edges, "
+        << mesh.nodes_with_ref(r).size() << " nodes)";
+  }
+  out << "\n  sub-domains";
+  for (int s : mesh.subdomains()) {
+    out << "  " << s << " (" << std::count(mesh.subdomain.begin(), mesh.subdomain.end(), s)
+        << " triangles)";
+  }
+  if (!mesh.nodes.empty()) {
+    Eigen::Vector2d lo = mesh.nodes.front(), hi = mesh.nodes.front();
+    for (const auto& p : mesh.nodes) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    out << "\n  bounding box [" << lo.x() << ", " << hi.x() << "] x [" << lo.y() << ", " << hi.y()
+        << "]";
+  }
+  out << "\n";
+  return out.str();
+}
+
+Json dump_mesh_json(const Mesh& mesh, const std::string& title) {
+  Json j = Json::object();
+  j.set("kind", "NOPO");
+  j.set("title", title);
+  j.set("nodes", mesh.num_nodes());
+  j.set("triangles", mesh.num_triangles());
+  j.set("boundary_edges", static_cast<long>(mesh.edges.size()));
+  j.set("references", Json::array_of(mesh.references()));
+  j.set("subdomains", Json::array_of(mesh.subdomains()));
+  return j;
+}
+
+} // namespace sig

@@ -1,0 +1,90 @@
+#include "post/summary.hpp"
+
+#include "core/error.hpp"
+#include "ds_values.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sig {
+namespace {
+
+Json history(const Ds& solution, const std::string& name) {
+  return Json::array_of(solution.has(name) ? numbers(solution, name) : std::vector<double>{});
+}
+
+} // namespace
+
+std::vector<std::pair<std::string, double>> gather_times(const std::vector<const Ds*>& sources) {
+  std::vector<std::pair<std::string, double>> times;
+  for (const Ds* ds : sources) {
+    if (ds == nullptr) continue;
+    for (const auto& array : ds->arrays()) {
+      if (!array.name.starts_with("time_") || array.type != DsType::Float64) continue;
+      const std::string phase = array.name.substr(5);
+      const double seconds = ds->scalar(array.name);
+      const auto it = std::find_if(times.begin(), times.end(),
+                                   [&](const auto& entry) { return entry.first == phase; });
+      if (it == times.end()) {
+        times.emplace_back(phase, seconds);
+      } else {
+        it->second = seconds;
+      }
+    }
+  }
+  return times;
+}
+
+void verify_finite(const std::vector<double>& values, const std::string& file,
+                   const std::string& name) {
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    SIG_VERIFY(std::isfinite(values[k]), file << ": array '" << name << "' holds "
+                                              << (std::isnan(values[k]) ? "NaN" : "inf")
+                                              << " at dof " << k + 1);
+  }
+}
+
+Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solution,
+                   const std::vector<ContactRow>& contact,
+                   const std::vector<std::pair<std::string, double>>& times) {
+  const std::string method = solution.text("method");
+  const long elements = static_cast<long>(contact.size());
+  const long active =
+      std::count_if(contact.begin(), contact.end(), [](const ContactRow& r) { return r.contact; });
+  Json times_json = Json::object();
+  for (const auto& [phase, seconds] : times)
+    times_json.set(phase, seconds);
+
+  Json s = Json::object();
+  s.set("title", title);
+  s.set("method", method);
+  s.set("converged", solution.integer("converged") != 0);
+  s.set("failure", solution.has("failure") ? solution.text("failure") : std::string());
+  s.set("iterations", static_cast<long>(solution.integer("iterations")));
+  s.set("dofs", static_cast<long>(solution.integer("dofs")));
+  s.set("multipliers", method == "alm" ? elements : 0L);
+  s.set("contact_elements", elements);
+  s.set("contact_nodes", active);
+  s.set("nodes", mesh.num_nodes());
+  s.set("triangles", mesh.num_triangles());
+  s.set("backend", solution.has("linear") ? solution.text("linear") : std::string());
+  s.set("residual_history", history(solution, "history_residual"));
+  s.set("increment_history", history(solution, "history_increment"));
+  s.set("active_history", history(solution, "history_active"));
+  s.set("times", std::move(times_json));
+  return s;
+}
+
+Json hertz_json(const HertzData& data, const PressureError& e) {
+  Json h = Json::object();
+  h.set("b", hertz_half_width(data));
+  h.set("p0", hertz_peak_pressure(data));
+  h.set("p_max", e.p_max);
+  h.set("p_max_rel_error", e.p_max_rel_error);
+  h.set("half_width", e.half_width);
+  h.set("half_width_error", e.half_width_error);
+  h.set("l2_rel_error", e.l2_rel_error);
+  return h;
+}
+
+} // namespace sig

@@ -1,0 +1,139 @@
+#include "post/vtk_writer.hpp"
+
+#include "core/ds.hpp"
+#include "core/error.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <cmath>
+#include <sstream>
+#include <system_error>
+#include <unistd.h>
+
+namespace sig {
+namespace {
+
+vtkSmartPointer<vtkDataArray> make_array(const VtkField& field, long tuples,
+                                         const std::string& where) {
+  SIG_VERIFY(field.components >= 1,
+             where << ": field '" << field.name << "' has " << field.components << " components");
+  SIG_VERIFY(static_cast<long>(field.values.size()) == tuples * field.components,
+             where << ": field '" << field.name << "' holds " << field.values.size()
+                   << " values, expected " << tuples << " x " << field.components);
+  const auto count = static_cast<vtkIdType>(field.values.size());
+  if (field.integer) {
+    auto array = vtkSmartPointer<vtkIntArray>::New();
+    array->SetName(field.name.c_str());
+    array->SetNumberOfComponents(field.components);
+    array->SetNumberOfTuples(tuples);
+    for (vtkIdType i = 0; i < count; ++i) {
+      array->SetValue(i, static_cast<int>(std::lround(field.values[i])));
+    }
+    return array;
+  }
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(field.name.c_str());
+  array->SetNumberOfComponents(field.components);
+  array->SetNumberOfTuples(tuples);
+  for (vtkIdType i = 0; i < count; ++i)
+    array->SetValue(i, field.values[i]);
+  return array;
+}
+
+vtkNew<vtkUnstructuredGrid> make_grid(const Mesh& mesh) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(mesh.num_nodes());
+  for (int i = 0; i < mesh.num_nodes(); ++i) {
+    points->SetPoint(i, mesh.nodes[i].x(), mesh.nodes[i].y(), 0.0);
+  }
+  vtkNew<vtkCellArray> cells;
+  cells->AllocateExact(mesh.num_triangles(), 3 * mesh.num_triangles());
+  for (const auto& tri : mesh.triangles) {
+    const vtkIdType ids[3] = {tri[0], tri[1], tri[2]};
+    cells->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->SetCells(VTK_TRIANGLE, cells);
+  return grid;
+}
+
+/// A name in the target's folder that no other process uses, so the rename is atomic.
+std::filesystem::path temporary_name(const std::filesystem::path& path) {
+  std::filesystem::path tmp = path;
+  tmp += ".tmp" + std::to_string(::getpid());
+  return tmp;
+}
+
+} // namespace
+
+void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
+               const std::vector<VtkField>& point_fields, const std::vector<VtkField>& cell_fields,
+               const VtkText& field_data) {
+  const std::string where = path.string();
+  const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  SIG_VERIFY(std::filesystem::is_directory(folder),
+             where << ": folder " << folder.string() << " does not exist");
+  auto grid = make_grid(mesh);
+  for (const auto& field : point_fields) {
+    grid->GetPointData()->AddArray(make_array(field, mesh.num_nodes(), where));
+  }
+  for (const auto& field : cell_fields) {
+    grid->GetCellData()->AddArray(make_array(field, mesh.num_triangles(), where));
+  }
+  for (const auto& [name, text] : field_data) {
+    vtkNew<vtkStringArray> strings;
+    strings->SetName(name.c_str());
+    strings->InsertNextValue(text);
+    grid->GetFieldData()->AddArray(strings);
+  }
+
+  const auto tmp = temporary_name(path);
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetInputData(grid);
+  writer->SetFileName(tmp.string().c_str());
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff(); // raw binary: smaller and faster than base64
+  writer->SetCompressorTypeToZLib();
+  const int ok = writer->Write();
+  if (ok != 1 || writer->GetErrorCode() != 0) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw Error(where + ": VTK could not write the file (error code " +
+                std::to_string(writer->GetErrorCode()) + ")");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  SIG_VERIFY(!ec, where << ": cannot rename " << tmp.string() << ": " << ec.message());
+}
+
+void write_pvd(const std::filesystem::path& path, const std::vector<PvdStep>& steps) {
+  std::ostringstream xml;
+  xml.precision(17);
+  xml << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "  <Collection>\n";
+  for (const auto& step : steps) {
+    SIG_VERIFY(std::isfinite(step.time),
+               path.string() << ": step '" << step.file << "' has a non-finite time");
+    SIG_VERIFY(step.file.find_first_of("\"<>&") == std::string::npos,
+               path.string() << ": file name '" << step.file << "' needs XML escaping");
+    xml << "    <DataSet timestep=\"" << step.time << "\" group=\"\" part=\"0\" file=\""
+        << step.file << "\"/>\n";
+  }
+  xml << "  </Collection>\n</VTKFile>\n";
+  write_file_atomically(path, xml.str());
+}
+
+} // namespace sig

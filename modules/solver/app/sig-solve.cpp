@@ -1,0 +1,68 @@
+// sig-solve DATAFILE [-o OUTDIR]: the static solution, written to OUTDIR/case.b.
+//
+//   SOLVER method=linear|alm|penalty|pdas|projection linear=cholmod|umfpack|mumps
+//          r= gamma= c= eps= maxit=
+//
+// Reads case.tae (sig-assemble) and, when the datafile has a CONTACT card, case.cont
+// (sig-contact). Non-convergence of a contact method is a result: the stage exits 0 and the DS
+// records converged = 0 with the iteration history ("Nv" in the tables).
+#include "contact/contact_elements.hpp"
+#include "core/datafile.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/stage.hpp"
+#include "solver/solution_ds.hpp"
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  return sig::run_stage("solve", [&] {
+    // 1. Arguments and the SOLVER card.
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "solve");
+    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const bool has_contact = datafile.find("CONTACT") != nullptr;
+    const sig::Card* card = datafile.find("SOLVER");
+    const sig::Card defaults;
+    const sig::Card& solver = card ? *card : defaults;
+    const std::string backend = solver.choice("linear", {"cholmod", "umfpack", "mumps"}, "cholmod");
+    const std::string method =
+        solver.choice("method", {"linear", "alm", "penalty", "pdas", "projection"},
+                      has_contact ? "pdas" : "linear");
+    if (method == "linear" && has_contact)
+      solver.fail("method",
+                  "the datafile has a CONTACT card: choose alm, penalty, pdas or projection");
+    if (method != "linear" && !has_contact)
+      solver.fail("method", "method " + method + " needs a CONTACT card");
+
+    sig::ContactSolverParameters parameters;
+    parameters.method = method;
+    parameters.r = solver.real("r", parameters.r);
+    parameters.gamma = solver.real("gamma", parameters.gamma);
+    parameters.c = solver.real("c", parameters.c);
+    parameters.eps = solver.real("eps", parameters.eps);
+    parameters.max_iterations =
+        static_cast<int>(solver.integer("maxit", parameters.max_iterations));
+    for (const char* positive : {"r", "gamma", "c", "eps", "maxit"})
+      if (solver.has(positive) && solver.real(positive) <= 0)
+        solver.fail(positive, "must be positive");
+
+    // 2. The assembled system and the contact elements.
+    const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
+
+    // 3. Solve.
+    sig::StaticSolution solution;
+    if (method == "linear") {
+      solution = sig::solve_linear_elasticity(system, backend);
+    } else {
+      const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));
+      solution = sig::solve_static_contact(system, contact, parameters, backend);
+    }
+
+    // 4. Write case.b and report.
+    sig::write_solution(args.ds_path("b"), solution, method, backend, datafile.title());
+    std::cout << "sig-solve: " << method << " (" << backend << "), " << solution.unknowns
+              << " dofs, " << (solution.converged ? "converged" : "NOT converged (Nv)") << " in "
+              << solution.history.size() << " iterations, solve " << solution.seconds["solve"]
+              << " s -> " << args.ds_path("b").string() << "\n";
+  });
+}

@@ -1,0 +1,56 @@
+#pragma once
+// Sparse direct solvers behind one interface, MODULEF's habit of "same arguments, different
+// module": a caller picks CHOLMOD, UMFPACK or MUMPS by name at run time and nothing else changes.
+// The symbolic analysis (ordering, elimination tree) depends on the pattern only, so a Newton or
+// active-set loop calls analyze() once and factorize() at every iteration.
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace sig {
+
+/// What the caller knows about the matrix; it selects the factorization (LL^T, LDL^T, LU).
+enum class MatrixKind { spd, symmetric, general };
+
+class LinearSolver {
+public:
+  virtual ~LinearSolver();
+
+  /// Symbolic analysis (fill-reducing ordering). Valid while the sparsity pattern stays.
+  virtual void analyze(const Eigen::SparseMatrix<double>& A) = 0;
+  /// Numeric factorization. Analyzes first if nothing is analyzed or the pattern changed
+  /// (pattern_fingerprint), so a new pattern costs an analysis, never a wrong factor.
+  /// Throws sig::Error with the backend's status if the matrix is singular or, for an spd
+  /// factorization, not positive definite.
+  virtual void factorize(const Eigen::SparseMatrix<double>& A) = 0;
+  /// x = A^{-1} b with the last factorization.
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+  /// Several right sides at once (columns of B); the default solves them one by one.
+  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  /// Expressions (A * x, b - c) land here instead of being ambiguous between the two above.
+  /// Backends that override solve() bring it back with `using LinearSolver::solve;`.
+  template <class Derived> auto solve(const Eigen::MatrixBase<Derived>& B) const {
+    if constexpr (Derived::ColsAtCompileTime == 1)
+      return solve(Eigen::VectorXd(B));
+    else
+      return solve(Eigen::MatrixXd(B));
+  }
+  virtual std::string name() const = 0;
+};
+
+/// Identifies a sparsity pattern (dimensions, column starts, row indices; not the values).
+std::uint64_t pattern_fingerprint(const Eigen::SparseMatrix<double>& A);
+
+/// Backend names accepted by make_linear_solver.
+inline constexpr const char* linear_solver_names = "cholmod|umfpack|mumps";
+
+/// `name` is one of cholmod|umfpack|mumps; an unknown name, or a kind the backend cannot
+/// factorize (CHOLMOD is spd only), is a sig::Error that lists the choices.
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, MatrixKind kind);
+
+std::string to_string(MatrixKind kind);
+
+} // namespace sig

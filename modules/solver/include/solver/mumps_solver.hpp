@@ -1,0 +1,45 @@
+#pragma once
+// Sequential MUMPS adapter: multifrontal LDL^T (SYM = 1 spd, 2 symmetric) or LU (SYM = 0),
+// METIS ordering when MUMPS was built with it (else MUMPS's automatic choice).
+//
+// With Schur variables it performs MUMPS's partial factorization (ICNTL(19)): the interior
+// block K_ii is factorized and S = K_cc - K_ci K_ii^{-1} K_ic comes out of the same pass. Solves
+// then act on the interior problem only: x_i = K_ii^{-1} b_i and x_c = 0 (ICNTL(26) = 0).
+#include "solver/linear_solver.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace sig {
+
+class MumpsSolver final : public LinearSolver {
+public:
+  /// schur_dofs: sorted 0-based variables kept out of the factorization; empty for a plain
+  /// solver.
+  explicit MumpsSolver(MatrixKind kind, std::vector<int> schur_dofs = {});
+  ~MumpsSolver() override;
+  MumpsSolver(const MumpsSolver&) = delete;
+  MumpsSolver& operator=(const MumpsSolver&) = delete;
+
+  using LinearSolver::solve;
+  void analyze(const Eigen::SparseMatrix<double>& A) override;
+  /// Throws sig::Error with INFOG(1) and INFOG(2) on failure; workspace shortages (-8, -9,
+  /// -14, -15) are retried with a larger ICNTL(14) first.
+  void factorize(const Eigen::SparseMatrix<double>& A) override;
+  /// MUMPS keeps its solve workspace in the instance: solve() is const for the caller but two
+  /// threads must not solve with the same instance at once.
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const override;
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const override;
+  std::string name() const override { return "mumps"; }
+  /// Ordering used by the last analysis (INFOG(7)): "metis", "scotch", "pord", "amd", ...
+  std::string ordering() const;
+  /// The Schur complement of the last factorization (full symmetric matrix for SYM > 0),
+  /// rows and columns in the order of schur_dofs.
+  Eigen::MatrixXd schur_complement() const;
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+} // namespace sig

@@ -1,0 +1,68 @@
+#pragma once
+// Static condensation of a linear bulk onto its contact dofs. Where the bulk is linear, contact
+// lives on Gamma3 only: with c the interface dofs (the 2 dofs of every Gamma3 node) and i the
+// others,
+//   [K_ii K_ic] [u_i]   [f_i]          S u_c = f_c - K_ci K_ii^{-1} f_i,
+//   [K_ci K_cc] [u_c] = [f_c]   <=>    u_i   = K_ii^{-1} (f_i - K_ic u_c),
+// with S = K_cc - K_ci K_ii^{-1} K_ic. One sparse factorization of K_ii then serves every
+// iteration of a contact solver, which works on the small dense S.
+//
+// K may be singular (a semi-coercive problem such as Hertz keeps rigid modes) as long as K_ii,
+// the bulk with the interface clamped, is positive definite: S is then positive semi-definite
+// with the rigid modes restricted to c as its kernel. K itself is never factorized.
+#include "solver/linear_solver.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sig {
+
+namespace detail {
+/// Solves K_ii y = r (columns of r in interior order); one kind per backend path (schur.cpp).
+class InteriorSolver;
+} // namespace detail
+
+class SchurComplement {
+public:
+  /// K: n x n symmetric, stored full, reduced to free dofs. interface_dofs: sorted, distinct,
+  /// 0-based, at least one and fewer than n. backend: cholmod|umfpack|mumps; "mumps" takes
+  /// K_ii's factor and S from one partial factorization (ICNTL(19)), the others factorize K_ii
+  /// and solve for the columns of K_ic in blocks. kind describes K_ii (spd for a clamped bulk).
+  SchurComplement(const Eigen::SparseMatrix<double>& K, std::vector<int> interface_dofs,
+                  const std::string& backend, MatrixKind kind = MatrixKind::spd);
+  ~SchurComplement();
+  SchurComplement(const SchurComplement&) = delete;
+  SchurComplement& operator=(const SchurComplement&) = delete;
+
+  /// S (m x m, symmetric), rows and columns in the order of interface_dofs().
+  const Eigen::MatrixXd& matrix() const { return S_; }
+  /// The condensed load f_c - K_ci K_ii^{-1} f_i of a full load f (size n).
+  Eigen::VectorXd condense(const Eigen::VectorXd& f) const;
+  /// The full displacement: u_c on the interface, u_i = K_ii^{-1} (f_i - K_ic u_c) inside.
+  Eigen::VectorXd expand(const Eigen::VectorXd& f, const Eigen::VectorXd& u_c) const;
+
+  const std::vector<int>& interface_dofs() const { return interface_; }
+  const std::vector<int>& interior_dofs() const { return interior_; }
+  int size() const { return static_cast<int>(interface_.size() + interior_.size()); }
+  const std::string& backend() const { return backend_; }
+  /// Wall-clock seconds of the analysis and factorization (for MUMPS: including S).
+  double seconds_factorize() const { return seconds_factorize_; }
+  /// Wall-clock seconds spent forming S after the factorization (block solves, symmetrization).
+  double seconds_schur() const { return seconds_schur_; }
+
+private:
+  std::string backend_;
+  std::vector<int> interface_;
+  std::vector<int> interior_;
+  Eigen::SparseMatrix<double> K_ic_;
+  Eigen::MatrixXd S_;
+  std::unique_ptr<detail::InteriorSolver> interior_solver_;
+  double seconds_factorize_ = 0;
+  double seconds_schur_ = 0;
+
+  Eigen::VectorXd interior_part(const Eigen::VectorXd& v) const;
+  Eigen::VectorXd interface_part(const Eigen::VectorXd& v) const;
+};
+
+} // namespace sig

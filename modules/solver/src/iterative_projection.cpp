@@ -1,0 +1,92 @@
+// Iterative projection, thesis section 7.2, (7.16)-(7.22): the fixed point
+// u_n = -[-u_n - c lambda]_+ (7.18) solved with an implicit scheme on Gamma3 (7.19). Active
+// nodes get u_n = g (7.21); inactive nodes the Robin condition u_n(k+1) = u_n(k) + c lambda(k+1)
+// (7.22), i.e. lambda = (u_n(k+1) - u_n(k)) / c: a spring 1/c on the diagonal and u_n(k) / c on
+// the right side. A small c holds the inactive nodes back, hence more iterations (Table 7.1).
+#include "contact/complementarity.hpp"
+#include "solver/methods.hpp"
+
+namespace sig {
+
+namespace {
+
+/// Step (ii): A(k+1) = { p : (u_n,p - g_p) + c lambda_p >= 0 }.
+std::vector<char> active_set(const ContactProblem& problem, const Eigen::VectorXd& u,
+                             const Eigen::VectorXd& lambda, double c) {
+  const Eigen::VectorXd un = problem.normal_part(u);
+  std::vector<char> active(problem.contacts());
+  for (int p = 0; p < problem.contacts(); ++p)
+    active[p] = projection_is_active(lambda[p], un[p], problem.gap[p], c);
+  return active;
+}
+
+/// ||R*(u, lambda)|| of (7.23); the projection part is divided by c to read as a force.
+double residual(const ContactProblem& problem, const Eigen::VectorXd& u,
+                const Eigen::VectorXd& lambda, double c) {
+  const Eigen::VectorXd un = problem.normal_part(u);
+  double complementarity = 0;
+  for (int p = 0; p < problem.contacts(); ++p)
+    complementarity += std::pow(projection_residual(lambda[p], un[p], problem.gap[p], c) / c, 2);
+  return std::hypot(equilibrium_residual(problem, u, lambda),
+                    std::sqrt(complementarity) / std::max(problem.f.norm(), 1e-300));
+}
+
+} // namespace
+
+ContactSolution IterativeProjection::solve(const ContactProblem& problem) const {
+  const int m = problem.contacts();
+  const double c = p_.c;
+  ContactSolution s;
+  s.unknowns = problem.size();
+
+  // (i) x(0) = (0, 0).
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.size());
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m);
+  std::vector<char> previous_active;
+
+  for (int k = 0; k < p_.max_iterations; ++k) {
+    // (ii) active and inactive sets.
+    const std::vector<char> active = active_set(problem, u, lambda, c);
+
+    // (iii) (7.20) with u_n = g on A (7.21) and the Robin condition (7.22) on I.
+    const Eigen::VectorXd un_old = problem.normal_part(u);
+    Eigen::VectorXd robin_stiffness = Eigen::VectorXd::Zero(m);
+    Eigen::VectorXd robin_load = Eigen::VectorXd::Zero(m);
+    for (int p = 0; p < m; ++p)
+      if (!active[p]) {
+        robin_stiffness[p] = 1 / c;
+        robin_load[p] = un_old[p] / c;
+      }
+    LinearStep step;
+    if (!solve_linear_step(problem, active, robin_stiffness, robin_load, u, step)) {
+      s.failure = "the linearized system is singular (active set of " +
+                  std::to_string(count_active(active)) + " nodes)";
+      break;
+    }
+    Eigen::VectorXd lambda_new = step.reaction;
+    const Eigen::VectorXd un = problem.normal_part(step.u);
+    for (int p = 0; p < m; ++p)
+      if (!active[p]) lambda_new[p] = (un[p] - un_old[p]) / c;
+
+    const double increment = relative_change(stack(step.u, lambda_new), stack(u, lambda));
+    u = step.u;
+    lambda = lambda_new;
+    const double r = residual(problem, u, lambda, c);
+    s.history.push_back({count_active(active), r, increment});
+
+    // (iv)
+    if (increment <= p_.eps && r <= p_.eps && active == previous_active) {
+      s.converged = true;
+      s.active = active;
+      break;
+    }
+    previous_active = active;
+  }
+  if (!s.converged && s.failure.empty()) s.failure = "no convergence within the iteration limit";
+  if (s.active.empty()) s.active = active_set(problem, u, lambda, c);
+  s.u = u;
+  s.multiplier = lambda;
+  return s;
+}
+
+} // namespace sig

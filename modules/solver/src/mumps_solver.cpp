@@ -1,0 +1,254 @@
+#include "solver/mumps_solver.hpp"
+
+#include "core/error.hpp"
+
+#include <dmumps_c.h>
+
+#include <algorithm>
+
+namespace sig {
+
+namespace {
+
+constexpr int job_init = -1;
+constexpr int job_end = -2;
+constexpr int job_analyze = 1;
+constexpr int job_factorize = 2;
+constexpr int job_solve = 3;
+constexpr int use_comm_world = -987654; // sequential MUMPS: its fake MPI's world
+constexpr int max_workspace_retries = 6;
+
+int sym_of(MatrixKind kind) {
+  switch (kind) {
+  case MatrixKind::spd:
+    return 1;
+  case MatrixKind::symmetric:
+    return 2;
+  case MatrixKind::general:
+    return 0;
+  }
+  return 0;
+}
+
+bool workspace_shortage(int infog1) {
+  return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15;
+}
+
+std::string error_text(int infog1) {
+  switch (infog1) {
+  case -6:
+    return "structurally singular matrix";
+  case -10:
+    return "numerically singular matrix";
+  case -13:
+    return "allocation failed";
+  case -8:
+  case -9:
+  case -14:
+  case -15:
+    return "workspace too small";
+  case -16:
+    return "N out of range";
+  case -22:
+    return "invalid array pointer";
+  case -40:
+    return "matrix declared positive definite is not";
+  default:
+    return "see the MUMPS user guide, section 8";
+  }
+}
+
+} // namespace
+
+struct MumpsSolver::State {
+  DMUMPS_STRUC_C id{};
+  MatrixKind kind;
+  std::vector<int> schur_dofs;
+  std::vector<int> listvar_schur; ///< 1-based copy handed to MUMPS
+  std::vector<double> schur;      ///< m x m, column-major, filled by the factorization
+  std::vector<int> irn, jcn;      ///< 1-based coordinates of the entries passed (lower for SYM > 0)
+  std::vector<double> a;
+  /// For every stored entry of the Eigen matrix, its slot in `a`, or -1 if MUMPS does not see
+  /// it (upper triangle of a symmetric matrix): factorize() refills values without a search.
+  std::vector<int> slot;
+  std::uint64_t pattern = 0; ///< fingerprint of the analyzed pattern
+  bool analyzed = false;
+  bool factorized = false;
+
+  int& icntl(int i) { return id.icntl[i - 1]; }
+  int infog(int i) const { return id.infog[i - 1]; }
+
+  void call(int job) {
+    id.job = job;
+    dmumps_c(&id);
+  }
+  void verify(const char* phase) const {
+    SIG_VERIFY(infog(1) >= 0, "MUMPS: " << phase << " failed: INFOG(1) = " << infog(1)
+                                        << ", INFOG(2) = " << infog(2) << " ("
+                                        << error_text(infog(1)) << ")");
+  }
+};
+
+MumpsSolver::MumpsSolver(MatrixKind kind, std::vector<int> schur_dofs)
+    : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.kind = kind;
+  s.schur_dofs = std::move(schur_dofs);
+  SIG_VERIFY(std::is_sorted(s.schur_dofs.begin(), s.schur_dofs.end()) &&
+                 std::adjacent_find(s.schur_dofs.begin(), s.schur_dofs.end()) == s.schur_dofs.end(),
+             "MUMPS: Schur variables must be sorted and distinct");
+  s.id.par = 1;
+  s.id.sym = sym_of(kind);
+  s.id.comm_fortran = use_comm_world;
+  s.call(job_init);
+  s.verify("initialization");
+  // Failures come back as exceptions with INFOG(1); nothing is printed.
+  s.icntl(1) = -1;
+  s.icntl(2) = -1;
+  s.icntl(3) = -1;
+  s.icntl(4) = 0;
+  s.icntl(7) = 5; // METIS; MUMPS makes its automatic choice if it was built without it
+}
+
+MumpsSolver::~MumpsSolver() {
+  state_->call(job_end);
+}
+
+void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
+  SIG_VERIFY(A.rows() == A.cols(),
+             "MUMPS: matrix is " << A.rows() << " x " << A.cols() << ", not square");
+  State& s = *state_;
+  s.analyzed = false;
+  s.factorized = false;
+  const bool lower_only = s.id.sym != 0;
+  s.irn.clear();
+  s.jcn.clear();
+  s.a.clear();
+  s.slot.assign(static_cast<size_t>(A.nonZeros()), -1);
+  int k = 0;
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it, ++k) {
+      if (lower_only && it.row() < j) continue;
+      s.slot[static_cast<size_t>(k)] = static_cast<int>(s.a.size());
+      s.irn.push_back(static_cast<int>(it.row()) + 1);
+      s.jcn.push_back(j + 1);
+      s.a.push_back(it.value());
+    }
+  s.id.n = static_cast<int>(A.rows());
+  s.id.nnz = static_cast<MUMPS_INT8>(s.a.size());
+  s.id.irn = s.irn.data();
+  s.id.jcn = s.jcn.data();
+  s.id.a = s.a.data();
+
+  const int m = static_cast<int>(s.schur_dofs.size());
+  if (m > 0) {
+    SIG_VERIFY(s.schur_dofs.back() < A.rows(),
+               "MUMPS: Schur variable " << s.schur_dofs.back() << " out of range");
+    s.listvar_schur.resize(s.schur_dofs.size());
+    std::transform(s.schur_dofs.begin(), s.schur_dofs.end(), s.listvar_schur.begin(),
+                   [](int d) { return d + 1; });
+    // ICNTL(19) = 3 on a 1 x 1 process grid: the Schur complement returned centralized, by
+    // columns, in a user array (the MUMPS guide's recommended centralized form).
+    s.icntl(19) = 3;
+    s.id.size_schur = m;
+    s.id.listvar_schur = s.listvar_schur.data();
+    s.id.nprow = 1;
+    s.id.npcol = 1;
+    s.id.mblock = 100;
+    s.id.nblock = 100;
+  }
+  s.call(job_analyze);
+  s.verify("analysis");
+  s.pattern = pattern_fingerprint(A);
+  s.analyzed = true;
+}
+
+void MumpsSolver::factorize(const Eigen::SparseMatrix<double>& A) {
+  State& s = *state_;
+  if (!s.analyzed || s.pattern != pattern_fingerprint(A)) analyze(A);
+  s.factorized = false;
+  int k = 0;
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it, ++k) {
+      const int slot = s.slot[static_cast<size_t>(k)];
+      if (slot >= 0) s.a[static_cast<size_t>(slot)] = it.value();
+    }
+  s.id.a = s.a.data();
+
+  const int m = static_cast<int>(s.schur_dofs.size());
+  if (m > 0) {
+    s.schur.assign(static_cast<size_t>(m) * static_cast<size_t>(m), 0.0);
+    s.id.schur = s.schur.data();
+    s.id.schur_lld = m;
+  }
+  s.call(job_factorize);
+  for (int retry = 0; retry < max_workspace_retries && workspace_shortage(s.infog(1)); ++retry) {
+    // The analysis underestimated the frontal workspace (delayed pivots): relax and retry.
+    s.icntl(14) = std::max(2 * s.icntl(14), 40);
+    s.call(job_factorize);
+  }
+  s.verify("numeric factorization");
+  // SYM = 1 factorizes LDL^T without pivoting: a matrix that is not positive definite may
+  // still factorize, and only the count of negative pivots tells.
+  SIG_VERIFY(!(s.kind == MatrixKind::spd && s.infog(12) > 0),
+             "MUMPS: matrix declared positive definite is not: INFOG(12) = " << s.infog(12)
+                                                                             << " negative pivots");
+  s.factorized = true;
+}
+
+Eigen::VectorXd MumpsSolver::solve(const Eigen::VectorXd& b) const {
+  return solve(Eigen::MatrixXd(b)).col(0);
+}
+
+Eigen::MatrixXd MumpsSolver::solve(const Eigen::MatrixXd& B) const {
+  State& s = *state_;
+  SIG_VERIFY(s.factorized, "MUMPS: solve before a successful factorize");
+  SIG_VERIFY(B.rows() == s.id.n,
+             "MUMPS: right side has " << B.rows() << " rows, matrix " << s.id.n);
+  Eigen::MatrixXd X = B; // MUMPS overwrites the right sides with the solutions
+  if (X.cols() == 0) return X;
+  s.id.nrhs = static_cast<int>(X.cols());
+  s.id.lrhs = s.id.n;
+  s.id.rhs = X.data();
+  s.icntl(20) = 0; // dense right sides
+  s.icntl(21) = 0; // centralized solution
+  s.icntl(26) = 0; // with a Schur complement: interior problem only, x_c = 0
+  s.call(job_solve);
+  s.id.rhs = nullptr;
+  s.verify("solve");
+  return X;
+}
+
+std::string MumpsSolver::ordering() const {
+  if (!state_->analyzed) return "";
+  switch (state_->infog(7)) {
+  case 0:
+    return "amd";
+  case 2:
+    return "amf";
+  case 3:
+    return "scotch";
+  case 4:
+    return "pord";
+  case 5:
+    return "metis";
+  case 6:
+    return "qamd";
+  default:
+    return "other";
+  }
+}
+
+Eigen::MatrixXd MumpsSolver::schur_complement() const {
+  const State& s = *state_;
+  SIG_VERIFY(s.factorized && !s.schur_dofs.empty(),
+             "MUMPS: no Schur complement (no Schur variables, or not factorized)");
+  const int m = static_cast<int>(s.schur_dofs.size());
+  Eigen::MatrixXd S = Eigen::Map<const Eigen::MatrixXd>(s.schur.data(), m, m);
+  // ICNTL(19) = 3 returns both triangles (= 2 only the lower one, = 1 the lower by rows);
+  // mirroring the lower one makes S exactly symmetric whatever rounding did to the upper.
+  if (s.id.sym != 0) S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
+  return S;
+}
+
+} // namespace sig

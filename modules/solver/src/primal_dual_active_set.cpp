@@ -1,0 +1,79 @@
+// Primal-dual active set, thesis section 3.2, (3.20)-(3.32): a semi-smooth Newton method on the
+// complementarity function lambda - [lambda + gamma (u_n - g)]_+. Active nodes get the Dirichlet
+// condition u_n = g (3.31), inactive ones the Neumann condition lambda = 0 (3.32); no multiplier
+// unknowns are added to the system.
+#include "contact/complementarity.hpp"
+#include "solver/methods.hpp"
+
+namespace sig {
+
+namespace {
+
+/// Step (ii): A(k+1) = { p : lambda_p + gamma (u_n,p - g_p) >= 0 }.
+std::vector<char> active_set(const ContactProblem& problem, const Eigen::VectorXd& u,
+                             const Eigen::VectorXd& lambda, double gamma) {
+  const Eigen::VectorXd un = problem.normal_part(u);
+  std::vector<char> active(problem.contacts());
+  for (int p = 0; p < problem.contacts(); ++p)
+    active[p] = pdas_is_active(lambda[p], un[p], problem.gap[p], gamma);
+  return active;
+}
+
+/// ||R(u, lambda)|| of (3.21), relative to the load.
+double residual(const ContactProblem& problem, const Eigen::VectorXd& u,
+                const Eigen::VectorXd& lambda, double gamma) {
+  const Eigen::VectorXd un = problem.normal_part(u);
+  double complementarity = 0;
+  for (int p = 0; p < problem.contacts(); ++p)
+    complementarity +=
+        std::pow(lambda[p] - positive_part(lambda[p] + gamma * (un[p] - problem.gap[p])), 2);
+  return std::hypot(equilibrium_residual(problem, u, lambda),
+                    std::sqrt(complementarity) / std::max(problem.f.norm(), 1e-300));
+}
+
+} // namespace
+
+ContactSolution PrimalDualActiveSet::solve(const ContactProblem& problem) const {
+  const int m = problem.contacts();
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(m);
+  ContactSolution s;
+  s.unknowns = problem.size();
+
+  // (i) x(0) = (0, 0).
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.size());
+  Eigen::VectorXd lambda = none;
+  std::vector<char> previous_active;
+
+  for (int k = 0; k < p_.max_iterations; ++k) {
+    // (ii) active and inactive sets from the current iterate.
+    const std::vector<char> active = active_set(problem, u, lambda, p_.gamma);
+
+    // (iii) equilibrium with u_n = g on A (3.31) and lambda = 0 on I (3.32).
+    LinearStep step;
+    if (!solve_linear_step(problem, active, none, none, u, step)) {
+      s.failure = "the linearized system is singular (active set of " +
+                  std::to_string(count_active(active)) + " nodes)";
+      break;
+    }
+    const double increment = relative_change(stack(step.u, step.reaction), stack(u, lambda));
+    u = step.u;
+    lambda = step.reaction;
+    const double r = residual(problem, u, lambda, p_.gamma);
+    s.history.push_back({count_active(active), r, increment});
+
+    // (iv) stop when the iterate no longer moves, R vanishes and A(k+1) = A(k).
+    if (increment <= p_.eps && r <= p_.eps && active == previous_active) {
+      s.converged = true;
+      s.active = active;
+      break;
+    }
+    previous_active = active;
+  }
+  if (!s.converged && s.failure.empty()) s.failure = "no convergence within the iteration limit";
+  if (s.active.empty()) s.active = active_set(problem, u, lambda, p_.gamma);
+  s.u = u;
+  s.multiplier = lambda;
+  return s;
+}
+
+} // namespace sig

@@ -1,0 +1,102 @@
+// CONT files: a write/read round trip keeps every field, 1-based numbering on disk, and a
+// damaged file is refused with the name of the file and of the array.
+#include "contact/contact_elements.hpp"
+#include "core/ds.hpp"
+#include "core/error.hpp"
+#include "square_mesh.hpp"
+
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <string>
+
+namespace sig {
+namespace {
+
+std::filesystem::path temp_path(const std::string& name) {
+  const auto dir = std::filesystem::path(testing::TempDir()) / "sig_test_contact";
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+void expect_same(const ContactElements& a, const ContactElements& b) {
+  EXPECT_EQ(a.num_nodes, b.num_nodes);
+  EXPECT_EQ(a.ref, b.ref);
+  EXPECT_EQ(a.thickness, b.thickness);
+  EXPECT_EQ(a.node, b.node);
+  EXPECT_EQ(a.lagrange_node, b.lagrange_node);
+  EXPECT_EQ(a.normal, b.normal);
+  EXPECT_EQ(a.gap, b.gap);
+  EXPECT_EQ(a.weight, b.weight);
+  EXPECT_EQ(a.law, b.law);
+  EXPECT_EQ(a.obstacle.kind, b.obstacle.kind);
+  EXPECT_EQ(a.obstacle.point, b.obstacle.point);
+  EXPECT_EQ(a.obstacle.normal, b.obstacle.normal);
+  EXPECT_EQ(a.obstacle.radius, b.obstacle.radius);
+}
+
+TEST(ContIo, RoundTripPlaneAndDisc) {
+  const Mesh mesh = test::square_mesh(4, 1.0, 0.125, test::scrambled(4));
+  const HalfPlane plane({0, 0}, {0.1, 1});
+  const Disc disc({0.5, -3}, 3);
+  for (const Obstacle* obstacle :
+       {static_cast<const Obstacle*>(&plane), static_cast<const Obstacle*>(&disc)}) {
+    const ContactElements written = build_contact_elements(mesh, 3, *obstacle, 0.01, 0.5);
+    const auto path = temp_path("case_" + obstacle->kind() + ".cont");
+    write_cont(path, written, "round trip");
+    expect_same(read_cont(path), written);
+
+    // On disk the numbering is 1-based and Lagrange nodes follow the mesh nodes.
+    const Ds ds = read_ds(path, "CONT");
+    EXPECT_EQ(ds.header.creator, "sig-contact");
+    const auto node = ds.ints("node");
+    const auto lagrange = ds.ints("lagrange_node");
+    for (int i = 0; i < written.size(); ++i) {
+      EXPECT_EQ(node[i], written.node[i] + 1);
+      EXPECT_EQ(lagrange[i], mesh.num_nodes() + i + 1);
+    }
+    EXPECT_EQ(ds.shape("normal"), (std::vector<std::int64_t>{written.size(), 2}));
+    EXPECT_EQ(ds.integer("num_nodes"), mesh.num_nodes());
+    EXPECT_EQ(ds.text("obstacle_kind"), obstacle->kind());
+  }
+}
+
+// A CONT file rewritten with one array changed.
+std::filesystem::path damaged(const std::string& array, const std::vector<std::int64_t>& values) {
+  const Mesh mesh = test::square_mesh(2);
+  const auto path = temp_path("damaged_" + array + ".cont");
+  write_cont(path, build_contact_elements(mesh, 3, HalfPlane({0, 0}, {0, 1})));
+  Ds ds = read_ds(path, "CONT");
+  ds.put(array, values);
+  write_ds(path, ds);
+  return path;
+}
+
+void expect_error_naming(const std::filesystem::path& path, const std::string& what) {
+  try {
+    read_cont(path);
+    ADD_FAILURE() << "no error for " << what;
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+    EXPECT_NE(message.find(what), std::string::npos) << message;
+  }
+}
+
+TEST(ContIo, InconsistentFilesAreRefused) {
+  // 3 elements on a 9-node mesh: nodes 1, 2, 3; Lagrange nodes 10, 11, 12.
+  expect_error_naming(damaged("lagrange_node", {10, 12, 11}), "lagrange_node");
+  expect_error_naming(damaged("node", {1, 2, 10}), "node");
+  expect_error_naming(damaged("law", {1, 7, 1}), "law");
+  expect_error_naming(damaged("node", {1, 2}), "length");
+}
+
+TEST(ContIo, OtherKindIsRefused) {
+  const auto path = temp_path("not_cont.ds");
+  Ds ds("MILI", "not contact", "test");
+  ds.put_int("num_nodes", 1);
+  write_ds(path, ds);
+  EXPECT_THROW(read_cont(path), Error);
+}
+
+} // namespace
+} // namespace sig

@@ -1,0 +1,107 @@
+// What stage mains share: the command line, the output folder, the catch-all, the log lines.
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/stage.hpp"
+#include "scratch_folder.hpp"
+
+#include <ctime>
+#include <gtest/gtest.h>
+#include <regex>
+#include <stdexcept>
+
+namespace sig {
+namespace {
+
+using sig::testing::ScratchFolder;
+
+StageArgs parse(std::vector<std::string> words) {
+  std::vector<char*> argv;
+  for (auto& w : words)
+    argv.push_back(w.data());
+  return parse_stage_args(static_cast<int>(argv.size()), argv.data(), "mesh");
+}
+
+TEST(Stage, ExplicitOutputFolderIsCreated) {
+  ScratchFolder dir;
+  const auto out = dir / "runs" / "n8";
+  const StageArgs args = parse({"sig-mesh", "decks/hertz.dat", "-o", out.string()});
+  EXPECT_EQ(args.datafile, std::filesystem::path("decks/hertz.dat"));
+  EXPECT_EQ(args.outdir, out);
+  EXPECT_TRUE(std::filesystem::is_directory(out));
+  EXPECT_EQ(args.ds_path("nopo"), out / "case.nopo");
+  // -o may come first.
+  EXPECT_EQ(parse({"sig-mesh", "-o", out.string(), "x.dat"}).outdir, out);
+}
+
+TEST(Stage, DefaultOutputFolderIsOutSlashStem) {
+  ScratchFolder dir;
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());
+  StageArgs args;
+  EXPECT_NO_THROW(args = parse({"sig-mesh", "datafiles/hertz_n8.dat"}));
+  const bool created = std::filesystem::is_directory(dir / "out" / "hertz_n8");
+  std::filesystem::current_path(cwd);
+  EXPECT_EQ(args.outdir, std::filesystem::path("out/hertz_n8"));
+  EXPECT_TRUE(created);
+  EXPECT_EQ(args.ds_path("tae"), std::filesystem::path("out/hertz_n8/case.tae"));
+}
+
+TEST(Stage, BadCommandLinesGiveTheUsage) {
+  const std::vector<std::vector<std::string>> bad = {{"sig-mesh"},
+                                                     {"sig-mesh", "a.dat", "b.dat"},
+                                                     {"sig-mesh", "a.dat", "-o"},
+                                                     {"sig-mesh", "-x", "a.dat"},
+                                                     {"sig-mesh", "-o", "out"}};
+  for (const auto& words : bad) {
+    try {
+      parse(words);
+      ADD_FAILURE() << words.size();
+    } catch (const Error& e) {
+      EXPECT_STREQ(e.what(), "usage: sig-mesh DATAFILE [-o OUTDIR]");
+    }
+  }
+}
+
+TEST(Stage, RunStageTurnsExceptionsIntoExitCodeOne) {
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(run_stage("solve", [] {}), 0);
+  EXPECT_EQ(run_stage("solve", [] { throw InputError("d.dat", 3, "r", "must be positive"); }), 1);
+  EXPECT_EQ(run_stage("sig-post", [] { throw std::runtime_error("disk full"); }), 1);
+  EXPECT_EQ(run_stage("mesh", [] { throw 42; }), 1);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("sig-solve: error: d.dat:3: field 'r': must be positive\n"), std::string::npos)
+      << err;
+  EXPECT_NE(err.find("sig-post: error: disk full\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("sig-mesh: error:"), std::string::npos) << err;
+}
+
+TEST(Stage, DsDateIsTodayAsYyMmDd) {
+  const std::string date = ds_date();
+  ASSERT_TRUE(std::regex_match(date, std::regex(R"(\d\d/\d\d/\d\d)"))) << date;
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  EXPECT_EQ(std::stoi(date.substr(0, 2)), local.tm_year % 100);
+  EXPECT_EQ(std::stoi(date.substr(3, 2)), local.tm_mon + 1);
+}
+
+TEST(Log, LinesArePrefixedAndProgressIsQuietOffATerminal) {
+  ::testing::internal::CaptureStderr(); // a file, not a terminal
+  log_info("mesh: 1234 vertices");
+  log_warning("nu close to 0.5");
+  Progress progress("march", 4);
+  for (long step = 1; step <= 4; ++step)
+    progress.update(step, "t=0.1");
+  progress.finish("energy 1.5");
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("[sig] mesh: 1234 vertices\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("[sig] warning: nu close to 0.5\n"), std::string::npos) << err;
+  // Updates within 5 s print nothing; the final line is printed once, without \r.
+  EXPECT_EQ(err.find("t=0.1"), std::string::npos) << err;
+  EXPECT_EQ(err.find('\r'), std::string::npos) << err;
+  EXPECT_NE(err.find("[sig] march 4/4 (100%)"), std::string::npos) << err;
+  EXPECT_NE(err.find("energy 1.5\n"), std::string::npos) << err;
+}
+
+} // namespace
+} // namespace sig

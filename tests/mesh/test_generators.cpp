@@ -1,0 +1,228 @@
+// Generated thesis geometries: counts, references, exact areas of the inscribed polygons,
+// mirror symmetry of the ring. half_disc and disc run gmsh at small N.
+#include "core/error.hpp"
+#include "mesh/generators.hpp"
+#include "mesh_testing.hpp"
+
+#include <bit>
+#include <numbers>
+#include <set>
+
+namespace sig {
+namespace {
+
+double area(const Mesh& mesh) {
+  double sum = 0;
+  for (int t = 0; t < mesh.num_triangles(); ++t)
+    sum += 0.5 * signed_double_area(mesh, t);
+  return sum;
+}
+
+/// Every referenced edge that bounds one triangle runs as in that triangle (domain on the left).
+void expect_domain_on_the_left(const Mesh& mesh) {
+  std::set<std::pair<int, int>> sides;
+  for (const auto& t : mesh.triangles) {
+    for (int j = 0; j < 3; ++j)
+      sides.insert({t[j], t[(j + 1) % 3]});
+  }
+  for (const auto& e : mesh.edges) {
+    EXPECT_TRUE(sides.count({e.a, e.b})) << "edge " << e.a << "-" << e.b << " ref " << e.ref;
+  }
+}
+
+int find_node(const Mesh& mesh, const Eigen::Vector2d& x) {
+  for (int i = 0; i < mesh.num_nodes(); ++i) {
+    if (mesh.nodes[i] == x) return i;
+  }
+  return -1;
+}
+
+TEST(HalfDisc, ArcNodesReferencesAndArea) {
+  if (!testing::have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  const double R = 8;
+  const int N = 16;
+  const Mesh mesh = half_disc(R, N);
+  const std::vector<int> arc = mesh.nodes_with_ref(3);
+  EXPECT_EQ(arc.size(), static_cast<std::size_t>(N + 1));
+  EXPECT_EQ(mesh.edges_with_ref(3).size(), static_cast<std::size_t>(N));
+  for (const auto& e : mesh.edges_with_ref(3)) { // uniform chords pi R / N subtends
+    EXPECT_NEAR((mesh.nodes[e.a] - mesh.nodes[e.b]).norm(),
+                2 * R * std::sin(std::numbers::pi / (2 * N)), 1e-12);
+  }
+  for (int i : arc)
+    EXPECT_NEAR((mesh.nodes[i] - Eigen::Vector2d(0, R)).norm(), R, 1e-12);
+  const int top = find_node(mesh, {0, R});
+  ASSERT_GE(top, 0) << "top centre is not a node";
+  EXPECT_EQ(mesh.vertex_ref[top], 1);
+  EXPECT_EQ(mesh.nodes_with_ref(1), std::vector<int>{top});
+  EXPECT_GE(find_node(mesh, {0, 0}), 0) << "lowest arc node must be (0, 0)";
+  for (const auto& e : mesh.edges_with_ref(2)) {
+    EXPECT_EQ(mesh.nodes[e.a].y(), R);
+    EXPECT_EQ(mesh.nodes[e.b].y(), R);
+  }
+  expect_domain_on_the_left(mesh);
+  // The polygon is N triangles of apex angle pi / N at the centre; close to pi R^2 / 2.
+  EXPECT_NEAR(area(mesh), N * 0.5 * R * R * std::sin(std::numbers::pi / N), 1e-11);
+  EXPECT_NEAR(area(mesh), std::numbers::pi * R * R / 2, std::numbers::pi * R * R / N);
+}
+
+TEST(HalfDisc, DeterministicAndGraded) {
+  if (!testing::have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  const Mesh a = half_disc(1, 32), b = half_disc(1, 32);
+  EXPECT_EQ(a.nodes, b.nodes);
+  EXPECT_EQ(a.triangles, b.triangles);
+  const Mesh graded = half_disc(1, 32, 0.5);
+  EXPECT_LT(graded.num_triangles(), a.num_triangles());
+  EXPECT_EQ(graded.nodes_with_ref(3).size(), 33u);
+  // Uniform size h = pi / 32: about (pi / 2) / (sqrt(3) h^2 / 4) equilateral triangles.
+  const double h = std::numbers::pi / 32;
+  const double equilateral = (std::numbers::pi / 2) / (std::sqrt(3.0) * h * h / 4);
+  EXPECT_GT(a.num_triangles(), 0.7 * equilateral);
+  EXPECT_LT(a.num_triangles(), 1.5 * equilateral);
+}
+
+TEST(HalfDisc, RejectsOddN) {
+  EXPECT_THROW(half_disc(1, 15), Error);
+}
+
+TEST(Disc, QuartersAndArea) {
+  if (!testing::have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  const Eigen::Vector2d c(10, 10);
+  const double R = 10;
+  const int N = 32;
+  const Mesh mesh = disc(c, R, N);
+  const double s = R / std::sqrt(2.0);
+  for (int ref = 1; ref <= 4; ++ref) {
+    EXPECT_EQ(mesh.edges_with_ref(ref).size(), static_cast<std::size_t>(N / 4)) << ref;
+    for (int i : mesh.nodes_with_ref(ref)) {
+      const Eigen::Vector2d d = mesh.nodes[i] - c;
+      EXPECT_NEAR(d.norm(), R, 1e-12);
+      if (ref == 1) {
+        EXPECT_LE(d.x(), -s + 1e-12);
+      }
+      if (ref == 2) {
+        EXPECT_GE(d.y(), s - 1e-12);
+      }
+      if (ref == 3) {
+        EXPECT_LE(d.y(), -s + 1e-12);
+      }
+      if (ref == 4) {
+        EXPECT_GE(d.x(), s - 1e-12);
+      }
+    }
+  }
+  EXPECT_GE(find_node(mesh, {10, 0}), 0) << "lowest node must touch x2 = 0";
+  expect_domain_on_the_left(mesh);
+  EXPECT_NEAR(area(mesh), N * 0.5 * R * R * std::sin(2 * std::numbers::pi / N), 1e-10);
+}
+
+TEST(Ring, ThesisCountsAtN128) {
+  const Mesh mesh = ring({0, 10}, 9, 10, 128);
+  EXPECT_EQ(mesh.num_nodes(), 896); // 1792 dofs
+  EXPECT_EQ(mesh.num_triangles(), 2 * 128 * 6);
+  EXPECT_EQ(mesh.nodes_with_ref(3).size(), 97u);
+  EXPECT_EQ(mesh.edges_with_ref(3).size(), 96u); // 3N/4
+  EXPECT_EQ(mesh.edges_with_ref(2).size(), 32u);
+  EXPECT_EQ(mesh.edges_with_ref(4).size(), 128u);
+  std::vector<int> ab;
+  for (int i = 0; i < mesh.num_nodes(); ++i) {
+    if (mesh.vertex_ref[i] == 1) ab.push_back(i);
+  }
+  EXPECT_EQ(ab.size(), 5u); // outer nodes with x2 >= 19.9
+  for (int i : ab)
+    EXPECT_GE(mesh.nodes[i].y(), 19.9);
+  int bottom = 0;
+  for (const auto& x : mesh.nodes)
+    bottom += x.y() == 0.0;
+  EXPECT_EQ(bottom, 1);
+  EXPECT_GE(find_node(mesh, {0, 0}), 0);
+  EXPECT_EQ(ring({0, 10}, 9, 10, 256).num_triangles(), 6144); // thesis, N = 256
+}
+
+TEST(Ring, ExactMirrorSymmetry) {
+  // x1 - cx is exact for cx = 0 and within one binade (cx = 100); cx = 12 spans 2 .. 22.
+  for (const Eigen::Vector2d& c :
+       {Eigen::Vector2d(0, 10), Eigen::Vector2d(100, 100), Eigen::Vector2d(12, 5)}) {
+    const int N = 64, layers = 4;
+    const Mesh mesh = ring(c, 9, 10, N, {layers, {}, {}});
+    EXPECT_EQ(mesh.num_nodes(), N * layers);
+    EXPECT_EQ(mesh.num_triangles(), 2 * N * (layers - 1));
+    // Bits of (x1 - cx, x2) -> node; each node's mirror has -(x1 - cx) bit for bit.
+    std::map<std::pair<std::uint64_t, std::uint64_t>, int> at;
+    auto key = [](double dx, double y) {
+      return std::make_pair(std::bit_cast<std::uint64_t>(dx + 0.0),
+                            std::bit_cast<std::uint64_t>(y));
+    };
+    for (int i = 0; i < mesh.num_nodes(); ++i)
+      at[key(mesh.nodes[i].x() - c.x(), mesh.nodes[i].y())] = i;
+    std::vector<int> mirror(mesh.num_nodes(), -1);
+    for (int i = 0; i < mesh.num_nodes(); ++i) {
+      const auto it = at.find(key(-(mesh.nodes[i].x() - c.x()), mesh.nodes[i].y()));
+      ASSERT_NE(it, at.end()) << "node " << i << " has no exact mirror";
+      mirror[i] = it->second;
+      EXPECT_EQ(std::abs(mesh.nodes[i].x() - c.x()), std::abs(mesh.nodes[mirror[i]].x() - c.x()));
+      EXPECT_EQ(mesh.vertex_ref[i], mesh.vertex_ref[mirror[i]]);
+    }
+    // Triangles and referenced edges map onto triangles and edges of the same reference.
+    std::set<std::array<int, 3>> triangles;
+    for (auto t : mesh.triangles) {
+      std::sort(t.begin(), t.end());
+      triangles.insert(t);
+    }
+    for (const auto& t : mesh.triangles) {
+      std::array<int, 3> m = {mirror[t[0]], mirror[t[1]], mirror[t[2]]};
+      std::sort(m.begin(), m.end());
+      EXPECT_TRUE(triangles.count(m));
+    }
+    std::map<std::uint64_t, int> edges;
+    for (const auto& e : mesh.edges)
+      edges[edge_key(e.a, e.b)] = e.ref;
+    for (const auto& e : mesh.edges)
+      EXPECT_EQ(edges.at(edge_key(mirror[e.a], mirror[e.b])), e.ref);
+    expect_domain_on_the_left(mesh);
+    const double polygon = N * 0.5 * std::sin(2 * std::numbers::pi / N) * (100 - 81);
+    EXPECT_NEAR(area(mesh), polygon, 1e-9);
+  }
+}
+
+TEST(Ring, DefaultLayers) {
+  EXPECT_EQ(default_ring_layers(128), 7);
+  EXPECT_EQ(default_ring_layers(256), 13);
+  EXPECT_EQ(default_ring_layers(512), 25);
+  EXPECT_EQ(default_ring_layers(16), 2);
+  EXPECT_THROW(ring({0, 0}, 10, 9, 16), Error);
+  EXPECT_THROW(ring({0, 0}, 9, 10, 15), Error);
+}
+
+TEST(Rectangle, CountsReferencesAndArea) {
+  const Mesh mesh = rectangle(5, 1, 10, 2);
+  EXPECT_EQ(mesh.num_nodes(), 33);
+  EXPECT_EQ(mesh.num_triangles(), 40);
+  EXPECT_EQ(mesh.edges_with_ref(3).size(), 10u); // bottom
+  EXPECT_EQ(mesh.edges_with_ref(4).size(), 2u);  // right
+  EXPECT_EQ(mesh.edges_with_ref(2).size(), 10u); // top
+  EXPECT_EQ(mesh.edges_with_ref(1).size(), 2u);  // left
+  for (int i : mesh.nodes_with_ref(3))
+    EXPECT_EQ(mesh.nodes[i].y(), 0.0);
+  for (int i : mesh.nodes_with_ref(4))
+    EXPECT_EQ(mesh.nodes[i].x(), 5.0);
+  EXPECT_EQ(mesh.vertex_ref[find_node(mesh, {0, 0})], 3);
+  EXPECT_EQ(mesh.vertex_ref[find_node(mesh, {5, 0})], 3);
+  EXPECT_EQ(mesh.vertex_ref[find_node(mesh, {0, 1})], 2);
+  EXPECT_EQ(mesh.vertex_ref[find_node(mesh, {5, 1})], 2);
+  EXPECT_NEAR(area(mesh), 5.0, 1e-12);
+  expect_domain_on_the_left(mesh);
+  // Alternating diagonals: both directions occur, and node (1, 1) (index 12) has 8 triangles.
+  int around = 0;
+  for (const auto& t : mesh.triangles)
+    around += std::count(t.begin(), t.end(), 12);
+  EXPECT_EQ(around, 8);
+
+  const Mesh sq = square(1, 4, {1, 1, 2, 1});
+  EXPECT_EQ(sq.num_nodes(), 25);
+  EXPECT_EQ(sq.edges_with_ref(1).size(), 12u);
+  EXPECT_EQ(sq.references(), (std::vector<int>{1, 2}));
+}
+
+} // namespace
+} // namespace sig

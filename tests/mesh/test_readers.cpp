@@ -1,0 +1,192 @@
+// gmsh (2.2 and 4.1) and FreeFem .msh readers on small files written here.
+#include "core/error.hpp"
+#include "mesh/freefem.hpp"
+#include "mesh/gmsh.hpp"
+#include "mesh/mesh_card.hpp"
+#include "mesh_testing.hpp"
+
+namespace sig {
+namespace {
+
+using testing::ScratchFolder;
+using testing::write_file;
+
+// The unit square cut into 4 triangles around its centre; node 60 is a geometry point that no
+// element uses, triangle 5 is clockwise, the bottom line runs backwards, the top line is listed
+// twice and one line has no physical tag.
+const char* square_v22 = R"($MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+2
+1 3 "contact zone"
+2 7 "body"
+$EndPhysicalNames
+$Nodes
+6
+10 0 0 0
+20 1 0 0
+30 1 1 0
+40 0 1 0
+50 0.5 0.5 0
+60 5 5 0
+$EndNodes
+$Elements
+9
+1 15 2 1 1 10
+2 1 2 3 1 20 10
+3 1 2 0 2 20 30
+4 2 2 7 1 10 20 50
+5 2 2 7 1 20 50 30
+6 2 2 7 1 30 40 50
+7 2 2 7 1 40 10 50
+8 1 2 4 3 30 40
+9 1 2 4 3 40 30
+$EndElements
+)";
+
+// The same mesh in format 4.1: physical tags on entities, one parametric node block.
+const char* square_v41 = R"($MeshFormat
+4.1 0 8
+$EndMeshFormat
+$Entities
+2 2 1 0
+1 0 0 0 1 1
+2 5 5 0 0
+1 0 0 0 1 0 0 1 3 2 1 -2
+2 0 1 0 1 1 0 1 4 0
+1 0 0 0 1 1 0 1 7 2 1 2
+$EndEntities
+$Nodes
+4 6 10 60
+0 1 0 1
+10
+0 0 0
+0 2 0 1
+60
+5 5 0
+1 1 1 1
+20
+1 0 0 0.5
+2 1 0 3
+30
+40
+50
+1 1 0
+0 1 0
+0.5 0.5 0
+$EndNodes
+$Elements
+4 8 1 8
+0 1 15 1
+1 10
+1 1 1 1
+2 20 10
+1 2 1 1
+3 30 40
+2 1 2 4
+4 10 20 50
+5 20 50 30
+6 30 40 50
+7 40 10 50
+$EndElements
+)";
+
+void expect_square(const Mesh& mesh) {
+  ASSERT_EQ(mesh.num_nodes(), 5); // node 60 dropped, the others in file order
+  EXPECT_EQ(mesh.nodes[1], Eigen::Vector2d(1, 0));
+  EXPECT_EQ(mesh.nodes[4], Eigen::Vector2d(0.5, 0.5));
+  ASSERT_EQ(mesh.num_triangles(), 4);
+  for (int t = 0; t < 4; ++t)
+    EXPECT_DOUBLE_EQ(signed_double_area(mesh, t), 0.5);
+  EXPECT_EQ(mesh.subdomain, std::vector<int>(4, 7));
+  ASSERT_EQ(mesh.edges.size(), 2u);
+  EXPECT_EQ(mesh.edges[0].a, 0); // turned round: domain on the left
+  EXPECT_EQ(mesh.edges[0].b, 1);
+  EXPECT_EQ(mesh.edges[0].ref, 3);
+  EXPECT_EQ(mesh.edges[1].a, 2);
+  EXPECT_EQ(mesh.edges[1].b, 3);
+  EXPECT_EQ(mesh.edges[1].ref, 4);
+  EXPECT_EQ(mesh.vertex_ref, (std::vector<int>{1, 0, 0, 0, 0}));
+  EXPECT_EQ(mesh.nodes_with_ref(3), (std::vector<int>{0, 1}));
+  EXPECT_EQ(mesh.references(), (std::vector<int>{1, 3, 4}));
+}
+
+TEST(GmshReader, Format22) {
+  const ScratchFolder dir;
+  write_file(dir / "square.msh", square_v22);
+  expect_square(read_gmsh(dir / "square.msh"));
+}
+
+TEST(GmshReader, Format41) {
+  const ScratchFolder dir;
+  write_file(dir / "square.msh", square_v41);
+  expect_square(read_gmsh(dir / "square.msh"));
+}
+
+/// Replace `from` by `to` in the 2.2 square, read it, and return the InputError.
+InputError gmsh_error(const std::string& from, const std::string& to) {
+  std::string text = square_v22;
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  const ScratchFolder dir;
+  write_file(dir / "bad.msh", text);
+  try {
+    read_gmsh(dir / "bad.msh");
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), (dir / "bad.msh").string());
+    return e;
+  }
+  ADD_FAILURE() << "accepted";
+  return InputError("", 0, "", "");
+}
+
+TEST(GmshReader, ErrorsNameTheLine) {
+  // Line 27 is element 8: 10-30 is a diagonal, not a side of the 4 triangles.
+  EXPECT_EQ(gmsh_error("8 1 2 4 3 30 40", "8 1 2 4 3 10 30").line(), 27);
+  const InputError quad = gmsh_error("3 1 2 0 2 20 30", "3 3 2 0 2 10 20 30 40");
+  EXPECT_EQ(quad.line(), 22);
+  EXPECT_NE(std::string(quad.what()).find("element type 3"), std::string::npos);
+  EXPECT_EQ(gmsh_error("7 2 2 7 1 40 10 50", "7 2 2 7 1 40 10 55").line(), 26);
+  EXPECT_EQ(gmsh_error("2.2 0 8", "2.2 1 8").line(), 2);
+  EXPECT_NE(std::string(gmsh_error("$EndElements", "").what()).find("unexpected end of file"),
+            std::string::npos);
+}
+
+TEST(FreeFemReader, SmallMesh) {
+  const ScratchFolder dir;
+  // Two triangles, the second clockwise; labels negative or 0 as FreeFem allows.
+  write_file(dir / "two.msh", "4 2 3\n0 0 1\n1 0 -2\n1 1 0\n0 1 0\n"
+                              "1 2 3 0\n1 4 3 5\n"
+                              "2 1 1\n2 3 3\n3 4 0\n");
+  const Mesh mesh = read_freefem_msh(dir / "two.msh");
+  ASSERT_EQ(mesh.num_triangles(), 2);
+  EXPECT_GT(signed_double_area(mesh, 1), 0);
+  EXPECT_EQ(mesh.subdomain, (std::vector<int>{1, 5}));
+  EXPECT_EQ(mesh.vertex_ref, (std::vector<int>{1, 2, 0, 0}));
+  ASSERT_EQ(mesh.edges.size(), 2u); // label 0 carries no reference
+  EXPECT_EQ(mesh.edges[0].a, 0);
+  EXPECT_EQ(mesh.edges[0].b, 1);
+  EXPECT_EQ(mesh.edges[1].ref, 3);
+
+  write_file(dir / "bad.msh", "4 2 0\n0 0 1\n1 0 -2\n1 1 0\n0 1 0\n1 2 3 0\n1 4 9 5\n");
+  try {
+    read_freefem_msh(dir / "bad.msh");
+    ADD_FAILURE() << "vertex 9 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 7);
+  }
+}
+
+TEST(MeshFile, DispatchesOnExtensionAndContent) {
+  const ScratchFolder dir;
+  write_file(dir / "g.msh", square_v22);
+  EXPECT_EQ(read_mesh_file(dir / "g.msh").num_nodes(), 5);
+  EXPECT_EQ(read_mesh_file(testing::shared_nopo("square3.msh")).num_nodes(), 16);
+  EXPECT_EQ(read_mesh_file(testing::shared_nopo("square3.nopo")).num_nodes(), 16);
+  EXPECT_THROW(read_mesh_file(dir / "g.vtk"), Error);
+}
+
+} // namespace
+} // namespace sig

@@ -1,0 +1,69 @@
+// sig-dump's library half: a DS written by write_ds reads back into the same description, the
+// DS magic tells DS files from NOPO, and the mesh summary counts what the mesh holds.
+#include "post/dump.hpp"
+
+#include "core/ds.hpp"
+#include "post_test_mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace sig {
+namespace {
+
+namespace fs = std::filesystem;
+
+Ds sample_ds() {
+  Ds ds("TAE", "assembled operators", "sig-assemble");
+  ds.put_int("ndof", 10);
+  ds.put("K_val", std::vector<double>{4.0, -1.0, 2.5, 1e-3, 7, 8, 9, 10, 11, 12}, {2, 5});
+  ds.put_text("method", "alm");
+  return ds;
+}
+
+TEST(Dump, DsFileIsRecognisedByItsMagic) {
+  const fs::path dir = fs::temp_directory_path() / ("sig_post_dump_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  write_ds(dir / "case.tae", sample_ds());
+  std::ofstream(dir / "case.nopo", std::ios::binary) << std::string("\0\0\0\x80 NOPO", 9);
+  EXPECT_TRUE(is_ds_file(dir / "case.tae"));
+  EXPECT_FALSE(is_ds_file(dir / "case.nopo"));
+
+  const Ds back = read_ds(dir / "case.tae");
+  const std::string json = dump_ds_json(back).dump(-1);
+  fs::remove_all(dir);
+  EXPECT_EQ(json.find("{\"kind\":\"TAE\",\"title\":\"assembled operators\","
+                      "\"creator\":\"sig-assemble\",\"date\":"),
+            0u);
+  EXPECT_NE(json.find("{\"name\":\"ndof\",\"type\":\"int64\",\"shape\":[1]}"), std::string::npos);
+  EXPECT_NE(json.find("{\"name\":\"K_val\",\"type\":\"float64\",\"shape\":[2,5]}"),
+            std::string::npos);
+  EXPECT_NE(json.find("{\"name\":\"method\",\"type\":\"text\""), std::string::npos);
+}
+
+TEST(Dump, TextShowsHeaderShapesAndFirstValues) {
+  const std::string text = dump_ds_text(sample_ds(), 3);
+  EXPECT_NE(text.find("DS TAE"), std::string::npos);
+  EXPECT_NE(text.find("assembled operators"), std::string::npos);
+  EXPECT_NE(text.find("sig-assemble"), std::string::npos);
+  EXPECT_NE(text.find("float64 [2 x 5]  4 -1 2.5 ..."), std::string::npos);
+  EXPECT_NE(text.find("int64 [1]  10\n"), std::string::npos);
+  EXPECT_NE(text.find("\"alm\""), std::string::npos);
+}
+
+TEST(Dump, MeshSummaryCountsTheMesh) {
+  const Mesh mesh = test::small_mesh();
+  const std::string json = dump_mesh_json(mesh, "small").dump(-1);
+  EXPECT_EQ(json, "{\"kind\":\"NOPO\",\"title\":\"small\",\"nodes\":5,\"triangles\":3,"
+                  "\"boundary_edges\":5,\"references\":[1,2,3,4],\"subdomains\":[1,2]}");
+  const std::string text = dump_mesh_text(mesh, "small");
+  EXPECT_NE(text.find("3 (2 edges, 3 nodes)"), std::string::npos);
+  EXPECT_NE(text.find("2 (2 triangles)"), std::string::npos);
+  EXPECT_NE(text.find("[0, 2] x [0, 1]"), std::string::npos);
+}
+
+} // namespace
+} // namespace sig

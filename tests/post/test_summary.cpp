@@ -1,0 +1,192 @@
+// summary.json and contact.csv: stable keys and header, the contact table joined from case.cont
+// and case.b with the sign conventions of the contact module, and the NaN guard of sig-post.
+#include "post/summary.hpp"
+
+#include "core/error.hpp"
+#include "post/contact_table.hpp"
+#include "post_test_mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace sig {
+namespace {
+
+// "\"key\":" as the one-line JSON writes it.
+std::string key_of(const char* key) {
+  std::string quoted = "\"";
+  quoted += key;
+  quoted += "\":";
+  return quoted;
+}
+
+// Contact on the bottom nodes 1, 5, 2 (1-based) against the plane x2 = -0.1, normal (0, 1).
+Ds bottom_contact() {
+  Ds cont("CONT", "bottom", "test");
+  cont.put("node", std::vector<std::int64_t>{1, 5, 2});
+  cont.put("lagrange_node", std::vector<std::int64_t>{6, 7, 8});
+  cont.put("normal", std::vector<double>{0, 1, 0, 1, 0, 1}, {3, 2});
+  cont.put("gap", std::vector<double>{0.1, 0.1, 0.1});
+  cont.put("weight", std::vector<double>{0.5, 1.0, 0.5});
+  cont.put("law", std::vector<std::int64_t>{1, 1, 1});
+  return cont;
+}
+
+Ds solved(const std::string& method) {
+  Ds b("B", "solution", "test");
+  // Node 5 (index 4) went down by the whole gap and touches; nodes 1 and 2 went down less.
+  std::vector<double> u(10, 0.0);
+  u[0] = 0.01, u[1] = -0.05;  // node 1
+  u[2] = -0.01, u[3] = -0.02; // node 2
+  u[8] = 0.0, u[9] = -0.1;    // node 5
+  b.put("u", u);
+  b.put_text("method", method);
+  b.put_text("linear", "cholmod");
+  b.put_int("converged", 1);
+  b.put_int("iterations", 4);
+  b.put_int("dofs", 13);
+  b.put("multiplier", std::vector<double>{0.0, 3.0, 0.0});
+  b.put("status", std::vector<std::int64_t>{0, 1, 0});
+  b.put("history_active", std::vector<std::int64_t>{3, 1, 1, 1});
+  b.put("history_residual", std::vector<double>{1.0, 0.5, 0.125, 0.0625});
+  b.put_scalar("time_factorize", 0.25);
+  b.put_scalar("time_solve", 0.5);
+  return b;
+}
+
+TEST(ContactTable, JoinsElementsWithTheirFinalState) {
+  const Mesh mesh = test::small_mesh();
+  const auto rows = contact_rows(mesh, bottom_contact(), solved("alm"));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].node, 1);
+  EXPECT_EQ(rows[1].node, 5);
+  EXPECT_EQ(rows[2].node, 2);
+  EXPECT_EQ(rows[1].x1, 1.0);
+  EXPECT_EQ(rows[1].x2, 0.0);
+  EXPECT_EQ(rows[0].u1, 0.01);
+  EXPECT_EQ(rows[0].u2, -0.05);
+  // u_n = -n . u: moving down by 0.05 against the normal (0, 1) closes the gap 0.1 to 0.05.
+  EXPECT_NEAR(rows[0].gap, 0.05, 1e-15);
+  EXPECT_NEAR(rows[1].gap, 0.0, 1e-15);
+  EXPECT_NEAR(rows[2].gap, 0.08, 1e-15);
+  EXPECT_EQ(rows[1].multiplier, 3.0);
+  EXPECT_EQ(rows[1].pressure, 3.0); // weight 1
+  EXPECT_TRUE(rows[1].contact);
+  EXPECT_FALSE(rows[0].contact);
+}
+
+TEST(ContactTable, DisagreeingSizesAndBadNodesAreErrors) {
+  const Mesh mesh = test::small_mesh();
+  Ds b = solved("pdas");
+  b.put("status", std::vector<std::int64_t>{0, 1});
+  EXPECT_THROW(contact_rows(mesh, bottom_contact(), b), Error);
+  Ds cont = bottom_contact();
+  cont.put("node", std::vector<std::int64_t>{1, 6, 2});
+  EXPECT_THROW(contact_rows(mesh, cont, solved("pdas")), Error);
+}
+
+TEST(ContactTable, CsvHeaderAndRows) {
+  const auto csv = contact_csv(contact_rows(test::small_mesh(), bottom_contact(), solved("alm")));
+  const std::string header = "node,x1,x2,u1,u2,gap,multiplier,pressure,status\n";
+  ASSERT_EQ(csv.substr(0, header.size()), header);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
+  EXPECT_NE(csv.find("\n5,1,0,0,-0.10000000000000001,0,3,3,contact\n"), std::string::npos);
+  EXPECT_NE(csv.find("\n1,0,0,0.01"), std::string::npos);
+  EXPECT_NE(csv.find(",free\n"), std::string::npos);
+}
+
+TEST(ContactTable, SamplesAreCentred) {
+  const auto rows = contact_rows(test::small_mesh(), bottom_contact(), solved("alm"));
+  const auto samples = pressure_samples(rows, 1.0);
+  EXPECT_EQ(samples[0].x, -1.0);
+  EXPECT_EQ(samples[1].x, 0.0);
+  EXPECT_EQ(samples[2].x, 1.0);
+  EXPECT_EQ(samples[1].weight, 1.0);
+}
+
+TEST(Summary, KeysInStableOrderWithValuesFromTheSolution) {
+  const Mesh mesh = test::small_mesh();
+  const Ds b = solved("alm");
+  const auto rows = contact_rows(mesh, bottom_contact(), b);
+  const std::string json = build_summary("Hertz N=8", mesh, b, rows, gather_times({&b})).dump(-1);
+  const char* keys[] = {
+      "title",     "method",      "converged",        "failure",           "iterations",
+      "dofs",      "multipliers", "contact_elements", "contact_nodes",     "nodes",
+      "triangles", "backend",     "residual_history", "increment_history", "active_history",
+      "times"};
+  std::size_t last = 0;
+  for (const char* key : keys) {
+    const auto at = json.find(key_of(key));
+    ASSERT_NE(at, std::string::npos) << key;
+    EXPECT_GT(at, last) << key;
+    last = at;
+  }
+  EXPECT_NE(json.find("\"method\":\"alm\""), std::string::npos);
+  EXPECT_NE(json.find("\"converged\":true"), std::string::npos);
+  EXPECT_NE(json.find("\"iterations\":4"), std::string::npos);
+  EXPECT_NE(json.find("\"multipliers\":3"), std::string::npos);
+  EXPECT_NE(json.find("\"contact_nodes\":1"), std::string::npos);
+  EXPECT_NE(json.find("\"nodes\":5,\"triangles\":3"), std::string::npos);
+  EXPECT_NE(json.find("\"backend\":\"cholmod\""), std::string::npos);
+  EXPECT_NE(json.find("\"residual_history\":[1,0.5,0.125,0.0625]"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"increment_history\":[]"), std::string::npos);
+  EXPECT_NE(json.find("\"active_history\":[3,1,1,1]"), std::string::npos);
+  EXPECT_NE(json.find("\"times\":{\"factorize\":0.25,\"solve\":0.5}"), std::string::npos);
+}
+
+TEST(Summary, MultipliersAreUnknownsOfAlmOnly) {
+  const Mesh mesh = test::small_mesh();
+  Ds b = solved("pdas");
+  b.put_int("converged", 0);
+  const auto rows = contact_rows(mesh, bottom_contact(), b);
+  const std::string json = build_summary("t", mesh, b, rows, {}).dump(-1);
+  EXPECT_NE(json.find("\"multipliers\":0"), std::string::npos);
+  EXPECT_NE(json.find("\"contact_elements\":3"), std::string::npos);
+  EXPECT_NE(json.find("\"converged\":false"), std::string::npos);
+  EXPECT_NE(json.find("\"times\":{}"), std::string::npos);
+}
+
+TEST(Summary, TimesOfLaterStagesReplaceEarlierOnes) {
+  Ds tae("TAE", "t", "test");
+  tae.put_scalar("time_assemble", 1.0);
+  tae.put_scalar("time_solve", 9.0);
+  tae.put_scalar("timeless", 3.0);
+  Ds b("B", "t", "test");
+  b.put_scalar("time_solve", 2.0);
+  const auto times = gather_times({&tae, nullptr, &b});
+  ASSERT_EQ(times.size(), 2u);
+  EXPECT_EQ(times[0], (std::pair<std::string, double>{"assemble", 1.0}));
+  EXPECT_EQ(times[1], (std::pair<std::string, double>{"solve", 2.0}));
+}
+
+TEST(Summary, NanInTheSolutionIsRefusedWithItsDof) {
+  std::vector<double> u(20, 1.0);
+  EXPECT_NO_THROW(verify_finite(u, "out/case.b", "u"));
+  u[16] = std::numeric_limits<double>::quiet_NaN();
+  try {
+    verify_finite(u, "out/case.b", "u");
+    FAIL() << "NaN accepted";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "out/case.b: array 'u' holds NaN at dof 17");
+  }
+  u[16] = 0;
+  u[3] = -std::numeric_limits<double>::infinity();
+  EXPECT_THROW(verify_finite(u, "case.b", "u"), Error);
+}
+
+TEST(Summary, HertzJsonHasTheReferenceBesideOurs) {
+  const HertzData d;
+  PressureError e;
+  e.p_max = 14.4;
+  const std::string json = hertz_json(d, e).dump(-1);
+  for (const char* key :
+       {"b", "p0", "p_max", "p_max_rel_error", "half_width", "half_width_error", "l2_rel_error"}) {
+    EXPECT_NE(json.find(key_of(key)), std::string::npos) << key;
+  }
+  EXPECT_NE(json.find("\"p_max\":14.4"), std::string::npos);
+}
+
+} // namespace
+} // namespace sig

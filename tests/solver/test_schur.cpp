@@ -1,0 +1,153 @@
+// Static condensation onto interface dofs: S against the dense formula, the semi-coercive case
+// (singular K, positive definite K_ii), and MUMPS's partial factorization against the generic
+// block solves.
+#include "solver/schur.hpp"
+#include "test_linear_problems.hpp"
+
+#include "core/error.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+namespace sig {
+namespace {
+
+class SchurTest : public testing::TestWithParam<std::string> {};
+
+// K clamped on its left edge, interface = the top edge: compare with dense linear algebra.
+TEST_P(SchurTest, MatchesDenseFormulaOnSpdMatrix) {
+  const test::Grid g{7, 5};
+  const Eigen::SparseMatrix<double> K = test::clamped_stiffness(g);
+  const int n = static_cast<int>(K.rows());
+  // free dofs are numbered after removing the left edge: node (i, j) with i > 0 has free index
+  // 2 (j nx + i - 1) + a; the top edge is j = ny.
+  std::vector<int> c;
+  for (int i = 1; i <= g.nx; ++i)
+    for (int a = 0; a < 2; ++a)
+      c.push_back(2 * (g.ny * g.nx + i - 1) + a);
+  const std::vector<int> i_dofs = test::complement(c, n);
+
+  const SchurComplement schur(K, c, GetParam());
+  const Eigen::MatrixXd Kd(K);
+  auto block = [&](const std::vector<int>& r, const std::vector<int>& s) {
+    Eigen::MatrixXd B(r.size(), s.size());
+    for (size_t p = 0; p < r.size(); ++p)
+      for (size_t q = 0; q < s.size(); ++q)
+        B(p, q) = Kd(r[p], s[q]);
+    return B;
+  };
+  const Eigen::MatrixXd K_ii = block(i_dofs, i_dofs), K_ic = block(i_dofs, c);
+  const Eigen::LLT<Eigen::MatrixXd> llt(K_ii);
+  const Eigen::MatrixXd S = block(c, c) - K_ic.transpose() * llt.solve(K_ic);
+  EXPECT_LT((schur.matrix() - S).norm(), 1e-12 * S.norm());
+  EXPECT_EQ(schur.interface_dofs(), c);
+  EXPECT_EQ(schur.interior_dofs(), i_dofs);
+
+  // condense, solve the small system, expand: the solution of the full system
+  const Eigen::VectorXd x = test::manufactured(n);
+  const Eigen::VectorXd f = K * x;
+  const Eigen::VectorXd u_c = schur.matrix().llt().solve(schur.condense(f));
+  const Eigen::VectorXd u = schur.expand(f, u_c);
+  EXPECT_LT((u - x).norm() / x.norm(), 1e-10);
+}
+
+// Semi-coercive: the free-floating rectangle (K has the 3 rigid motions as kernel) with the
+// whole boundary as interface, so that K_ii is positive definite and K is never factorized.
+TEST_P(SchurTest, SingularStiffnessWithClampedInteriorIsCondensed) {
+  const test::Grid g{12, 9};
+  const Eigen::SparseMatrix<double> K = test::elasticity_stiffness(g);
+  const std::vector<int> c = test::dofs_where(g, [&](int i, int j) { return g.on_boundary(i, j); });
+  const SchurComplement schur(K, c, GetParam());
+  const Eigen::MatrixXd& S = schur.matrix();
+  const int m = static_cast<int>(c.size());
+  ASSERT_EQ(S.rows(), m);
+  EXPECT_EQ((S - S.transpose()).norm(), 0.0);
+
+  // Kernel: the rigid motions restricted to the interface, and nothing else.
+  const Eigen::MatrixXd R = test::rigid_modes(g);
+  Eigen::MatrixXd R_c(m, 3);
+  for (int k = 0; k < m; ++k)
+    R_c.row(k) = R.row(c[k]);
+  EXPECT_LT((S * R_c).norm(), 1e-12 * S.norm() * R_c.norm());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(S);
+  const Eigen::VectorXd lambda = eig.eigenvalues(); // ascending
+  const double scale = lambda[m - 1];
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LT(std::abs(lambda[k]), 1e-12 * scale) << k;
+  EXPECT_GT(lambda[3], 1e-6 * scale); // positive semi-definite with a 3-dimensional kernel
+
+  // A consistent load (f = K x is orthogonal to the kernel): the exact interface values give
+  // back x, and any solution of the singular S u_c = g gives x up to a rigid motion.
+  const Eigen::VectorXd x = test::manufactured(g.dofs());
+  const Eigen::VectorXd f = K * x;
+  Eigen::VectorXd x_c(m);
+  for (int k = 0; k < m; ++k)
+    x_c[k] = x[c[k]];
+  EXPECT_LT((schur.expand(f, x_c) - x).norm() / x.norm(), 1e-10);
+  const Eigen::VectorXd gc = schur.condense(f);
+  EXPECT_LT((S * x_c - gc).norm(), 1e-10 * gc.norm());
+  EXPECT_LT((R_c.transpose() * gc).norm(), 1e-10 * gc.norm()); // compatible right side
+
+  // minimum-norm solution of the singular interface problem through the eigenbasis
+  Eigen::VectorXd u_c = Eigen::VectorXd::Zero(m);
+  for (int k = 3; k < m; ++k)
+    u_c += eig.eigenvectors().col(k) * (eig.eigenvectors().col(k).dot(gc) / lambda[k]);
+  const Eigen::VectorXd u = schur.expand(f, u_c);
+  EXPECT_LT((K * u - f).norm() / f.norm(), 1e-10);
+  const Eigen::VectorXd d = u - x; // must be rigid: its projection on the rigid modes is itself
+  const Eigen::VectorXd rigid = R * R.colPivHouseholderQr().solve(d);
+  EXPECT_LT((d - rigid).norm(), 1e-9 * x.norm());
+}
+
+TEST_P(SchurTest, InvalidInterfaceIsAnError) {
+  const Eigen::SparseMatrix<double> K = test::clamped_stiffness({4, 4});
+  const int n = static_cast<int>(K.rows());
+  EXPECT_THROW(SchurComplement(K, {}, GetParam()), Error);
+  EXPECT_THROW(SchurComplement(K, {3, 1}, GetParam()), Error);
+  EXPECT_THROW(SchurComplement(K, {1, 1}, GetParam()), Error);
+  EXPECT_THROW(SchurComplement(K, {0, n}, GetParam()), Error);
+  const SchurComplement schur(K, {0, 1}, GetParam());
+  EXPECT_THROW(schur.condense(Eigen::VectorXd::Zero(n - 1)), Error);
+  EXPECT_THROW(schur.expand(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(3)), Error);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllBackends, SchurTest, testing::Values("cholmod", "umfpack", "mumps"));
+
+// MUMPS's partial factorization (ICNTL(19)) and the block solves of CHOLMOD agree on a 2D
+// elasticity problem of a few thousand dofs, the interface being the bottom edge and the lower
+// sides (a contact zone), K free-floating.
+TEST(Schur, MumpsPartialFactorizationMatchesBlockSolves) {
+  const test::Grid g{40, 30};
+  const Eigen::SparseMatrix<double> K = test::elasticity_stiffness(g);
+  const std::vector<int> c = test::dofs_where(
+      g, [&](int i, int j) { return j == 0 || ((i == 0 || i == g.nx) && j <= 10); });
+  const SchurComplement mumps(K, c, "mumps");
+  const SchurComplement cholmod(K, c, "cholmod");
+  const Eigen::MatrixXd& S = cholmod.matrix();
+  EXPECT_LT((mumps.matrix() - S).norm(), 1e-10 * S.norm());
+  EXPECT_EQ((mumps.matrix() - mumps.matrix().transpose()).norm(), 0.0);
+
+  const Eigen::VectorXd x = test::manufactured(g.dofs(), 0.4);
+  const Eigen::VectorXd f = K * x;
+  EXPECT_LT((mumps.condense(f) - cholmod.condense(f)).norm(), 1e-10 * f.norm());
+  Eigen::VectorXd x_c(c.size());
+  for (size_t k = 0; k < c.size(); ++k)
+    x_c[Eigen::Index(k)] = x[c[k]];
+  EXPECT_LT((mumps.expand(f, x_c) - x).norm() / x.norm(), 1e-10);
+  EXPECT_GT(mumps.seconds_factorize(), 0.0);
+}
+
+// Also for a symmetric K_ii factorized as indefinite (MUMPS SYM = 2): same S.
+TEST(Schur, MumpsSymmetricKindMatchesSpdKind) {
+  const test::Grid g{10, 8};
+  const Eigen::SparseMatrix<double> K = test::elasticity_stiffness(g);
+  const std::vector<int> c = test::dofs_where(g, [](int, int j) { return j == 0; });
+  const SchurComplement spd(K, c, "mumps", MatrixKind::spd);
+  const SchurComplement sym(K, c, "mumps", MatrixKind::symmetric);
+  const SchurComplement lu(K, c, "umfpack", MatrixKind::general);
+  EXPECT_LT((spd.matrix() - sym.matrix()).norm(), 1e-10 * spd.matrix().norm());
+  EXPECT_LT((spd.matrix() - lu.matrix()).norm(), 1e-10 * spd.matrix().norm());
+}
+
+} // namespace
+} // namespace sig
