@@ -24,6 +24,29 @@
 #include <iostream>
 #include <optional>
 
+namespace {
+
+/// COMPARE analytic=hertz R= f= [x0=]: the pressure on Gamma3 against thesis (7.38), with the
+/// elastic constants of the (single) Hooke material.
+sig::Json hertz_comparison(const sig::Card& compare, const sig::MaterialTable& materials,
+                           const std::vector<sig::ContactRow>& contact) {
+  compare.choice("analytic", {"hertz"});
+  if (contact.empty()) compare.fail("analytic", "a Hertz comparison needs a CONTACT card");
+  if (materials.entries.size() != 1)
+    compare.fail("analytic", "a Hertz comparison needs a single material");
+  sig::HertzData data;
+  data.radius = compare.real("R");
+  data.traction = compare.real("f");
+  data.young = materials.entries.front().hooke.E;
+  data.poisson = materials.entries.front().hooke.nu;
+  if (data.radius <= 0) compare.fail("R", "must be positive");
+  if (data.traction <= 0) compare.fail("f", "must be positive");
+  const auto samples = sig::pressure_samples(contact, compare.real("x0", 0.0));
+  return sig::hertz_json(data, sig::hertz_pressure_error(data, samples));
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
   return sig::run_stage("sig-post", [&] {
     // 1. Command line, datafile and the OUTPUT card.
@@ -73,7 +96,9 @@ int main(int argc, char** argv) {
       tae = sig::read_ds(args.ds_path("tae"), "TAE");
     const auto times =
         sig::gather_times({tae ? &*tae : nullptr, contact_case ? &cont : nullptr, &solution});
-    const sig::Json summary = sig::build_summary(datafile.title(), mesh, solution, contact, times);
+    sig::Json summary = sig::build_summary(datafile.title(), mesh, solution, contact, times);
+    if (const sig::Card* compare = datafile.find("COMPARE"))
+      summary.set("hertz", hertz_comparison(*compare, materials, contact));
     const auto summary_path = args.outdir / "summary.json";
     sig::write_file_atomically(summary_path, summary.dump() + "\n");
     std::cout << summary_path.string() << "\n";

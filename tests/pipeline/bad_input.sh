@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Requirement: bad input gets a clear message naming file, line and field, and a non-zero exit;
+# nothing already written is damaged.
+set -euo pipefail
+bin=${SIG_BIN:?SIG_BIN is not set}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+good=$work/good.dat
+sed -e 's/N=256/N=32/' datafiles/scene7a/hertz.dat > "$good"
+drivers/chain.sh "$good" -o "$work/out" > /dev/null 2>&1
+before=$(cd "$work/out" && sha256sum case.* | sha256sum)
+failures=0
+
+# expect STAGE DECK_LINE_EDIT EXPECTED_TEXT...: apply a sed edit to the good deck, run the
+# stage, require a non-zero exit and every expected text in its message (field names are
+# case-insensitive in datafiles, so is the match).
+expect() {
+  local stage=$1 edit=$2
+  shift 2
+  local deck=$work/bad.dat
+  sed -e "$edit" "$good" > "$deck"
+  local message status=0
+  message=$("$bin/sig-$stage" "$deck" -o "$work/out" 2>&1) || status=$?
+  if [ "$status" -eq 0 ]; then
+    echo "FAIL ($stage, $edit): exit 0"; failures=$((failures + 1)); return
+  fi
+  for text in "$@"; do
+    if ! grep -qiF -- "$text" <<< "$message"; then
+      echo "FAIL ($stage, $edit): message lacks '$text': $message"; failures=$((failures + 1))
+    fi
+  done
+}
+
+expect mesh      's/^MESH/MESSH/'                         "bad.dat:" "unknown card" "MESSH"
+expect mesh      's/ N=32/ N=33/'                         "bad.dat:" "'N'"
+expect material  's/nu=0.3/nu=0.5/'                       "bad.dat:" "'nu'" "0.5"
+expect material  's/plane=strain/plane=strain thickness=-1/' "bad.dat:" "'thickness'"
+expect material  's/E=150/E=abc/'                         "bad.dat:" "'E'" "abc"
+expect contact   's/^CONTACT ref=3/CONTACT ref=7/'        "bad.dat:" "'ref'"
+expect contact   's/normal=0,1/normal=0,0/'               "bad.dat:" "'normal'"
+expect assemble  's/^TRACTION ref=2/TRACTION ref=9/'      "bad.dat:" "'ref'"
+expect solve     's/method=pdas/method=newton/'           "bad.dat:" "'method'" "newton"
+expect solve     's/eps=1e-5/eps=-1/'                     "bad.dat:" "'eps'"
+expect solve     's/^SOLVER /SOLVER colour=red /'         "bad.dat:" "'colour'"
+
+# A truncated and a corrupted DS are refused with the file and array named.
+cp "$work/out/case.tae" "$work/keep.tae"
+head -c 5000 "$work/keep.tae" > "$work/out/case.tae"
+message=$("$bin/sig-solve" "$good" -o "$work/out" 2>&1) && { echo "FAIL: truncated TAE accepted"; failures=$((failures + 1)); }
+grep -q "case.tae" <<< "$message" && grep -q "truncated" <<< "$message" || { echo "FAIL: truncated TAE message: $message"; failures=$((failures + 1)); }
+cp "$work/keep.tae" "$work/out/case.tae"
+size=$(stat -c %s "$work/out/case.tae")
+printf '\xff' | dd of="$work/out/case.tae" bs=1 seek=$((size / 2)) conv=notrunc status=none
+message=$("$bin/sig-solve" "$good" -o "$work/out" 2>&1) && { echo "FAIL: corrupted TAE accepted"; failures=$((failures + 1)); }
+grep -q "CRC" <<< "$message" && grep -q "array '" <<< "$message" || { echo "FAIL: corrupted TAE message: $message"; failures=$((failures + 1)); }
+cp "$work/keep.tae" "$work/out/case.tae"
+
+# Nothing the good run wrote was touched by the failed ones.
+after=$(cd "$work/out" && sha256sum case.* | sha256sum)
+[ "$before" = "$after" ] || { echo "FAIL: a failed stage changed a DS file"; failures=$((failures + 1)); }
+
+[ "$failures" -eq 0 ] || exit 1
+echo "bad_input: 13 bad inputs refused with file, line and field; DS files intact"
