@@ -230,9 +230,10 @@ TEST(Datafile, SchemaDeclaresEveryCardWithHelp) {
       EXPECT_GT(std::strlen(field.help), 0u) << spec.keyword << " " << field.name;
     }
   }
-  EXPECT_EQ(keywords,
-            (std::set<std::string>{"TITLE", "MESH", "MATERIAL", "DIRICHLET", "TRACTION", "PRESSURE",
-                                   "BODYFORCE", "CONTACT", "SOLVER", "OUTPUT"}));
+  // The cards every stage of the static chain reads are declared.
+  for (const char* keyword : {"TITLE", "MESH", "MATERIAL", "DIRICHLET", "TRACTION", "PRESSURE",
+                              "BODYFORCE", "CONTACT", "SOLVER", "OUTPUT"})
+    EXPECT_TRUE(keywords.count(keyword)) << keyword;
   // Repeatable cards can appear twice; single cards cannot.
   EXPECT_NO_THROW(Datafile::parse("DIRICHLET ref=1 ux=0\nDIRICHLET ref=2 uy=0\n", "d.dat"));
   EXPECT_THROW(Datafile::parse("OUTPUT vtk=no\nOUTPUT vtk=yes\n", "d.dat"), InputError);
@@ -244,7 +245,7 @@ TEST(Datafile, SchemaDeclaresEveryCardWithHelp) {
       "DIRICHLET ref=1 ux=0 uy=0\nTRACTION ref=1 f=0,1\nPRESSURE ref=1 p=2\n"
       "BODYFORCE region=1 f=0,-1\n"
       "CONTACT ref=2 obstacle=plane point=0,0 normal=0,-1 law=signorini gap=0\n"
-      "SOLVER linear=mumps method=alm r=1 gamma=1 c=1 eps=1e-10 maxit=50 condense=yes start=0\n"
+      "SOLVER linear=mumps method=alm r=1 gamma=1 c=1 eps=1e-10 maxit=50\n"
       "OUTPUT vtk=yes name=x\n",
       "all.dat"));
 }
