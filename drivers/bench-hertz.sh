@@ -37,6 +37,7 @@ die() {
   exit 1
 }
 
+invocation="drivers/bench-hertz.sh${*:+ $*}"
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${SIG_BIN:-$root/build/bin}
 python=${PYTHON:-/usr/bin/python3}
@@ -93,7 +94,8 @@ write_deck() {
     -e "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/")
   [ -z "$grading" ] || edits+=(-e "/^[[:space:]]*MESH[[:space:]]/ s/([[:space:]])grading=[^[:space:]]+/\1grading=$grading/")
   if [ "$method" = linear ]; then
-    edits+=(-e "/^[[:space:]]*CONTACT[[:space:]]/ c\\
+    # The COMPARE card (Hertz) needs contact: the floor problem has none.
+    edits+=(-e "/^[[:space:]]*COMPARE[[:space:]]/ d" -e "/^[[:space:]]*CONTACT[[:space:]]/ c\\
 DIRICHLET ref=3 uy=0"
       -e "/^[[:space:]]*SOLVER[[:space:]]/ {
         s/[[:space:]](r|gamma|c|eps|maxit)=[^[:space:]]+//g
@@ -181,7 +183,8 @@ if [ $getfem -eq 1 ]; then
 fi
 
 {
-  echo "command: drivers/bench-hertz.sh --n $n${grading:+ --grading $grading} --repeat $repeat -o $out$([ $getfem -eq 0 ] && echo ' --no-getfem')"
+  echo "command: $invocation"
+  echo "outdir: $out"
   echo "grading: $(sed -nE '/^[[:space:]]*MESH[[:space:]]/ s/.*[[:space:]]grading=([^[:space:]]+).*/\1/p' "$out/base/hertz.dat")"
   echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"

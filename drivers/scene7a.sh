@@ -41,6 +41,7 @@ die() {
   exit 1
 }
 
+invocation="drivers/scene7a.sh${*:+ $*}"
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${SIG_BIN:-$root/build/bin}
 python=${PYTHON:-/usr/bin/python3}
@@ -167,7 +168,8 @@ variant() {
 }
 
 {
-  echo "command: drivers/scene7a.sh $([ $quick -eq 1 ] && echo --quick) -o $out"
+  echo "command: $invocation"
+  echo "outdir: $out"
   echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo "host: $(uname -n), $(nproc) cores"
   echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"

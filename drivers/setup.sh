@@ -31,3 +31,18 @@ if [ ! -f "$SIG_BUILD/CMakeCache.txt" ]; then
   cmake -S "$SIG_ROOT" -B "$SIG_BUILD" -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$SIG_BUILD" -j "$jobs"
+
+# ParaView's Python module for pvbatch: Debian's python3-paraview conflicts with python3-vtk9,
+# which libvtk9-dev needs, so it is unpacked into the build folder instead of installed
+# (never `apt-get install python3-paraview` on a build machine: it removes libvtk9-dev).
+pvpy=$SIG_BUILD/paraview-python
+if command -v pvbatch > /dev/null && [ ! -d "$pvpy/usr/lib/python3/dist-packages/paraview" ]; then
+  download=$(mktemp -d)
+  if (cd "$download" && apt-get download python3-paraview > /dev/null 2>&1) &&
+    dpkg -x "$download"/python3-paraview_*.deb "$pvpy"; then
+    echo "setup: unpacked ParaView's Python module into $pvpy"
+  else
+    echo "setup: could not unpack python3-paraview; the screenshot test will draw with plain VTK"
+  fi
+  rm -rf "$download"
+fi

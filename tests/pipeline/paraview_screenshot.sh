@@ -20,9 +20,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # Renderer: pvbatch when it has its Python module (Debian: python3-paraview, which conflicts with
 # libvtk9-dev), otherwise the script's plain-VTK path under the system Python (python3-vtk9).
+# drivers/setup.sh unpacks python3-paraview into the build folder; pvbatch finds it there.
 echo 'import paraview.simple' >"$work/probe.py"
 pvbatch=$(command -v pvbatch || command -v pvpython || true)
-if [ -n "$pvbatch" ] && xvfb-run -a "$pvbatch" "$work/probe.py" >/dev/null 2>&1; then
+pvpy=${SIG_BUILD:-$root/build}/paraview-python/usr/lib/python3/dist-packages
+renderer_env=()
+[ -d "$pvpy/paraview" ] && renderer_env=(env "PYTHONPATH=$pvpy")
+if [ -n "$pvbatch" ] && "${renderer_env[@]}" xvfb-run -a "$pvbatch" "$work/probe.py" >/dev/null 2>&1; then
   renderer=$pvbatch
 elif /usr/bin/python3 -c 'import vtkmodules.vtkRenderingOpenGL2' 2>/dev/null; then
   renderer=/usr/bin/python3
@@ -59,7 +63,8 @@ assert summary["converged"] is True, summary
 PY
 
 png=$work/shot.png
-xvfb-run -a "$renderer" "$root/postproc/pv_screenshot.py" "$out/$stem.pvd" "$png" >"$work/pv.log" 2>&1 || {
+[ "$renderer" = "$pvbatch" ] || renderer_env=()
+"${renderer_env[@]}" xvfb-run -a "$renderer" "$root/postproc/pv_screenshot.py" "$out/$stem.pvd" "$png" >"$work/pv.log" 2>&1 || {
   cat "$work/pv.log" >&2
   echo "paraview_screenshot: pv_screenshot.py failed" >&2
   exit 1
