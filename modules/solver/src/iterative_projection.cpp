@@ -11,24 +11,19 @@ namespace sig {
 namespace {
 
 /// Step (ii): A(k+1) = { p : (u_n,p - g_p) + c lambda_p >= 0 }.
-std::vector<char> active_set(const ContactProblem& problem, const Eigen::VectorXd& u,
-                             const Eigen::VectorXd& lambda, double c) {
-  const Eigen::VectorXd un = problem.normal_part(u);
-  std::vector<char> active(problem.contacts());
-  for (int p = 0; p < problem.contacts(); ++p)
-    active[p] = projection_is_active(lambda[p], un[p], problem.gap[p], c);
-  return active;
+std::vector<char> projection_active_set(const ContactProblem& problem, const Eigen::VectorXd& u,
+                                        const Eigen::VectorXd& lambda, double c) {
+  return active_set(problem, u, lambda, [c](double l, double un, double g) {
+    return projection_is_active(l, un, g, c);
+  });
 }
 
-/// ||R*(u, lambda)|| of (7.23); the projection part is divided by c to read as a force.
+/// ||R*(u, lambda)|| of (7.23); the projection rows are divided by c to read as forces.
 double residual(const ContactProblem& problem, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& lambda, double c) {
-  const Eigen::VectorXd un = problem.normal_part(u);
-  double complementarity = 0;
-  for (int p = 0; p < problem.contacts(); ++p)
-    complementarity += std::pow(projection_residual(lambda[p], un[p], problem.gap[p], c) / c, 2);
-  return std::hypot(equilibrium_residual(problem, u, lambda),
-                    std::sqrt(complementarity) / std::max(problem.f.norm(), 1e-300));
+  return contact_residual(problem, u, lambda, [c](double l, double un, double g) {
+    return projection_residual(l, un, g, c) / c;
+  });
 }
 
 } // namespace
@@ -46,7 +41,7 @@ ContactSolution IterativeProjection::solve(const ContactProblem& problem) const 
 
   for (int k = 0; k < p_.max_iterations; ++k) {
     // (ii) active and inactive sets.
-    const std::vector<char> active = active_set(problem, u, lambda, c);
+    const std::vector<char> active = projection_active_set(problem, u, lambda, c);
 
     // (iii) (7.20) with u_n = g on A (7.21) and the Robin condition (7.22) on I.
     const Eigen::VectorXd un_old = problem.normal_part(u);
@@ -83,7 +78,7 @@ ContactSolution IterativeProjection::solve(const ContactProblem& problem) const 
     previous_active = active;
   }
   if (!s.converged && s.failure.empty()) s.failure = "no convergence within the iteration limit";
-  if (s.active.empty()) s.active = active_set(problem, u, lambda, c);
+  if (s.active.empty()) s.active = projection_active_set(problem, u, lambda, c);
   s.u = u;
   s.multiplier = lambda;
   return s;

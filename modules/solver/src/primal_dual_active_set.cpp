@@ -10,25 +10,19 @@ namespace sig {
 namespace {
 
 /// Step (ii): A(k+1) = { p : lambda_p + gamma (u_n,p - g_p) >= 0 }.
-std::vector<char> active_set(const ContactProblem& problem, const Eigen::VectorXd& u,
-                             const Eigen::VectorXd& lambda, double gamma) {
-  const Eigen::VectorXd un = problem.normal_part(u);
-  std::vector<char> active(problem.contacts());
-  for (int p = 0; p < problem.contacts(); ++p)
-    active[p] = pdas_is_active(lambda[p], un[p], problem.gap[p], gamma);
-  return active;
+std::vector<char> pdas_active_set(const ContactProblem& problem, const Eigen::VectorXd& u,
+                                  const Eigen::VectorXd& lambda, double gamma) {
+  return active_set(problem, u, lambda, [gamma](double l, double un, double g) {
+    return pdas_is_active(l, un, g, gamma);
+  });
 }
 
-/// ||R(u, lambda)|| of (3.21), relative to the load.
+/// ||R(u, lambda)|| of (3.21).
 double residual(const ContactProblem& problem, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& lambda, double gamma) {
-  const Eigen::VectorXd un = problem.normal_part(u);
-  double complementarity = 0;
-  for (int p = 0; p < problem.contacts(); ++p)
-    complementarity +=
-        std::pow(lambda[p] - positive_part(lambda[p] + gamma * (un[p] - problem.gap[p])), 2);
-  return std::hypot(equilibrium_residual(problem, u, lambda),
-                    std::sqrt(complementarity) / std::max(problem.f.norm(), 1e-300));
+  return contact_residual(problem, u, lambda, [gamma](double l, double un, double g) {
+    return l - positive_part(l + gamma * (un - g));
+  });
 }
 
 } // namespace
@@ -46,7 +40,7 @@ ContactSolution PrimalDualActiveSet::solve(const ContactProblem& problem) const 
 
   for (int k = 0; k < p_.max_iterations; ++k) {
     // (ii) active and inactive sets from the current iterate.
-    const std::vector<char> active = active_set(problem, u, lambda, p_.gamma);
+    const std::vector<char> active = pdas_active_set(problem, u, lambda, p_.gamma);
 
     // (iii) equilibrium with u_n = g on A (3.31) and lambda = 0 on I (3.32).
     LinearStep step;
@@ -70,7 +64,7 @@ ContactSolution PrimalDualActiveSet::solve(const ContactProblem& problem) const 
     previous_active = active;
   }
   if (!s.converged && s.failure.empty()) s.failure = "no convergence within the iteration limit";
-  if (s.active.empty()) s.active = active_set(problem, u, lambda, p_.gamma);
+  if (s.active.empty()) s.active = pdas_active_set(problem, u, lambda, p_.gamma);
   s.u = u;
   s.multiplier = lambda;
   return s;

@@ -2,6 +2,9 @@
 // The four contact methods (one file each in src/) and the small pieces their loops share.
 #include "solver/contact_solver.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace sig {
 
 class AugmentedLagrangian final : public ContactSolver {
@@ -43,6 +46,30 @@ public:
 private:
   ContactSolverParameters p_;
 };
+
+/// Step (ii) of the active-set methods: the elements p where is_active(lambda_p, u_n,p, g_p).
+template <class Test>
+std::vector<char> active_set(const ContactProblem& problem, const Eigen::VectorXd& u,
+                             const Eigen::VectorXd& lambda, Test is_active) {
+  const Eigen::VectorXd un = problem.normal_part(u);
+  std::vector<char> active(problem.contacts());
+  for (int p = 0; p < problem.contacts(); ++p)
+    active[p] = is_active(lambda[p], un[p], problem.gap[p]);
+  return active;
+}
+
+/// ||R(u, lambda)|| relative to the load, R = (equilibrium, complementarity(lambda_p, u_n,p,
+/// g_p) per element), the complementarity rows expressed as forces.
+template <class Complementarity>
+double contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u,
+                        const Eigen::VectorXd& lambda, Complementarity complementarity) {
+  const Eigen::VectorXd un = problem.normal_part(u);
+  double sum = 0;
+  for (int p = 0; p < problem.contacts(); ++p)
+    sum += std::pow(complementarity(lambda[p], un[p], problem.gap[p]), 2);
+  return std::hypot(equilibrium_residual(problem, u, lambda),
+                    std::sqrt(sum) / std::max(problem.f.norm(), 1e-300));
+}
 
 /// x = (u, lambda), the Newton vector of test (iv).
 Eigen::VectorXd stack(const Eigen::VectorXd& u, const Eigen::VectorXd& lambda);
