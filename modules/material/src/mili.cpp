@@ -3,11 +3,14 @@
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "material/ciarlet_geymonat.hpp"
+#include "material/saint_venant_kirchhoff.hpp"
 #include "mesh/mesh.hpp"
 
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace sig {
@@ -16,6 +19,8 @@ namespace {
 
 // Codes of the MILI arrays `law` and `plane`.
 constexpr std::int64_t law_hooke = 1;
+constexpr std::int64_t law_svk = 2;
+constexpr std::int64_t law_ciarlet_geymonat = 3;
 constexpr std::int64_t plane_strain_code = 1;
 constexpr std::int64_t plane_stress_code = 2;
 
@@ -24,6 +29,35 @@ std::string joined(const std::vector<int>& numbers) {
   for (std::size_t i = 0; i < numbers.size(); ++i)
     out << (i ? " " : "") << numbers[i];
   return out.str();
+}
+
+std::int64_t law_code(const SubdomainMaterial& m) {
+  if (!m.hyperelastic) return law_hooke;
+  if (dynamic_cast<const CiarletGeymonat*>(m.hyperelastic.get())) return law_ciarlet_geymonat;
+  return law_svk;
+}
+
+// A field of another law's parameter set is a mistake in the deck, not something to ignore.
+void reject_fields(const Card& card, std::initializer_list<const char*> fields,
+                   const std::string& law) {
+  for (const char* field : fields)
+    if (card.has(field))
+      card.fail(field, "law=" + law + " takes no field '" + field +
+                           "' (hooke, svk: E, nu; ciarlet-geymonat: c1, c2, a)");
+}
+
+// The Ciarlet-Geymonat law of a card; Hooke's law then is its small-strain limit.
+std::shared_ptr<const CiarletGeymonat> ciarlet_geymonat_from_card(const Card& card) {
+  const double c1 = card.real("c1");
+  if (!(c1 > 0.0)) card.fail("c1", "c1 must be > 0");
+  const double c2 = card.real("c2");
+  if (!(c2 >= 0.0)) card.fail("c2", "c2 must be >= 0");
+  const double a = card.real("a");
+  if (!(a >= 0.0)) card.fail("a", "a must be >= 0");
+  const PlaneMode plane = card.choice("plane", {"strain", "stress"}, "strain") == "stress"
+                              ? PlaneMode::stress
+                              : PlaneMode::strain;
+  return std::make_shared<const CiarletGeymonat>(c1, c2, a, plane);
 }
 
 } // namespace
@@ -43,9 +77,20 @@ bool MaterialTable::has_mass() const {
 }
 
 SubdomainMaterial material_from_card(const Card& card) {
-  card.choice("law", {"hooke"}, "hooke");
+  const std::string law = card.choice("law", {"hooke", "svk", "ciarlet-geymonat"}, "hooke");
   SubdomainMaterial material;
-  material.hooke = hooke_from_card(card);
+  if (law == "ciarlet-geymonat") {
+    reject_fields(card, {"E", "nu"}, law);
+    const auto cg = ciarlet_geymonat_from_card(card);
+    material.hooke = cg->linearized();
+    material.hyperelastic = cg;
+  } else {
+    reject_fields(card, {"c1", "c2", "a"}, law);
+    material.hooke = hooke_from_card(card);
+    if (law == "svk")
+      material.hyperelastic = std::make_shared<const SaintVenantKirchhoff>(
+          material.hooke.E, material.hooke.nu, material.hooke.plane);
+  }
   material.thickness = card.real("thickness", 1.0);
   if (!(material.thickness > 0.0)) card.fail("thickness", "thickness must be > 0");
   material.density = card.real("rho", 0.0);
@@ -108,10 +153,14 @@ MaterialTable material_table_from_cards(const Datafile& datafile, const Mesh& me
 void write_mili(const std::filesystem::path& path, const MaterialTable& table,
                 const std::string& title) {
   std::vector<std::int64_t> subdomain, law, plane;
-  std::vector<double> young, poisson, thickness, density;
+  std::vector<double> young, poisson, thickness, density, c1, c2, a;
   for (const SubdomainMaterial& m : table.entries) {
     subdomain.push_back(m.subdomain);
-    law.push_back(law_hooke);
+    law.push_back(law_code(m));
+    const auto* cg = dynamic_cast<const CiarletGeymonat*>(m.hyperelastic.get());
+    c1.push_back(cg ? cg->c1() : 0.0);
+    c2.push_back(cg ? cg->c2() : 0.0);
+    a.push_back(cg ? cg->a() : 0.0);
     plane.push_back(m.hooke.plane == PlaneMode::strain ? plane_strain_code : plane_stress_code);
     young.push_back(m.hooke.E);
     poisson.push_back(m.hooke.nu);
@@ -126,6 +175,9 @@ void write_mili(const std::filesystem::path& path, const MaterialTable& table,
   ds.put("plane", plane);
   ds.put("thickness", thickness);
   ds.put("density", density);
+  ds.put("c1", c1);
+  ds.put("c2", c2);
+  ds.put("a", a);
   write_ds(path, ds);
 }
 
@@ -139,12 +191,20 @@ MaterialTable read_mili(const std::filesystem::path& path) {
   const auto thickness = ds.reals("thickness");
   const auto density = ds.reals("density");
   const std::size_t n = subdomain.size();
+  // MILI files written before the hyperelastic laws have no c1, c2, a.
+  const auto optional = [&](const char* name) {
+    return ds.has(name) ? ds.reals(name) : std::vector<double>(n, 0.0);
+  };
+  const auto c1 = optional("c1");
+  const auto c2 = optional("c2");
+  const auto a = optional("a");
   SIG_VERIFY(law.size() == n && plane.size() == n && young.size() == n && poisson.size() == n &&
-                 thickness.size() == n && density.size() == n,
+                 thickness.size() == n && density.size() == n && c1.size() == n && c2.size() == n &&
+                 a.size() == n,
              path.string() << ": MILI arrays have different lengths");
   MaterialTable table;
   for (std::size_t i = 0; i < n; ++i) {
-    SIG_VERIFY(law[i] == law_hooke,
+    SIG_VERIFY(law[i] == law_hooke || law[i] == law_svk || law[i] == law_ciarlet_geymonat,
                path.string() << ": array 'law' row " << i + 1 << ": unknown law code " << law[i]);
     SIG_VERIFY(plane[i] == plane_strain_code || plane[i] == plane_stress_code,
                path.string() << ": array 'plane' row " << i + 1 << ": unknown code " << plane[i]);
@@ -155,6 +215,17 @@ MaterialTable read_mili(const std::filesystem::path& path) {
     m.hooke.E = young[i];
     m.hooke.nu = poisson[i];
     m.hooke.plane = plane[i] == plane_strain_code ? PlaneMode::strain : PlaneMode::stress;
+    if (law[i] == law_svk) {
+      m.hyperelastic =
+          std::make_shared<const SaintVenantKirchhoff>(m.hooke.E, m.hooke.nu, m.hooke.plane);
+    } else if (law[i] == law_ciarlet_geymonat) {
+      SIG_VERIFY(ds.has("c1") && ds.has("c2") && ds.has("a"),
+                 path.string() << ": row " << i + 1
+                               << " is a ciarlet-geymonat law but c1, c2, a are missing");
+      const auto cg = std::make_shared<const CiarletGeymonat>(c1[i], c2[i], a[i], m.hooke.plane);
+      m.hooke = cg->linearized();
+      m.hyperelastic = cg;
+    }
     m.thickness = thickness[i];
     m.density = density[i];
     table.entries.push_back(m);

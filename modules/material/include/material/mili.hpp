@@ -4,14 +4,20 @@
 // times this) and the mass density.
 //
 // MATERIAL card: `MATERIAL law=hooke E=... nu=... [plane=strain|stress] [thickness=1] [rho=0]
-// [region=1,2]`; without region= the card applies to every sub-domain.
+// [region=1,2]`; without region= the card applies to every sub-domain. The hyperelastic laws
+// (large deformation, material/hyperelastic.hpp) take the same plane, thickness, rho, region:
+//   `law=svk E=... nu=...`                       Saint Venant-Kirchhoff (thesis 1.62)
+//   `law=ciarlet-geymonat c1=... c2=... a=...`   the thesis's "Ogden" W (1.63)
 //
 // DS "MILI", one row per sub-domain, sorted by sub-domain number:
-//   subdomain (int64), law (int64: 1 = hooke), young, poisson, plane (int64: 1 strain,
-//   2 stress), thickness, density.
+//   subdomain (int64), law (int64: 1 = hooke, 2 = svk, 3 = ciarlet-geymonat), young, poisson
+//   (for ciarlet-geymonat those of its small-strain limit), plane (int64: 1 strain, 2 stress),
+//   thickness, density, c1, c2, a (0 unless ciarlet-geymonat; files without them read as 0).
 #include "material/hooke.hpp"
+#include "material/hyperelastic.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,7 +30,11 @@ struct Mesh;
 /// The law of one sub-domain.
 struct SubdomainMaterial {
   int subdomain = 1;
+  /// Hooke's law; for a hyperelastic sub-domain, the small-strain limit of its law (the
+  /// tangent at F = I), so that the linear(ized) assembly and post-processing still apply.
   Hooke hooke;
+  /// The large-deformation law of law=svk | ciarlet-geymonat; null for law=hooke.
+  std::shared_ptr<const HyperelasticLaw> hyperelastic;
   double thickness = 1.0; ///< > 0
   double density = 0.0;   ///< rho >= 0
 };
@@ -40,7 +50,7 @@ struct MaterialTable {
 
 /// Law, thickness and density of one MATERIAL card (subdomain left at its default). Throws
 /// sig::InputError naming the line and field for an unknown law, E <= 0, nu outside (-1, 1/2),
-/// thickness <= 0 or rho < 0.
+/// c1 <= 0, c2 < 0, a < 0, thickness <= 0 or rho < 0.
 SubdomainMaterial material_from_card(const Card& card);
 
 /// The table of every sub-domain of `mesh` from the MATERIAL cards. Each sub-domain must get
