@@ -1,0 +1,34 @@
+#pragma once
+// The discrete energy (8.33) of small-strain elastodynamics, E_n = 1/2 v_n.M v_n + 1/2 u_n.K u_n
+// (the kinetic term is the discrete 1/2 int rho |delta u_n|^2, the elastic one int W with
+// Hooke's W), and its balance with the work of the external forces, W_n = sum over the steps of
+// f_bar . (u_{m+1} - u_m): without contact the energy-conserving schemes keep E_n - W_n = E_0
+// to round-off.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace sig {
+
+struct DynamicState;
+struct Elastodynamics;
+
+/// One row of the per-step energy history (energy.csv starts with these columns).
+struct EnergyRecord {
+  int step = 0;
+  double time = 0.0;
+  double kinetic = 0.0;       ///< 1/2 v.M v
+  double elastic = 0.0;       ///< 1/2 u.K u
+  double total = 0.0;         ///< kinetic + elastic
+  double external_work = 0.0; ///< work of the loads since step 0
+};
+
+/// 1/2 v.M v.
+double kinetic_energy(const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& v);
+/// 1/2 u.K u.
+double elastic_energy(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& u);
+
+/// The record of `state` at step `step`, with the work done so far.
+EnergyRecord energy_record(const Elastodynamics& problem, const DynamicState& state, int step,
+                           double external_work);
+
+} // namespace sig

@@ -1,0 +1,48 @@
+#include "integrator/time_scheme.hpp"
+
+#include "core/error.hpp"
+#include "integrator/midpoint.hpp"
+#include "integrator/newmark.hpp"
+#include "solver/linear_solver.hpp"
+
+#include <utility>
+
+namespace sig {
+
+TimeScheme::TimeScheme(Elastodynamics problem, double k, const std::string& linear_solver)
+    : problem_(std::move(problem)), k_(k) {
+  const int n = problem_.num_dofs();
+  SIG_VERIFY(k_ > 0, "time step k = " << k_ << " must be positive");
+  SIG_VERIFY(problem_.K.rows() == n && problem_.K.cols() == n && problem_.M.rows() == n &&
+                 problem_.M.cols() == n,
+             "K is " << problem_.K.rows() << " x " << problem_.K.cols() << ", M is "
+                     << problem_.M.rows() << " x " << problem_.M.cols()
+                     << ": both must be square and of the same size");
+  const Eigen::SparseMatrix<double> S = problem_.K + (4.0 / (k_ * k_)) * problem_.M;
+  solver_ = make_linear_solver(linear_solver, MatrixKind::spd);
+  solver_->factorize(S);
+}
+
+TimeScheme::~TimeScheme() = default;
+
+Eigen::VectorXd TimeScheme::solve_step_operator(const Eigen::VectorXd& b) const {
+  return solver_->solve(b);
+}
+
+void TimeScheme::check_state(const DynamicState& state) const {
+  SIG_VERIFY(state.u.size() == problem_.num_dofs() && state.v.size() == problem_.num_dofs(),
+             name() << " step: state with " << state.u.size() << " displacements and "
+                    << state.v.size() << " velocities for " << problem_.num_dofs() << " dofs");
+}
+
+std::unique_ptr<TimeScheme> make_time_scheme(const std::string& name, Elastodynamics problem,
+                                             double k, const std::string& linear_solver) {
+  if (name == "midpoint")
+    return std::make_unique<ImplicitMidpoint>(std::move(problem), k, linear_solver);
+  if (name == "newmark")
+    return std::make_unique<NewmarkAverageAcceleration>(std::move(problem), k, linear_solver);
+  SIG_VERIFY(false, "unknown time scheme '" << name << "' (choose " << time_scheme_names << ")");
+  return nullptr;
+}
+
+} // namespace sig
