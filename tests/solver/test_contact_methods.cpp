@@ -31,6 +31,8 @@ ContactProblem bar_problem(int n, bool clamped) {
   problem.gap.resize(problem.contacts());
   for (int p = 0; p < problem.contacts(); ++p)
     problem.gap[p] = (p % 3 == 1) ? 50.0 : 0.1 + 0.05 * p;
+  // Unequal nodal weights, so that pressures and forces differ.
+  problem.weight = Eigen::VectorXd::LinSpaced(problem.contacts(), 0.5, 1.5);
   return problem;
 }
 

@@ -9,21 +9,22 @@ namespace sig {
 
 namespace {
 
-/// The augmented multiplier lambda + r (u_n - g) whose positive part is the contact force.
+/// The augmented pressure lambda / w + r (u_n - g), whose positive part is the contact pressure.
 Eigen::VectorXd augmented(const ContactProblem& problem, const Eigen::VectorXd& u,
                           const Eigen::VectorXd& lambda, double r) {
-  return lambda + r * (problem.normal_part(u) - problem.gap);
+  return lambda.cwiseQuotient(problem.weight) + r * (problem.normal_part(u) - problem.gap);
 }
 
-/// ||R_L(x)|| = ||G(x) + F(x)|| of (3.10), the multiplier rows times r so both read as forces.
+/// ||R_L(x)|| = ||G(x) + F(x)|| of (3.10), the multiplier rows times r w so both read as forces.
 double residual(const ContactProblem& problem, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& lambda, double r) {
   const Eigen::VectorXd a = augmented(problem, u, lambda, r);
+  const Eigen::VectorXd un = problem.normal_part(u);
   Eigen::VectorXd force(problem.contacts()), multiplier_rows(problem.contacts());
   for (int p = 0; p < problem.contacts(); ++p) {
-    force[p] = positive_part(a[p]);
-    multiplier_rows[p] =
-        alart_curnier_normal(lambda[p], problem.normal_part(u)[p], problem.gap[p], r);
+    const double w = problem.weight[p];
+    force[p] = w * positive_part(a[p]);
+    multiplier_rows[p] = w * alart_curnier_normal(lambda[p] / w, un[p], problem.gap[p], r);
   }
   return std::hypot(equilibrium_residual(problem, u, force),
                     multiplier_rows.norm() / std::max(problem.f.norm(), 1e-300));

@@ -1,6 +1,7 @@
 // Penalty method, thesis Remark 3.2: the augmented Lagrangian with its multipliers set to zero,
-// so the foundation acts as a spring of stiffness r and the contact force is r [u_n - g]_+. The
-// result penetrates by lambda / r; a larger r penetrates less but conditions the system worse.
+// so the foundation acts as a bed of springs of stiffness r per unit area (Winkler) and the
+// contact pressure is r [u_n - g]_+. The result penetrates by pressure / r; a larger r
+// penetrates less but conditions the system worse.
 // Solved by Newton's method on K u + E^T r [u_n - g]_+ = f.
 #include "contact/complementarity.hpp"
 #include "solver/methods.hpp"
@@ -13,7 +14,7 @@ Eigen::VectorXd contact_force(const ContactProblem& problem, const Eigen::Vector
   const Eigen::VectorXd un = problem.normal_part(u);
   Eigen::VectorXd force(problem.contacts());
   for (int p = 0; p < problem.contacts(); ++p)
-    force[p] = penalty_force(un[p], problem.gap[p], r);
+    force[p] = problem.weight[p] * penalty_force(un[p], problem.gap[p], r);
   return force;
 }
 
@@ -39,8 +40,8 @@ ContactSolution Penalty::solve(const ContactProblem& problem) const {
     for (int p = 0; p < m; ++p) {
       active[p] = d_penalty_force(un[p], problem.gap[p], r) > 0;
       if (active[p]) {
-        spring[p] = r;
-        spring_load[p] = r * problem.gap[p];
+        spring[p] = problem.weight[p] * r;
+        spring_load[p] = problem.weight[p] * r * problem.gap[p];
       }
     }
     LinearStep step;

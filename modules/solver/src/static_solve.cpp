@@ -121,6 +121,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
     problem.normal_dof.push_back(p);
   }
   problem.gap = contact.gap;
+  problem.weight = contact.weight;
   problem.regularization = kRelativeRegularization * problem.K.diagonal().cwiseAbs().maxCoeff();
   const ContactSolution c = make_contact_solver(parameters)->solve(problem);
   if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);

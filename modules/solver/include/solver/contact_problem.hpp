@@ -8,6 +8,9 @@
 // u_n,p <= g_p, and an active node is a Dirichlet condition on that coordinate, as in deal.II
 // step-41. Equilibrium reads K u + E^T lambda = f, where E picks the normal unknowns and
 // lambda_p >= 0 is the nodal contact force (the thesis's A(u) + lambda_nu nu = f, (7.17)).
+// The complementarity functions act on the contact pressure lambda_p / w_p, w_p the nodal
+// weight (tributary length), as the thesis's multipliers are densities in Y_nu^h: so r, gamma
+// and c keep their meaning (GPa/m, m/GPa) whatever the mesh.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -18,6 +21,7 @@ struct ContactProblem {
   Eigen::VectorXd f;           ///< load
   std::vector<int> normal_dof; ///< per contact element, its normal unknown
   Eigen::VectorXd gap;         ///< g_p
+  Eigen::VectorXd weight;      ///< w_p > 0: pressure = lambda_p / w_p
   /// Weight of the proximal term eps (u - u_previous) added to every linear step. It makes the
   /// steps of a semi-coercive problem well posed (a single contact node leaves a rotation free)
   /// and vanishes at convergence, where u = u_previous.

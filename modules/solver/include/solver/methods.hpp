@@ -47,26 +47,28 @@ private:
   ContactSolverParameters p_;
 };
 
-/// Step (ii) of the active-set methods: the elements p where is_active(lambda_p, u_n,p, g_p).
+/// Step (ii) of the active-set methods: the elements p where is_active(pressure_p, u_n,p, g_p).
 template <class Test>
 std::vector<char> active_set(const ContactProblem& problem, const Eigen::VectorXd& u,
                              const Eigen::VectorXd& lambda, Test is_active) {
   const Eigen::VectorXd un = problem.normal_part(u);
   std::vector<char> active(problem.contacts());
   for (int p = 0; p < problem.contacts(); ++p)
-    active[p] = is_active(lambda[p], un[p], problem.gap[p]);
+    active[p] = is_active(lambda[p] / problem.weight[p], un[p], problem.gap[p]);
   return active;
 }
 
-/// ||R(u, lambda)|| relative to the load, R = (equilibrium, complementarity(lambda_p, u_n,p,
-/// g_p) per element), the complementarity rows expressed as forces.
+/// ||R(u, lambda)|| relative to the load, R = (equilibrium, complementarity(pressure_p, u_n,p,
+/// g_p) per element), the complementarity rows (pressures) times the weights to read as forces.
 template <class Complementarity>
 double contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u,
                         const Eigen::VectorXd& lambda, Complementarity complementarity) {
   const Eigen::VectorXd un = problem.normal_part(u);
   double sum = 0;
   for (int p = 0; p < problem.contacts(); ++p)
-    sum += std::pow(complementarity(lambda[p], un[p], problem.gap[p]), 2);
+    sum += std::pow(problem.weight[p] *
+                        complementarity(lambda[p] / problem.weight[p], un[p], problem.gap[p]),
+                    2);
   return std::hypot(equilibrium_residual(problem, u, lambda),
                     std::sqrt(sum) / std::max(problem.f.norm(), 1e-300));
 }
