@@ -495,34 +495,49 @@ def reference_error(run, reference):
     return math.sqrt(np.sum(w * (c["pressure"] - p_ref) ** 2) / np.sum(w * p_ref**2))
 
 
+def energy_error(run, reference):
+    """Relative energy-norm error against a finer run: for a minimum of the potential energy J
+    over the admissible set, J(u_h) - J(u) ~ 1/2 ||u - u_h||_a^2, hence
+    sqrt(|J_h - J_ref| / (1/2 a(u_ref, u_ref)))."""
+    e, ref = run.summary.get("energy"), reference.summary.get("energy")
+    if not e or not ref:
+        return None
+    return math.sqrt(abs(e["potential"] - ref["potential"]) / ref["strain"])
+
+
 def error_series(runs, hertz, error_meshes):
-    """(N, h, L2 vs Hertz, p_max error, L2 vs the finest run) of the pdas_1e2 runs, and the
-    slopes of both errors against h."""
+    """(N, h, L2 vs Hertz, p_max error, L2 vs the finest run, energy norm vs the finest run) of
+    the pdas_1e2 runs, and the slopes against h of the three errors."""
     present = [(n, runs[(n, "pdas", "1e2")]) for n in error_meshes if (n, "pdas", "1e2") in runs]
     if not present:
-        return [], None, None
+        return [], None, None, None
     finest_n, finest = present[-1]
     rows = []
     for n, r in present:
         a = r.accuracy(hertz)
+        coarse = n != finest_n
         rows.append((n, a["h"], a["l2"], a["p_max_rel"],
-                     None if n == finest_n else reference_error(r, finest)))
+                     reference_error(r, finest) if coarse else None,
+                     energy_error(r, finest) if coarse else None))
     slope = fit_slope([r[1] for r in rows], [r[2] for r in rows])
     ref_slope = fit_slope([r[1] for r in rows[:-1]], [r[4] for r in rows[:-1]])
-    return rows, slope, ref_slope
+    energy_slope = fit_slope([r[1] for r in rows[:-1]], [r[5] or 0 for r in rows[:-1]])
+    return rows, slope, ref_slope, energy_slope
 
 
 def section_error_vs_h(runs, uniform_runs, hertz, out, error_meshes):
     text = ["## Error vs h (Fig 7.10)", ""]
-    uniform, slope, ref_slope = error_series(uniform_runs, hertz, error_meshes)
-    graded, g_slope, g_ref_slope = error_series(runs, hertz, error_meshes)
+    uniform, slope, ref_slope, e_slope = error_series(uniform_runs, hertz, error_meshes)
+    graded, g_slope, g_ref_slope, g_e_slope = error_series(runs, hertz, error_meshes)
     if len(uniform) < 2 and len(graded) < 2:
-        return "\n".join(text + ["Fewer than two meshes: no slope."]), (None, None)
+        return "\n".join(text + ["Fewer than two meshes: no slope."]), (None, None, None)
     fig, ax = plt.subplots(figsize=(6.5, 4.8))
-    for rows, sl, rsl, name, color in ((uniform, slope, ref_slope, "uniform mesh", "C0"),
-                                       (graded, g_slope, g_ref_slope, "graded mesh", "C1")):
+    for rows, sl, rsl, esl, name, color in ((uniform, slope, ref_slope, e_slope, "uniform mesh", "C0"),
+                                            (graded, g_slope, g_ref_slope, g_e_slope, "graded mesh", "C1")):
         if len(rows) < 2:
             continue
+        ax.loglog([r[1] for r in rows[:-1]], [r[5] for r in rows[:-1]], "^-", color=color,
+                  label=f"{name}, energy norm vs its N = {rows[-1][0]}, slope {fmt(esl, 3)}")
         ax.loglog([r[1] for r in rows], [r[2] for r in rows], "o-", color=color,
                   label=f"{name} vs Hertz, slope {fmt(sl, 3)}")
         ax.loglog([r[1] for r in rows[:-1]], [r[4] for r in rows[:-1]], "s--", color=color,
@@ -531,7 +546,7 @@ def section_error_vs_h(runs, uniform_runs, hertz, out, error_meshes):
     last = (uniform or graded)[-1]
     ax.loglog([first[1], last[1]], [first[2], first[2] * last[1] / first[1]], "k:", label="slope 1")
     ax.set_xlabel("h = pi R / N (m)")
-    ax.set_ylabel("relative L2 pressure error on Gamma3")
+    ax.set_ylabel("relative error (pressure L2 on Gamma3; energy norm)")
     ax.set_title("Hertz, PDAS gamma = 1e2: error vs h")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
@@ -540,7 +555,13 @@ def section_error_vs_h(runs, uniform_runs, hertz, out, error_meshes):
     fig.savefig(png, dpi=120)
     plt.close(fig)
     text.append(
-        f"PDAS, gamma = 1e2. The L2 pressure error on Gamma3 against Hertz (as in the accuracy "
+        f"PDAS, gamma = 1e2. **Energy norm** (the thesis's Fig 7.10 measures ||u - u_h||_V): "
+        f"the relative energy-norm error against the finest run of the series, from the total "
+        f"potential energies sig-post writes (J(u_h) - J(u) ~ 1/2 ||u - u_h||_a^2 for a minimum "
+        f"over the admissible set): slope **{fmt(e_slope, 3)} on the uniform meshes**, "
+        f"{fmt(g_e_slope, 3)} on the graded ones. ")
+    text.append(
+        f"The L2 pressure error on Gamma3 against Hertz (as in the accuracy "
         f"table) and, as the thesis did (its h = 1/512 solution as the reference), against the "
         f"finest run of the same series, on two mesh families: the thesis's **uniform** mesh "
         f"(MESH grading=0, `error/N<N>/pdas_1e2/`) and the deck's **graded** mesh (grading = "
@@ -549,8 +570,8 @@ def section_error_vs_h(runs, uniform_runs, hertz, out, error_meshes):
         f"error does not fall with N. Least-squares slopes of log(error) against log(h): "
         f"**uniform {fmt(slope, 3)} against Hertz**, {fmt(ref_slope, 3)} against its finest run; "
         f"graded {fmt(g_slope, 3)} against Hertz, {fmt(g_ref_slope, 3)} against its finest run. "
-        f"The thesis measured the displacement error ||u - u_h||_V and found slope 1; ours is the "
-        f"contact pressure's, the quantity Hertz gives; against Hertz the error also holds the "
+        f"These pressure errors are not Fig 7.10's measure (the energy norm above is) but the "
+        f"quantity Hertz gives; against Hertz the error also holds the "
         f"finite-body difference (see the accuracy section), which flattens the finest points. "
         f"The largest nodal differences sit at the contact edge (Fig 7.4 panel above): the nodal "
         f"pressure (multiplier / tributary length) averages Hertz's square-root drop over a "
@@ -562,11 +583,13 @@ def section_error_vs_h(runs, uniform_runs, hertz, out, error_meshes):
         if not rows:
             continue
         text += ["", f"**{name}**", ""]
-        text.append(table(["N", "h", "L2 vs Hertz", "p_max vs p0", f"L2 vs N = {rows[-1][0]}"],
-                          [[n, f"{h:.5f}", f"{e:.4e}", pct(pm), "—" if ref is None else f"{ref:.4e}"]
-                           for n, h, e, pm, ref in rows]))
+        text.append(table(["N", "h", "L2 vs Hertz", "p_max vs p0", f"L2 vs N = {rows[-1][0]}",
+                           f"energy norm vs N = {rows[-1][0]}"],
+                          [[n, f"{h:.5f}", f"{e:.4e}", pct(pm), "—" if ref is None else f"{ref:.4e}",
+                            "—" if en is None else f"{en:.4e}"]
+                           for n, h, e, pm, ref, en in rows]))
     text += ["", f"![error vs h]({png.name})"]
-    return "\n".join(text), (slope, ref_slope)
+    return "\n".join(text), (slope, ref_slope, e_slope)
 
 
 def section_speed_accuracy(runs, uniform_runs, hertz, out, meshes):
@@ -675,11 +698,12 @@ def section_checks(runs, thesis, hertz, slope):
                      verdict(abs(a["p_max_rel"]) <= CHECK_PMAX)])
         rows.append([f"half-width, N = 256, {name}", f"{a['half_width']:.4f}", f"{hertz.b:.4f}",
                      f"h = {h:.4f}", verdict(abs(a["half_width"] - hertz.b) <= h)])
-    for name, value in (("against the finest run (the thesis's Fig 7.10 method)", slope[1]),
-                        ("against Hertz (holds the finite-body difference)", slope[0])):
-        rows.append([f"error slope vs h, PDAS gamma = 1e2, uniform meshes, {name}", fmt(value, 3),
-                     "1", f"{CHECK_SLOPE[0]}..{CHECK_SLOPE[1]}",
-                     "not run" if value is None else verdict(CHECK_SLOPE[0] <= value <= CHECK_SLOPE[1])])
+    # Fig 7.10's measure is the displacement error in the norm of V; the pressure slopes are
+    # shown in the error section as information (they are not monotone, see there).
+    value = slope[2]
+    rows.append(["error slope vs h, PDAS gamma = 1e2, uniform meshes, energy norm against the "
+                 "finest run (Fig 7.10)", fmt(value, 3), "1", f"{CHECK_SLOPE[0]}..{CHECK_SLOPE[1]}",
+                 "not run" if value is None else verdict(CHECK_SLOPE[0] <= value <= CHECK_SLOPE[1])])
     passed = sum(r[-1] == "PASS" for r in rows)
     failed = sum(r[-1] == "FAIL" for r in rows)
     text = ["## Checks", ""]

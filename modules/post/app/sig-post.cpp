@@ -17,6 +17,7 @@
 #include "mesh/nopo.hpp"
 #include "post/contact_table.hpp"
 #include "post/solution_fields.hpp"
+#include "post/stress.hpp"
 #include "post/summary.hpp"
 #include "post/vtk_writer.hpp"
 
@@ -97,6 +98,18 @@ int main(int argc, char** argv) {
     const auto times =
         sig::gather_times({tae ? &*tae : nullptr, contact_case ? &cont : nullptr, &solution});
     sig::Json summary = sig::build_summary(datafile.title(), mesh, solution, contact, times);
+    // Total potential energy 1/2 a(u,u) - f.u: its differences between meshes measure the
+    // energy-norm error.
+    if (tae) {
+      const std::vector<double> load = tae->reals("f");
+      double work = 0;
+      for (std::size_t i = 0; i < load.size() && i < u.size(); ++i)
+        work += load[i] * u[i];
+      const double strain = sig::strain_energy(mesh, u, materials);
+      summary.set("energy",
+                  sig::Json(sig::Json::Object{
+                      {"strain", strain}, {"external_work", work}, {"potential", strain - work}}));
+    }
     if (const sig::Card* compare = datafile.find("COMPARE"))
       summary.set("hertz", hertz_comparison(*compare, materials, contact));
     const auto summary_path = args.outdir / "summary.json";

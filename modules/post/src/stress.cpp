@@ -41,3 +41,20 @@ CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
 }
 
 } // namespace sig
+
+namespace sig {
+
+double strain_energy(const Mesh& mesh, const std::vector<double>& u,
+                     const MaterialTable& materials) {
+  SIG_VERIFY(u.size() == 2 * mesh.nodes.size(),
+             "displacement holds " << u.size() << " values for " << mesh.num_nodes() << " nodes");
+  double energy = 0;
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const SubdomainMaterial& material = materials.of(mesh.subdomain[t]);
+    energy += material.hooke.energy_density(triangle_strain(mesh, u, t)) * 0.5 *
+              signed_double_area(mesh, t) * material.thickness;
+  }
+  return energy;
+}
+
+} // namespace sig

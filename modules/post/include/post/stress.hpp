@@ -23,4 +23,10 @@ struct CellStress {
 CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
                          const MaterialTable& materials);
 
+/// Strain energy 1/2 a(u, u) = sum over triangles of W(eps) x area x thickness; with the work of
+/// the loads it gives the total potential energy, whose differences between meshes measure the
+/// energy-norm error (the thesis's Fig 7.10 is an error in the norm of V).
+double strain_energy(const Mesh& mesh, const std::vector<double>& u,
+                     const MaterialTable& materials);
+
 } // namespace sig
