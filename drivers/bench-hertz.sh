@@ -87,49 +87,13 @@ declare -A value=([pdas]=1e2 [projection]=1e2 [alm]=1e2 [penalty]=1e6)
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 
-# write_deck DECK [METHOD NAME VALUE]: the template at N, no VTK output; with METHOD the SOLVER
-# card's method and parameter replaced; with METHOD = linear the contact-free floor problem.
-write_deck() {
-  local deck=$1 method=${2:-} name=${3:-} val=${4:-}
-  local edits=(-e "/^[[:space:]]*MESH[[:space:]]/ s/([[:space:]])N=[^[:space:]]+/\1N=$n/"
-    -e "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/")
-  [ -z "$grading" ] || edits+=(-e "/^[[:space:]]*MESH[[:space:]]/ s/([[:space:]])grading=[^[:space:]]+/\1grading=$grading/")
-  if [ "$method" = linear ]; then
-    # The COMPARE card (Hertz) needs contact: the floor problem has none.
-    edits+=(-e "/^[[:space:]]*COMPARE[[:space:]]/ d" -e "/^[[:space:]]*CONTACT[[:space:]]/ c\\
-DIRICHLET ref=3 uy=0"
-      -e "/^[[:space:]]*SOLVER[[:space:]]/ {
-        s/[[:space:]](r|gamma|c|eps|maxit)=[^[:space:]]+//g
-        s/([[:space:]])method=[^[:space:]]+/\1method=linear/
-      }")
-  elif [ -n "$method" ]; then
-    edits+=(-e "/^[[:space:]]*SOLVER[[:space:]]/ {
-      s/[[:space:]](r|gamma|c)=[^[:space:]]+//g
-      s/([[:space:]])method=[^[:space:]]+/\1method=$method $name=$val/
-    }")
-  fi
-  sed -E "${edits[@]}" "$template" >"$deck"
-  grep -qE "^[[:space:]]*MESH[[:space:]].*[[:space:]]N=$n([[:space:]]|$)" "$deck" ||
-    die "$template: no MESH card with N= to replace"
-  if [ -n "$grading" ]; then
-    grep -qE "^[[:space:]]*MESH[[:space:]].*[[:space:]]grading=$grading([[:space:]]|$)" "$deck" ||
-      die "$template: no MESH card with grading= to replace"
-  fi
-  if [ "$method" = linear ]; then
-    ! grep -qiE '^[[:space:]]*CONTACT' "$deck" && grep -qE 'method=linear' "$deck" ||
-      die "$template: cannot turn the deck into the linear floor problem"
-  elif [ -n "$method" ]; then
-    grep -qE "method=$method $name=$val([[:space:]]|$)" "$deck" ||
-      die "$template: no SOLVER card with method= to replace"
-  fi
-}
+source "$root/drivers/lib/hertz_deck.sh"
 
-run_stage() {
-  local stage=$1 deck=$2 dir=$3
-  if ! "$bin/sig-$stage" "$deck" -o "$dir" >"$dir/$stage.log" 2>&1; then
-    cat "$dir/$stage.log" >&2
-    die "sig-$stage failed for $deck (log: $dir/$stage.log)"
-  fi
+# write_deck DECK [METHOD VALUE]: the Hertz template at N, without VTK output (timing only);
+# METHOD = linear gives the contact-free floor problem.
+write_deck() {
+  hertz_deck "$template" "$1" "$n" "$grading" "${@:2}"
+  sed -i -E "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/" "$1"
 }
 
 # timed_solves NAME DIR: K x (sig-solve timed as a process, sig-post), one times.tsv row each.
@@ -137,9 +101,9 @@ timed_solves() {
   local name=$1 dir=$2 k t0 t1
   for k in $(seq 1 "$repeat"); do
     t0=$(date +%s%N)
-    run_stage solve "$dir/hertz.dat" "$dir"
+    run_stage solve "$dir/hertz.dat" "$dir" || die "timing run failed"
     t1=$(date +%s%N)
-    run_stage post "$dir/hertz.dat" "$dir"
+    run_stage post "$dir/hertz.dat" "$dir" || die "timing run failed"
     cp "$dir/summary.json" "$dir/summary.$k.json"
     printf '%s\t%s\t%s\t%s\n' "$name" "$k" "$(((t1 - t0) / 1000))" "$dir/summary.$k.json" >>"$out/times.tsv"
   done
@@ -151,14 +115,14 @@ mkdir -p "$out/base"
 printf 'name\trun\twall_us\tsummary\n' >"$out/times.tsv"
 write_deck "$out/base/hertz.dat"
 for stage in mesh material contact assemble; do
-  run_stage "$stage" "$out/base/hertz.dat" "$out/base"
+  run_stage "$stage" "$out/base/hertz.dat" "$out/base" || die "cannot build the base case"
 done
 
 for method in "${methods[@]}"; do
   dir=$out/$method
   mkdir -p "$dir"
   for ds in nopo mili cont tae; do ln -s "../base/case.$ds" "$dir/case.$ds"; done
-  write_deck "$dir/hertz.dat" "$method" "${parameter[$method]}" "${value[$method]}"
+  write_deck "$dir/hertz.dat" "$method" "${value[$method]}"
   timed_solves "$method" "$dir"
   echo "bench-hertz.sh: $method ${parameter[$method]} = ${value[$method]} timed"
 done
@@ -167,7 +131,7 @@ dir=$out/linear
 mkdir -p "$dir"
 for ds in nopo mili; do ln -s "../base/case.$ds" "$dir/case.$ds"; done
 write_deck "$dir/hertz.dat" linear
-run_stage assemble "$dir/hertz.dat" "$dir"
+run_stage assemble "$dir/hertz.dat" "$dir" || die "cannot assemble the floor problem"
 timed_solves linear "$dir"
 echo "bench-hertz.sh: linear floor timed"
 
