@@ -18,6 +18,14 @@ int main(int argc, char** argv) {
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
+    // The small-strain chain would silently use a hyperelastic law's linearization.
+    for (const sig::Card* card : datafile.all("MATERIAL"))
+      if (const std::string law =
+              card->choice("law", {"hooke", "svk", "ciarlet-geymonat"}, "hooke");
+          law != "hooke")
+        card->fail("law", "law " + law +
+                              " is for large deformation, which no stage solves yet (the "
+                              "small-strain chain takes law=hooke)");
 
     // 2. Pattern, stiffness, mass, loads, Dirichlet dofs.
     const sig::LinearSystem system = sig::assemble_system(mesh, table, datafile);
