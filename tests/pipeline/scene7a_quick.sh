@@ -32,26 +32,20 @@ command -v gmsh >/dev/null || { echo "scene7a_quick: skipped, no gmsh"; exit 77;
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-declare -A parameter=([pdas]="gamma=1e2" [projection]="c=1e2" [alm]="r=1e2" [penalty]="r=1e6")
+die() {
+  echo "scene7a_quick: $*" >&2
+  exit 1
+}
+source "$root/drivers/lib/hertz_deck.sh"
+
+declare -A value=([pdas]=1e2 [projection]=1e2 [alm]=1e2 [penalty]=1e6)
 for method in pdas projection alm penalty; do
   dir=$work/$method
   mkdir -p "$dir"
-  sed -E -e '/^[[:space:]]*MESH[[:space:]]/ s/([[:space:]])N=[^[:space:]]+/\1N=64/' \
-    -e '/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/' \
-    -e "/^[[:space:]]*SOLVER[[:space:]]/ {
-      s/[[:space:]](r|gamma|c)=[^[:space:]]+//g
-      s/([[:space:]])method=[^[:space:]]+/\1method=$method ${parameter[$method]}/
-    }" "$template" >"$dir/hertz.dat"
-  grep -qE "N=64" "$dir/hertz.dat" && grep -qE "method=$method ${parameter[$method]}" "$dir/hertz.dat" || {
-    echo "scene7a_quick: the template's MESH N= or SOLVER method= could not be set" >&2
-    exit 1
-  }
+  hertz_deck "$template" "$dir/hertz.dat" 64 "" "$method" "${value[$method]}"
+  sed -i -E '/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/' "$dir/hertz.dat"
   for stage in mesh material contact assemble solve post; do
-    if ! "$bin/sig-$stage" "$dir/hertz.dat" -o "$dir" >"$dir/$stage.log" 2>&1; then
-      cat "$dir/$stage.log" >&2
-      echo "scene7a_quick: sig-$stage failed for $method" >&2
-      exit 1
-    fi
+    run_stage "$stage" "$dir/hertz.dat" "$dir" || die "sig-$stage failed for $method"
   done
 done
 
