@@ -17,8 +17,10 @@ failures=0
 check_energy() {
   python3 - "$@" <<'PY' || failures=$((failures + 1))
 import csv, sys
-path, expected_e0, min_el, max_el, label = sys.argv[1], sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
-header = "step,time,kinetic,elastic,total,contact_work,max_penetration,active_nodes,newton_iterations"
+path, expected_e0, label = sys.argv[1], sys.argv[2], sys.argv[5]
+min_el, max_el = float(sys.argv[3]), float(sys.argv[4])
+header = ("step,time,kinetic,elastic,total,contact_work,max_penetration,active_nodes,"
+          "newton_iterations")
 with open(path) as f:
     first = f.readline().rstrip("\n")
     rows = list(csv.DictReader([first + "\n"] + f.readlines()))
@@ -40,16 +42,52 @@ if expected_e0 != "-" and abs(e0 - float(expected_e0)) > 1e-9 * float(expected_e
 if any(int(r["newton_iterations"]) != (1 if int(r["step"]) > 0 else 0) for r in rows):
     print(f"FAIL {label}: newton_iterations is not 1 per step"); ok = False
 if abs(float(rows[-1]["time"]) - 1.0) > 1e-12 or steps != 100:
-    print(f"FAIL {label}: {steps} steps ending at t = {rows[-1]['time']}, expected 100 to t = 1"); ok = False
+    print(f"FAIL {label}: {steps} steps to t = {rows[-1]['time']}, expected 100 to t = 1")
+    ok = False
 sys.exit(0 if ok else 1)
 PY
 }
 
 # 1. The free disc: R = 1, N = 32 arc segments, rho = 1000, v0 = (0, -10).
-e0=$(python3 -c 'import math; N = 32; print(repr(0.5 * 1000 * N / 2 * math.sin(2 * math.pi / N) * 100))')
-drivers/chain.sh "$deck" -o "$work/free" > "$work/free.log" 2>&1 || { cat "$work/free.log"; exit 1; }
+# 1/2 rho A |v0|^2 with A = (N / 2) R^2 sin(2 pi / N), the inscribed N-gon of the generator.
+e0=$(python3 -c 'import math; N = 32; print(repr(500 * N / 2 * math.sin(2 * math.pi / N) * 100))')
+drivers/chain.sh "$deck" -o "$work/free" > "$work/free.log" 2>&1 ||
+  { cat "$work/free.log"; exit 1; }
 [ -s "$work/free/case.hist" ] || { echo "FAIL: no case.hist"; failures=$((failures + 1)); }
 check_energy "$work/free/energy.csv" "$e0" 0 1e-12 "free disc, midpoint"
+# The kept states (case.hist, DS layout of core/ds.hpp) are the translation u = v0 t, v = v0,
+# and sig-post lists one .vtu per state with its time in free_disc.pvd.
+python3 - "$work/free" <<'PY' || failures=$((failures + 1))
+import re, struct, sys
+folder = sys.argv[1]
+data = open(folder + "/case.hist", "rb").read()
+assert data[:5] == b"SIGDS", "case.hist: bad magic"
+count = struct.unpack_from("<I", data, 12)[0]
+pos, arrays = 16 + 128 + 4, {}
+for _ in range(count):
+    name = data[pos:pos + 24].split(b"\0")[0].decode()
+    kind, rank = struct.unpack_from("<II", data, pos + 24)
+    shape = struct.unpack_from("<%dq" % rank, data, pos + 32)
+    size = struct.unpack_from("<Q", data, pos + 32 + 8 * rank)[0]
+    payload = data[pos + 40 + 8 * rank:pos + 40 + 8 * rank + size]
+    arrays[name] = (shape, struct.unpack("<%dd" % (size // 8), payload) if kind == 2 else None)
+    pos += 40 + 8 * rank + size + 4
+(outputs, ndof), u = arrays["u"]
+times = arrays["output_time"][1]
+error = 0.0
+for s, t in enumerate(times):
+    for i in range(0, ndof, 2):
+        state = u[s * ndof + i:s * ndof + i + 2] + arrays["v"][1][s * ndof + i:s * ndof + i + 2]
+        error = max(error, max(abs(a - b) for a, b in zip(state, (0.0, -10.0 * t, 0.0, -10.0))))
+pvd = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(folder + "/free_disc.pvd").read())
+print(f"case.hist: {outputs} states of {ndof} dofs at t = {times[0]:g} .. {times[-1]:g}, "
+      f"max |(u, v) - (v0 t, v0)| = {error:.3e}; free_disc.pvd lists {len(pvd)} .vtu")
+ok = outputs == 11 and error < 1e-9 and len(pvd) == 11
+ok = ok and all(abs(float(t) - s / 10) < 1e-12 for s, (t, _) in enumerate(pvd))
+vtu = open(folder + "/" + pvd[-1][1], "rb").read()
+ok = ok and b'Name="velocity"' in vtu and b'Name="displacement"' in vtu
+sys.exit(0 if ok else print("FAIL: case.hist states or free_disc.pvd") or 1)
+PY
 
 # 2. Clamped on its left quarter (ref 1): kinetic energy turns into elastic energy.
 for scheme in midpoint newmark; do
@@ -65,7 +103,8 @@ sed -e 's/ k=0.01 / k=-1 /' "$deck" > "$work/bad.dat"
 line=$(grep -n '^TIME' "$work/bad.dat" | cut -d: -f1)
 status=0
 message=$("$bin/sig-march" "$work/bad.dat" -o "$work/free" 2>&1) || status=$?
-if [ "$status" -eq 0 ] || ! grep -qF "bad.dat:$line:" <<< "$message" || ! grep -qF "'k'" <<< "$message"; then
+if [ "$status" -eq 0 ] || ! grep -qF "bad.dat:$line:" <<< "$message" ||
+  ! grep -qF "'k'" <<< "$message"; then
   echo "FAIL: k=-1 not refused with bad.dat:$line and field 'k' (exit $status): $message"
   failures=$((failures + 1))
 else

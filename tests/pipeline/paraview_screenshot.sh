@@ -64,11 +64,20 @@ PY
 
 png=$work/shot.png
 [ "$renderer" = "$pvbatch" ] || renderer_env=()
-"${renderer_env[@]}" xvfb-run -a "$renderer" "$root/postproc/pv_screenshot.py" "$out/$stem.pvd" "$png" >"$work/pv.log" 2>&1 || {
+# On a loaded machine Xvfb may not accept connections by the time the renderer starts ("bad X
+# server connection"): that, and only that, is retried with a fresh server.
+for attempt in 1 2 3; do
+  if "${renderer_env[@]}" xvfb-run -a "$renderer" "$root/postproc/pv_screenshot.py" "$out/$stem.pvd" "$png" >"$work/pv.log" 2>&1; then
+    break
+  fi
+  if [ "$attempt" -lt 3 ] && grep -q "bad X server connection" "$work/pv.log"; then
+    echo "paraview_screenshot: the X server was not ready (attempt $attempt), retrying"
+    continue
+  fi
   cat "$work/pv.log" >&2
   echo "paraview_screenshot: pv_screenshot.py failed" >&2
   exit 1
-}
+done
 cat "$work/pv.log"
 grep -q '^point arrays:.*displacement' "$work/pv.log" || { echo "no displacement array" >&2; exit 1; }
 grep -q '^cell arrays:.*von_mises' "$work/pv.log" || { echo "no von_mises array" >&2; exit 1; }

@@ -102,6 +102,28 @@ const std::vector<CardSpec>& card_schema() {
            {"eps", "tolerance of stopping test (iv): relative increment and residual"},
            {"maxit", "maximum number of nonlinear iterations"},
        }},
+      {"TIME",
+       false,
+       "time marching of elastodynamics (stage sig-march; without contact for now)",
+       {
+           {"scheme", "midpoint | newmark: implicit midpoint rule (3.39) or Newmark's average "
+                      "acceleration; both conserve the discrete energy (8.33) without load"},
+           {"T", "final time, > 0"},
+           {"k", "time step, > 0; T / k must be a whole number of steps"},
+           {"output_every", "keep the state every this many steps (>= 1; default 1)"},
+           {"mass", "consistent | lumped | emm (Equivalent Mass Matrix (3.54), needs a CONTACT "
+                    "card); default consistent"},
+       }},
+      {"INITIAL",
+       true,
+       "uniform initial displacement and velocity of the whole body or of some sub-domains "
+       "(a card sets only the fields it gives, a later card wins on shared nodes; Dirichlet dofs "
+       "keep their imposed values)",
+       {
+           {"u", "initial displacement: ux,uy (default 0,0)"},
+           {"v", "initial velocity: vx,vy (default 0,0)"},
+           {"region", "sub-domain numbers (1-based); default every sub-domain"},
+       }},
       {"COMPARE",
        false,
        "analytic reference that sig-post compares the solution with (summary.json)",

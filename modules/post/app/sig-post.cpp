@@ -1,4 +1,4 @@
-// sig-post: the solved static case for ParaView, tables and charts.
+// sig-post: the solved static case (or the marched dynamic one) for ParaView, tables and charts.
 //
 //   sig-post DATAFILE [-o OUTDIR]
 //
@@ -8,6 +8,8 @@
 //                                          name=, default the datafile's stem)
 //   OUTDIR/summary.json                    method, convergence, sizes, histories, times
 //   OUTDIR/contact.csv                     one row per contact element (contact cases)
+// A dynamic case (TIME card) reads case.hist instead of case.b and writes <stem>.pvd with one
+// <stem>_NNNN.vtu per state kept by sig-march (displacement, velocity, stress) and nothing else.
 // A solution holding NaN or inf is refused: a picture of garbage helps nobody.
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
@@ -16,6 +18,7 @@
 #include "material/mili.hpp"
 #include "mesh/nopo.hpp"
 #include "post/contact_table.hpp"
+#include "post/history_vtk.hpp"
 #include "post/solution_fields.hpp"
 #include "post/stress.hpp"
 #include "post/summary.hpp"
@@ -57,9 +60,22 @@ int main(int argc, char** argv) {
     const bool write_vtk =
         output == nullptr || output->choice("vtk", {"yes", "no"}, "yes") == "yes";
 
-    // 2. Mesh, materials and the solution; refuse a displacement that is not finite.
+    // 2. Mesh and materials. A dynamic case (TIME card) is shown as the states sig-march kept
+    //    in case.hist, one .vtu each; its energies are in energy.csv already.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
+    const std::string stem = output ? output->text("name", datafile.stem()) : datafile.stem();
+    if (datafile.find("TIME") != nullptr) {
+      const sig::Ds hist = sig::read_ds(args.ds_path("hist"), "HIST");
+      if (write_vtk)
+        for (const auto& file :
+             sig::write_history_vtk(args.outdir, stem, mesh, materials, hist,
+                                    {{"title", datafile.title()}, {"scheme", hist.text("scheme")}}))
+          std::cout << file.string() << "\n";
+      return;
+    }
+
+    // 3. The static solution; refuse a displacement that is not finite.
     const auto b_path = args.ds_path("b");
     const sig::Ds solution = sig::read_ds(b_path, "B");
     const std::vector<double> u = solution.reals("u");
@@ -69,7 +85,7 @@ int main(int argc, char** argv) {
                                << " dofs)");
     sig::verify_finite(u, b_path.string(), "u");
 
-    // 3. Contact elements joined with their final state (contact cases only).
+    // 4. Contact elements joined with their final state (contact cases only).
     std::vector<sig::ContactRow> contact;
     sig::Ds cont;
     const bool contact_case = datafile.find("CONTACT") != nullptr;
@@ -79,8 +95,7 @@ int main(int argc, char** argv) {
       contact = sig::contact_rows(mesh, cont, solution);
     }
 
-    // 4. ParaView: one .vtu (time 0) and its .pvd collection.
-    const std::string stem = output ? output->text("name", datafile.stem()) : datafile.stem();
+    // 5. ParaView: one .vtu (time 0) and its .pvd collection.
     if (write_vtk) {
       const sig::SolutionFields fields = sig::solution_fields(mesh, u, materials, contact);
       const std::string vtu = stem + "_0000.vtu";
@@ -91,7 +106,7 @@ int main(int argc, char** argv) {
                 << (args.outdir / vtu).string() << "\n";
     }
 
-    // 5. summary.json with the times of every stage that recorded some.
+    // 6. summary.json with the times of every stage that recorded some.
     std::optional<sig::Ds> tae;
     if (std::filesystem::exists(args.ds_path("tae")))
       tae = sig::read_ds(args.ds_path("tae"), "TAE");
@@ -116,7 +131,7 @@ int main(int argc, char** argv) {
     sig::write_file_atomically(summary_path, summary.dump() + "\n");
     std::cout << summary_path.string() << "\n";
 
-    // 6. contact.csv; a stale one from an earlier contact variant would mislead, so remove it.
+    // 7. contact.csv; a stale one from an earlier contact variant would mislead, so remove it.
     const auto csv_path = args.outdir / "contact.csv";
     if (contact_case) {
       sig::write_file_atomically(csv_path, sig::contact_csv(contact));

@@ -1,0 +1,43 @@
+#pragma once
+// The cards of a dynamic case (stage sig-march):
+//
+//   TIME scheme=midpoint|newmark T= k= [output_every=1] [mass=consistent|lumped|emm]
+//   INITIAL [u=ux,uy] [v=vx,vy] [region=...]   (repeatable; sets only the fields it gives)
+//
+// Every check names the file, the line and the field (sig::InputError), so that a bad deck is
+// refused before anything is factorized.
+#include "integrator/elastodynamics.hpp"
+
+#include <Eigen/Core>
+#include <string>
+
+namespace sig {
+
+class Card;
+class Datafile;
+struct Mesh;
+
+struct TimeParameters {
+  std::string scheme = "midpoint"; ///< time_scheme_names
+  double final_time = 0.0;         ///< T
+  double k = 0.0;                  ///< time step
+  int steps = 0;                   ///< T / k, a whole number
+  int output_every = 1;
+  MassChoice mass = MassChoice::consistent;
+};
+
+/// The TIME card, checked: k > 0, T > 0, T / k within 1e-9 relative of a whole number of steps,
+/// output_every >= 1, mass=emm only when the deck has a CONTACT card (`has_contact`).
+TimeParameters time_parameters(const Card& time, bool has_contact);
+
+/// Full-size (2 per node, interleaved) initial displacement and velocity of the INITIAL cards:
+/// the uniform u and v of each card on the nodes of the triangles of its sub-domains (a card
+/// sets only the fields it gives; a later card wins on shared nodes). Zero without INITIAL card; an
+/// InputError for a vector without two components or an unknown region.
+struct InitialFields {
+  Eigen::VectorXd u;
+  Eigen::VectorXd v;
+};
+InitialFields initial_fields(const Datafile& datafile, const Mesh& mesh);
+
+} // namespace sig

@@ -1,0 +1,113 @@
+// A dynamic case for ParaView: every state of a DS HIST becomes one .vtu whose displacement and
+// velocity are the DS values (read back through VTK's own reader), the .pvd lists them with their
+// times, and a DS whose shapes do not fit the mesh, or that holds NaN, is refused.
+#include "post/history_vtk.hpp"
+
+#include "core/error.hpp"
+#include "post_test_mesh.hpp"
+
+#include <gtest/gtest.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <unistd.h>
+
+namespace sig {
+namespace {
+
+namespace fs = std::filesystem;
+
+MaterialTable two_materials() {
+  MaterialTable table;
+  SubdomainMaterial left;
+  left.subdomain = 1;
+  left.hooke = {100.0, 0.35, PlaneMode::strain};
+  SubdomainMaterial right = left;
+  right.subdomain = 2;
+  table.entries = {left, right};
+  return table;
+}
+
+// Two states of the small mesh: state s has u = s (0.1 x, -0.2 y) and v = (s + 1, 2 s - 1).
+Ds two_states(const Mesh& mesh) {
+  Ds hist("HIST", "two states", "test");
+  std::vector<double> u, v;
+  for (int s = 0; s < 2; ++s)
+    for (const Eigen::Vector2d& x : mesh.nodes) {
+      u.insert(u.end(), {s * 0.1 * x.x(), -s * 0.2 * x.y()});
+      v.insert(v.end(), {s + 1.0, 2.0 * s - 1.0});
+    }
+  const auto ndof = static_cast<std::int64_t>(2 * mesh.num_nodes());
+  hist.put("output_time", std::vector<double>{0.0, 0.25});
+  hist.put("u", u, {2, ndof});
+  hist.put("v", v, {2, ndof});
+  hist.put_text("scheme", "midpoint");
+  return hist;
+}
+
+class HistoryVtk : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("sig_post_hist_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(HistoryVtk, OneVtuPerStateWithDisplacementAndVelocity) {
+  const Mesh mesh = test::small_mesh();
+  const auto files =
+      write_history_vtk(dir_, "disc", mesh, two_materials(), two_states(mesh), {{"title", "t"}});
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(files[0], dir_ / "disc.pvd");
+  std::stringstream pvd;
+  pvd << std::ifstream(files[0]).rdbuf();
+  EXPECT_NE(pvd.str().find("disc_0000.vtu"), std::string::npos);
+  EXPECT_NE(pvd.str().find("disc_0001.vtu"), std::string::npos);
+  EXPECT_NE(pvd.str().find("0.25"), std::string::npos);
+  for (int s = 0; s < 2; ++s) {
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(files[s + 1].c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    ASSERT_EQ(grid->GetNumberOfPoints(), mesh.num_nodes());
+    vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
+    vtkDataArray* v = grid->GetPointData()->GetArray("velocity");
+    ASSERT_NE(u, nullptr);
+    ASSERT_NE(v, nullptr);
+    ASSERT_EQ(v->GetNumberOfComponents(), 3);
+    for (int i = 0; i < mesh.num_nodes(); ++i) {
+      const Eigen::Vector2d& x = mesh.nodes[i];
+      EXPECT_DOUBLE_EQ(u->GetComponent(i, 0), s * 0.1 * x.x());
+      EXPECT_DOUBLE_EQ(u->GetComponent(i, 1), -s * 0.2 * x.y());
+      EXPECT_DOUBLE_EQ(v->GetComponent(i, 0), s + 1.0);
+      EXPECT_DOUBLE_EQ(v->GetComponent(i, 1), 2.0 * s - 1.0);
+      EXPECT_EQ(v->GetComponent(i, 2), 0.0);
+    }
+  }
+}
+
+TEST_F(HistoryVtk, RefusesWrongShapesAndNaN) {
+  const Mesh mesh = test::small_mesh();
+  Ds hist = two_states(mesh);
+  hist.put("output_time", std::vector<double>{0.0}); // two states in u, one time
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+  hist = two_states(mesh);
+  std::vector<double> v = hist.reals("v");
+  v[3] = std::numeric_limits<double>::quiet_NaN();
+  hist.put("v", v, hist.shape("u"));
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+}
+
+} // namespace
+} // namespace sig
