@@ -8,6 +8,7 @@
 #include "mesh/mesh.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/methods.hpp"
+#include "solver/nodal_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -174,26 +175,13 @@ public:
     return K;
   }
 
-  /// u = Q w: at contact node p the dofs become (t_p . u_p, -n_p . u_p), the normal
-  /// displacement u_n,p in the place of u2 (as in static_solve.cpp).
+  /// u = Q w in nodal frames at the contact nodes (solver/nodal_frames.hpp), at the current
+  /// normals.
   Eigen::SparseMatrix<double> nodal_frames(const Iterate& x) const {
-    std::vector<char> rotated(dofs(), 0);
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int p = 0; p < contacts(); ++p) {
-      const Eigen::Vector2d& n = x.normal[p];
-      const Eigen::Vector2d tangent(-n.y(), n.x());
-      for (int a = 0; a < 2; ++a) {
-        const int row = 2 * node(p) + a;
-        rotated[row] = 1;
-        entries.emplace_back(row, 2 * node(p), tangent[a]);
-        entries.emplace_back(row, 2 * node(p) + 1, -n[a]);
-      }
-    }
-    for (int i = 0; i < dofs(); ++i)
-      if (!rotated[i]) entries.emplace_back(i, i, 1.0);
-    Eigen::SparseMatrix<double> Q(dofs(), dofs());
-    Q.setFromTriplets(entries.begin(), entries.end());
-    return Q;
+    std::vector<std::array<int, 2>> pairs(contacts());
+    for (int p = 0; p < contacts(); ++p)
+      pairs[p] = {2 * node(p), 2 * node(p) + 1};
+    return sig::nodal_frames(dofs(), pairs, x.normal);
   }
 
 private:
