@@ -7,19 +7,16 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 
+#include "mesh/topology.hpp"
 #include <algorithm>
 #include <cstdint>
+
 #include <unordered_map>
 #include <vector>
 
 namespace sig {
 
 namespace {
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
 
 // The triangles on each side of every mesh edge, to find the sub-domain (thickness) and the
 // outward side of a referenced edge.

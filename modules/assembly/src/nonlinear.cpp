@@ -60,7 +60,13 @@ double hyperelastic_energy(const Mesh& mesh, const MaterialTable& table, const E
     const HyperelasticLaw& law = law_of(material);
     const Kinematics k = kinematics(mesh, t, material.thickness, u);
     if (!(k.F.determinant() > 0.0)) return std::numeric_limits<double>::infinity();
-    energy += k.volume * law.energy(k.F);
+    // A law with no admissible state at F (plane-stress Saint Venant-Kirchhoff stretched past
+    // its limit) is, for a line search, the same as an inverted triangle.
+    try {
+      energy += k.volume * law.energy(k.F);
+    } catch (const Error&) {
+      return std::numeric_limits<double>::infinity();
+    }
   }
   return energy;
 }

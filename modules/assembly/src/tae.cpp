@@ -51,6 +51,10 @@ Eigen::SparseMatrix<double> from_csr(const std::filesystem::path& path, std::int
                path.string() << ": array 'K_rowptr' decreases at row " << i);
     A.outerIndexPtr()[i] = static_cast<int>(rowptr[i] - 1);
   }
+  for (std::int64_t i = 0; i < n; ++i)
+    for (std::int64_t k = rowptr[i]; k < rowptr[i + 1] - 1; ++k)
+      SIG_VERIFY(col[k] > col[k - 1], path.string() << ": array 'K_col' is not increasing in row "
+                                                    << i + 1 << " (Eigen needs sorted columns)");
   for (std::size_t k = 0; k < col.size(); ++k) {
     SIG_VERIFY(col[k] >= 1 && col[k] <= n,
                path.string() << ": array 'K_col' entry " << k + 1 << " out of range");

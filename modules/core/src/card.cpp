@@ -21,7 +21,9 @@ const std::string* find_value(const Card& card, const std::string& name) {
 double parse_real(const Card& card, const std::string& name, const std::string& text) {
   const char* first = text.data();
   const char* last = text.data() + text.size();
-  if (first != last && *first == '+') ++first;
+  // from_chars refuses a leading '+'; skip one, but not a second sign ("+-3").
+  if (first != last && *first == '+' && (first + 1 == last || (first[1] != '-' && first[1] != '+')))
+    ++first;
   double x = 0;
   const auto [end, error] = std::from_chars(first, last, x);
   if (error == std::errc::result_out_of_range)
@@ -35,7 +37,9 @@ double parse_real(const Card& card, const std::string& name, const std::string& 
 long parse_integer(const Card& card, const std::string& name, const std::string& text) {
   const char* first = text.data();
   const char* last = text.data() + text.size();
-  if (first != last && *first == '+') ++first;
+  // from_chars refuses a leading '+'; skip one, but not a second sign ("+-3").
+  if (first != last && *first == '+' && (first + 1 == last || (first[1] != '-' && first[1] != '+')))
+    ++first;
   long n = 0;
   const auto [end, error] = std::from_chars(first, last, n);
   if (error == std::errc::result_out_of_range)

@@ -102,6 +102,13 @@ const std::vector<CardSpec>& card_schema() {
            {"eps", "tolerance of stopping test (iv): relative increment and residual"},
            {"maxit", "maximum number of nonlinear iterations"},
        }},
+      {"LOADSTEPS",
+       false,
+       "load stepping of the large-deformation solve (hyperelastic laws, sig-solve): the "
+       "imposed displacements and loads grow in n equal steps, each solved by Newton",
+       {
+           {"n", "number of load steps, >= 1 (default 1)"},
+       }},
       {"TIME",
        false,
        "time marching of elastodynamics (stage sig-march; without contact for now)",

@@ -23,8 +23,10 @@ int main(int argc, char** argv) {
     sig::write_mili(args.ds_path("mili"), table, datafile.title());
     for (const sig::SubdomainMaterial& m : table.entries) {
       std::ostringstream line;
-      line << "sub-domain " << m.subdomain << ": hooke E=" << m.hooke.E << " nu=" << m.hooke.nu
-           << " plane " << (m.hooke.plane == sig::PlaneMode::strain ? "strain" : "stress")
+      line << "sub-domain " << m.subdomain << ": "
+           << (m.hyperelastic ? m.hyperelastic->name() + " (small-strain limit" : "hooke (")
+           << " E=" << m.hooke.E << " nu=" << m.hooke.nu << ") plane "
+           << (m.hooke.plane == sig::PlaneMode::strain ? "strain" : "stress")
            << " thickness=" << m.thickness << " rho=" << m.density;
       sig::log_info(line.str());
     }

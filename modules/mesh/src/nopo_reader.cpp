@@ -51,7 +51,7 @@ public:
   }
 
   void skip_records(std::int64_t n, const std::string& name) {
-    SIG_VERIFY(next_ + n <= records_.payloads.size(),
+    SIG_VERIFY(n >= 0 && static_cast<std::size_t>(n) <= records_left(),
                file_ << ": the file ends before the " << n << " records of " << name);
     next_ += n;
   }

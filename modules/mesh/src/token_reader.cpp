@@ -56,7 +56,9 @@ long TokenReader::integer() {
 
 double TokenReader::real() {
   std::string_view token = word();
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1); // from_chars refuses '+'
+  // from_chars refuses a leading '+'; skip one, but not a second sign ("+-3").
+  if (token.size() > 1 && token.front() == '+' && token[1] != '-' && token[1] != '+')
+    token.remove_prefix(1);
   double value = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (ec != std::errc() || end != token.data() + token.size())
