@@ -113,12 +113,15 @@ int main(int argc, char** argv) {
     const auto times =
         sig::gather_times({tae ? &*tae : nullptr, contact_case ? &cont : nullptr, &solution});
     sig::Json summary = sig::build_summary(datafile.title(), mesh, solution, contact, times);
-    // Total potential energy 1/2 a(u,u) - f.u: its differences between meshes measure the
-    // energy-norm error.
+    // Total potential energy W - f.u: its differences between meshes measure the energy-norm
+    // error.
     if (tae) {
       const std::vector<double> load = tae->reals("f");
       double work = 0;
-      for (std::size_t i = 0; i < load.size() && i < u.size(); ++i)
+      SIG_VERIFY(load.size() == u.size(), args.ds_path("tae").string()
+                                              << ": array 'f' holds " << load.size()
+                                              << " values, case.b's 'u' " << u.size());
+      for (std::size_t i = 0; i < load.size(); ++i)
         work += load[i] * u[i];
       const double strain = sig::strain_energy(mesh, u, materials);
       summary.set("energy",

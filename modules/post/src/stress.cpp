@@ -1,6 +1,10 @@
 #include "post/stress.hpp"
 
 #include "core/error.hpp"
+#include "material/hyperelastic.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
 
 namespace sig {
 
@@ -23,6 +27,24 @@ Eigen::Vector3d triangle_strain(const Mesh& mesh, const std::vector<double>& u, 
   return e;
 }
 
+namespace {
+
+/// F = I + grad u of triangle t; the strain (e11, e22, 2 e12) holds the same gradient.
+Eigen::Matrix2d deformation_gradient(const Mesh& mesh, const std::vector<double>& u, int t) {
+  const auto& tri = mesh.triangles[t];
+  const double two_area = signed_double_area(mesh, t);
+  Eigen::Matrix2d F = Eigen::Matrix2d::Identity();
+  for (int i = 0; i < 3; ++i) {
+    const auto& pj = mesh.nodes[tri[(i + 1) % 3]];
+    const auto& pk = mesh.nodes[tri[(i + 2) % 3]];
+    const Eigen::Vector2d gradient((pj.y() - pk.y()) / two_area, (pk.x() - pj.x()) / two_area);
+    F += Eigen::Vector2d(u[2 * tri[i]], u[2 * tri[i] + 1]) * gradient.transpose();
+  }
+  return F;
+}
+
+} // namespace
+
 CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
                          const MaterialTable& materials) {
   SIG_VERIFY(u.size() == 2 * mesh.nodes.size(),
@@ -31,7 +53,20 @@ CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
   out.stress.reserve(4 * mesh.triangles.size());
   out.von_mises.reserve(mesh.triangles.size());
   for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const Hooke& hooke = materials.of(mesh.subdomain[t]).hooke;
+    const SubdomainMaterial& material = materials.of(mesh.subdomain[t]);
+    if (material.hyperelastic) {
+      // Cauchy stress sigma = P F^T / J of the large-deformation law. The 2D laws return the
+      // in-plane P only, so s33 is not available: written 0, and von Mises is that of the
+      // in-plane Cauchy stress (plane-stress formula).
+      const Eigen::Matrix2d F = deformation_gradient(mesh, u, t);
+      const HyperelasticResponse r = material.hyperelastic->response(F);
+      const Eigen::Matrix2d sigma = r.stress * F.transpose() / (F.determinant() * r.stretch33);
+      out.stress.insert(out.stress.end(), {sigma(0, 0), sigma(1, 1), sigma(0, 1), 0.0});
+      out.von_mises.push_back(std::sqrt(sigma(0, 0) * sigma(0, 0) + sigma(1, 1) * sigma(1, 1) -
+                                        sigma(0, 0) * sigma(1, 1) + 3 * sigma(0, 1) * sigma(0, 1)));
+      continue;
+    }
+    const Hooke& hooke = material.hooke;
     const Eigen::Vector3d strain = triangle_strain(mesh, u, t);
     const Eigen::Vector3d s = hooke.stress(strain);
     out.stress.insert(out.stress.end(), {s[0], s[1], s[2], hooke.stress33(strain)});
@@ -40,10 +75,6 @@ CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
   return out;
 }
 
-} // namespace sig
-
-namespace sig {
-
 double strain_energy(const Mesh& mesh, const std::vector<double>& u,
                      const MaterialTable& materials) {
   SIG_VERIFY(u.size() == 2 * mesh.nodes.size(),
@@ -51,8 +82,10 @@ double strain_energy(const Mesh& mesh, const std::vector<double>& u,
   double energy = 0;
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     const SubdomainMaterial& material = materials.of(mesh.subdomain[t]);
-    energy += material.hooke.energy_density(triangle_strain(mesh, u, t)) * 0.5 *
-              signed_double_area(mesh, t) * material.thickness;
+    const double density = material.hyperelastic
+                               ? material.hyperelastic->energy(deformation_gradient(mesh, u, t))
+                               : material.hooke.energy_density(triangle_strain(mesh, u, t));
+    energy += density * 0.5 * signed_double_area(mesh, t) * material.thickness;
   }
   return energy;
 }

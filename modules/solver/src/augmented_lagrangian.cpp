@@ -61,7 +61,8 @@ ContactSolution AugmentedLagrangian::solve(const ContactProblem& problem) const 
                   std::to_string(count_active(active)) + " nodes)";
       break;
     }
-    const double increment = relative_change(stack(step.u, step.reaction), stack(u, lambda));
+    const double increment = relative_change(stack(step.u, step.reaction, problem.weight),
+                                             stack(u, lambda, problem.weight));
     u = step.u;
     lambda = step.reaction;
     const double res = residual(problem, u, lambda, r);

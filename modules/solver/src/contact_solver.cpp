@@ -27,9 +27,10 @@ double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before
   return (now - before).norm() / std::max(now.norm(), 1e-300);
 }
 
-Eigen::VectorXd stack(const Eigen::VectorXd& u, const Eigen::VectorXd& lambda) {
+Eigen::VectorXd stack(const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
+                      const Eigen::VectorXd& weight) {
   Eigen::VectorXd x(u.size() + lambda.size());
-  x << u, lambda;
+  x << u, lambda.cwiseQuotient(weight);
   return x;
 }
 

@@ -61,6 +61,10 @@ public:
   int contacts() const { return problem_.contact ? problem_.contact->size() : 0; }
   int node(int p) const { return problem_.contact->node[p]; }
   double weight(int p) const { return problem_.contact->weight[p]; }
+  /// The nodal weights (empty without contact).
+  Eigen::VectorXd weights() const {
+    return problem_.contact ? problem_.contact->weight : Eigen::VectorXd();
+  }
   Method method() const { return method_; }
   const ContactSolverParameters& parameters() const { return options_.contact; }
   const SparsityPattern& pattern() const { return pattern_; }
@@ -316,8 +320,8 @@ LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& prob
       break;
     }
 
-    const double increment =
-        relative_change(stack(accepted.u, accepted.lambda), stack(x.u, x.lambda));
+    const double increment = relative_change(stack(accepted.u, accepted.lambda, setting.weights()),
+                                             stack(x.u, x.lambda, setting.weights()));
     x = std::move(accepted);
     const double residual = setting.residual_norm(x, s, dirichlet) / setting.force_scale(x, s);
     double mismatch = 0;

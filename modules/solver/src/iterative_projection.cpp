@@ -74,7 +74,8 @@ ContactSolution IterativeProjection::solve(const ContactProblem& problem) const 
     for (int p = 0; p < m; ++p)
       if (!active[p]) lambda_new[p] = problem.weight[p] * (un[p] - un_old[p]) / c;
 
-    const double increment = relative_change(stack(step.u, lambda_new), stack(u, lambda));
+    const double increment = relative_change(stack(step.u, lambda_new, problem.weight),
+                                             stack(u, lambda, problem.weight));
     u = step.u;
     lambda = lambda_new;
     const double r = residual(problem, u, lambda, c);

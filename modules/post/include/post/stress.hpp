@@ -1,6 +1,7 @@
 #pragma once
-// Stresses for the ParaView output: the P1 strain is constant on each triangle, and the Hooke law
-// of the triangle's sub-domain (MILI) turns it into a stress, with sigma33 for plane strain.
+// Stresses for the ParaView output: the P1 strain (or deformation gradient) is constant on each
+// triangle, and the law of the triangle's sub-domain (MILI) turns it into a stress: Hooke's, with
+// sigma33 for plane strain, or the Cauchy stress of a hyperelastic law.
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 
@@ -23,7 +24,8 @@ struct CellStress {
 CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
                          const MaterialTable& materials);
 
-/// Strain energy 1/2 a(u, u) = sum over triangles of W(eps) x area x thickness; with the work of
+/// Strain energy: sum over triangles of W x area x thickness (W(eps) of Hooke, 1/2 a(u, u), or
+/// W(F) of a hyperelastic law); with the work of
 /// the loads it gives the total potential energy, whose differences between meshes measure the
 /// energy-norm error (the thesis's Fig 7.10 is an error in the norm of V).
 double strain_energy(const Mesh& mesh, const std::vector<double>& u,

@@ -6,7 +6,8 @@
 //   primal_dual_active_set.cpp  PDAS (3.20)-(3.32)
 //   iterative_projection.cpp  iterative projection with the Robin condition (7.16)-(7.22)
 // Every method stops with test (iv): relative increment <= eps, relative residual <= eps and the
-// active set unchanged. Non-convergence is a result ("Nv"), returned with its history.
+// active set unchanged (ALM: the thesis's test (iii), without the active set). Non-convergence is a
+// result ("Nv"), returned with its history.
 #include "solver/contact_problem.hpp"
 
 #include <memory>

@@ -73,8 +73,10 @@ double contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u,
                     std::sqrt(sum) / std::max(problem.f.norm(), 1e-300));
 }
 
-/// x = (u, lambda), the Newton vector of test (iv).
-Eigen::VectorXd stack(const Eigen::VectorXd& u, const Eigen::VectorXd& lambda);
+/// x = (u, lambda / w), the Newton vector of test (iv), with the multipliers as pressures (the
+/// thesis's densities): nodal forces would shrink with h and weigh less on finer meshes.
+Eigen::VectorXd stack(const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,
+                      const Eigen::VectorXd& weight);
 int count_active(const std::vector<char>& active);
 
 } // namespace sig
