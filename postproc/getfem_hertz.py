@@ -182,7 +182,9 @@ def main():
 
     # Pressure = nodal force / tributary length, nodes ordered by angle along the arc.
     lam = np.asarray(md.variable("lambda_n")).ravel()
-    force = -lam if lam.sum() < 0 else lam  # GetFEM's multiplier is negative in compression
+    force = -lam  # GetFEM's nodal contact multiplier is negative in compression
+    if force.sum() <= 0:
+        fail(f"GetFEM's contact multipliers sum to {lam.sum():g}: expected a compressive (negative) sum")
     xy = nodes[:, contact_x]
     order = np.argsort(np.arctan2(xy[1] - R, xy[0]))
     weights = np.empty(nbc)

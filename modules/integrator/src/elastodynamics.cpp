@@ -61,6 +61,8 @@ Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice c
   case MassChoice::lumped:
     return diagonal_mass(system.M_lumped);
   case MassChoice::emm:
+    // Without contact nodes the EMM would be the consistent mass under another name.
+    SIG_VERIFY(!contact.nodes.empty(), "mass=emm needs the contact nodes (a CONTACT card)");
     return equivalent_mass_matrix(system.M, mesh, contact);
   }
   return system.M;
