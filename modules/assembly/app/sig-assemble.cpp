@@ -18,23 +18,22 @@ int main(int argc, char** argv) {
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
-    // The small-strain chain would silently use a hyperelastic law's linearization.
-    for (const sig::Card* card : datafile.all("MATERIAL"))
-      if (const std::string law =
-              card->choice("law", {"hooke", "svk", "ciarlet-geymonat"}, "hooke");
-          law != "hooke")
-        card->fail("law", "law " + law +
-                              " is for large deformation, which no stage solves yet (the "
-                              "small-strain chain takes law=hooke)");
+    // A hyperelastic law is solved in large deformation by sig-solve (it reads the laws from the
+    // MILI), which needs from here only the Dirichlet dofs and loads: K, the linearization at
+    // u = 0, is then unused.
+    bool finite_strain = false;
+    for (const sig::SubdomainMaterial& entry : table.entries)
+      finite_strain = finite_strain || entry.hyperelastic != nullptr;
 
     // 2. Pattern, stiffness, mass, loads, Dirichlet dofs.
     const sig::LinearSystem system = sig::assemble_system(mesh, table, datafile);
 
     // 3. Write the TAE and report its size.
     sig::write_tae(args.ds_path("tae"), system, datafile.title());
-    std::printf("dofs %d  nnz %ld  dirichlet %zu  mass %s  assembly %.3f s\n", system.num_dofs(),
+    std::printf("dofs %d  nnz %ld  dirichlet %zu  mass %s  assembly %.3f s%s\n", system.num_dofs(),
                 static_cast<long>(system.K.nonZeros()), system.dirichlet_dofs.size(),
-                system.M.size() > 0 ? "consistent" : "none", system.assemble_seconds);
+                system.M.size() > 0 ? "consistent" : "none", system.assemble_seconds,
+                finite_strain ? "  (finite strain: K unused)" : "");
     sig::log_info("wrote " + args.ds_path("tae").string());
   });
 }

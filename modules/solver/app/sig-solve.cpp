@@ -3,17 +3,26 @@
 //   SOLVER method=linear|alm|penalty|pdas|projection linear=cholmod|umfpack|mumps
 //          r= gamma= c= eps= maxit=
 //
+//   LOADSTEPS n=   (hyperelastic laws only; default 1)
+//
 // Reads case.tae (sig-assemble) and, when the datafile has a CONTACT card, case.cont
-// (sig-contact). Non-convergence of a contact method is a result: the stage exits 0 and the DS
-// records converged = 0 with the iteration history ("Nv" in the tables).
+// (sig-contact). When the MILI (case.mili) has a hyperelastic law the problem is solved in large
+// deformation (solver/finite_strain_stage.hpp): Newton in LOADSTEPS steps up to the imposed
+// displacements of case.tae, with per-step results in case.b. Non-convergence of a contact method
+// is a result: the stage exits 0 and the DS records converged = 0 with the iteration history ("Nv"
+// in the tables).
 #include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "material/mili.hpp"
+#include "mesh/nopo.hpp"
+#include "solver/finite_strain_stage.hpp"
 #include "solver/solution_ds.hpp"
 
 #include <iostream>
+#include <optional>
 
 int main(int argc, char** argv) {
   return sig::run_stage("solve", [&] {
@@ -49,7 +58,36 @@ int main(int argc, char** argv) {
     // 2. The assembled system and the contact elements.
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
 
-    // 3. Solve.
+    // 3. Large deformation when a law is hyperelastic (the TAE's K is then unused).
+    const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
+    if (sig::has_hyperelastic_law(table)) {
+      const sig::Card* steps_card = datafile.find("LOADSTEPS");
+      sig::FiniteStrainOptions options;
+      options.contact = parameters;
+      options.backend = backend;
+      options.load_steps = steps_card ? static_cast<int>(steps_card->integer("n", 1)) : 1;
+      if (options.load_steps < 1) steps_card->fail("n", "must be at least 1");
+      if (method == "linear") options.contact.method = "pdas"; // no contact nodes: plain Newton
+      const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+      std::optional<sig::ContactElements> contact;
+      if (has_contact) contact = sig::read_cont(args.ds_path("cont"));
+      const sig::FiniteStrainStageResult result = sig::solve_finite_strain_stage(
+          mesh, table, system, contact ? &*contact : nullptr, options);
+      sig::write_finite_strain_solution(args.ds_path("b"), result, method, backend,
+                                        datafile.title());
+      const sig::FiniteStrainSolution& s = result.solution;
+      std::cout << "sig-solve: finite strain, " << method << " (" << backend << "), " << s.unknowns
+                << " dofs, " << s.steps.size() << "/" << options.load_steps << " load steps, "
+                << (s.converged() ? "converged" : "NOT converged (Nv)") << " in "
+                << s.total_iterations() << " iterations (per step:";
+      for (const sig::LoadStepResult& step : s.steps)
+        std::cout << " " << step.iterations() << (step.converged ? "" : "Nv");
+      std::cout << "), reaction " << result.reaction_x << "," << result.reaction_y << ", solve "
+                << result.seconds << " s -> " << args.ds_path("b").string() << "\n";
+      return;
+    }
+
+    // 4. Solve.
     sig::StaticSolution solution;
     if (method == "linear") {
       solution = sig::solve_linear_elasticity(system, backend);
@@ -58,7 +96,7 @@ int main(int argc, char** argv) {
       solution = sig::solve_static_contact(system, contact, parameters, backend);
     }
 
-    // 4. Write case.b and report.
+    // 5. Write case.b and report.
     sig::write_solution(args.ds_path("b"), solution, method, backend, datafile.title());
     std::cout << "sig-solve: " << method << " (" << backend << "), " << solution.unknowns
               << " dofs, " << (solution.converged ? "converged" : "NOT converged (Nv)") << " in "

@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# drivers/scene7b.sh [--quick | --full] [-o OUTDIR]: the hyperelastic ring of thesis ch. 7.4.2
+# (scene 7b, ../shared/SCENES.md) with the methods and parameters of Tables 7.4 and 7.5, then its
+# report.
+#
+#   default: N = 128 256
+#   --quick: N = 128          (about 30 s on 2 cores)
+#   --full:  N = 128 256 512
+#
+# Per N the bulk stages (sig-mesh, sig-material, sig-contact, sig-assemble) run once into
+# OUTDIR/N<N>/base/; each method and parameter then gets OUTDIR/N<N>/<method>[_<value>]/ with
+# symlinks to the base DS files, its own deck (datafiles/scene7b/ring.dat with N, method and
+# parameter replaced) and the case.b of sig-solve (large deformation: 14 load steps).
+#
+#   pdas        gamma in 10 1e2 1e3 1e4 1e5 1e6   (Table 7.5)
+#   projection  c     in 10 1e2 1e3 1e4 1e5 1e6   (Table 7.4)
+#   alm         r = 1e3                           (the ALM column of Table 7.4; the thesis does
+#                                                  not print its r)
+# Then postproc/scene7b_report.py OUTDIR writes OUTDIR/report.md.
+#
+# Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
+set -euo pipefail
+
+usage() {
+  cat <<EOF
+usage: drivers/scene7b.sh [--quick | --full] [-o OUTDIR]
+  --quick     N = 128 instead of 128 256
+  --full      N = 128 256 512
+  -o OUTDIR   results folder (default out/scene7b)
+  -h, --help  this message
+Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
+EOF
+}
+
+die() {
+  echo "scene7b.sh: error: $*" >&2
+  exit 1
+}
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=${SIG_BIN:-$root/build/bin}
+python=${PYTHON:-/usr/bin/python3}
+out=$root/out/scene7b
+sizes=(128 256)
+while [ $# -gt 0 ]; do
+  case $1 in
+    --quick) sizes=(128) ;;
+    --full) sizes=(128 256 512) ;;
+    -o) [ $# -ge 2 ] || die "-o needs a folder"; out=$2; shift ;;
+    -h | --help) usage; exit 0 ;;
+    *) usage >&2; exit 2 ;;
+  esac
+  shift
+done
+template=$root/datafiles/scene7b/ring.dat
+[ -r "$template" ] || die "cannot read $template"
+for stage in mesh material contact assemble solve; do
+  [ -x "$bin/sig-$stage" ] || die "no $bin/sig-$stage (build first, or set SIG_BIN)"
+done
+
+# deck TEMPLATE OUTPUT N METHOD FIELD VALUE: the template with MESH N= and the SOLVER card's
+# method and parameter replaced (any r=, gamma=, c= of the template dropped).
+deck() {
+  sed -E -e "/^[[:space:]]*MESH[[:space:]]/ s/N=[0-9]+/N=$3/" \
+    -e "/^[[:space:]]*SOLVER[[:space:]]/ { s/method=[a-z]+/method=$4/; s/ (gamma|c|r)=[^[:space:]]+//g; s/\$/ $5=$6/ }" \
+    "$1" >"$2"
+}
+
+declare -A field=([pdas]=gamma [projection]=c [alm]=r)
+declare -A values=([pdas]="10 1e2 1e3 1e4 1e5 1e6" [projection]="10 1e2 1e3 1e4 1e5 1e6" [alm]="1e3")
+rm -rf "$out"
+for n in "${sizes[@]}"; do
+  base=$out/N$n/base
+  mkdir -p "$base"
+  deck "$template" "$base/ring.dat" "$n" pdas gamma 1e3
+  for stage in mesh material contact assemble; do
+    "$bin/sig-$stage" "$base/ring.dat" -o "$base" >"$base/$stage.log" 2>&1 ||
+      die "sig-$stage failed at N = $n (see $base/$stage.log)"
+  done
+  for method in pdas alm projection; do
+    for value in ${values[$method]}; do
+      if [ "$method" = alm ]; then dir=$out/N$n/alm; else dir=$out/N$n/${method}_$value; fi
+      mkdir -p "$dir"
+      for ds in nopo mili cont tae; do ln -s "$base/case.$ds" "$dir/case.$ds"; done
+      deck "$template" "$dir/ring.dat" "$n" "$method" "${field[$method]}" "$value"
+      "$bin/sig-solve" "$dir/ring.dat" -o "$dir" >"$dir/solve.log" 2>&1 ||
+        die "sig-solve failed for N = $n $method $value (see $dir/solve.log)"
+      echo "N=$n $method ${field[$method]}=$value: $(grep -o '[0-9/]* load steps.*' "$dir/solve.log" | sed 's/, solve.*//')"
+    done
+  done
+done
+"$python" "$root/postproc/scene7b_report.py" "$out"

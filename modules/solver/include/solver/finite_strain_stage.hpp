@@ -1,0 +1,48 @@
+#pragma once
+// The large-deformation branch of sig-solve (Scene 7b): a hyperelastic body (some MILI law with
+// a hyperelastic part) pressed onto a rigid obstacle in load steps (solver/finite_strain_contact
+// .hpp), from the files of the small-strain chain: case.tae gives the Dirichlet dofs with their
+// FINAL imposed values and the loads (its K, the linearization at u = 0, is not used), case.cont
+// the contact elements and the obstacle.
+//
+// The support reactions are reported because a thin ring may leave the symmetric branch and
+// sway sideways (SCENES.md "Scene 7b"): a horizontal reaction that is not ~0 shows it.
+#include "solver/finite_strain_contact.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace sig {
+
+struct LinearSystem;
+
+struct FiniteStrainStageResult {
+  FiniteStrainSolution solution;
+  /// Force that the supports exert on the body at the end of the last attempted step, summed
+  /// over the Dirichlet dofs: sum of (f_int(u) - s f_ext) over the x (resp. y) rows.
+  double reaction_x = 0;
+  double reaction_y = 0;
+  double seconds = 0; ///< wall time of the solve
+};
+
+/// True if some sub-domain of `table` has a hyperelastic law.
+bool has_hyperelastic_law(const MaterialTable& table);
+
+/// Load-stepped Newton for the data of `system` (Dirichlet dofs and values, loads f), with the
+/// contact elements `contact` (may be null: no contact). sig::Error as in
+/// solve_finite_strain_contact, and if a sub-domain is not hyperelastic.
+FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const MaterialTable& table,
+                                                  const LinearSystem& system,
+                                                  const ContactElements* contact,
+                                                  const FiniteStrainOptions& options);
+
+/// DS "B" of a finite-strain solve: u, multiplier, status of the last attempted step; method,
+/// linear, converged (1 iff every step converged), iterations (total), dofs, failure, load_steps;
+/// per step step_load, step_iterations, step_converged; the histories of all steps concatenated
+/// (history_active, history_residual, history_increment, history_step = 1-based step);
+/// finite_strain = 1; scalars reaction_x, reaction_y, time_solve.
+void write_finite_strain_solution(const std::filesystem::path& path,
+                                  const FiniteStrainStageResult& result, const std::string& method,
+                                  const std::string& backend, const std::string& title);
+
+} // namespace sig

@@ -1,0 +1,126 @@
+#include "solver/finite_strain_stage.hpp"
+
+#include "assembly/nonlinear.hpp"
+#include "assembly/pattern.hpp"
+#include "assembly/system.hpp"
+#include "contact/obstacle.hpp"
+#include "core/ds.hpp"
+#include "core/error.hpp"
+#include "material/mili.hpp"
+#include "mesh/mesh.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+namespace sig {
+
+bool has_hyperelastic_law(const MaterialTable& table) {
+  for (const SubdomainMaterial& entry : table.entries)
+    if (entry.hyperelastic) return true;
+  return false;
+}
+
+FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const MaterialTable& table,
+                                                  const LinearSystem& system,
+                                                  const ContactElements* contact,
+                                                  const FiniteStrainOptions& options) {
+  for (const SubdomainMaterial& entry : table.entries)
+    SIG_VERIFY(entry.hyperelastic, "sub-domain " << entry.subdomain
+                                                 << " has law=hooke: a large-deformation solve "
+                                                    "needs a hyperelastic law everywhere");
+  std::unique_ptr<Obstacle> obstacle;
+  if (contact != nullptr && contact->size() > 0) obstacle = make_obstacle(contact->obstacle);
+
+  FiniteStrainProblem problem;
+  problem.mesh = &mesh;
+  problem.materials = &table;
+  problem.dirichlet_dofs = system.dirichlet_dofs;
+  problem.dirichlet_values = system.dirichlet_values;
+  problem.load = system.f;
+  problem.contact = contact;
+  problem.obstacle = obstacle.get();
+
+  FiniteStrainStageResult result;
+  const auto start = std::chrono::steady_clock::now();
+  result.solution = solve_finite_strain_contact(problem, options);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // Reactions at the last attempted step: the equilibrium residual f_int - s f_ext on the
+  // imposed dofs is what the supports must supply (contact nodes carry no Dirichlet dof).
+  if (!result.solution.steps.empty()) {
+    const LoadStepResult& last = result.solution.steps.back();
+    if (last.u.allFinite() && std::isfinite(hyperelastic_energy(mesh, table, last.u))) {
+      HyperelasticState state;
+      assemble_hyperelastic(mesh, table, SparsityPattern(mesh), last.u, state);
+      for (int dof : system.dirichlet_dofs) {
+        double r = state.internal_force[dof];
+        if (system.f.size() > 0) r -= last.load_factor * system.f[dof];
+        (dof % 2 == 0 ? result.reaction_x : result.reaction_y) += r;
+      }
+    }
+  }
+  return result;
+}
+
+void write_finite_strain_solution(const std::filesystem::path& path,
+                                  const FiniteStrainStageResult& result, const std::string& method,
+                                  const std::string& backend, const std::string& title) {
+  const FiniteStrainSolution& solution = result.solution;
+  Ds ds("B", title, "sig-solve");
+  ds.put_int("finite_strain", 1);
+  ds.put_text("method", method);
+  ds.put_text("linear", backend);
+  ds.put_int("converged", solution.converged() ? 1 : 0);
+  ds.put_int("iterations", solution.total_iterations());
+  ds.put_int("dofs", solution.unknowns);
+  ds.put_int("load_steps", static_cast<std::int64_t>(solution.steps.size()));
+
+  std::vector<double> load;
+  std::vector<std::int64_t> step_iterations, step_converged, history_active, history_step;
+  std::vector<double> residual, increment;
+  std::string failure;
+  for (std::size_t k = 0; k < solution.steps.size(); ++k) {
+    const LoadStepResult& step = solution.steps[k];
+    load.push_back(step.load_factor);
+    step_iterations.push_back(step.iterations());
+    step_converged.push_back(step.converged ? 1 : 0);
+    if (!step.converged && failure.empty())
+      failure = "load step " + std::to_string(k + 1) + ": " + step.failure;
+    for (const IterationRecord& h : step.history) {
+      history_active.push_back(h.active);
+      residual.push_back(h.residual);
+      increment.push_back(h.increment);
+      history_step.push_back(static_cast<std::int64_t>(k + 1));
+    }
+  }
+  ds.put_text("failure", failure);
+  ds.put("step_load", std::span<const double>(load));
+  ds.put("step_iterations", std::span<const std::int64_t>(step_iterations));
+  ds.put("step_converged", std::span<const std::int64_t>(step_converged));
+  ds.put("history_active", std::span<const std::int64_t>(history_active));
+  ds.put("history_residual", std::span<const double>(residual));
+  ds.put("history_increment", std::span<const double>(increment));
+  ds.put("history_step", std::span<const std::int64_t>(history_step));
+
+  if (!solution.steps.empty()) {
+    const LoadStepResult& last = solution.steps.back();
+    // A NaN here would flow silently into every report: refuse it where it is made.
+    for (Eigen::Index i = 0; i < last.u.size(); ++i)
+      SIG_VERIFY(std::isfinite(last.u[i]), path.string()
+                                               << ": array 'u' would hold " << last.u[i]
+                                               << " at dof " << i + 1 << "; nothing written");
+    ds.put("u", std::span<const double>(last.u.data(), last.u.size()));
+    if (last.multiplier.size() > 0) {
+      ds.put("multiplier", std::span<const double>(last.multiplier.data(), last.multiplier.size()));
+      std::vector<std::int64_t> status(last.active.begin(), last.active.end());
+      ds.put("status", std::span<const std::int64_t>(status));
+    }
+  }
+  ds.put_scalar("reaction_x", result.reaction_x);
+  ds.put_scalar("reaction_y", result.reaction_y);
+  ds.put_scalar("time_solve", result.seconds);
+  write_ds(path, ds);
+}
+
+} // namespace sig
