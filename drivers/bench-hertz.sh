@@ -19,6 +19,7 @@
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
 
 usage() {
   cat <<EOF

@@ -5,6 +5,7 @@
 # reads what the earlier ones wrote to OUTDIR (default out/<datafile stem>/). Uses $SIG_BIN, or
 # build/bin.
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${SIG_BIN:-$root/build/bin}
 if [ $# -lt 1 ]; then

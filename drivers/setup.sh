@@ -3,6 +3,7 @@
 # Idempotent: with everything installed and built it only checks and returns in seconds.
 # Sets SIG_ROOT, SIG_BUILD and SIG_BIN.
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
 SIG_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 SIG_BUILD=${SIG_BUILD:-$SIG_ROOT/build}
 SIG_BIN=$SIG_BUILD/bin

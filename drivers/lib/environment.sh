@@ -1,0 +1,4 @@
+# Sourced by every driver. One BLAS thread unless the caller says otherwise: OpenBLAS's threads
+# spin-wait, and on a shared 2-core machine they slowed the N = 512 floor solve of
+# bench-hertz.sh from 0.20 s to 0.45-0.64 s (measured under load, 3 runs each).
+export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1}
