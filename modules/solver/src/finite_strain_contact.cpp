@@ -76,7 +76,7 @@ public:
   /// Fill the bulk and contact parts of `x` at x.u; false when the body is outside the law's
   /// domain (an inverted triangle).
   bool evaluate(Iterate& x) const {
-    if (!std::isfinite(hyperelastic_energy(*problem_.mesh, *problem_.materials, x.u))) return false;
+    // The assembly refuses an inverted triangle or a law without admissible state there.
     try {
       assemble_hyperelastic(*problem_.mesh, *problem_.materials, pattern_, x.u, x.bulk);
     } catch (const Error&) {
@@ -268,10 +268,11 @@ NewtonStep newton_step(const Setting& setting, const Iterate& x, const std::vect
 }
 
 /// Line search (header): alpha = 1, 1/2, ... until the trial is admissible and lowers the
-/// residual, else the largest admissible alpha; 0 if every length folds the mesh.
+/// residual ||R(x)|| = residual_before, else the largest admissible alpha; 0 if every length
+/// folds the mesh. The accepted trial's residual norm is returned in accepted_residual.
 double line_search(const Setting& setting, const Iterate& x, const NewtonStep& step, double s,
-                   const std::vector<char>& dirichlet, Iterate& accepted) {
-  const double residual_before = setting.residual_norm(x, s, dirichlet);
+                   const std::vector<char>& dirichlet, double residual_before, Iterate& accepted,
+                   double& accepted_residual) {
   double accepted_alpha = 0;
   double alpha = 1;
   for (int h = 0; h <= kMaxHalvings; ++h, alpha /= 2) {
@@ -279,10 +280,12 @@ double line_search(const Setting& setting, const Iterate& x, const NewtonStep& s
     trial.u = x.u + alpha * step.du;
     trial.lambda = x.lambda + alpha * (step.lambda - x.lambda);
     if (!setting.evaluate(trial)) continue;
-    const bool decreases = setting.residual_norm(trial, s, dirichlet) < residual_before;
+    const double trial_residual = setting.residual_norm(trial, s, dirichlet);
+    const bool decreases = trial_residual < residual_before;
     if (accepted_alpha == 0 || decreases) {
       accepted = std::move(trial);
       accepted_alpha = alpha;
+      accepted_residual = trial_residual;
     }
     if (decreases) break;
   }
@@ -298,6 +301,7 @@ LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& prob
   result.load_factor = s;
   const Eigen::VectorXd target = s * problem.dirichlet_values;
 
+  double residual_norm = setting.residual_norm(x, s, dirichlet);
   for (int iteration = 0; iteration < c.max_iterations; ++iteration) {
     // (ii) active set, (iii) the linearized problem with it, then the line search.
     const std::vector<char> active = setting.active_set(x, previous_active);
@@ -313,7 +317,8 @@ LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& prob
       break;
     }
     Iterate accepted;
-    const double alpha = line_search(setting, x, step, s, dirichlet, accepted);
+    const double alpha =
+        line_search(setting, x, step, s, dirichlet, residual_norm, accepted, residual_norm);
     if (alpha == 0) {
       result.failure =
           "every step length down to 2^-" + std::to_string(kMaxHalvings) + " inverts a triangle";
@@ -323,7 +328,7 @@ LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& prob
     const double increment = relative_change(stack(accepted.u, accepted.lambda, setting.weights()),
                                              stack(x.u, x.lambda, setting.weights()));
     x = std::move(accepted);
-    const double residual = setting.residual_norm(x, s, dirichlet) / setting.force_scale(x, s);
+    const double residual = residual_norm / setting.force_scale(x, s);
     double mismatch = 0;
     for (Eigen::Index d = 0; d < target.size(); ++d)
       mismatch = std::max(mismatch, std::abs(target[d] - x.u[problem.dirichlet_dofs[d]]));
