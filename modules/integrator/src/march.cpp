@@ -16,7 +16,7 @@ MarchHistory march(const TimeScheme& scheme, const DynamicState& initial, int st
   double work = 0.0;
   for (int n = 1; n <= steps; ++n) {
     const Eigen::VectorXd f_bar = scheme.step_load(state.time);
-    DynamicState next = scheme.advance(state);
+    DynamicState next = scheme.advance(state, f_bar);
     work += f_bar.dot(next.u - state.u);
     state = std::move(next);
     history.energy.push_back(energy_record(scheme.problem(), state, n, work));

@@ -25,6 +25,22 @@ TimeScheme::TimeScheme(Elastodynamics problem, double k, const std::string& line
 
 TimeScheme::~TimeScheme() = default;
 
+// Solving for the increment d rather than for u_{n+1} keeps the right side free of the large
+// (4 / k^2) M u_n term, whose rounding, once differenced into v_{n+1} = (2 / k) d - v_n, grows
+// with the distance the body has travelled.
+DynamicState TimeScheme::advance(const DynamicState& state, const Eigen::VectorXd& f_bar) const {
+  check_state(state);
+  const double k = time_step();
+  const Eigen::VectorXd rhs =
+      2.0 * f_bar - 2.0 * (problem_.K * state.u) + (4.0 / k) * (problem_.M * state.v);
+  const Eigen::VectorXd d = solve_step_operator(rhs);
+  DynamicState next;
+  next.time = state.time + k;
+  next.u = state.u + d;
+  next.v = (2.0 / k) * d - state.v;
+  return next;
+}
+
 Eigen::VectorXd TimeScheme::solve_step_operator(const Eigen::VectorXd& b) const {
   return solver_->solve(b);
 }

@@ -15,7 +15,6 @@ class ImplicitMidpoint final : public TimeScheme {
 public:
   ImplicitMidpoint(Elastodynamics problem, double k, const std::string& linear_solver = "cholmod");
 
-  DynamicState advance(const DynamicState& state) const override;
   /// f(t + k / 2).
   Eigen::VectorXd step_load(double t) const override;
   std::string name() const override { return "midpoint"; }

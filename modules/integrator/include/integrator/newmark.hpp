@@ -20,7 +20,6 @@ public:
   NewmarkAverageAcceleration(Elastodynamics problem, double k,
                              const std::string& linear_solver = "cholmod");
 
-  DynamicState advance(const DynamicState& state) const override;
   /// (f(t) + f(t + k)) / 2.
   Eigen::VectorXd step_load(double t) const override;
   std::string name() const override { return "newmark"; }

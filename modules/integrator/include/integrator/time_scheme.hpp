@@ -35,7 +35,14 @@ public:
   TimeScheme& operator=(const TimeScheme&) = delete;
 
   /// The state at state.time + k.
-  virtual DynamicState advance(const DynamicState& state) const = 0;
+  DynamicState advance(const DynamicState& state) const {
+    return advance(state, step_load(state.time));
+  }
+  /// The same with the step load f_bar = step_load(state.time) already evaluated. Both schemes
+  /// here solve, for the increment d = u_{n+1} - u_n,
+  ///     (K + (4 / k^2) M) d = 2 f_bar - 2 K u_n + (4 / k) M v_n,  v_{n+1} = (2 / k) d - v_n
+  /// (derivations in midpoint.cpp and newmark.cpp); they differ only in f_bar.
+  DynamicState advance(const DynamicState& state, const Eigen::VectorXd& f_bar) const;
   /// The load f_bar the scheme applies over [t, t + k]: the discrete energy changes by
   /// f_bar . (u_{n+1} - u_n) over the step (the work of the external forces).
   virtual Eigen::VectorXd step_load(double t) const = 0;
