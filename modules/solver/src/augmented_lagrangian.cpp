@@ -50,10 +50,10 @@ ContactSolution AugmentedLagrangian::solve(const ContactProblem& problem) const 
     // u_n(k+1) = g; on the other it reads dlambda = -lambda, so lambda(k+1) = 0. These rows are
     // eliminated and the displacement rows become one shared linear step; the multipliers of
     // active nodes are the reactions it returns.
-    const Eigen::VectorXd a = augmented(problem, u, lambda, r);
-    std::vector<char> active(m);
-    for (int p = 0; p < m; ++p)
-      active[p] = d_positive_part(a[p]) > 0;
+    // The branch test [lambda + r (u_n - g)]_+ active is PDAS's test (3.20) with gamma = r.
+    const std::vector<char> active =
+        active_set(problem, u, lambda,
+                   [r](double l, double un, double g) { return pdas_is_active(l, un, g, r); });
 
     LinearStep step;
     if (!solve_linear_step(problem, active, none, none, u, step)) {

@@ -17,11 +17,12 @@ std::vector<char> pdas_active_set(const ContactProblem& problem, const Eigen::Ve
   });
 }
 
-/// ||R(u, lambda)|| of (3.21).
+/// ||R(u, lambda)|| of (3.21): its multiplier row lambda - [lambda + gamma (u_n - g)]_+ is the
+/// Alart-Curnier function with r = gamma.
 double residual(const ContactProblem& problem, const Eigen::VectorXd& u,
                 const Eigen::VectorXd& lambda, double gamma) {
   return contact_residual(problem, u, lambda, [gamma](double l, double un, double g) {
-    return l - positive_part(l + gamma * (un - g));
+    return alart_curnier_normal(l, un, g, gamma);
   });
 }
 
