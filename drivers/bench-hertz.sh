@@ -19,7 +19,7 @@
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
-source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 
 usage() {
   cat <<EOF
@@ -34,15 +34,7 @@ Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /us
 EOF
 }
 
-die() {
-  echo "bench-hertz.sh: error: $*" >&2
-  exit 1
-}
-
 invocation="drivers/bench-hertz.sh${*:+ $*}"
-root=$(cd "$(dirname "$0")/.." && pwd)
-bin=${SIG_BIN:-$root/build/bin}
-python=${PYTHON:-/usr/bin/python3}
 template=$root/datafiles/scene7a/hertz.dat
 out=out/bench-hertz
 n=512

@@ -25,7 +25,7 @@
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
-source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 
 usage() {
   cat <<EOF
@@ -37,15 +37,7 @@ Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /us
 EOF
 }
 
-die() {
-  echo "scene7a.sh: error: $*" >&2
-  exit 1
-}
-
 invocation="drivers/scene7a.sh${*:+ $*}"
-root=$(cd "$(dirname "$0")/.." && pwd)
-bin=${SIG_BIN:-$root/build/bin}
-python=${PYTHON:-/usr/bin/python3}
 template=$root/datafiles/scene7a/hertz.dat
 out=out/scene7a
 quick=0

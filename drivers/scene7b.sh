@@ -20,7 +20,7 @@
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
-source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 
 usage() {
   cat <<EOF
@@ -33,14 +33,6 @@ Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /us
 EOF
 }
 
-die() {
-  echo "scene7b.sh: error: $*" >&2
-  exit 1
-}
-
-root=$(cd "$(dirname "$0")/.." && pwd)
-bin=${SIG_BIN:-$root/build/bin}
-python=${PYTHON:-/usr/bin/python3}
 out=$root/out/scene7b
 sizes=(128 256)
 while [ $# -gt 0 ]; do
