@@ -45,20 +45,4 @@ std::vector<int> card_references(const Card& card, const Mesh& mesh, RefSupport 
   return refs;
 }
 
-std::vector<int> card_regions(const Card& card, const Mesh& mesh) {
-  const std::vector<int> present = mesh.subdomains();
-  if (!card.has("region")) return present;
-  std::vector<int> regions;
-  for (long region : card.integers("region")) {
-    if (!std::binary_search(present.begin(), present.end(), static_cast<int>(region))) {
-      std::ostringstream what;
-      what << "sub-domain " << region << " is not in the mesh; sub-domains present:";
-      list(what, present);
-      card.fail("region", what.str());
-    }
-    regions.push_back(static_cast<int>(region));
-  }
-  return regions;
-}
-
 } // namespace sig

@@ -62,9 +62,13 @@ Hooke hooke_from_card(const Card& card) {
   law.nu = card.real("nu");
   if (!(law.nu < 0.5)) card.fail("nu", "Poisson ratio must be < 0.5 (incompressible limit)");
   if (!(law.nu > -1.0)) card.fail("nu", "Poisson ratio must be > -1");
-  law.plane = card.choice("plane", {"strain", "stress"}, "strain") == "stress" ? PlaneMode::stress
-                                                                               : PlaneMode::strain;
+  law.plane = plane_mode_from_card(card);
   return law;
+}
+
+PlaneMode plane_mode_from_card(const Card& card) {
+  return card.choice("plane", {"strain", "stress"}, "strain") == "stress" ? PlaneMode::stress
+                                                                          : PlaneMode::strain;
 }
 
 } // namespace sig

@@ -6,6 +6,7 @@
 #include "material/ciarlet_geymonat.hpp"
 #include "material/saint_venant_kirchhoff.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_card.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -54,10 +55,7 @@ std::shared_ptr<const CiarletGeymonat> ciarlet_geymonat_from_card(const Card& ca
   if (!(c2 >= 0.0)) card.fail("c2", "c2 must be >= 0");
   const double a = card.real("a");
   if (!(a >= 0.0)) card.fail("a", "a must be >= 0");
-  const PlaneMode plane = card.choice("plane", {"strain", "stress"}, "strain") == "stress"
-                              ? PlaneMode::stress
-                              : PlaneMode::strain;
-  return std::make_shared<const CiarletGeymonat>(c1, c2, a, plane);
+  return std::make_shared<const CiarletGeymonat>(c1, c2, a, plane_mode_from_card(card));
 }
 
 } // namespace
@@ -109,19 +107,7 @@ MaterialTable material_table_from_cards(const Datafile& datafile, const Mesh& me
   MaterialTable table;
   for (const Card* card : cards) {
     const SubdomainMaterial law = material_from_card(*card);
-    std::vector<int> targets = present;
-    if (card->has("region")) {
-      targets.clear();
-      for (long region : card->integers("region")) {
-        if (!std::binary_search(present.begin(), present.end(), static_cast<int>(region))) {
-          std::ostringstream what;
-          what << "sub-domain " << region
-               << " is not in the mesh; sub-domains present: " << joined(present);
-          card->fail("region", what.str());
-        }
-        targets.push_back(static_cast<int>(region));
-      }
-    }
+    const std::vector<int> targets = card_regions(*card, mesh);
     for (int subdomain : targets) {
       const auto [it, inserted] = assigned_by.emplace(subdomain, card);
       if (!inserted) {

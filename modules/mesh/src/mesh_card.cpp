@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace sig {
 namespace {
@@ -132,6 +133,23 @@ Mesh mesh_from_card(const Card& card, const std::filesystem::path& folder) {
                 "is not used by " + (generator == "file" ? std::string("a mesh file") : generator));
   }
   return generator == "file" ? mesh_from_file(card, folder) : generate(card, generator);
+}
+
+std::vector<int> card_regions(const Card& card, const Mesh& mesh) {
+  const std::vector<int> present = mesh.subdomains();
+  if (!card.has("region")) return present;
+  std::vector<int> regions;
+  for (long region : card.integers("region")) {
+    if (!std::binary_search(present.begin(), present.end(), static_cast<int>(region))) {
+      std::ostringstream what;
+      what << "sub-domain " << region << " is not in the mesh; sub-domains present:";
+      for (int n : present)
+        what << " " << n;
+      card.fail("region", what.str());
+    }
+    regions.push_back(static_cast<int>(region));
+  }
+  return regions;
 }
 
 } // namespace sig

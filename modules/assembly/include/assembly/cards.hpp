@@ -2,6 +2,8 @@
 // Where a load or boundary card applies: the references (ref=) and sub-domains (region=) it
 // names, checked against the mesh so that a typo in a deck is an error on its line, not a load
 // silently applied nowhere.
+#include "mesh/mesh_card.hpp" // card_regions, shared with the material cards
+
 #include <vector>
 
 namespace sig {
@@ -15,9 +17,5 @@ enum class RefSupport { edges, edges_or_vertices };
 /// card line and field 'ref' for a reference that no edge (or vertex, if allowed) carries:
 /// "reference 7 is on no edge or vertex of the mesh; references present: 1 2 3".
 std::vector<int> card_references(const Card& card, const Mesh& mesh, RefSupport support);
-
-/// The sub-domains of the card's field `region`, or every sub-domain of the mesh when the field
-/// is absent. A sub-domain the mesh does not have is an InputError on field 'region'.
-std::vector<int> card_regions(const Card& card, const Mesh& mesh);
 
 } // namespace sig

@@ -36,4 +36,7 @@ struct Hooke {
 /// (-1, 1/2): nu = 1/2 is the incompressible limit, where D does not exist.
 Hooke hooke_from_card(const Card& card);
 
+/// The card's `plane=strain|stress` (default strain), for every 2D law.
+PlaneMode plane_mode_from_card(const Card& card);
+
 } // namespace sig

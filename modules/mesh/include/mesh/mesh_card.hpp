@@ -23,4 +23,8 @@ Mesh read_mesh_file(const std::filesystem::path& path);
 /// folder). Card errors name the file, the line and the field.
 Mesh mesh_from_card(const Card& card, const std::filesystem::path& folder);
 
+/// The sub-domains a card's `region=` field names (all of the mesh's when absent); a sub-domain
+/// the mesh lacks is an InputError on the field, listing those present.
+std::vector<int> card_regions(const Card& card, const Mesh& mesh);
+
 } // namespace sig
