@@ -70,6 +70,7 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("backend", solution.has("linear") ? solution.text("linear") : std::string());
   s.set("residual_history", history(solution, "history_residual"));
   s.set("increment_history", history(solution, "history_increment"));
+  s.set("step_norm_history", history(solution, "history_step_norm"));
   s.set("active_history", history(solution, "history_active"));
   s.set("times", std::move(times_json));
   return s;

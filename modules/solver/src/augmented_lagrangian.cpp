@@ -61,16 +61,16 @@ ContactSolution AugmentedLagrangian::solve(const ContactProblem& problem) const 
                   std::to_string(count_active(active)) + " nodes)";
       break;
     }
-    const double increment = relative_change(stack(step.u, step.reaction, problem.weight),
-                                             stack(u, lambda, problem.weight));
+    const Increment increment = increment_between(stack(step.u, step.reaction, problem.weight),
+                                                  stack(u, lambda, problem.weight));
     u = step.u;
     lambda = step.reaction;
     const double res = residual(problem, u, lambda, r);
-    s.history.push_back({count_active(active), res, increment});
+    s.history.push_back({count_active(active), res, increment.relative, increment.norm});
     s.active = active;
 
     // (iii) stop when ||x(k+1) - x(k)|| <= eps and ||R_L(x)|| <= eps.
-    if (increment <= p_.eps && res <= p_.eps) {
+    if (increment.relative <= p_.eps && res <= p_.eps) {
       s.converged = true;
       break;
     }

@@ -23,8 +23,9 @@ double equilibrium_residual(const ContactProblem& problem, const Eigen::VectorXd
   return r.norm() / std::max(problem.f.norm(), 1e-300);
 }
 
-double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before) {
-  return (now - before).norm() / std::max(now.norm(), 1e-300);
+Increment increment_between(const Eigen::VectorXd& now, const Eigen::VectorXd& before) {
+  const double norm = (now - before).norm();
+  return {norm, norm / std::max(now.norm(), 1e-300)};
 }
 
 Eigen::VectorXd stack(const Eigen::VectorXd& u, const Eigen::VectorXd& lambda,

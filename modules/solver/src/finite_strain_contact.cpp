@@ -325,14 +325,15 @@ LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& prob
       break;
     }
 
-    const double increment = relative_change(stack(accepted.u, accepted.lambda, setting.weights()),
-                                             stack(x.u, x.lambda, setting.weights()));
+    const Increment increment =
+        increment_between(stack(accepted.u, accepted.lambda, setting.weights()),
+                          stack(x.u, x.lambda, setting.weights()));
     x = std::move(accepted);
     const double residual = residual_norm / setting.force_scale(x, s);
     double mismatch = 0;
     for (Eigen::Index d = 0; d < target.size(); ++d)
       mismatch = std::max(mismatch, std::abs(target[d] - x.u[problem.dirichlet_dofs[d]]));
-    result.history.push_back({count_active(active), residual, increment});
+    result.history.push_back({count_active(active), residual, increment.relative, increment.norm});
     result.step_length.push_back(alpha);
 
     // (iv) the iterate no longer moves, R vanishes, the Dirichlet values are reached and
@@ -341,7 +342,7 @@ LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& prob
     previous_active = active;
     const double reached =
         c.eps * std::max(target.lpNorm<Eigen::Infinity>(), x.u.lpNorm<Eigen::Infinity>());
-    if (increment <= c.eps && residual <= c.eps && settled && mismatch <= reached) {
+    if (increment.relative <= c.eps && residual <= c.eps && settled && mismatch <= reached) {
       result.converged = true;
       break;
     }

@@ -78,7 +78,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
 
   std::vector<double> load;
   std::vector<std::int64_t> step_iterations, step_converged, history_active, history_step;
-  std::vector<double> residual, increment;
+  std::vector<double> residual, increment, step_norm;
   std::string failure;
   for (std::size_t k = 0; k < solution.steps.size(); ++k) {
     const LoadStepResult& step = solution.steps[k];
@@ -91,6 +91,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
       history_active.push_back(h.active);
       residual.push_back(h.residual);
       increment.push_back(h.increment);
+      step_norm.push_back(h.step);
       history_step.push_back(static_cast<std::int64_t>(k + 1));
     }
   }
@@ -101,6 +102,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   ds.put("history_active", std::span<const std::int64_t>(history_active));
   ds.put("history_residual", std::span<const double>(residual));
   ds.put("history_increment", std::span<const double>(increment));
+  ds.put("history_step_norm", std::span<const double>(step_norm));
   ds.put("history_step", std::span<const std::int64_t>(history_step));
 
   if (!solution.steps.empty()) {

@@ -74,15 +74,15 @@ ContactSolution IterativeProjection::solve(const ContactProblem& problem) const 
     for (int p = 0; p < m; ++p)
       if (!active[p]) lambda_new[p] = problem.weight[p] * (un[p] - un_old[p]) / c;
 
-    const double increment = relative_change(stack(step.u, lambda_new, problem.weight),
-                                             stack(u, lambda, problem.weight));
+    const Increment increment = increment_between(stack(step.u, lambda_new, problem.weight),
+                                                  stack(u, lambda, problem.weight));
     u = step.u;
     lambda = lambda_new;
     const double r = residual(problem, u, lambda, c);
-    s.history.push_back({count_active(active), r, increment});
+    s.history.push_back({count_active(active), r, increment.relative, increment.norm});
 
     // (iv)
-    if (increment <= p_.eps && r <= p_.eps && active == previous_active) {
+    if (increment.relative <= p_.eps && r <= p_.eps && active == previous_active) {
       s.converged = true;
       s.active = active;
       break;

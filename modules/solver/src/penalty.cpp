@@ -50,12 +50,12 @@ ContactSolution Penalty::solve(const ContactProblem& problem) const {
                   " nodes on the foundation)";
       break;
     }
-    const double increment = relative_change(step.u, u);
+    const Increment increment = increment_between(step.u, u);
     u = step.u;
     const double res = equilibrium_residual(problem, u, contact_force(problem, u, r));
-    s.history.push_back({count_active(active), res, increment});
+    s.history.push_back({count_active(active), res, increment.relative, increment.norm});
 
-    if (increment <= p_.eps && res <= p_.eps && active == previous_active) {
+    if (increment.relative <= p_.eps && res <= p_.eps && active == previous_active) {
       s.converged = true;
       break;
     }

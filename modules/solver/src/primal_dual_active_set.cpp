@@ -50,15 +50,15 @@ ContactSolution PrimalDualActiveSet::solve(const ContactProblem& problem) const 
                   std::to_string(count_active(active)) + " nodes)";
       break;
     }
-    const double increment = relative_change(stack(step.u, step.reaction, problem.weight),
-                                             stack(u, lambda, problem.weight));
+    const Increment increment = increment_between(stack(step.u, step.reaction, problem.weight),
+                                                  stack(u, lambda, problem.weight));
     u = step.u;
     lambda = step.reaction;
     const double r = residual(problem, u, lambda, p_.gamma);
-    s.history.push_back({count_active(active), r, increment});
+    s.history.push_back({count_active(active), r, increment.relative, increment.norm});
 
     // (iv) stop when the iterate no longer moves, R vanishes and A(k+1) = A(k).
-    if (increment <= p_.eps && r <= p_.eps && active == previous_active) {
+    if (increment.relative <= p_.eps && r <= p_.eps && active == previous_active) {
       s.converged = true;
       s.active = active;
       break;

@@ -29,15 +29,17 @@ void write_solution(const std::filesystem::path& path, const StaticSolution& sol
     std::vector<std::int64_t> status(solution.active.begin(), solution.active.end());
     ds.put("status", std::span<const std::int64_t>(status));
     std::vector<std::int64_t> active;
-    std::vector<double> residual, increment;
+    std::vector<double> residual, increment, step_norm;
     for (const auto& h : solution.history) {
       active.push_back(h.active);
       residual.push_back(h.residual);
       increment.push_back(h.increment);
+      step_norm.push_back(h.step);
     }
     ds.put("history_active", std::span<const std::int64_t>(active));
     ds.put("history_residual", std::span<const double>(residual));
     ds.put("history_increment", std::span<const double>(increment));
+    ds.put("history_step_norm", std::span<const double>(step_norm));
   }
   for (const auto& [phase, seconds] : solution.seconds)
     ds.put_scalar("time_" + phase, seconds);

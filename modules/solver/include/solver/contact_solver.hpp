@@ -29,6 +29,7 @@ struct IterationRecord {
   int active = 0;       ///< size of the active set used by the iteration
   double residual = 0;  ///< relative residual after the iteration
   double increment = 0; ///< relative increment ||x(k+1) - x(k)|| / ||x(k+1)||
+  double step = 0;      ///< E_k = ||x(k+1) - x(k)||, the measure of the thesis's Figs 7.14-7.16
 };
 
 struct ContactSolution {
@@ -57,7 +58,12 @@ std::unique_ptr<ContactSolver> make_contact_solver(const ContactSolverParameters
 double equilibrium_residual(const ContactProblem& problem, const Eigen::VectorXd& u,
                             const Eigen::VectorXd& multiplier);
 
-/// ||a - b|| / max(||a||, tiny): the increment measure of test (iv).
-double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before);
+/// The change of the Newton vector over one iteration: its norm E_k and, for test (iv), its
+/// ratio to the new vector, ||now - before|| / max(||now||, tiny).
+struct Increment {
+  double norm = 0;
+  double relative = 0;
+};
+Increment increment_between(const Eigen::VectorXd& now, const Eigen::VectorXd& before);
 
 } // namespace sig

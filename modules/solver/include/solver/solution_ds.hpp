@@ -2,7 +2,7 @@
 // DS "B", the solution of sig-solve (MODULEF's B: global vectors). Arrays: u (2 dofs per node,
 // interleaved), method, linear (backend), converged, iterations, dofs, failure; for contact
 // cases multiplier, status (1 contact, 0 free), history_active, history_residual,
-// history_increment; scalars time_<phase> in seconds.
+// history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||); scalars time_<phase> in seconds.
 #include "solver/static_solve.hpp"
 
 #include <filesystem>
