@@ -150,6 +150,10 @@ TEST(GmshReader, ErrorsNameTheLine) {
   EXPECT_NE(std::string(quad.what()).find("element type 3"), std::string::npos);
   EXPECT_EQ(gmsh_error("7 2 2 7 1 40 10 50", "7 2 2 7 1 40 10 55").line(), 26);
   EXPECT_EQ(gmsh_error("2.2 0 8", "2.2 1 8").line(), 2);
+  // Node 50 moved onto the bottom side: triangle 10-20-50 (line 23) has zero area.
+  const InputError flat = gmsh_error("50 0.5 0.5 0", "50 0.5 0 0");
+  EXPECT_EQ(flat.line(), 23);
+  EXPECT_NE(std::string(flat.what()).find("degenerate"), std::string::npos);
   EXPECT_NE(std::string(gmsh_error("$EndElements", "").what()).find("unexpected end of file"),
             std::string::npos);
 }
@@ -176,6 +180,16 @@ TEST(FreeFemReader, SmallMesh) {
     ADD_FAILURE() << "vertex 9 accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), 7);
+  }
+
+  // Node 3 moved to (2, 0): triangle 1 2 3 (line 6) has its three nodes on the x axis.
+  write_file(dir / "flat.msh", "4 2 0\n0 0 1\n1 0 -2\n2 0 0\n0 1 0\n1 2 3 0\n1 4 3 5\n");
+  try {
+    read_freefem_msh(dir / "flat.msh");
+    ADD_FAILURE() << "degenerate triangle accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 6);
+    EXPECT_NE(std::string(e.what()).find("degenerate"), std::string::npos);
   }
 }
 

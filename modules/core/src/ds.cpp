@@ -42,8 +42,8 @@ std::vector<std::int64_t> checked_shape(const std::string& name, std::vector<std
 template <class T>
 DsArray make_array(const std::string& name, DsType type, std::span<const T> values,
                    std::vector<std::int64_t> shape) {
-  SIG_VERIFY(!name.empty() && name.size() <= 23 && name.find('\0') == std::string::npos,
-             "DS array name '" << name << "' must have 1 to 23 characters");
+  SIG_VERIFY(is_valid_array_name(name),
+             "DS array name '" << name << "' must have 1 to " << kMaxArrayName << " characters");
   DsArray array;
   array.name = name;
   array.type = type;
@@ -68,6 +68,10 @@ template <class T> std::vector<T> values_of(const DsArray& array) {
   return values;
 }
 } // namespace
+
+bool is_valid_array_name(const std::string& name) {
+  return !name.empty() && name.size() <= kMaxArrayName && name.find('\0') == std::string::npos;
+}
 
 std::size_t DsArray::count() const {
   return bytes.size() / value_size(type);
@@ -104,9 +108,8 @@ void Ds::put_int(const std::string& name, std::int64_t value) {
 }
 
 void Ds::put(DsArray array) {
-  SIG_VERIFY(!array.name.empty() && array.name.size() <= 23 &&
-                 array.name.find('\0') == std::string::npos,
-             "DS array name '" << array.name << "' must have 1 to 23 characters");
+  SIG_VERIFY(is_valid_array_name(array.name), "DS array name '" << array.name << "' must have 1 to "
+                                                                << kMaxArrayName << " characters");
   SIG_VERIFY(
       array.type == DsType::Int64 || array.type == DsType::Float64 || array.type == DsType::Text,
       "DS array '" << array.name << "': unknown type " << static_cast<std::uint32_t>(array.type));

@@ -57,8 +57,8 @@ void check_writable(const std::filesystem::path& path, const Ds& ds) {
              p << ": DS date '" << ds.header.date << "' is longer than 8 characters");
   std::set<std::string> names;
   for (const auto& a : ds.arrays()) {
-    SIG_VERIFY(!a.name.empty() && a.name.size() <= 23 && a.name.find('\0') == std::string::npos,
-               p << ": array '" << a.name << "': name must have 1 to 23 characters");
+    SIG_VERIFY(is_valid_array_name(a.name), p << ": array '" << a.name << "': name must have 1 to "
+                                              << kMaxArrayName << " characters");
     SIG_VERIFY(names.insert(a.name).second, p << ": array '" << a.name << "': name repeated");
     SIG_VERIFY(a.type == DsType::Int64 || a.type == DsType::Float64 || a.type == DsType::Text,
                p << ": array '" << a.name << "': unknown type "

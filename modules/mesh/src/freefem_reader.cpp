@@ -30,6 +30,7 @@ Mesh read_freefem_msh(const std::filesystem::path& path) {
     mesh.nodes.emplace_back(x, y);
     mesh.vertex_ref.push_back(static_cast<int>(std::labs(in.integer())));
   }
+  std::vector<int> triangle_lines;
   for (long t = 0; t < nt; ++t) {
     std::array<int, 3> tri{};
     for (int& v : tri)
@@ -38,6 +39,7 @@ Mesh read_freefem_msh(const std::filesystem::path& path) {
     if (region < 0) in.fail("negative region " + std::to_string(region));
     mesh.triangles.push_back(tri);
     mesh.subdomain.push_back(region > 0 ? static_cast<int>(region) : 1); // as NOPO stores it
+    triangle_lines.push_back(in.line());
   }
   std::vector<int> edge_lines;
   for (long e = 0; e < nbe; ++e) {
@@ -53,7 +55,10 @@ Mesh read_freefem_msh(const std::filesystem::path& path) {
     in.fail("unexpected data after the " + std::to_string(nbe) + " boundary edges");
   }
 
-  orient_counter_clockwise(mesh);
+  if (const int flat = orient_counter_clockwise(mesh); flat >= 0)
+    throw InputError(in.file(), triangle_lines[flat], "",
+                     "triangle " + std::to_string(flat + 1) +
+                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "boundary edge with label " + std::to_string(mesh.edges[bad].ref) +

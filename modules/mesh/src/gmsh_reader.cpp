@@ -210,9 +210,10 @@ Mesh read_gmsh(const std::filesystem::path& path) {
   Mesh mesh;
   mesh.nodes = content.nodes;
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
-  std::vector<int> edge_lines; // file line of each edge, for messages
+  std::vector<int> edge_lines, triangle_lines; // file line of each, for messages
   for (const GmshElement& element : content.elements) {
     if (element.type == Triangle) {
+      triangle_lines.push_back(element.line);
       mesh.triangles.push_back({node_of(in, content, element, 0), node_of(in, content, element, 1),
                                 node_of(in, content, element, 2)});
       mesh.subdomain.push_back(element.physical >= 1 ? static_cast<int>(element.physical) : 1);
@@ -230,7 +231,10 @@ Mesh read_gmsh(const std::filesystem::path& path) {
                      "no triangles (gmsh saves only the elements of physical groups when there "
                      "are any: is the surface in a Physical Surface?)");
 
-  orient_counter_clockwise(mesh);
+  if (const int flat = orient_counter_clockwise(mesh); flat >= 0)
+    throw InputError(in.file(), triangle_lines[flat], "",
+                     "triangle " + std::to_string(flat + 1) +
+                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "line element with physical tag " + std::to_string(mesh.edges[bad].ref) +

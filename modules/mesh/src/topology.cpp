@@ -6,10 +6,14 @@
 
 namespace sig {
 
-void orient_counter_clockwise(Mesh& mesh) {
+int orient_counter_clockwise(Mesh& mesh) {
+  int degenerate = -1;
   for (int t = 0; t < mesh.num_triangles(); ++t) {
-    if (signed_double_area(mesh, t) < 0) std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+    const double area = signed_double_area(mesh, t);
+    if (area < 0) std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+    if (area == 0 && degenerate < 0) degenerate = t;
   }
+  return degenerate;
 }
 
 int orient_boundary_edges(Mesh& mesh) {

@@ -29,8 +29,13 @@ struct DsHeader {
   int level = 1;
 };
 
+/// The longest array name a DS record holds (24 bytes, NUL-terminated).
+inline constexpr std::size_t kMaxArrayName = 23;
+/// 1 to kMaxArrayName characters, no NUL: what the file format can store.
+bool is_valid_array_name(const std::string& name);
+
 struct DsArray {
-  std::string name; ///< up to 23 characters
+  std::string name; ///< is_valid_array_name
   DsType type = DsType::Float64;
   std::vector<std::int64_t> shape; ///< product = number of values; rank 1 when not given
   std::vector<char> bytes;         ///< raw little-endian payload

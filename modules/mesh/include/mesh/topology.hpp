@@ -16,9 +16,10 @@ inline std::uint64_t edge_key(int a, int b) {
   return (lo << 32) | hi;
 }
 
-/// Reverse every clockwise triangle (swap its last two nodes). Degenerate triangles are left
-/// for check_mesh to report.
-void orient_counter_clockwise(Mesh& mesh);
+/// Reverse every clockwise triangle (swap its last two nodes). Returns -1, or the index of the
+/// first degenerate (zero-area) triangle, which no orientation can mend: the readers report it
+/// with its line in the file.
+int orient_counter_clockwise(Mesh& mesh);
 
 /// Point every referenced edge that is a side of exactly one triangle in the direction it has in
 /// that (counter-clockwise) triangle, so the domain lies on its left; an interface edge (two
