@@ -28,13 +28,4 @@ std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const MaterialTa
   return stresses;
 }
 
-std::vector<double> element_von_mises(const Mesh& mesh, const MaterialTable& table,
-                                      const Eigen::VectorXd& u) {
-  const std::vector<Eigen::Vector3d> strains = element_strains(mesh, u);
-  std::vector<double> von_mises(strains.size());
-  for (int t = 0; t < mesh.num_triangles(); ++t)
-    von_mises[t] = table.of(mesh.subdomain[t]).hooke.von_mises(strains[t]);
-  return von_mises;
-}
-
 } // namespace sig

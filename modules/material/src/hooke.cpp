@@ -43,11 +43,13 @@ double Hooke::stress33(const Eigen::Vector3d& strain) const {
 
 double Hooke::von_mises(const Eigen::Vector3d& strain) const {
   const Eigen::Vector3d s = stress(strain);
-  const double s33 = stress33(strain);
+  return von_mises_stress(s(0), s(1), s(2), stress33(strain));
+}
+
+double von_mises_stress(double s11, double s22, double s12, double s33) {
   const double j2 =
-      ((s(0) - s(1)) * (s(0) - s(1)) + (s(1) - s33) * (s(1) - s33) + (s33 - s(0)) * (s33 - s(0))) /
-          6.0 +
-      s(2) * s(2);
+      ((s11 - s22) * (s11 - s22) + (s22 - s33) * (s22 - s33) + (s33 - s11) * (s33 - s11)) / 6.0 +
+      s12 * s12;
   return std::sqrt(3.0 * j2);
 }
 

@@ -62,15 +62,15 @@ CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
       const HyperelasticResponse r = material.hyperelastic->response(F);
       const Eigen::Matrix2d sigma = r.stress * F.transpose() / (F.determinant() * r.stretch33);
       out.stress.insert(out.stress.end(), {sigma(0, 0), sigma(1, 1), sigma(0, 1), 0.0});
-      out.von_mises.push_back(std::sqrt(sigma(0, 0) * sigma(0, 0) + sigma(1, 1) * sigma(1, 1) -
-                                        sigma(0, 0) * sigma(1, 1) + 3 * sigma(0, 1) * sigma(0, 1)));
+      out.von_mises.push_back(von_mises_stress(sigma(0, 0), sigma(1, 1), sigma(0, 1), 0.0));
       continue;
     }
     const Hooke& hooke = material.hooke;
     const Eigen::Vector3d strain = triangle_strain(mesh, u, t);
     const Eigen::Vector3d s = hooke.stress(strain);
-    out.stress.insert(out.stress.end(), {s[0], s[1], s[2], hooke.stress33(strain)});
-    out.von_mises.push_back(hooke.von_mises(strain));
+    const double s33 = hooke.stress33(strain);
+    out.stress.insert(out.stress.end(), {s[0], s[1], s[2], s33});
+    out.von_mises.push_back(von_mises_stress(s[0], s[1], s[2], s33));
   }
   return out;
 }

@@ -16,8 +16,4 @@ std::vector<Eigen::Vector3d> element_strains(const Mesh& mesh, const Eigen::Vect
 std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const MaterialTable& table,
                                               const Eigen::VectorXd& u);
 
-/// von Mises stress per triangle (with sigma33 = nu (s11 + s22) in plane strain).
-std::vector<double> element_von_mises(const Mesh& mesh, const MaterialTable& table,
-                                      const Eigen::VectorXd& u);
-
 } // namespace sig

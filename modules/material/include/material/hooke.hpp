@@ -31,6 +31,10 @@ struct Hooke {
   double von_mises(const Eigen::Vector3d& strain) const;
 };
 
+/// von Mises equivalent stress sqrt(3 J2) of the stress state (s11, s22, s12) with out-of-plane
+/// s33 and no out-of-plane shear: what every 2D law reports.
+double von_mises_stress(double s11, double s22, double s12, double s33);
+
 /// Hooke's law of a MATERIAL card (fields E, nu, plane = strain | stress, default strain).
 /// Throws sig::InputError naming the card line and the field when E <= 0 or nu is outside
 /// (-1, 1/2): nu = 1/2 is the incompressible limit, where D does not exist.
