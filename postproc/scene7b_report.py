@@ -1,26 +1,40 @@
 #!/usr/bin/python3
-"""Scene 7b report (hyperelastic ring, thesis Tables 7.4 and 7.5): reads the case.b of every run
-under OUT (OUT/N<n>/<method>[_<value>]/case.b, written by drivers/scene7b.sh) and writes
-OUT/report.md with "ours (thesis)" cells, thesis values from postproc/thesis_values_7b.csv.
+"""Scene 7b report (hyperelastic ring, thesis ch. 7.4.2): reads every run under OUT
+(OUT/N<n>/<method>[_<value>]/case.b, + contact.csv of sig-post, written by drivers/scene7b.sh)
+and writes OUT/report.md with its charts:
 
-An iteration count is the total over the load steps (the thesis's tables give one number per
-run); "Nv" where a run did not converge (then the load step that failed is named). Also the
-dof counts, the per-step iterations and the support reactions (a horizontal reaction that is
-not ~0 relative to the vertical one means the ring swayed off the symmetric branch).
+- Tables 7.4 / 7.5 ("ours (thesis)"; our count is the total of Newton iterations over the load
+  steps, "Nv" where a run did not converge, then the load step that failed), Table 7.6 (times),
+  the dof counts;
+- Fig 7.13 (fig7_13_pressure.png): contact pressure along Gamma3 at the final load step for
+  PDAS, projection (gamma = c = 1e4, the thesis's value in Figs 7.14-7.16) and ALM, and the
+  check that they agree within 1 % (PASS / FAIL lines);
+- Figs 7.14-7.16 (fig7_14_16_ek.png): E_k = ||x(k+1) - x(k)|| of the same three runs;
+- the stability map (stability_map.png): method x parameter x N -> total iterations or Nv, with
+  the solve time of each run beside its count;
+- per run: iterations per load step, support reactions (a horizontal reaction that is not ~0
+  relative to the vertical one means the ring swayed off the symmetric branch), time, and the
+  deviation of its final pressure from PDAS's.
 
-Usage: scene7b_report.py OUT. The module also offers read_ds(path) -> {name: value} for
-the DS container (core/ds.hpp layout), used by tests/pipeline/scene7b_small.sh.
+Usage: scene7b_report.py OUT. The module also offers read_ds(path[, shapes]) -> {name: value}
+for the DS container (core/ds.hpp layout), used by tests/pipeline/scene7b_small.sh, and
+pressure_deviation(p, reference).
 """
 import csv
+import math
 import struct
 import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+PARAMETERS = ["1", "10", "1e2", "1e3", "1e4", "1e5", "1e6"]
+FIGURE_VALUE = "1e4"  # c = gamma of Figs 7.14-7.16 and Table 7.6
+TOLERANCE = 0.01      # "the three methods reach the same final state": pressures within 1 %
 
 
-def read_ds(path):
-    """Arrays of a DS file as {name: list | str}; format of modules/core/include/core/ds.hpp."""
+def read_ds(path, shapes=None):
+    """Arrays of a DS file as {name: list | str}; format of modules/core/include/core/ds.hpp.
+    Arrays are flat (row-major); pass a dict as `shapes` to receive {name: [dims]}."""
     data = Path(path).read_bytes()
     if data[:8] != b"SIGDS\0\0\0" or data[-4:] != b"ENDS":
         raise SystemExit(f"{path}: not a whole DS file")
@@ -30,6 +44,8 @@ def read_ds(path):
     for _ in range(count):
         name = data[pos:pos + 24].split(b"\0", 1)[0].decode()
         kind, rank = struct.unpack_from("<II", data, pos + 24)
+        if shapes is not None:
+            shapes[name] = list(struct.unpack_from(f"<{rank}q", data, pos + 32))
         pos += 32 + 8 * rank
         (size,) = struct.unpack_from("<Q", data, pos)
         pos += 8
@@ -48,106 +64,347 @@ def scalar(ds, name):
     return ds[name][0]
 
 
+def final_pressure(ds):
+    """Contact pressure (multiplier / weight) of the last stored load step, or None."""
+    p = ds.get("step_pressure", [])
+    m = len(ds.get("multiplier", []))
+    if not p or not m:
+        return None
+    return p[-m:]
+
+
+def pressure_deviation(p, reference):
+    """max_i |p_i - reference_i| / max_i |reference_i| (the Fig 7.13 check)."""
+    scale = max(abs(x) for x in reference)
+    return max(abs(x - y) for x, y in zip(p, reference)) / scale
+
+
 def thesis_values():
     """(item, key) -> value text."""
     values = {}
     with open(HERE / "thesis_values_7b.csv") as f:
         for row in csv.reader(line for line in f if not line.startswith("#")):
             scene, item, key, value = row[:4]
-            if "/" in key and "=" in key:  # "N=128;gamma=10/1e2/..." -> one entry per value
+            if "/" in key:  # "N=128;gamma=10/1e2/..." or "N=128/256/512": one entry each
                 head, _, tail = key.rpartition("=")
                 for k, v in zip(tail.split("/"), value.split("/")):
                     values[(item, f"{head}={k}")] = v
-            elif key.startswith("N=") and "/" in key:  # "N=128/256/512"
-                for n, v in zip(key[2:].split("/"), value.split("/")):
-                    values[(item, f"N={n}")] = v
             else:
                 values[(item, key)] = value
     return values
 
 
 def parameter_key(value):
-    """1000.0 -> '1e3' as the thesis tables write it; 10 -> '10'."""
+    """1000.0 -> '1e3' as the thesis tables write it; 1 -> '1', 10 -> '10'."""
     v = float(value)
-    if v == 10:
-        return "10"
-    exponent = round(__import__("math").log10(v))
-    return f"1e{exponent}"
+    if v in (1, 10):
+        return str(int(v))
+    return f"1e{round(math.log10(v))}"
+
+
+class Runs:
+    """The runs under OUT: (N, method, parameter key or '') -> case.b arrays (+ 'dir')."""
+
+    def __init__(self, out):
+        self.runs = {}
+        for b in sorted(out.glob("N*/*/case.b")):
+            n = int(b.parent.parent.name[1:])
+            method, _, value = b.parent.name.partition("_")
+            ds = read_ds(b)
+            ds["dir"] = b.parent
+            self.runs[(n, method, parameter_key(value) if value else "")] = ds
+        self.sizes = sorted({k[0] for k in self.runs})
+
+    def get(self, n, method, p=""):
+        if method == "alm":
+            return next((d for (nn, m, _), d in self.runs.items() if nn == n and m == "alm"), None)
+        return self.runs.get((n, method, p))
+
+    def figure_runs(self, n):
+        """The three runs of Figs 7.13-7.16 at N = n: label -> ds (missing ones left out)."""
+        runs = {f"PDAS gamma = {FIGURE_VALUE}": self.get(n, "pdas", FIGURE_VALUE),
+                f"projection c = {FIGURE_VALUE}": self.get(n, "projection", FIGURE_VALUE),
+                "ALM": self.get(n, "alm")}
+        return {k: v for k, v in runs.items() if v is not None}
+
+
+def iterations_cell(ds, with_time=False):
+    if ds is None:
+        return "-"
+    if scalar(ds, "converged"):
+        text = str(scalar(ds, "iterations"))
+    else:
+        text = f"Nv (step {len(ds['step_iterations'])})"
+    return text + (f", {scalar(ds, 'time_solve'):.2f} s" if with_time else "")
+
+
+def current_abscissa(ds):
+    """x1 + u1 of the contact nodes at the final state (contact.csv of sig-post), or None."""
+    path = ds["dir"] / "contact.csv"
+    if not path.exists():
+        return None
+    with open(path) as f:
+        return [float(r["x1"]) + float(r["u1"]) for r in csv.DictReader(f)]
+
+
+def what_it_models():
+    return ["## What this scene models and why", "",
+            "A ring 9 <= |x - (0,10)| <= 10 of the thesis's Ciarlet-Geymonat material (c1 = 0.5, "
+            "c2 = 0.005, a = 0.35 MPa) is pushed down by (0, -14) on its top arc AB against the "
+            "rigid foundation x2 <= 0, in 14 equal load steps, without friction. 2D plane strain "
+            "(F33 = 1; the thesis says plane stress, but its 2D C = F^T F is the plane-strain "
+            "one). Finite strain (total Lagrangian P1), because the ring is crushed by 14 of its "
+            "20 units of height: a small-strain model would be meaningless there, and the gap and "
+            "normal of each Gamma3 node are taken at its current position. The mesh is "
+            "structured, N nodes around and 3N/64 + 1 through the thickness (the thesis's dof "
+            "counts), and exactly mirror-symmetric about x1 = 0: a mesh symmetric only to 1e-8 "
+            "lets the ring sway sideways, which the horizontal reaction on AB would show. The "
+            "question is the thesis's: do the active-set methods (PDAS, iterative projection) "
+            "reach the augmented Lagrangian's solution as fast in large deformation, and how does "
+            "the projection method's c decide between convergence and Nv.", ""]
+
+
+def iteration_tables(runs, thesis):
+    lines = []
+    for title, method, name, item in (
+            ("Table 7.4: iterative projection vs c", "projection", "c", "iterations_projection"),
+            ("Table 7.5: primal-dual active set vs gamma", "pdas", "gamma", "iterations_pdas")):
+        lines += [f"## {title}", "",
+                  "| N | " + " | ".join(f"{name} = {p}" for p in PARAMETERS)
+                  + (" | ALM |" if method == "projection" else " |"),
+                  "|---" * (len(PARAMETERS) + 1 + (method == "projection")) + "|"]
+        for n in runs.sizes:
+            row = [str(n)]
+            for p in PARAMETERS:
+                ref = thesis.get((item, f"N={n};{name}={p}"), "-")
+                row.append(f"{iterations_cell(runs.get(n, method, p))} ({ref})")
+            if method == "projection":
+                ref = thesis.get(("iterations_alm", f"N={n}"), "-")
+                row.append(f"{iterations_cell(runs.get(n, 'alm'))} ({ref})")
+            lines.append("| " + " | ".join(row) + " |")
+        lines.append("")
+    return lines
+
+
+def time_table(runs, thesis):
+    lines = [f"## Table 7.6: solve time at c = gamma = {FIGURE_VALUE}", "",
+             "Ours: wall seconds of sig-solve's nonlinear solve (case.b time_solve; this machine, "
+             "one core) with the Newton iterations beside it; thesis: CPU seconds.", "",
+             "| N | projection | PDAS | ALM |", "|---|---|---|---|"]
+    for n in runs.sizes:
+        row = [str(n)]
+        for method, p in (("projection", FIGURE_VALUE), ("pdas", FIGURE_VALUE), ("alm", "")):
+            ref = thesis.get((f"cpu_{method}", f"N={n}"), "-")
+            row.append(f"{iterations_cell(runs.get(n, method, p), True)} ({ref} s)")
+        lines.append("| " + " | ".join(row) + " |")
+    return lines + [""]
+
+
+def dof_table(runs, thesis):
+    lines = ["## Unknowns", "", "| N | active set / projection | ALM |", "|---|---|---|"]
+    for n in runs.sizes:
+        row = [str(n)]
+        for method, p, item in (("pdas", FIGURE_VALUE, "dofs_active_set"), ("alm", "", "dofs_alm")):
+            ds = runs.get(n, method, p)
+            row.append(f"{scalar(ds, 'dofs') if ds else '-'} ({thesis.get((item, f'N={n}'), '?')})")
+        lines.append("| " + " | ".join(row) + " |")
+    return lines + [""]
+
+
+def pressure_section(runs, plt, out):
+    lines = ["## Fig 7.13: contact pressure on Gamma3 at the final load step", "",
+             "Nominal pressure (nodal contact force / reference tributary length) against the "
+             "current abscissa x1 + u1 of each Gamma3 node, after load step 14. Check: the three "
+             "methods reach the same final state, max_i |p_i - p_PDAS,i| / max_i p_PDAS,i <= 1 %.",
+             "", "![pressure](fig7_13_pressure.png)", ""]
+    fig, axes = plt.subplots(1, len(runs.sizes), figsize=(5.5 * len(runs.sizes), 4), squeeze=False)
+    for ax, n in zip(axes[0], runs.sizes):
+        figure_runs = runs.figure_runs(n)
+        reference = runs.get(n, "pdas", FIGURE_VALUE)
+        p_ref = final_pressure(reference) if reference and scalar(reference, "converged") else None
+        for (label, ds), style in zip(figure_runs.items(), ("-", "--", ":")):
+            p = final_pressure(ds)
+            if not scalar(ds, "converged") or p is None:
+                lines.append(f"- N = {n}, {label}: not compared (Nv)")
+                continue
+            x = current_abscissa(ds) or list(range(len(p)))
+            ax.plot(x, p, style, marker=".", markersize=3, label=label)
+            if p_ref is None or ds is reference:
+                continue
+            d = pressure_deviation(p, p_ref)
+            verdict = "PASS" if d <= TOLERANCE else "FAIL"
+            lines.append(f"- {verdict}: N = {n}, {label} vs PDAS: max pressure difference "
+                         f"{100 * d:.2g} % of the maximum {max(p_ref):.4g} (tolerance 1 %)")
+        ax.set_title(f"N = {n}")
+        ax.set_xlabel("x1 + u1 (current abscissa)")
+        ax.set_ylabel("contact pressure (MPa)")
+        ax.legend(fontsize=8)
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(out / "fig7_13_pressure.png", dpi=110)
+    plt.close(fig)
+    return lines + [""]
+
+
+def last_step_history(ds):
+    """E_k of the last load step of a converged run: (step, [E_1, E_2, ...])."""
+    step = max(ds["history_step"])
+    return step, [e for s, e in zip(ds["history_step"], ds["history_step_norm"]) if s == step]
+
+
+def ek_section(runs, plt, out):
+    from matplotlib.ticker import MaxNLocator
+    lines = [f"## Figs 7.14-7.16: E_k = ||x(k+1) - x(k)|| (c = gamma = {FIGURE_VALUE})", "",
+             "The thesis plots E_k against the iteration index for N = 128, 256, 512 without "
+             "saying which load step (its Tables 7.4/7.5 give 8 to 19 iterations per run, fewer "
+             "than 14 load steps of at least one iteration each: it does not say how it counts "
+             "them). We plot the last load step (14, the most deformed state) and say so; "
+             "x = (u, lambda) for ALM, u otherwise.", "",
+             "![E_k](fig7_14_16_ek.png)", "",
+             "| N | run | load step | iterations | E_k |", "|---|---|---|---|---|"]
+    fig, axes = plt.subplots(1, len(runs.sizes), figsize=(5 * len(runs.sizes), 4), squeeze=False)
+    for ax, n in zip(axes[0], runs.sizes):
+        for (label, ds), marker in zip(runs.figure_runs(n).items(), ("o", "s", "^")):
+            if not scalar(ds, "converged"):
+                continue
+            step, ek = last_step_history(ds)
+            ax.semilogy(range(1, len(ek) + 1), [max(e, 1e-300) for e in ek], marker=marker,
+                        label=label)
+            lines.append(f"| {n} | {label} | {step} | {len(ek)} | "
+                         + " ".join(f"{e:.1e}" for e in ek) + " |")
+        ax.set_title(f"N = {n}, load step 14")
+        ax.xaxis.set_major_locator(MaxNLocator(integer=True))
+        ax.set_xlabel("iteration index k")
+        ax.set_ylabel("E_k")
+        ax.legend(fontsize=8)
+        ax.grid(alpha=0.3, which="both")
+    fig.tight_layout()
+    fig.savefig(out / "fig7_14_16_ek.png", dpi=110)
+    plt.close(fig)
+    return lines + [""]
+
+
+def stability_section(runs, plt, out, maxit):
+    import numpy as np
+    lines = ["## Stability map: method x parameter x N", "",
+             "Total Newton iterations over the 14 load steps, and the solve time of the run; "
+             f"Nv (step k) = load step k did not converge within maxit = {maxit} iterations, the "
+             "later steps were not attempted (so every run is bounded). ALM runs at r = 1e3 "
+             "only.", "", "![stability](stability_map.png)", "",
+             "| method | N | " + " | ".join(PARAMETERS) + " |",
+             "|---|---" + "|---" * len(PARAMETERS) + "|"]
+    for method, name in (("projection", "c"), ("pdas", "gamma")):
+        for n in runs.sizes:
+            cells = [iterations_cell(runs.get(n, method, p), True) for p in PARAMETERS]
+            lines.append(f"| {method} ({name}) | {n} | " + " | ".join(cells) + " |")
+    for n in runs.sizes:
+        lines.append(f"| alm (r = 1e3) | {n} | " + " | ".join(
+            iterations_cell(runs.get(n, "alm"), True) if p == "1e3" else "" for p in PARAMETERS)
+            + " |")
+    lines.append("")
+
+    fig, axes = plt.subplots(1, 2, figsize=(12, 1.4 + 0.8 * len(runs.sizes)), squeeze=False)
+    top = max((scalar(d, "iterations") for d in runs.runs.values() if scalar(d, "converged")),
+              default=10)
+    cmap = plt.get_cmap("viridis").copy()
+    cmap.set_bad("lightgrey")  # Nv and missing runs
+    for ax, (method, name) in zip(axes[0], (("projection", "c"), ("pdas", "gamma"))):
+        grid, text = [], []
+        for n in runs.sizes:
+            row, labels = [], []
+            for p in PARAMETERS:
+                ds = runs.get(n, method, p)
+                converged = ds is not None and scalar(ds, "converged")
+                row.append(math.log10(scalar(ds, "iterations")) if converged else float("nan"))
+                labels.append(str(scalar(ds, "iterations")) if converged
+                              else "-" if ds is None else "Nv")
+            grid.append(row)
+            text.append(labels)
+        image = ax.imshow(np.ma.masked_invalid(np.array(grid)), cmap=cmap, vmin=1,
+                          vmax=math.log10(top), aspect="auto")
+        for i, labels in enumerate(text):
+            for j, label in enumerate(labels):
+                light = math.isnan(grid[i][j]) or grid[i][j] > 1 + 0.6 * (math.log10(top) - 1)
+                ax.text(j, i, label, ha="center", va="center", fontsize=8,
+                        color="black" if light else "white")
+        ax.set_xticks(range(len(PARAMETERS)), PARAMETERS)
+        ax.set_xlabel(name)
+        ax.set_yticks(range(len(runs.sizes)), [f"N = {n}" for n in runs.sizes])
+        ax.set_title(f"{method}: total iterations, grey = Nv", fontsize=10)
+    fig.subplots_adjust(wspace=0.3)
+    fig.colorbar(image, ax=axes[0].tolist(), label="log10(total iterations)")
+    fig.savefig(out / "stability_map.png", dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return lines
+
+
+def run_table(runs):
+    lines = ["## Per run: iterations per load step, reactions, time, final pressure", "",
+             "Reaction: force of the supports on the ring at AB after the last attempted step "
+             "(sum of f_int over the imposed dofs); |Rx / Ry| ~ 1e-12 or below means no sway. "
+             f"dp: max pressure difference to PDAS gamma = {FIGURE_VALUE} at the final step, "
+             "relative to its maximum.", "",
+             "| N | run | per-step iterations | Rx | Ry | Rx / Ry | solve s | dp | failure |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    order = sorted(runs.runs.items(), key=lambda kv: (kv[0][0], kv[0][1],
+                                                      float(kv[0][2] or 0)))
+    for (n, method, value), ds in order:
+        steps = " ".join(f"{i}" + ("" if c else "Nv")
+                         for i, c in zip(ds["step_iterations"], ds["step_converged"]))
+        rx, ry = scalar(ds, "reaction_x"), scalar(ds, "reaction_y")
+        ratio = f"{abs(rx / ry):.1e}" if ry else "-"
+        reference = runs.get(n, "pdas", FIGURE_VALUE)
+        dp = "-"
+        if scalar(ds, "converged") and reference and scalar(reference, "converged"):
+            p, p_ref = final_pressure(ds), final_pressure(reference)
+            if p and p_ref:
+                dp = f"{pressure_deviation(p, p_ref):.1e}"
+        run = method + (f" {value}" if value else "")
+        failure = ds.get("failure", "").replace("|", "/")
+        lines.append(f"| {n} | {run} | {steps} | {rx:.4g} | {ry:.4g} | {ratio} | "
+                     f"{scalar(ds, 'time_solve'):.2f} | {dp} | {failure} |")
+    return lines + [""]
+
+
+def deck_maxit(runs):
+    for ds in runs.runs.values():
+        deck = ds["dir"] / "ring.dat"
+        if deck.exists():
+            for word in deck.read_text().split():
+                if word.startswith("maxit="):
+                    return word[6:]
+    return "?"
 
 
 def main():
     if len(sys.argv) != 2:
         raise SystemExit("usage: scene7b_report.py OUT")
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
     out = Path(sys.argv[1])
-    thesis = thesis_values()
-    runs = {}  # (N, method, parameter) -> ds
-    for b in sorted(out.glob("N*/*/case.b")):
-        n = int(b.parent.parent.name[1:])
-        method, _, value = b.parent.name.partition("_")
-        runs[(n, method, value)] = read_ds(b)
-    if not runs:
+    runs = Runs(out)
+    if not runs.runs:
         raise SystemExit(f"scene7b_report: no N*/*/case.b under {out}")
-    sizes = sorted({k[0] for k in runs})
-
-    def cell(ds):
-        if ds is None:
-            return "-"
-        total = scalar(ds, "iterations")
-        if scalar(ds, "converged"):
-            return str(total)
-        return f"Nv (step {len(ds['step_iterations'])})"
-
+    thesis = thesis_values()
+    maxit = deck_maxit(runs)
     lines = ["# Scene 7b: hyperelastic ring pressed on a rigid foundation", "",
-             "Cells are ours (thesis). Our count is the total of Newton iterations over the load "
-             "steps; 'Nv' = not converged (the load step that failed). Deck: "
+             "Cells are ours (thesis). Our count is the total of Newton iterations over the 14 "
+             "load steps; 'Nv' = not converged (the load step that failed). Deck: "
              "datafiles/scene7b/ring.dat (plane strain, 14 load steps to u = (0,-14) on AB, "
-             "eps = 1e-5, maxit = 200 per step, UMFPACK).", ""]
-    parameters = ["10", "1e2", "1e3", "1e4", "1e5", "1e6"]
-    for title, method, name, item in (
-            ("Table 7.4: iterative projection vs c", "projection", "c", "iterations_projection"),
-            ("Table 7.5: primal-dual active set vs gamma", "pdas", "gamma", "iterations_pdas")):
-        lines += [f"## {title}", "", "| N | " + " | ".join(f"{name} = {p}" for p in parameters)
-                  + (" | ALM |" if method == "projection" else " |"),
-                  "|---" * (len(parameters) + 1 + (method == "projection")) + "|"]
-        for n in sizes:
-            row = [str(n)]
-            for p in parameters:
-                ds = next((d for (nn, m, v), d in runs.items()
-                           if nn == n and m == method and v and parameter_key(v) == p), None)
-                row.append(f"{cell(ds)} ({thesis.get((item, f'N={n};{name}={p}'), '?')})")
-            if method == "projection":
-                ds = next((d for (nn, m, _), d in runs.items() if nn == n and m == "alm"), None)
-                row.append(f"{cell(ds)} ({thesis.get(('iterations_alm', f'N={n}'), '?')})")
-            lines.append("| " + " | ".join(row) + " |")
-        lines.append("")
-
-    lines += ["## Unknowns", "", "| N | active set / projection | ALM |", "|---|---|---|"]
-    for n in sizes:
-        row = [str(n)]
-        for method, item in (("pdas", "dofs_active_set"), ("alm", "dofs_alm")):
-            ds = next((d for (nn, m, _), d in runs.items() if nn == n and m == method), None)
-            row.append(f"{scalar(ds, 'dofs') if ds else '-'} ({thesis.get((item, f'N={n}'), '?')})")
-        lines.append("| " + " | ".join(row) + " |")
-    lines.append("")
-
-    lines += ["## Per-step iterations, reactions, solve time", "",
-              "Reaction: force of the supports on the ring at AB after the last attempted step "
-              "(sum of f_int over the imposed dofs); |Rx / Ry| ~ 1e-12 or below means no sway.",
-              "", "| N | run | per-step iterations | Rx | Ry | Rx / Ry | solve s | failure |",
-              "|---|---|---|---|---|---|---|---|"]
-    for (n, method, value), ds in sorted(runs.items(), key=lambda kv: (kv[0][0], kv[0][1],
-                                                                        float(kv[0][2] or 0))):
-        steps = " ".join(f"{i}" + ("" if c else "Nv")
-                         for i, c in zip(ds["step_iterations"], ds["step_converged"]))
-        rx, ry = scalar(ds, "reaction_x"), scalar(ds, "reaction_y")
-        ratio = f"{abs(rx / ry):.1e}" if ry else "-"
-        run = method + (f" {value}" if value else "")
-        failure = ds.get("failure", "").replace("|", "/")
-        lines.append(f"| {n} | {run} | {steps} | {rx:.4g} | {ry:.4g} | {ratio} | "
-                     f"{scalar(ds, 'time_solve'):.2f} | {failure} |")
-    lines.append("")
+             f"eps = 1e-5, maxit = {maxit} per load step, UMFPACK). The deformed ring of the "
+             f"figure runs is in N<n>/<run>/ring.pvd, one state per load step (ParaView).", ""]
+    lines += what_it_models()
+    lines += iteration_tables(runs, thesis)
+    lines += time_table(runs, thesis)
+    lines += dof_table(runs, thesis)
+    lines += pressure_section(runs, plt, out)
+    lines += ek_section(runs, plt, out)
+    lines += stability_section(runs, plt, out, maxit)
+    lines += run_table(runs)
     (out / "report.md").write_text("\n".join(lines))
-    print(f"scene7b_report: wrote {out / 'report.md'} ({len(runs)} runs)")
+    print(f"scene7b_report: wrote {out / 'report.md'} ({len(runs.runs)} runs)")
 
 
 if __name__ == "__main__":

@@ -7,6 +7,11 @@
 #    right), and so do their displacements;
 #  - the mesh and the data are mirror-symmetric, so the horizontal reaction at AB is ~0 relative
 #    to the vertical one (1e-8), and the vertical one pushes the ring down (Ry < 0);
+#  - the three methods reach the same final state (thesis Fig 7.13): the contact pressure of
+#    PDAS, ALM and the projection method with a large c (1e4) at the last load step agree within
+#    1 % of PDAS's maximum pressure (scene7b_report.pressure_deviation, the report's check);
+#  - case.b keeps one state per converged load step: step_u {3, ndof} whose last row is u, and
+#    step_pressure {3, m} whose last row is multiplier / weight (weights of case.cont);
 #  - the projection method with c = 10 (Nv in the thesis's Table 7.4) ends with exit code 0 and a
 #    readable case.b, converged or not: non-convergence is a result, not a crash.
 # Run from the repository root with SIG_BIN set (ctest does both); exit 77 (skipped) when the
@@ -43,9 +48,9 @@ SOLVER method=$1 $2=$3 eps=1e-8 maxit=100 linear=umfpack
 EOF
 }
 
-for run in "pdas gamma 1e3" "alm r 1e3" "projection c 10"; do
+for run in "pdas gamma 1e3" "alm r 1e3" "projection c 10" "projection c 1e4"; do
   read -r method field value <<<"$run"
-  dir=$work/$method
+  dir=$work/${method}_$value
   mkdir -p "$dir"
   deck "$method" "$field" "$value" >"$dir/ring.dat"
   for stage in mesh material contact assemble solve; do
@@ -58,7 +63,7 @@ done
 PYTHONDONTWRITEBYTECODE=1 "$python" - "$work" "$root/postproc" <<'EOF'
 import sys
 sys.path.insert(0, sys.argv[2])
-from scene7b_report import read_ds
+from scene7b_report import pressure_deviation, read_ds
 
 work = sys.argv[1]
 failures = []
@@ -67,7 +72,10 @@ def check(ok, what):
     if not ok:
         failures.append(what)
 
-b = {m: read_ds(f"{work}/{m}/case.b") for m in ("pdas", "alm", "projection")}
+runs = {"pdas": "pdas_1e3", "alm": "alm_1e3", "projection": "projection_10",
+        "projection c = 1e4": "projection_1e4"}
+shapes = {m: {} for m in runs}
+b = {m: read_ds(f"{work}/{d}/case.b", shapes[m]) for m, d in runs.items()}
 check(b["pdas"].get("finite_strain") == [1], "case.b: solved in finite strain")
 for m in ("pdas", "alm"):
     check(b[m]["converged"] == [1] and b[m]["step_converged"] == [1, 1, 1],
@@ -88,6 +96,21 @@ for m in ("pdas", "alm"):
     # Equilibrium of the whole ring: the supports and the foundation balance (no other load).
     total = sum(b[m]["multiplier"])
     check(abs(total + ry) <= 1e-6 * abs(ry), f"{m}: contact forces {total:.6g} balance -Ry")
+# One state per load step, the last one the final state.
+cont = read_ds(f"{work}/pdas_1e3/case.cont")
+m, ndof = len(cont["weight"]), len(b["pdas"]["u"])
+check(shapes["pdas"]["step_u"] == [3, ndof] and shapes["pdas"]["step_pressure"] == [3, m],
+      f"pdas: step_u {shapes['pdas']['step_u']}, step_pressure {shapes['pdas']['step_pressure']}")
+check(b["pdas"]["step_u"][-ndof:] == b["pdas"]["u"], "pdas: last row of step_u is u")
+final = b["pdas"]["step_pressure"][-m:]
+expected = [x / w for x, w in zip(b["pdas"]["multiplier"], cont["weight"])]
+check(max(abs(x - y) for x, y in zip(final, expected)) <= 1e-12 * max(expected),
+      "pdas: last row of step_pressure is multiplier / weight")
+# Fig 7.13: the three methods reach the same final state.
+for other in ("alm", "projection c = 1e4"):
+    ok = b[other]["converged"] == [1]
+    d = pressure_deviation(b[other]["step_pressure"][-m:], final) if ok else float("inf")
+    check(ok and d <= 0.01, f"{other}: final pressure within {d:.1e} <= 1 % of pdas's")
 p = b["projection"]
 check(p["converged"] in ([0], [1]) and len(p["step_iterations"]) >= 1,
       f"projection c = 10: {'converged' if p['converged'] == [1] else 'Nv'} "

@@ -8,6 +8,9 @@
 //                                          name=, default the datafile's stem)
 //   OUTDIR/summary.json                    method, convergence, sizes, histories, times
 //   OUTDIR/contact.csv                     one row per contact element (contact cases)
+// A load-stepped case (finite strain: case.b holds step_u, solver/finite_strain_stage.hpp) writes
+// <stem>.pvd with one <stem>_NNNN.vtu per converged load step, time = load factor, instead of
+// the single state; summary.json and contact.csv are those of the final state as above.
 // A dynamic case (TIME card) reads case.hist instead of case.b and writes <stem>.pvd with one
 // <stem>_NNNN.vtu per state kept by sig-march (displacement, velocity, stress) and nothing else.
 // A solution holding NaN or inf is refused: a picture of garbage helps nobody.
@@ -19,6 +22,7 @@
 #include "mesh/nopo.hpp"
 #include "post/contact_table.hpp"
 #include "post/history_vtk.hpp"
+#include "post/load_step_vtk.hpp"
 #include "post/solution_fields.hpp"
 #include "post/stress.hpp"
 #include "post/summary.hpp"
@@ -95,8 +99,14 @@ int main(int argc, char** argv) {
       contact = sig::contact_rows(mesh, cont, solution);
     }
 
-    // 5. ParaView: one .vtu (time 0) and its .pvd collection.
-    if (write_vtk) {
+    // 5. ParaView: one .vtu per load step of a large-deformation solve, else one .vtu (time 0),
+    //    and the .pvd collection.
+    if (write_vtk && sig::has_load_step_states(solution)) {
+      const sig::VtkText data{{"title", datafile.title()}, {"method", solution.text("method")}};
+      for (const auto& file : sig::write_load_step_vtk(args.outdir, stem, mesh, materials, solution,
+                                                       contact_case ? &cont : nullptr, data))
+        std::cout << file.string() << "\n";
+    } else if (write_vtk) {
       const sig::SolutionFields fields = sig::solution_fields(mesh, u, materials, contact);
       const std::string vtu = stem + "_0000.vtu";
       sig::write_vtu(args.outdir / vtu, mesh, fields.point, fields.cell,

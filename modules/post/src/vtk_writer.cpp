@@ -16,6 +16,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <system_error>
 #include <unistd.h>
@@ -134,6 +135,24 @@ void write_pvd(const std::filesystem::path& path, const std::vector<PvdStep>& st
   }
   xml << "  </Collection>\n</VTKFile>\n";
   write_file_atomically(path, xml.str());
+}
+
+std::vector<std::filesystem::path>
+write_vtu_series(const std::filesystem::path& outdir, const std::string& stem, const Mesh& mesh,
+                 std::size_t count, const std::function<VtkState(std::size_t)>& state) {
+  std::vector<std::filesystem::path> files{outdir / (stem + ".pvd")};
+  std::vector<PvdStep> steps;
+  for (std::size_t s = 0; s < count; ++s) {
+    const VtkState fields = state(s);
+    char suffix[32];
+    std::snprintf(suffix, sizeof suffix, "_%04zu.vtu", s);
+    const std::string vtu = stem + suffix;
+    write_vtu(outdir / vtu, mesh, fields.point, fields.cell, fields.field_data);
+    steps.push_back({fields.time, vtu});
+    files.push_back(outdir / vtu);
+  }
+  write_pvd(files.front(), steps);
+  return files;
 }
 
 } // namespace sig

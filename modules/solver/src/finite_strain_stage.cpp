@@ -42,6 +42,7 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
   problem.obstacle = obstacle.get();
 
   FiniteStrainStageResult result;
+  if (contact != nullptr) result.contact_weight = contact->weight;
   const auto start = std::chrono::steady_clock::now();
   result.solution = solve_finite_strain_contact(problem, options);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -62,6 +63,46 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
   }
   return result;
 }
+
+namespace {
+
+/// The step_* state arrays of write_finite_strain_solution (header): row k = load step k + 1.
+void put_load_step_states(Ds& ds, const FiniteStrainStageResult& result) {
+  const std::vector<LoadStepResult>& steps = result.solution.steps;
+  std::size_t converged = 0;
+  while (converged < steps.size() && steps[converged].converged)
+    ++converged;
+  if (converged == 0) return;
+  const Eigen::Index ndof = steps.front().u.size();
+  const Eigen::Index m = result.contact_weight.size();
+  std::vector<double> u, multiplier, pressure;
+  std::vector<std::int64_t> status;
+  for (std::size_t k = 0; k < converged; ++k) {
+    const LoadStepResult& step = steps[k];
+    SIG_VERIFY(step.u.size() == ndof && step.u.allFinite(),
+               "load step " << k + 1 << ": displacement of size " << step.u.size() << " (expected "
+                            << ndof << ") or not finite");
+    u.insert(u.end(), step.u.begin(), step.u.end());
+    if (m == 0) continue;
+    SIG_VERIFY(step.multiplier.size() == m && step.active.size() == static_cast<std::size_t>(m),
+               "load step " << k + 1 << ": " << step.multiplier.size() << " multipliers and "
+                            << step.active.size() << " statuses for " << m << " contact elements");
+    for (Eigen::Index i = 0; i < m; ++i) {
+      multiplier.push_back(step.multiplier[i]);
+      pressure.push_back(step.multiplier[i] / result.contact_weight[i]);
+      status.push_back(step.active[i] ? 1 : 0);
+    }
+  }
+  const auto rows = static_cast<std::int64_t>(converged);
+  ds.put("step_u", std::span<const double>(u), {rows, static_cast<std::int64_t>(ndof)});
+  if (m == 0) return;
+  const std::vector<std::int64_t> shape{rows, static_cast<std::int64_t>(m)};
+  ds.put("step_multiplier", std::span<const double>(multiplier), shape);
+  ds.put("step_pressure", std::span<const double>(pressure), shape);
+  ds.put("step_status", std::span<const std::int64_t>(status), shape);
+}
+
+} // namespace
 
 void write_finite_strain_solution(const std::filesystem::path& path,
                                   const FiniteStrainStageResult& result, const std::string& method,
@@ -119,6 +160,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
       ds.put("status", std::span<const std::int64_t>(status));
     }
   }
+  put_load_step_states(ds, result);
   ds.put_scalar("reaction_x", result.reaction_x);
   ds.put_scalar("reaction_y", result.reaction_y);
   ds.put_scalar("time_solve", result.seconds);

@@ -4,7 +4,9 @@
 // the same folder, then renamed), so ParaView never opens a half-written step.
 #include "mesh/mesh.hpp"
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,5 +38,20 @@ struct PvdStep {
 
 /// Write a ParaView collection listing the steps in order.
 void write_pvd(const std::filesystem::path& path, const std::vector<PvdStep>& steps);
+
+/// One state of a series: its (pseudo-)time and what write_vtu writes for it.
+struct VtkState {
+  double time = 0;
+  std::vector<VtkField> point;
+  std::vector<VtkField> cell;
+  VtkText field_data;
+};
+
+/// A series for ParaView: OUTDIR/<stem>_NNNN.vtu for state NNNN = 0 .. count-1 (made one at a
+/// time by `state`, so a long series never sits in memory whole) and OUTDIR/<stem>.pvd listing
+/// them with their times. Returns the .pvd, then the .vtu files.
+std::vector<std::filesystem::path>
+write_vtu_series(const std::filesystem::path& outdir, const std::string& stem, const Mesh& mesh,
+                 std::size_t count, const std::function<VtkState(std::size_t)>& state);
 
 } // namespace sig

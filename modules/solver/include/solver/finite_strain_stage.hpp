@@ -23,6 +23,9 @@ struct FiniteStrainStageResult {
   double reaction_x = 0;
   double reaction_y = 0;
   double seconds = 0; ///< wall time of the solve
+  /// Tributary length of each contact element (empty without contact): turns the nodal
+  /// contact forces of every load step into pressures.
+  Eigen::VectorXd contact_weight;
 };
 
 /// True if some sub-domain of `table` has a hyperelastic law.
@@ -42,6 +45,11 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
 /// (history_active, history_residual, history_increment, history_step_norm = E_k,
 /// history_step = 1-based step);
 /// finite_strain = 1; scalars reaction_x, reaction_y, time_solve.
+/// One state per CONVERGED load step (the attempted steps stop at the first failure, so these
+/// are steps 1 .. s, s = number of rows; row k belongs to step_load[k]), for ParaView's series
+/// and Fig 7.13: step_u {s, ndof}; with contact step_multiplier, step_status, step_pressure
+/// {s, m} (m contact elements, pressure = multiplier / weight, the nominal pressure per unit
+/// reference length). s = 0 writes no step_* state arrays.
 void write_finite_strain_solution(const std::filesystem::path& path,
                                   const FiniteStrainStageResult& result, const std::string& method,
                                   const std::string& backend, const std::string& title);
