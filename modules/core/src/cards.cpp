@@ -88,7 +88,12 @@ const std::vector<CardSpec>& card_schema() {
            {"centre", "disc obstacle: centre x,y"},
            {"radius", "disc obstacle: radius"},
            {"law", "signorini"},
-           {"gap", "initial gap added to the geometric one"},
+           {"gap", "initial gap added to the geometric one: where the unilateral bound sits "
+                   "beyond the obstacle (ipm: the allowed penetration g)"},
+           {"strategy", "dynamic contact strategy of sig-march (a TIME deck only): signorini | "
+                        "compliance | specific-penalty | two-step | ipm; default signorini"},
+           {"r", "foundation stiffness per unit area of compliance, specific-penalty and ipm "
+                 "(sig-march), > 0"},
        }},
       {"SOLVER",
        false,
@@ -111,7 +116,7 @@ const std::vector<CardSpec>& card_schema() {
        }},
       {"TIME",
        false,
-       "time marching of elastodynamics (stage sig-march; without contact for now)",
+       "time marching of elastodynamics (stage sig-march; with a CONTACT card, by its strategy)",
        {
            {"scheme", "midpoint | newmark: implicit midpoint rule (3.39) or Newmark's average "
                       "acceleration; both conserve the discrete energy (8.33) without load"},

@@ -1,20 +1,30 @@
-// sig-march DATAFILE [-o OUTDIR]: elastodynamics without contact, M a + K u = f, marched from
-// the INITIAL state with the scheme of the TIME card.
+// sig-march DATAFILE [-o OUTDIR]: elastodynamics, M a + K u = f, marched from the INITIAL state
+// with the scheme of the TIME card, with or without node-to-rigid contact.
 //
 //   TIME scheme=midpoint|newmark T= k= [output_every=1] [mass=consistent|lumped|emm]
 //   INITIAL [u=ux,uy] [v=vx,vy] [region=...]
-//   SOLVER linear=cholmod|umfpack|mumps   (the factorization of K + (4 / k^2) M, once)
+//   CONTACT ... [strategy=signorini|compliance|specific-penalty|two-step|ipm] [r=] [gap=]
+//   SOLVER linear=cholmod|umfpack|mumps maxit=   (K + (4 / k^2) M factorized once; maxit: the
+//          strategy's Newton iterations per phase, default 50)
 //
-// Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0)
-// and writes OUTDIR/case.hist (DS HIST, integrator/history_io.hpp) and OUTDIR/energy.csv. The
-// contact strategies of ch. 3.3 / 8 are not marched yet: a deck with a CONTACT card is refused.
+// Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0),
+// with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
+// integrator/history_io.hpp) and OUTDIR/energy.csv. The contact strategies are those of
+// integrator/contact_strategy.hpp (default signorini); r is the foundation stiffness per unit
+// area, gap the extra gap of the unilateral bound (for ipm: the allowed penetration g). A step
+// whose Newton fails stops the march: the files hold the steps done, HIST converged = 0, a
+// warning is printed and the stage exits 0.
 #include "assembly/dirichlet.hpp"
 #include "assembly/system.hpp"
+#include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "integrator/contact_card.hpp"
+#include "integrator/contact_march.hpp"
+#include "integrator/contact_strategy.hpp"
 #include "integrator/history_io.hpp"
 #include "integrator/march.hpp"
 #include "integrator/time_card.hpp"
@@ -24,22 +34,27 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 int main(int argc, char** argv) {
   return sig::run_stage("sig-march", [&] {
-    // 1. Command line and cards: TIME, INITIAL, the linear backend of SOLVER.
+    // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
+    // maxit).
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-march");
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Card* contact = datafile.find("CONTACT");
     const sig::TimeParameters time =
         sig::time_parameters(datafile.require("TIME"), contact != nullptr);
-    if (contact != nullptr)
-      contact->fail("", "sig-march marches elastodynamics without contact only; the dynamic "
-                        "contact strategies (ch. 3.3 / 8) are not available yet");
     const sig::Card* solver_card = datafile.find("SOLVER");
     const std::string backend =
         solver_card ? solver_card->choice("linear", {"cholmod", "umfpack", "mumps"}, "cholmod")
                     : "cholmod";
+    sig::ContactHistoryInfo contact_info;
+    sig::ContactStrategyParameters strategy_parameters;
+    if (contact != nullptr) {
+      contact_info = sig::contact_history_info(*contact);
+      strategy_parameters = sig::contact_strategy_parameters(*contact, solver_card);
+    }
 
     // 2. Mesh and assembled system; a dynamic case needs a mass.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
@@ -58,38 +73,64 @@ int main(int argc, char** argv) {
     initial.u = reduced.restrict(initial_full.u);
     initial.v = reduced.restrict(initial_full.v);
 
-    // 4. The scheme: its step operator K + (4 / k^2) M is factorized here, once.
+    // 4. The contact boundary of case.cont, and the scheme: its step operator K + (4 / k^2) M
+    //    (EMM included) is factorized here, once.
+    std::optional<sig::ContactElements> elements;
+    if (contact != nullptr) elements = sig::read_cont(args.ds_path("cont"));
+    const sig::ContactNormals normals =
+        elements ? sig::contact_normals(*elements) : sig::ContactNormals{};
     sig::Stopwatch clock;
     auto scheme = sig::make_time_scheme(
         time.scheme,
-        sig::reduced_elastodynamics(reduced, sig::mass_matrix(system, time.mass, mesh)), time.k,
-        backend);
+        sig::reduced_elastodynamics(reduced, sig::mass_matrix(system, time.mass, mesh, normals)),
+        time.k, backend);
 
     // 5. March, with a progress line: step / steps, time, total energy.
-    sig::Progress progress("sig-march " + time.scheme, time.steps);
+    const std::string label =
+        time.scheme + (contact != nullptr ? " + " + contact_info.strategy : std::string());
+    sig::Progress progress("sig-march " + label, time.steps);
     char detail[96];
     const auto observer = [&](const sig::DynamicState& state, const sig::EnergyRecord& energy) {
       std::snprintf(detail, sizeof detail, "t = %.6g  E = %.12g", state.time, energy.total);
       progress.update(energy.step, detail);
     };
-    const sig::MarchHistory history =
-        sig::march(*scheme, initial, time.steps, time.output_every, observer);
-    progress.finish(detail);
+    sig::MarchHistory history;
+    if (elements) {
+      const sig::ContactBoundary boundary = sig::contact_boundary(*elements, mesh, reduced);
+      contact_info.nodes = boundary.nodes;
+      const auto strategy = sig::make_contact_strategy(contact_info.strategy, strategy_parameters);
+      history = sig::march_with_contact(*scheme, boundary, *strategy, initial, time.steps,
+                                        time.output_every, observer);
+    } else {
+      history = sig::march(*scheme, initial, time.steps, time.output_every, observer);
+    }
     const double seconds = clock.seconds();
+    if (history.converged) {
+      progress.finish(detail);
+    } else {
+      progress.finish(std::string(detail) + "  STOPPED after step " +
+                      std::to_string(history.energy.size() - 1));
+      sig::log_warning("sig-march stopped: " + history.failure);
+    }
 
     // 6. Write case.hist and energy.csv (both atomic) and report the energy drift.
     sig::write_hist(args.ds_path("hist"), history, reduced, time, backend, seconds,
-                    datafile.title());
+                    datafile.title(), elements ? &contact_info : nullptr);
     const auto csv_path = args.outdir / "energy.csv";
     sig::write_file_atomically(csv_path, sig::energy_csv(history.energy));
     const double e0 = history.energy.front().total;
     double drift = 0.0;
     for (const sig::EnergyRecord& r : history.energy)
-      drift = std::max(drift, std::abs(r.total - r.external_work - e0));
-    std::printf("sig-march: %s, mass %s (%s), %d free dofs, %d steps of k = %g, %zu states kept, "
-                "E0 = %.12g, max |E - W - E0| = %.3g, %.3f s\n",
-                time.scheme.c_str(), sig::to_string(time.mass).c_str(), backend.c_str(),
-                reduced.num_free(), time.steps, time.k, history.outputs.size(), e0, drift, seconds);
+      drift = std::max(drift, std::abs(r.total - r.external_work - r.contact_work - e0));
+    double penetration = 0.0;
+    for (const sig::EnergyRecord& r : history.energy)
+      penetration = std::max(penetration, r.max_penetration);
+    std::printf("sig-march: %s, mass %s (%s), %d free dofs, %zu/%d steps of k = %g, %zu states "
+                "kept, E0 = %.12g, max |E - W - Wc - E0| = %.3g, max penetration %.6g, %.3f s%s\n",
+                label.c_str(), sig::to_string(time.mass).c_str(), backend.c_str(),
+                reduced.num_free(), history.energy.size() - 1, time.steps, time.k,
+                history.outputs.size(), e0, drift, penetration, seconds,
+                history.converged ? "" : " (STOPPED: Newton failed)");
     std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
   });
 }

@@ -2,6 +2,7 @@
 
 #include "assembly/dirichlet.hpp"
 #include "core/ds.hpp"
+#include "core/error.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -13,16 +14,57 @@ std::string energy_csv(const std::vector<EnergyRecord>& energy) {
   std::string csv = std::string(energy_csv_header) + "\n";
   char row[256];
   for (const EnergyRecord& r : energy) {
-    std::snprintf(row, sizeof row, "%d,%.17g,%.17g,%.17g,%.17g,0,0,0,%d\n", r.step, r.time,
-                  r.kinetic, r.elastic, r.total, r.step > 0 ? 1 : 0);
+    std::snprintf(row, sizeof row, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", r.step, r.time,
+                  r.kinetic, r.elastic, r.total, r.contact_work, r.max_penetration, r.active_nodes,
+                  r.newton_iterations);
     csv += row;
   }
   return csv;
 }
 
+namespace {
+
+void put_contact(Ds& ds, const MarchHistory& history, const ContactHistoryInfo& contact,
+                 int steps) {
+  ds.put_text("strategy", contact.strategy);
+  ds.put_scalar("r", contact.r);
+  ds.put_scalar("gap", contact.gap);
+  const auto p = static_cast<std::int64_t>(contact.nodes.size());
+  std::vector<std::int64_t> node;
+  for (int i : contact.nodes)
+    node.push_back(i + 1);
+  ds.put("contact_node", node);
+  std::vector<double> pressure;
+  for (const Eigen::VectorXd& state : history.output_pressure) {
+    SIG_VERIFY(state.size() == p,
+               "HIST: a pressure of " << state.size() << " values for " << p << " contact nodes");
+    pressure.insert(pressure.end(), state.data(), state.data() + state.size());
+  }
+  ds.put("pressure", pressure, {static_cast<std::int64_t>(history.output_pressure.size()), p});
+  std::vector<std::int64_t> converged(static_cast<std::size_t>(steps) + 1, 0);
+  for (const EnergyRecord& r : history.energy)
+    converged[static_cast<std::size_t>(r.step)] = 1;
+  ds.put("step_converged", converged);
+  std::vector<double> work, penetration;
+  std::vector<std::int64_t> active, iterations;
+  for (const EnergyRecord& r : history.energy) {
+    work.push_back(r.contact_work);
+    penetration.push_back(r.max_penetration);
+    active.push_back(r.active_nodes);
+    iterations.push_back(r.newton_iterations);
+  }
+  ds.put("contact_work", work);
+  ds.put("max_penetration", penetration);
+  ds.put("active_nodes", active);
+  ds.put("newton_iterations", iterations);
+}
+
+} // namespace
+
 void write_hist(const std::filesystem::path& path, const MarchHistory& history,
                 const ReducedSystem& reduced, const TimeParameters& time,
-                const std::string& linear_solver, double seconds, const std::string& title) {
+                const std::string& linear_solver, double seconds, const std::string& title,
+                const ContactHistoryInfo* contact) {
   Ds ds("HIST", title, "sig-march");
   ds.put_text("scheme", time.scheme);
   ds.put_text("mass", to_string(time.mass));
@@ -70,6 +112,9 @@ void write_hist(const std::filesystem::path& path, const MarchHistory& history,
   ds.put("elastic", elastic);
   ds.put("total", total);
   ds.put("external_work", work);
+  ds.put_int("converged", history.converged ? 1 : 0);
+  ds.put_text("failure", history.failure);
+  if (contact) put_contact(ds, history, *contact, time.steps);
   write_ds(path, ds);
 }
 

@@ -20,6 +20,7 @@ MarchHistory march(const TimeScheme& scheme, const DynamicState& initial, int st
     work += f_bar.dot(next.u - state.u);
     state = std::move(next);
     history.energy.push_back(energy_record(scheme.problem(), state, n, work));
+    history.energy.back().newton_iterations = 1;
     const bool output = output_every > 0 ? n % output_every == 0 : n == steps;
     if (output) history.outputs.push_back(state);
     if (observer) observer(state, history.energy.back());

@@ -45,6 +45,10 @@ Eigen::VectorXd TimeScheme::solve_step_operator(const Eigen::VectorXd& b) const 
   return solver_->solve(b);
 }
 
+Eigen::MatrixXd TimeScheme::solve_step_operator(const Eigen::MatrixXd& B) const {
+  return solver_->solve(B);
+}
+
 void TimeScheme::check_state(const DynamicState& state) const {
   SIG_VERIFY(state.u.size() == problem_.num_dofs() && state.v.size() == problem_.num_dofs(),
              name() << " step: state with " << state.u.size() << " displacements and "

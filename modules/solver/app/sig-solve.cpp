@@ -29,7 +29,15 @@ int main(int argc, char** argv) {
     // 1. Arguments and the SOLVER card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, "solve");
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
-    const bool has_contact = datafile.find("CONTACT") != nullptr;
+    const sig::Card* contact_card = datafile.find("CONTACT");
+    const bool has_contact = contact_card != nullptr;
+    // strategy= and r= of CONTACT belong to time marching (sig-march); a static deck has none.
+    for (const char* dynamic : {"strategy", "r"})
+      if (has_contact && contact_card->has(dynamic))
+        contact_card->fail(dynamic, std::string("is a field of dynamic contact (sig-march, with a "
+                                                "TIME card); a static deck has no strategy: ") +
+                                        "remove it (the static method is SOLVER method=, its "
+                                        "stiffness SOLVER r=)");
     const sig::Card* card = datafile.find("SOLVER");
     const sig::Card defaults;
     const sig::Card& solver = card ? *card : defaults;

@@ -20,6 +20,13 @@ struct EnergyRecord {
   double elastic = 0.0;       ///< 1/2 u.K u
   double total = 0.0;         ///< kinetic + elastic
   double external_work = 0.0; ///< work of the loads since step 0
+  // The contact columns (integrator/contact_march.hpp); 0 without contact.
+  double contact_work = 0.0;    ///< work of the contact forces since step 0
+  double max_penetration = 0.0; ///< max over the contact nodes of [u_n - d]_+ (d geometric)
+  int active_nodes = 0;         ///< nodes with a positive contact force over the last step
+  /// Iterations of the step: 1 linear solve without contact (0 at step 0, the given state);
+  /// with contact those of the strategy's Newton phases, summed (0 in free flight).
+  int newton_iterations = 0;
 };
 
 /// 1/2 v.M v.

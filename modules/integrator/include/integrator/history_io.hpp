@@ -5,7 +5,16 @@
 // output_every, ndof (integers); output_step (step numbers of the kept states, 0 = the
 // initial state), output_time; u and v, shape {outputs, ndof}, on the full dofs (imposed values
 // on the Dirichlet dofs, whose velocity is zero); step, time, kinetic, elastic, total,
-// external_work: one value per step 0 .. steps (energy.hpp, (8.33)).
+// external_work: one value per step 0 .. steps (energy.hpp, (8.33)); converged (integer, 0 if
+// a step's Newton failed and the march stopped there: the per-step arrays then end at the last
+// step done and the last state done is kept) and failure (text naming the step, empty otherwise).
+//
+// With contact (a CONTACT card), also: strategy (text, contact_strategy_names); r and gap
+// (scalars: the card's foundation stiffness per unit area and extra gap, 0 if not given);
+// contact_node (1-based mesh nodes of the p contact elements, CONT order); pressure, shape
+// {outputs, p}: lambda / weight at the kept states (0 at the initial state); step_converged
+// {steps + 1}: 1 for step 0 and every step done, 0 for the failed step and those never reached;
+// contact_work, max_penetration, active_nodes, newton_iterations: per step as energy.csv.
 #include "integrator/march.hpp"
 #include "integrator/time_card.hpp"
 
@@ -17,18 +26,29 @@ namespace sig {
 
 struct ReducedSystem;
 
-/// The header line of energy.csv; the contact columns stay 0 until contact strategies march.
+/// The header line of energy.csv; the contact columns are 0 without contact.
 inline constexpr const char* energy_csv_header =
     "step,time,kinetic,elastic,total,contact_work,max_penetration,active_nodes,newton_iterations";
 
-/// energy.csv (header above, one row per record, 17 significant digits). The linear schemes
-/// solve one linear system per step: newton_iterations is 1 on every step but step 0 (0: the
-/// initial state is given, not solved for).
+/// energy.csv (header above, one row per record, 17 significant digits). Without contact the
+/// schemes solve one linear system per step: newton_iterations is 1 on every step but step 0
+/// (0: the initial state is given, not solved for); with contact it counts the strategy's
+/// iterations (EnergyRecord).
 std::string energy_csv(const std::vector<EnergyRecord>& energy);
 
-/// Write the DS HIST of a march on the Dirichlet-reduced problem `reduced` (atomic).
+/// What HIST records of the CONTACT card of a march with contact.
+struct ContactHistoryInfo {
+  std::string strategy;
+  double r = 0;
+  double gap = 0;
+  std::vector<int> nodes; ///< 0-based mesh nodes
+};
+
+/// Write the DS HIST of a march on the Dirichlet-reduced problem `reduced` (atomic); `contact`
+/// is null for a march without contact.
 void write_hist(const std::filesystem::path& path, const MarchHistory& history,
                 const ReducedSystem& reduced, const TimeParameters& time,
-                const std::string& linear_solver, double seconds, const std::string& title);
+                const std::string& linear_solver, double seconds, const std::string& title,
+                const ContactHistoryInfo* contact = nullptr);
 
 } // namespace sig

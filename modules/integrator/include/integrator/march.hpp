@@ -5,14 +5,19 @@
 #include "integrator/time_scheme.hpp"
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace sig {
 
 struct MarchHistory {
-  std::vector<EnergyRecord> energy;  ///< steps 0 .. steps
+  std::vector<EnergyRecord> energy;  ///< steps 0 .. the last step done
   std::vector<DynamicState> outputs; ///< the initial state, then every output_every-th step
   DynamicState final_state;
+  // With contact (integrator/contact_march.hpp):
+  std::vector<Eigen::VectorXd> output_pressure; ///< lambda / weight at each kept state
+  bool converged = true; ///< false if a step's Newton failed: the march stopped before it
+  std::string failure;   ///< names the step and why
 };
 
 /// Called after each step (progress lines, early inspection).

@@ -51,9 +51,13 @@ public:
   const Elastodynamics& problem() const { return problem_; }
   double time_step() const { return k_; }
 
-protected:
-  /// S^{-1} b with the factorization of S = K + (4 / k^2) M.
+  /// S^{-1} b with the factorization of S = K + (4 / k^2) M (the contact strategies condense S
+  /// onto the contact nodes with it, integrator/dynamic_contact.hpp).
   Eigen::VectorXd solve_step_operator(const Eigen::VectorXd& b) const;
+  /// S^{-1} B, column by column.
+  Eigen::MatrixXd solve_step_operator(const Eigen::MatrixXd& B) const;
+
+protected:
   /// sig::Error unless u and v have the size of the problem.
   void check_state(const DynamicState& state) const;
 

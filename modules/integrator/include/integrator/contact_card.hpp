@@ -1,0 +1,25 @@
+#pragma once
+// The dynamic fields of the CONTACT card (stage sig-march; sig-contact reads the geometry):
+//
+//   CONTACT ... [strategy=signorini|compliance|specific-penalty|two-step|ipm] [r=] [gap=]
+//
+// strategy defaults to signorini; r (foundation stiffness per unit area, nodal force
+// r * weight * penetration) is required and > 0 for compliance, specific-penalty and ipm. gap
+// keeps its static meaning, the extra gap of the unilateral bound beyond the obstacle (sig-contact
+// stores geometric + extra in the CONT gap): for ipm it is the allowed penetration g; compliance
+// and specific-penalty have no bound and ignore it (with a warning). SOLVER maxit= sets the
+// strategy's Newton iterations per phase. Errors are sig::InputError (file, line, field).
+#include "integrator/contact_strategy.hpp"
+#include "integrator/history_io.hpp"
+
+namespace sig {
+
+class Card;
+
+/// strategy, r, gap of the card (the nodes are filled from the CONT file).
+ContactHistoryInfo contact_history_info(const Card& contact);
+
+/// The strategy's parameters: r of the CONTACT card, max_iterations of SOLVER maxit (may be null).
+ContactStrategyParameters contact_strategy_parameters(const Card& contact, const Card* solver);
+
+} // namespace sig

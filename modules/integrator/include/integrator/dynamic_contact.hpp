@@ -1,0 +1,67 @@
+#pragma once
+// The contact boundary of a dynamic case, on the free dofs, and the condensation of the step
+// operator onto its normal displacements.
+//
+// With the end-of-step nodal contact forces lambda (>= 0, pushing node i along the obstacle
+// normal n_i; force vector -B^T lambda, B the normal operator (B u)_i = u_n,i = -n_i . u_i), the
+// step of TimeScheme::advance, multiplied by 2 as it is written there, becomes
+//     S d = 2 f_bar - 2 K u_n + (4 / k) M v_n - 2 B^T lambda,   S = K + (4 / k^2) M,
+// so d = d_free - 2 Z lambda with Z = S^{-1} B^T, and the normal displacements at t_{n+1},
+// x = B (u_n + d), obey
+//     x = x_free - 2 C lambda,  C = B Z,   i.e.   A (x - x_free) + lambda = 0,  A = (2 C)^{-1}:
+// a small problem on the p contact nodes, whatever the contact law. S is factorized once (by the
+// scheme), Z takes p solves once, and a step costs one sparse solve plus dense p-sized work.
+// The work of the contact forces over the step is -lambda . (x_{n+1} - x_n), and the midpoint
+// rule's discrete energy obeys E_{n+1} - E_n = f_bar . (u_{n+1} - u_n) - lambda . (x_{n+1} - x_n).
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <vector>
+
+namespace sig {
+
+struct ContactElements;
+struct ContactNormals;
+struct Mesh;
+struct ReducedSystem;
+class TimeScheme;
+
+struct ContactBoundary {
+  std::vector<int> nodes;        ///< 0-based mesh nodes, in CONT element order
+  Eigen::SparseMatrix<double> B; ///< p x free dofs: (B u)_i = u_n,i
+  /// The unilateral bound on u_n: the CONT gap = geometric gap + the card's extra gap
+  /// (signorini, two-step (a); for ipm the extra gap is the allowed penetration g).
+  Eigen::VectorXd bound;
+  /// d_i = distance of node i to the obstacle in the reference configuration: penetration
+  /// [u_n - d]_+ and the compliance and specific penalty laws are measured from it.
+  Eigen::VectorXd geometric_gap;
+  Eigen::VectorXd weight; ///< tributary length x thickness: pressure = lambda / weight
+
+  int size() const { return static_cast<int>(nodes.size()); }
+  /// [u_n - d]_+ per node for the normal displacements x.
+  Eigen::VectorXd penetration(const Eigen::VectorXd& x) const;
+};
+
+/// The geometric gap of each element, recomputed from the obstacle the CONT file stores:
+/// max(d(X_i), 0) (the contact stage sets round-off negatives to 0). The CONT gap minus this is
+/// the card's extra gap.
+Eigen::VectorXd geometric_gaps(const ContactElements& elements, const Mesh& mesh);
+
+/// The boundary on the free dofs of `reduced`; sig::Error if a contact node has a Dirichlet dof
+/// or the CONT gap is below the geometric one (a CONT file written for another mesh).
+ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& mesh,
+                                 const ReducedSystem& reduced);
+
+/// The contact nodes and normals the Equivalent Mass Matrix needs (integrator/emm.hpp).
+ContactNormals contact_normals(const ContactElements& elements);
+
+/// Z and A of the header comment, for the step operator of `scheme`.
+struct CondensedContact {
+  Eigen::MatrixXd Z; ///< S^{-1} B^T, free dofs x p
+  Eigen::MatrixXd A; ///< (2 B S^{-1} B^T)^{-1}, p x p, symmetric positive definite
+};
+/// p solves with the scheme's factor; sig::Error if B S^{-1} B^T is not positive definite (two
+/// elements on one node).
+CondensedContact condense_contact(const TimeScheme& scheme, const ContactBoundary& boundary);
+
+} // namespace sig

@@ -1,0 +1,40 @@
+#include "integrator/contact_card.hpp"
+
+#include "core/datafile.hpp"
+#include "core/log.hpp"
+
+namespace sig {
+
+ContactHistoryInfo contact_history_info(const Card& contact) {
+  ContactHistoryInfo info;
+  info.strategy = contact.choice(
+      "strategy", {"signorini", "compliance", "specific-penalty", "two-step", "ipm"}, "signorini");
+  const bool needs_r = info.strategy == "compliance" || info.strategy == "specific-penalty" ||
+                       info.strategy == "ipm";
+  if (needs_r && !contact.has("r"))
+    contact.fail("r", "strategy=" + info.strategy +
+                          " needs the foundation stiffness per unit area r > 0");
+  info.r = contact.real("r", 0.0);
+  if (contact.has("r") && !(info.r > 0)) contact.fail("r", "must be > 0");
+  if (contact.has("r") && !needs_r)
+    log_warning("CONTACT r= is not used by strategy=" + info.strategy);
+  info.gap = contact.real("gap", 0.0);
+  if (!(info.gap >= 0)) contact.fail("gap", "must be >= 0");
+  if (info.gap > 0 && (info.strategy == "compliance" || info.strategy == "specific-penalty"))
+    log_warning("CONTACT gap= sets a unilateral bound, which strategy=" + info.strategy +
+                " does not have: its force acts from the obstacle surface, gap is ignored");
+  return info;
+}
+
+ContactStrategyParameters contact_strategy_parameters(const Card& contact, const Card* solver) {
+  ContactStrategyParameters p;
+  p.r = contact.real("r", 0.0);
+  if (solver != nullptr) {
+    const long maxit = solver->integer("maxit", p.max_iterations);
+    if (maxit < 1) solver->fail("maxit", "must be >= 1");
+    p.max_iterations = static_cast<int>(maxit);
+  }
+  return p;
+}
+
+} // namespace sig

@@ -1,0 +1,80 @@
+#include "integrator/dynamic_contact.hpp"
+
+#include "assembly/dirichlet.hpp"
+#include "contact/contact_elements.hpp"
+#include "core/error.hpp"
+#include "integrator/elastodynamics.hpp"
+#include "integrator/time_scheme.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+
+namespace sig {
+
+Eigen::VectorXd ContactBoundary::penetration(const Eigen::VectorXd& x) const {
+  return (x - geometric_gap).cwiseMax(0.0);
+}
+
+Eigen::VectorXd geometric_gaps(const ContactElements& elements, const Mesh& mesh) {
+  const auto obstacle = make_obstacle(elements.obstacle);
+  Eigen::VectorXd d(elements.size());
+  for (int i = 0; i < elements.size(); ++i) {
+    SIG_VERIFY(elements.node[i] >= 0 && elements.node[i] < mesh.num_nodes(),
+               "contact element " << i + 1 << ": node " << elements.node[i] + 1
+                                  << " is not a node of the mesh");
+    d[i] = std::max(obstacle->signed_distance(mesh.nodes[elements.node[i]]), 0.0);
+  }
+  return d;
+}
+
+ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& mesh,
+                                 const ReducedSystem& reduced) {
+  ContactBoundary b;
+  b.nodes = elements.node;
+  b.bound = elements.gap;
+  b.weight = elements.weight;
+  b.geometric_gap = geometric_gaps(elements, mesh);
+  const int p = elements.size();
+  // The CONT gap is d + extra with extra >= 0; below d beyond round-off means the CONT file and
+  // the mesh disagree.
+  for (int i = 0; i < p; ++i)
+    SIG_VERIFY(b.bound[i] >= b.geometric_gap[i] - 1e-9 * (1 + std::abs(b.geometric_gap[i])),
+               "contact element " << i + 1 << " (node " << b.nodes[i] + 1 << "): CONT gap "
+                                  << b.bound[i] << " is below the distance " << b.geometric_gap[i]
+                                  << " to the obstacle; rerun sig-contact on this mesh");
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < p; ++i)
+    for (int component = 0; component < 2; ++component) {
+      const int dof = reduced.reduced_index[2 * elements.node[i] + component];
+      SIG_VERIFY(dof >= 0, "contact node "
+                               << elements.node[i] + 1 << " has a Dirichlet condition on component "
+                               << component + 1 << "; Gamma3 and Gamma1 must not share nodes");
+      entries.emplace_back(i, dof, -elements.normal[i][component]);
+    }
+  b.B.resize(p, reduced.num_free());
+  b.B.setFromTriplets(entries.begin(), entries.end());
+  return b;
+}
+
+ContactNormals contact_normals(const ContactElements& elements) {
+  return {elements.node, elements.normal};
+}
+
+CondensedContact condense_contact(const TimeScheme& scheme, const ContactBoundary& boundary) {
+  CondensedContact c;
+  const Eigen::MatrixXd Bt = Eigen::MatrixXd(boundary.B.transpose());
+  c.Z = scheme.solve_step_operator(Bt);
+  Eigen::MatrixXd C = boundary.B * c.Z;
+  C = 0.5 * (C + C.transpose()).eval();
+  const Eigen::LLT<Eigen::MatrixXd> cholesky(2.0 * C);
+  SIG_VERIFY(cholesky.info() == Eigen::Success, "the step operator condensed on the "
+                                                    << boundary.size()
+                                                    << " contact nodes is not positive definite "
+                                                       "(a node in two contact elements?)");
+  c.A = cholesky.solve(Eigen::MatrixXd::Identity(boundary.size(), boundary.size()));
+  c.A = 0.5 * (c.A + c.A.transpose()).eval();
+  return c;
+}
+
+} // namespace sig
