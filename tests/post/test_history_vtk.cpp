@@ -1,6 +1,7 @@
 // A dynamic case for ParaView: every state of a DS HIST becomes one .vtu whose displacement and
 // velocity are the DS values (read back through VTK's own reader), the .pvd lists them with their
-// times, and a DS whose shapes do not fit the mesh, or that holds NaN, is refused.
+// times, and a DS whose shapes do not fit the mesh, or that holds NaN, is refused. A march with
+// contact (contact_node, pressure) adds contact_pressure: the DS value on Gamma3, 0 elsewhere.
 #include "post/history_vtk.hpp"
 
 #include "core/error.hpp"
@@ -106,6 +107,59 @@ TEST_F(HistoryVtk, RefusesWrongShapesAndNaN) {
   std::vector<double> v = hist.reals("v");
   v[3] = std::numeric_limits<double>::quiet_NaN();
   hist.put("v", v, hist.shape("u"));
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+}
+
+// Contact on the bottom edge (nodes 1, 5, 2 in the 1-based numbering of the DS): state s has
+// pressure (10 s + 1, 10 s + 2, 10 s + 3) there.
+Ds with_contact(const Mesh& mesh) {
+  Ds hist = two_states(mesh);
+  hist.put("contact_node", std::vector<std::int64_t>{1, 5, 2});
+  hist.put("pressure", std::vector<double>{1, 2, 3, 11, 12, 13}, {2, 3});
+  return hist;
+}
+
+double point_value(const fs::path& vtu, const char* name, int node) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(vtu.c_str());
+  reader->Update();
+  vtkDataArray* array = reader->GetOutput()->GetPointData()->GetArray(name);
+  if (array == nullptr) return std::numeric_limits<double>::quiet_NaN();
+  return array->GetComponent(node, 0);
+}
+
+TEST_F(HistoryVtk, ContactPressureOnGamma3ZeroElsewhere) {
+  const Mesh mesh = test::small_mesh();
+  const auto files = write_history_vtk(dir_, "ball", mesh, two_materials(), with_contact(mesh), {});
+  ASSERT_EQ(files.size(), 3u);
+  for (int s = 0; s < 2; ++s) {
+    // 0-based nodes 0, 4, 1 carry the DS's 1-based contact nodes 1, 5, 2.
+    EXPECT_DOUBLE_EQ(point_value(files[s + 1], "contact_pressure", 0), 10.0 * s + 1);
+    EXPECT_DOUBLE_EQ(point_value(files[s + 1], "contact_pressure", 4), 10.0 * s + 2);
+    EXPECT_DOUBLE_EQ(point_value(files[s + 1], "contact_pressure", 1), 10.0 * s + 3);
+    EXPECT_EQ(point_value(files[s + 1], "contact_pressure", 2), 0.0);
+    EXPECT_EQ(point_value(files[s + 1], "contact_pressure", 3), 0.0);
+    EXPECT_DOUBLE_EQ(point_value(files[s + 1], "velocity", 0), s + 1.0); // kept as before
+  }
+}
+
+TEST_F(HistoryVtk, NoContactPressureWithoutContactArrays) {
+  const Mesh mesh = test::small_mesh();
+  const auto files = write_history_vtk(dir_, "disc", mesh, two_materials(), two_states(mesh), {});
+  EXPECT_TRUE(std::isnan(point_value(files[1], "contact_pressure", 0)));
+}
+
+TEST_F(HistoryVtk, RefusesBadContactArrays) {
+  const Mesh mesh = test::small_mesh();
+  Ds hist = with_contact(mesh);
+  hist.put("contact_node", std::vector<std::int64_t>{1, 6, 2}); // the mesh has 5 nodes
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+  hist = with_contact(mesh);
+  hist.put("pressure", std::vector<double>{1, 2, 3}, {1, 3}); // one state of two
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+  hist = with_contact(mesh);
+  hist.put("pressure",
+           std::vector<double>{1, 2, 3, 11, std::numeric_limits<double>::infinity(), 13}, {2, 3});
   EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
 }
 

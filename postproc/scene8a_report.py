@@ -1,0 +1,510 @@
+#!/usr/bin/python3
+"""Scene 8a report: the elastic ball impact (thesis ch. 8.5) beside the thesis's numbers.
+
+    postproc/scene8a_report.py OUTDIR
+
+OUTDIR is what drivers/scene8a.sh wrote: command.txt, impact.txt (mesh, foundation height, T,
+k of the impact runs), and one folder per run (impact/<method>, fig85/<run>,
+sweep/<method>_k<k>) holding ball.dat (its deck), method.txt, energy.csv and case.hist (sig-march),
+march.log and wall.txt (the stage's wall-clock seconds). Writes OUTDIR/report.md, OUTDIR/
+methods.csv, OUTDIR/sweep.csv and the PNGs the report shows. The thesis's values come from
+postproc/thesis_values_8a.csv when it exists, else from the 8a rows of
+../shared/reference/thesis_values.csv. Every number in the report is read from those files or
+computed from them here.
+"""
+import argparse
+import csv
+import math
+import struct
+import sys
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
+
+HERE = Path(__file__).resolve().parent
+THESIS_CSVS = (HERE / "thesis_values_8a.csv",
+               HERE.parent.parent / "shared" / "reference" / "thesis_values.csv")
+
+METHODS = ("signorini", "compliance", "specific-penalty", "emm", "two-step", "ipm", "ipm-emm")
+CLASSICAL = ("signorini", "compliance", "specific-penalty", "emm", "two-step")  # Fig 8.3
+IPM_VARIANTS = ("specific-penalty", "ipm", "ipm-emm")                           # Fig 8.4
+LABEL = {
+    "signorini": "classical scheme, Signorini (g = 0)",
+    "compliance": "classical scheme, normal compliance",
+    "specific-penalty": "specific penalty (3.51)",
+    "specific-penalty-emm": "specific penalty + EMM",
+    "emm": "EMM (Signorini, equivalent mass)",
+    "two-step": "two-step [13] (Signorini + persistency)",
+    "ipm": "IPM (8.30)-(8.32)",
+    "ipm-emm": "IPM + EMM",
+}
+MARKER = {"signorini": "o", "compliance": "s", "specific-penalty": "D", "emm": "v",
+          "two-step": "^", "ipm": "P", "ipm-emm": "*", "specific-penalty-emm": "x"}
+# The issue's "must show" (issue 5), as numbers.
+CONSERVING_TOL = 1.0   # two-step and specific penalty: |dE| / E0 within 1 %
+# Signorini "dissipating visibly": it loses more than the thesis's IPM + EMM, whose 0.1 % the
+# thesis counts as conserving "almost all" the energy, and more than the conserving methods.
+VISIBLE_LOSS = 0.1
+IPM_EMM_TOL = 0.5      # IPM + EMM: |dE| / E0 within 0.5 %, max penetration <= g
+R_READING = 3.0        # the r = 1e12 Pa/m reading: penetration within a factor 3 of 0.0034 m
+GAIN = 0.1             # stability: E_end > E0 (1 + 0.1 %) is an energy gain
+
+
+def fail(message):
+    sys.exit(f"scene8a_report.py: error: {message}")
+
+
+# ---------------------------------------------------------------------------------------------
+# Reading the files
+
+
+def read_keyvalues(path):
+    info = {}
+    for line in path.read_text().splitlines():
+        key, _, value = line.partition(":")
+        info[key.strip()] = value.strip()
+    return info
+
+
+def read_deck(path):
+    """Cards of a datafile: keyword (upper case) -> {field (lower case): text}."""
+    cards = {}
+    for line in path.read_text().splitlines():
+        line = line.split("#", 1)[0].split()
+        if not line:
+            continue
+        fields = {}
+        for item in line[1:]:
+            key, _, value = item.partition("=")
+            fields[key.lower()] = value
+        cards.setdefault(line[0].upper(), fields)
+    return cards
+
+
+def read_ds_small(path):
+    """The integer, real and text arrays of a DS file (core/ds.hpp layout) holding at most 64
+    values; the big state arrays are skipped."""
+    data = path.read_bytes()
+    if data[:5] != b"SIGDS":
+        fail(f"{path}: not a DS file")
+    count = struct.unpack_from("<I", data, 12)[0]
+    pos, arrays = 16 + 128 + 4, {}
+    for _ in range(count):
+        name = data[pos:pos + 24].split(b"\0")[0].decode()
+        kind, rank = struct.unpack_from("<II", data, pos + 24)
+        size = struct.unpack_from("<Q", data, pos + 32 + 8 * rank)[0]
+        start = pos + 40 + 8 * rank
+        payload = data[start:start + size]
+        if kind == 3:
+            arrays[name] = payload.split(b"\0")[0].decode(errors="replace")
+        elif size <= 64 * 8:
+            values = struct.unpack("<%d%s" % (size // 8, "q" if kind == 1 else "d"), payload)
+            arrays[name] = values[0] if len(values) == 1 else list(values)
+        pos = start + size + 4
+    return arrays
+
+
+def read_run(folder):
+    """One run: its deck, energy rows, wall time, HIST scalars; None if it did not march."""
+    energy = folder / "energy.csv"
+    if not energy.is_file():
+        return None
+    with energy.open() as f:
+        rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+    if not rows:
+        return None
+    deck = read_deck(folder / "ball.dat")
+    hist = read_ds_small(folder / "case.hist") if (folder / "case.hist").is_file() else {}
+    wall = folder / "wall.txt"
+    run = {
+        "folder": folder,
+        "method": (folder / "method.txt").read_text().strip(),
+        "rows": rows,
+        "k": float(deck["TIME"]["k"]),
+        "T": float(deck["TIME"]["t"]),
+        "gap": float(deck["CONTACT"].get("gap", "nan")),
+        "radius": 10.0,
+        "wall": float(wall.read_text()) if wall.is_file() else math.nan,
+        "hist": hist,
+    }
+    run.update(measures(run))
+    return run
+
+
+def measures(run):
+    """Energy change across the impact, penetration, chatter and failure of one run."""
+    rows = run["rows"]
+    t = [r["time"] for r in rows]
+    e = [r["total"] for r in rows]
+    active = [int(r["active_nodes"]) for r in rows]
+    e0 = e[0]
+    steps_planned = round(run["T"] / run["k"])
+    converged = int(run["hist"].get("converged", 1)) != 0 and len(rows) == steps_planned + 1
+    contact = [i for i, a in enumerate(active) if a > 0]
+    first = contact[0] if contact else None
+    # Episodes of contact: maximal runs of steps with active nodes; more than one is a rebound
+    # (chatter) of the whole ball, reversals of the active count beyond rise-then-fall a chatter
+    # of the contact zone.
+    episodes = sum(1 for i, a in enumerate(active) if a > 0 and (i == 0 or active[i - 1] == 0))
+    diffs = [b - a for a, b in zip(active, active[1:]) if b != a]
+    reversals = sum(1 for a, b in zip(diffs, diffs[1:]) if (a > 0) != (b > 0))
+    last = contact[-1] if contact else None
+    separated = last is not None and last < len(rows) - 1
+    return {
+        "converged": converged,
+        "failure": run["hist"].get("failure", ""),
+        "impact_time": t[first] if first is not None else math.nan,
+        "separation_time": t[last + 1] if separated else math.nan,
+        "e0": e0,
+        "change": 100 * (e[-1] - e0) / e0,
+        "excursion": 100 * max(abs(x - e0) for x in e) / e0,
+        "penetration": max(r["max_penetration"] for r in rows),
+        "max_active": max(active),
+        "newton": int(sum(r["newton_iterations"] for r in rows)),
+        "episodes": episodes,
+        "reversals": max(0, reversals - 1),
+        "steps": len(rows) - 1,
+        "time_march": run["hist"].get("time_march", math.nan),
+    }
+
+
+def mesh_nodes(out, mesh):
+    """The node count sig-mesh reported for OUTDIR/<mesh>/base ("?" if absent)."""
+    log = out / mesh / "base" / "mesh.log"
+    words = log.read_text().split() if log.is_file() else []
+    return next((words[i - 1] for i, w in enumerate(words) if w.startswith("nodes")), "?")
+
+
+def read_thesis():
+    for path in THESIS_CSVS:
+        if path.is_file():
+            values = {}
+            for line in path.read_text().splitlines():
+                if line.startswith("#") or not line.strip():
+                    continue
+                row = line.split(",")
+                if row[0] == "8a":
+                    values[(row[1], row[2])] = (row[3], row[4], row[5])
+            if values:
+                return values, path
+    return {}, None
+
+
+# ---------------------------------------------------------------------------------------------
+# Charts
+
+
+def energy_chart(out, runs, names, title, png, window):
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    for name in names:
+        run = runs.get(name)
+        if run is None:
+            continue
+        t = [r["time"] for r in run["rows"]]
+        e = [r["total"] / run["e0"] for r in run["rows"]]
+        pts = [(a, b) for a, b in zip(t, e) if window[0] <= a <= window[1]]
+        if pts:
+            ax.plot(*zip(*pts), marker=MARKER.get(run["method"], "."), markersize=3,
+                    label=LABEL.get(name, name))
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel("discrete energy E / E0 (8.33)")
+    ax.set_title(title)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out / png, dpi=110)
+    plt.close(fig)
+
+
+def impact_window(runs):
+    impacts = [r["impact_time"] for r in runs.values() if not math.isnan(r["impact_time"])]
+    if not impacts:
+        return (-math.inf, math.inf)
+    t = min(impacts)
+    return (t - 0.01, t + 0.03)
+
+
+def speed_chart(out, sweep):
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    for method in METHODS:
+        pts = [(max(abs(r["change"]), 1e-6), r["wall"] / r["T"], r["k"]) for r in sweep
+               if r["method"] == method and r["converged"] and not math.isnan(r["wall"])]
+        if not pts:
+            continue
+        pts.sort(key=lambda p: -p[2])
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker=MARKER[method],
+                  label=LABEL[method])
+        for x, y, k in pts:
+            ax.annotate(f"{k:g}", (x, y), fontsize=6, xytext=(2, 2), textcoords="offset points")
+    ax.set_xlabel("|energy change across the impact| / E0 (%); below 1e-6 drawn at 1e-6")
+    ax.set_ylabel("wall time per simulated second (s)")
+    ax.set_title("Speed against accuracy (labels: time step k)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out / "speed_accuracy.png", dpi=110)
+    plt.close(fig)
+
+
+def stability_status(run):
+    if not run["converged"]:
+        return "Nv"
+    if run["change"] > GAIN:
+        return "gain"
+    if run["episodes"] > 1 or run["reversals"] > 0:
+        return "chatter"
+    return "ok"
+
+
+def stability_chart(out, sweep, ks):
+    colors = {"ok": "#8fd18f", "gain": "#f0b050", "chatter": "#e8e070", "Nv": "#e07070",
+              "missing": "#dddddd"}
+    fig, ax = plt.subplots(figsize=(1.6 + 1.3 * len(ks), 0.5 + 0.5 * len(METHODS)))
+    for i, method in enumerate(METHODS):
+        for j, k in enumerate(ks):
+            run = next((r for r in sweep if r["method"] == method and r["k"] == k), None)
+            status = stability_status(run) if run else "missing"
+            text = status if status in ("Nv", "missing") else f"{run['change']:+.2f}%\n{status}"
+            ax.add_patch(plt.Rectangle((j, i), 1, 1, color=colors[status]))
+            ax.text(j + 0.5, i + 0.5, text, ha="center", va="center", fontsize=7)
+    ax.set_xlim(0, len(ks))
+    ax.set_ylim(len(METHODS), 0)
+    ax.set_xticks([j + 0.5 for j in range(len(ks))], [f"k = {k:g}" for k in ks], fontsize=7)
+    ax.set_yticks([i + 0.5 for i in range(len(METHODS))], METHODS, fontsize=7)
+    ax.set_title("Stability: energy change and behaviour per strategy and k", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out / "stability.png", dpi=110)
+    plt.close(fig)
+
+
+# ---------------------------------------------------------------------------------------------
+# The report
+
+
+def fmt(x, spec=".3g"):
+    return "n/a" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, spec)
+
+
+def checks(runs, thesis):
+    """(requirement, measured, PASS/FAIL) rows of the issue's "must show"."""
+    out = []
+
+    def row(text, measured, ok):
+        out.append((text, measured, "PASS" if ok else "FAIL"))
+
+    for name in ("two-step", "specific-penalty"):
+        run = runs.get(name)
+        ok = run is not None and run["converged"] and abs(run["change"]) <= CONSERVING_TOL
+        row(f"{name}: energy conserved across the impact within {CONSERVING_TOL:g} %",
+            f"{fmt(run['change'], '+.3f')} %" if run else "no run", ok)
+    run = runs.get("signorini")
+    conserving = [abs(runs[m]["change"]) for m in ("two-step", "specific-penalty") if m in runs]
+    ok = (run is not None and run["converged"] and run["change"] <= -VISIBLE_LOSS and
+          -run["change"] > max(conserving, default=0.0))
+    row(f"signorini dissipates visibly (loses > {VISIBLE_LOSS:g} %, the thesis's IPM + EMM "
+        "dissipation, and more than two-step and specific penalty)",
+        f"{fmt(run['change'], '+.3f')} %" if run else "no run", ok)
+    run = runs.get("ipm-emm")
+    ok = (run is not None and run["converged"] and abs(run["change"]) <= IPM_EMM_TOL and
+          run["penetration"] <= run["gap"] * (1 + 1e-9))
+    row(f"ipm-emm: energy within {IPM_EMM_TOL:g} % and penetration <= g",
+        f"{fmt(run['change'], '+.3f')} %, {fmt(run['penetration'])} m (g = {fmt(run['gap'])})"
+        if run else "no run", ok)
+    run = runs.get("specific-penalty")
+    reference = float(thesis.get(("penetration_error", "specific penalty"), ("0.0034",))[0])
+    ok = (run is not None and reference / R_READING <= run["penetration"] <= reference * R_READING)
+    row(f"r = 1e12 Pa/m reading: specific penalty's penetration within a factor {R_READING:g} of "
+        f"the thesis's {reference:g} m", f"{fmt(run['penetration'])} m" if run else "no run", ok)
+    return out
+
+
+def thesis_beside(name, run, thesis):
+    if name == "specific-penalty":
+        v = thesis.get(("penetration_error", "specific penalty"))
+        return f"penetration {v[0]} {v[1]} ({v[2]})" if v else ""
+    if name == "two-step":
+        v = thesis.get(("penetration_error", "two-step [13]"))
+        return f"penetration {v[0]} {v[1]} ({v[2]})" if v else ""
+    if name == "ipm-emm":
+        v = thesis.get(("ipm_emm", "dissipation/penetration"))
+        if v:
+            d, p = v[0].split("/")
+            return f"dissipation {d} %, penetration {p} % of R ({v[2]})"
+    return {"signorini": "dissipates (Fig 8.3)", "compliance": "dissipates (Fig 8.3)",
+            "emm": "reduces the dissipation, not to zero (Fig 8.3)",
+            "ipm": "conserves better, fluctuates (Fig 8.4)"}.get(name, "")
+
+
+def method_table(runs, names, thesis, with_thesis=True):
+    head = ("| method | dE across impact (%) | max abs(E - E0) (%) | max penetration (m) | "
+            "(% of R) | max active | Newton its | steps | wall (s) | thesis |")
+    lines = [head, "|" + "---|" * 10]
+    for name in names:
+        run = runs.get(name)
+        if run is None:
+            lines.append(f"| {name} | no run | | | | | | | | |")
+            continue
+        status = "" if run["converged"] else " **Nv**"
+        lines.append(
+            f"| {LABEL.get(name, name)}{status} | {run['change']:+.4f} | {run['excursion']:.4f} | "
+            f"{run['penetration']:.3g} | {100 * run['penetration'] / run['radius']:.3g} | "
+            f"{run['max_active']} | {run['newton']} | {run['steps']} | {fmt(run['wall'])} | "
+            f"{thesis_beside(name, run, thesis) if with_thesis else ''} |")
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("outdir", type=Path)
+    out = parser.parse_args().outdir
+    if not (out / "command.txt").is_file():
+        fail(f"{out / 'command.txt'} is missing: run drivers/scene8a.sh first")
+    info = read_keyvalues(out / "command.txt")
+    thesis, thesis_path = read_thesis()
+
+    impact = {m: r for m in METHODS if (r := read_run(out / "impact" / m))}
+    fig85 = {}
+    if (out / "fig85").is_dir():
+        for folder in sorted((out / "fig85").iterdir()):
+            run = read_run(folder)
+            if run:
+                name = folder.name if folder.name.startswith("g") else run["method"]
+                fig85[name] = run
+    sweep = [r for f in sorted((out / "sweep").glob("*_k*")) if (r := read_run(f))] \
+        if (out / "sweep").is_dir() else []
+    ks = sorted({r["k"] for r in sweep}, reverse=True)
+
+    window = impact_window(impact)
+    energy_chart(out, impact, CLASSICAL, "Fig 8.3: energy across the impact, classical methods",
+                 "fig8_3.png", window)
+    energy_chart(out, impact, IPM_VARIANTS, "Fig 8.4: IPM variants", "fig8_4.png", window)
+    names85 = sorted((n for n in fig85 if n.startswith("g")), key=lambda n: float(n[1:]))
+    for n in names85:
+        LABEL[n] = f"IPM + EMM, g = {float(n[1:]):g} m"
+    energy_chart(out, fig85, names85 + ["specific-penalty-emm"],
+                 "Fig 8.5: IPM + EMM against the allowed penetration g", "fig8_5.png", window)
+    if sweep:
+        speed_chart(out, sweep)
+        stability_chart(out, sweep, ks)
+
+    with (out / "methods.csv").open("w") as f:
+        f.write("method,energy_change_percent,max_excursion_percent,max_penetration,"
+                "max_active,newton_iterations,steps,converged,wall_seconds\n")
+        for name, run in list(impact.items()) + list(fig85.items()):
+            f.write(f"{name},{run['change']:.9g},{run['excursion']:.9g},{run['penetration']:.9g},"
+                    f"{run['max_active']},{run['newton']},{run['steps']},{int(run['converged'])},"
+                    f"{run['wall']}\n")
+    with (out / "sweep.csv").open("w") as f:
+        f.write("method,k,energy_change_percent,max_penetration,episodes,reversals,converged,"
+                "status,wall_seconds,wall_per_simulated_second\n")
+        for run in sweep:
+            f.write(f"{run['method']},{run['k']:g},{run['change']:.9g},{run['penetration']:.9g},"
+                    f"{run['episodes']},{run['reversals']},{int(run['converged'])},"
+                    f"{stability_status(run)},{run['wall']},{run['wall'] / run['T']:.6g}\n")
+
+    impact_info = (out / "impact.txt").read_text().split() if (out / "impact.txt").is_file() \
+        else ["?", "?", "?", "?"]
+    any_run = next(iter(impact.values()), None)
+    md = [
+        "# Scene 8a: elastic ball impact (thesis ch. 8.5, Figs 8.3-8.5)",
+        "",
+        f"Command: `{info.get('command', '?')}` ({info.get('date', '?')}, "
+        f"{info.get('host', '?')}, revision {info.get('revision', '?')}); then "
+        f"`postproc/scene8a_report.py {out}`.",
+        "",
+        "## What it models and why",
+        "",
+        "A linear elastic ball (R = 10 m, rho = 1000 kg/m^3, E = 1e11 Pa, nu = 0.35) thrown at "
+        "10 m/s on a rigid foundation, frictionless, no gravity: the cross-section of a ball in "
+        "2D plane stress (the thesis's \"contraintes planes\"), small strain (the impact strain is "
+        "of the order v0 / c = 10 / 1e4 = 1e-3, c = sqrt(E / rho); the motion is a rigid "
+        "translation, exact in linear kinematics, plus vibrations). What is measured is the "
+        "discrete energy (8.33) E = 1/2 v.Mv + 1/2 u.Ku of the implicit midpoint rule across "
+        "the impact: without contact it is conserved exactly, so every change comes from the "
+        "contact strategy. Gamma3 is the whole circle with the thesis's 128 contact nodes; "
+        "r = 1e12 Pa/m (the thesis's \"r = 1000\" read in GPa/m, ch. 7's convention: read in "
+        "Pa it would let the ball sink metres); g = 5e-4 m (0.005 % of R); the ball starts 15 m "
+        "above the foundation so that it lands at t = 1.5 s as in Fig 8.3 "
+        "(datafiles/scene8a/ball.dat says why for each choice).",
+        "",
+        f"Impact runs: mesh `{impact_info[0]}` ({mesh_nodes(out, impact_info[0])} nodes; the "
+        f"thesis: 7820 nodes, 128 multiplier nodes), foundation at x2 = "
+        f"{impact_info[1]}, T = {impact_info[2]} s, k = {impact_info[3]} s. "
+        + (f"E0 = {any_run['e0']:.6g} J/m; first contact at t = {fmt(any_run['impact_time'])} s."
+           if any_run else ""),
+        "",
+        "## Energy across the impact",
+        "",
+        "![Fig 8.3](fig8_3.png)",
+        "",
+        "![Fig 8.4](fig8_4.png)",
+        "",
+        "![Fig 8.5](fig8_5.png)",
+        "",
+        "dE across impact = (E_end - E0) / E0 with E_end after the ball has left the foundation; "
+        "max abs(E - E0) includes the fluctuations during contact; penetration is the largest "
+        "u_n - gap over the run; wall = sig-march's wall-clock time. E is the body's energy (8.33) "
+        "only: during contact the penalty-type strategies (compliance, specific penalty, IPM) "
+        "store energy in the foundation, (r / 2) sum w [u_n]_+^2 for the specific penalty "
+        "(3.53), which E does not count; hence their dips during contact.",
+        "",
+    ]
+    md += method_table(impact, METHODS, thesis)
+    md += ["", "Fig 8.5 runs (IPM + EMM against g, and the specific penalty with EMM):", ""]
+    md += method_table(fig85, names85 + ["specific-penalty-emm"], thesis, with_thesis=False)
+    md += ["", "The thesis (p.230): with g = 0.001 IPM + EMM gives the result of the specific "
+           "penalty with EMM, every node staying in compliance without reaching g. Ours:", ""]
+    reference = fig85.get("specific-penalty-emm")
+    for n in names85:
+        run = fig85[n]
+        reached = run["penetration"] >= run["gap"] * (1 - 1e-9)
+        same = (f"; dE differs from specific penalty + EMM by "
+                f"{abs(run['change'] - reference['change']):.3g} %" if reference else "")
+        md.append(f"- g = {run['gap']:g} m: the bound is {'reached' if reached else 'not reached'}"
+                  f" (max penetration {run['penetration']:.3g} m){same}.")
+    md += ["", "## Checks (issue 5, \"what it must show\")", "",
+           "| requirement | measured | result |", "|---|---|---|"]
+    md += [f"| {a} | {b} | {c} |" for a, b, c in checks(impact, thesis)]
+    md += ["", f"Thesis values from `{thesis_path}`." if thesis_path else
+           "Thesis values: no thesis_values file found.", ""]
+    if sweep:
+        md += ["## Speed against accuracy and stability over the time step", "",
+               "The window: the foundation 0.5 m below the ball (impact at t = 0.05 s), T = "
+               f"{fmt(sweep[0]['T'])} s, deck mesh, every strategy for k = "
+               + ", ".join(f"{k:g}" for k in ks) + ".", "",
+               "![speed against accuracy](speed_accuracy.png)", "",
+               "![stability](stability.png)", "",
+               f"Status: Nv = a step's Newton failed (the march stops there); gain = the energy "
+               f"grew by more than {GAIN:g} %; chatter = the ball left and touched the foundation "
+               "again (contact episodes > 1) or the active count went up and down more than "
+               "once; ok otherwise.", "",
+               "| method | " + " | ".join(f"k = {k:g}" for k in ks) + " |",
+               "|---|" + "---|" * len(ks)]
+        for method in METHODS:
+            cells = []
+            for k in ks:
+                run = next((r for r in sweep if r["method"] == method and r["k"] == k), None)
+                if run is None:
+                    cells.append("no run")
+                    continue
+                status = stability_status(run)
+                cells.append(
+                    f"{run['change']:+.3f} %, pen {run['penetration']:.2g} m, "
+                    f"{run['episodes']} ep., {run['reversals']} rev., "
+                    f"{fmt(run['wall'] / run['T'], '.3g')} s/s: **{status}**"
+                    + (f" ({run['failure']})" if status == "Nv" and run["failure"] else ""))
+            md.append(f"| {method} | " + " | ".join(cells) + " |")
+        md.append("")
+    md += ["Files: `methods.csv`, `sweep.csv`; per run `energy.csv` (every step) and `case.hist`. "
+           "Fig 8.2 (positions and contact forces before, during and after the impact) is for "
+           "ParaView: `fig82/ipm-emm/ball.pvd` holds every step of IPM + EMM across the impact "
+           "(point data displacement, velocity, contact_pressure; *Warp By Vector*).", ""]
+    (out / "report.md").write_text("\n".join(md))
+    print(out / "report.md")
+
+
+if __name__ == "__main__":
+    main()
