@@ -5,7 +5,6 @@
 #include "post/summary.hpp"
 
 #include <cstdint>
-#include <cstdio>
 
 namespace sig {
 namespace {
@@ -59,9 +58,7 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
   const auto nodes = static_cast<std::size_t>(mesh.num_nodes());
   const std::vector<double> pressure = nodal_pressure(hist, outputs, nodes);
 
-  std::vector<std::filesystem::path> files{outdir / (stem + ".pvd")};
-  std::vector<PvdStep> steps;
-  for (std::size_t s = 0; s < outputs; ++s) {
+  return write_vtu_series(outdir, stem, mesh, outputs, [&](std::size_t s) {
     const std::vector<double> u_s(u.begin() + s * ndof, u.begin() + (s + 1) * ndof);
     SolutionFields fields = solution_fields(mesh, u_s, materials, {});
     VtkField velocity{"velocity", 3, {}};
@@ -72,17 +69,10 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
       fields.point.push_back(
           {"contact_pressure", 1,
            std::vector<double>(pressure.begin() + s * nodes, pressure.begin() + (s + 1) * nodes)});
-    char name[32];
-    std::snprintf(name, sizeof name, "_%04zu.vtu", s);
-    const std::string vtu = stem + name;
-    VtkText data = field_data;
-    data.emplace_back("time", std::to_string(times[s]));
-    write_vtu(outdir / vtu, mesh, fields.point, fields.cell, data);
-    steps.push_back({times[s], vtu});
-    files.push_back(outdir / vtu);
-  }
-  write_pvd(files.front(), steps);
-  return files;
+    VtkState state{times[s], std::move(fields.point), std::move(fields.cell), field_data};
+    state.field_data.emplace_back("time", std::to_string(times[s]));
+    return state;
+  });
 }
 
 } // namespace sig
