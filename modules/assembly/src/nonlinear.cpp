@@ -71,21 +71,15 @@ double hyperelastic_energy(const Mesh& mesh, const MaterialTable& table, const E
   return energy;
 }
 
-void assemble_hyperelastic(const Mesh& mesh, const MaterialTable& table,
-                           const SparsityPattern& pattern, const Eigen::VectorXd& u,
-                           HyperelasticState& state) {
-  SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == 2 * mesh.num_nodes(),
-             "displacement has " << u.size() << " values, pattern " << pattern.num_dofs()
-                                 << " dofs, mesh " << mesh.num_nodes() << " nodes");
-  Eigen::SparseMatrix<double>& K = state.tangent;
-  if (K.isCompressed() && K.rows() == pattern.num_dofs() && K.cols() == pattern.num_dofs() &&
-      K.nonZeros() == pattern.nnz())
-    K.coeffs().setZero();
-  else
-    K = pattern.zero_matrix();
-  state.internal_force.setZero(pattern.num_dofs());
-  state.energy = 0.0;
+namespace {
 
+/// The loop of assemble_hyperelastic and assemble_hyperelastic_force: energy and force always,
+/// the tangent into K when K is given.
+void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
+                             const SparsityPattern* pattern, const Eigen::VectorXd& u,
+                             HyperelasticState& state, Eigen::SparseMatrix<double>* K) {
+  state.internal_force.setZero(2 * mesh.num_nodes());
+  state.energy = 0.0;
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     const HyperelasticLaw& law = law_of(material);
@@ -101,12 +95,38 @@ void assemble_hyperelastic(const Mesh& mesh, const MaterialTable& table,
     const Eigen::Vector4d P(r.stress(0, 0), r.stress(0, 1), r.stress(1, 0), r.stress(1, 1));
     // Virtual work: f_e = |T| t B^T P and K_e = |T| t B^T A B, with A = dP/dF.
     const Vector6d f = k.volume * (k.B.transpose() * P);
-    const Matrix6d Ke = k.volume * (k.B.transpose() * r.tangent * k.B);
     state.energy += k.volume * r.energy;
     for (int a = 0; a < 3; ++a)
       state.internal_force.segment<2>(2 * mesh.triangles[t][a]) += f.segment<2>(2 * a);
-    pattern.add(K, t, Ke);
+    if (K) {
+      const Matrix6d Ke = k.volume * (k.B.transpose() * r.tangent * k.B);
+      pattern->add(*K, t, Ke);
+    }
   }
+}
+
+} // namespace
+
+void assemble_hyperelastic(const Mesh& mesh, const MaterialTable& table,
+                           const SparsityPattern& pattern, const Eigen::VectorXd& u,
+                           HyperelasticState& state) {
+  SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == 2 * mesh.num_nodes(),
+             "displacement has " << u.size() << " values, pattern " << pattern.num_dofs()
+                                 << " dofs, mesh " << mesh.num_nodes() << " nodes");
+  Eigen::SparseMatrix<double>& K = state.tangent;
+  if (K.isCompressed() && K.rows() == pattern.num_dofs() && K.cols() == pattern.num_dofs() &&
+      K.nonZeros() == pattern.nnz())
+    K.coeffs().setZero();
+  else
+    K = pattern.zero_matrix();
+  assemble_over_triangles(mesh, table, &pattern, u, state, &K);
+}
+
+void assemble_hyperelastic_force(const Mesh& mesh, const MaterialTable& table,
+                                 const Eigen::VectorXd& u, HyperelasticState& state) {
+  SIG_VERIFY(u.size() == 2 * mesh.num_nodes(),
+             "displacement has " << u.size() << " values for " << mesh.num_nodes() << " nodes");
+  assemble_over_triangles(mesh, table, nullptr, u, state, nullptr);
 }
 
 } // namespace sig

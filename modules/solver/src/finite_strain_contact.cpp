@@ -8,6 +8,7 @@
 #include "mesh/mesh.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/methods.hpp"
+#include "solver/newton_matrix.hpp"
 #include "solver/nodal_frames.hpp"
 
 #include <algorithm>
@@ -40,6 +41,7 @@ struct Iterate {
   HyperelasticState bulk;
   Eigen::VectorXd phi;                 ///< penetration per contact node (u_n - g)
   std::vector<Eigen::Vector2d> normal; ///< obstacle normal at the current position
+  bool has_tangent = false;            ///< bulk.tangent belongs to u (not a force-only trial)
 };
 
 /// The geometry and data of one solve, fixed over the Newton loops.
@@ -73,15 +75,20 @@ public:
                                 : Eigen::VectorXd(Eigen::VectorXd::Zero(dofs()));
   }
 
-  /// Fill the bulk and contact parts of `x` at x.u; false when the body is outside the law's
-  /// domain (an inverted triangle).
-  bool evaluate(Iterate& x) const {
+  /// Fill the bulk and contact parts of `x` at x.u, the tangent only `with_tangent` (a
+  /// line-search trial needs the residual; the tangent waits until a trial is accepted); false
+  /// when the body is outside the law's domain (an inverted triangle).
+  bool evaluate(Iterate& x, bool with_tangent) const {
     // The assembly refuses an inverted triangle or a law without admissible state there.
     try {
-      assemble_hyperelastic(*problem_.mesh, *problem_.materials, pattern_, x.u, x.bulk);
+      if (with_tangent)
+        assemble_hyperelastic(*problem_.mesh, *problem_.materials, pattern_, x.u, x.bulk);
+      else
+        assemble_hyperelastic_force(*problem_.mesh, *problem_.materials, x.u, x.bulk);
     } catch (const Error&) {
       return false;
     }
+    x.has_tangent = with_tangent;
     const int m = contacts();
     x.phi.resize(m);
     x.normal.resize(m);
@@ -93,6 +100,15 @@ public:
     if (method_ == Method::penalty)
       for (int p = 0; p < m; ++p)
         x.lambda[p] = weight(p) * penalty_force(x.phi[p], 0.0, parameters().r);
+    return true;
+  }
+
+  /// The tangent at x.u after a force-only evaluation (the accepted trial of a line search);
+  /// true if it had to be assembled.
+  bool complete_tangent(Iterate& x) const {
+    if (x.has_tangent) return false;
+    assemble_hyperelastic(*problem_.mesh, *problem_.materials, pattern_, x.u, x.bulk);
+    x.has_tangent = true;
     return true;
   }
 
@@ -158,34 +174,21 @@ public:
     return active;
   }
 
-  /// d(-sum_p lambda_p n(x_p))/du added to the bulk tangent: -lambda_p dn/dx on the block of
-  /// node p, the curvature of the obstacle (zero for a plane). The obstacle interface gives
-  /// n(x) only, so dn/dx is a central difference.
-  Eigen::SparseMatrix<double> tangent(const Iterate& x) const {
-    Eigen::SparseMatrix<double> K = x.bulk.tangent;
-    for (int p = 0; p < contacts(); ++p) {
-      if (x.lambda[p] == 0.0) continue;
-      const Eigen::Vector2d position = problem_.mesh->nodes[node(p)] + x.u.segment<2>(2 * node(p));
-      const double h = kNormalDifferenceStep * (1.0 + position.norm());
-      for (int j = 0; j < 2; ++j) {
-        const Eigen::Vector2d e = h * Eigen::Vector2d::Unit(j);
-        const Eigen::Vector2d dn =
-            (problem_.obstacle->normal(position + e) - problem_.obstacle->normal(position - e)) /
-            (2 * h);
-        for (int i = 0; i < 2; ++i)
-          if (dn[i] != 0.0) K.coeffRef(2 * node(p) + i, 2 * node(p) + j) -= x.lambda[p] * dn[i];
-      }
+  /// d(-lambda_p n(x_p))/du_p, added to the bulk tangent on the block of node p: -lambda_p
+  /// dn/dx, the curvature of the obstacle (zero for a plane). The obstacle interface gives n(x)
+  /// only, so dn/dx is a central difference.
+  Eigen::Matrix2d curvature_block(const Iterate& x, int p) const {
+    const Eigen::Vector2d position = problem_.mesh->nodes[node(p)] + x.u.segment<2>(2 * node(p));
+    const double h = kNormalDifferenceStep * (1.0 + position.norm());
+    Eigen::Matrix2d block;
+    for (int j = 0; j < 2; ++j) {
+      const Eigen::Vector2d e = h * Eigen::Vector2d::Unit(j);
+      block.col(j) =
+          -x.lambda[p] *
+          (problem_.obstacle->normal(position + e) - problem_.obstacle->normal(position - e)) /
+          (2 * h);
     }
-    return K;
-  }
-
-  /// u = Q w in nodal frames at the contact nodes (solver/nodal_frames.hpp), at the current
-  /// normals.
-  Eigen::SparseMatrix<double> nodal_frames(const Iterate& x) const {
-    std::vector<std::array<int, 2>> pairs(contacts());
-    for (int p = 0; p < contacts(); ++p)
-      pairs[p] = {2 * node(p), 2 * node(p) + 1};
-    return sig::nodal_frames(dofs(), pairs, x.normal);
+    return block;
   }
 
 private:
@@ -204,12 +207,20 @@ struct NewtonStep {
 
 NewtonStep newton_step(const Setting& setting, const Iterate& x, const std::vector<char>& active,
                        const std::vector<int>& dirichlet_dofs,
-                       const Eigen::VectorXd& dirichlet_increment, double s, LinearSolver& solver) {
+                       const Eigen::VectorXd& dirichlet_increment, double s, NewtonMatrix& J,
+                       LinearSolver& solver) {
   const int m = setting.contacts();
   const ContactSolverParameters& c = setting.parameters();
-  const Eigen::SparseMatrix<double> Q = setting.nodal_frames(x);
-  Eigen::SparseMatrix<double> A = Q.transpose() * setting.tangent(x) * Q;
-  Eigen::VectorXd r0 = Q.transpose() * (x.bulk.internal_force - setting.load(s));
+  J.set_tangent(x.bulk.tangent);
+  for (int p = 0; p < m; ++p)
+    if (x.lambda[p] != 0.0) J.add_node_block(p, setting.curvature_block(x, p));
+  J.rotate(x.normal);
+  // r0 = Q^T (f_int - s f_ext).
+  Eigen::VectorXd r0 = x.bulk.internal_force - setting.load(s);
+  for (int p = 0; p < m; ++p) {
+    const Eigen::Vector2d r = r0.segment<2>(2 * setting.node(p));
+    r0.segment<2>(2 * setting.node(p)) = nodal_frame(x.normal[p]).transpose() * r;
+  }
 
   // Imposed increments: the Dirichlet dofs (never contact nodes) and, for the active-set
   // methods, du_n = -phi on the active nodes, so that the linearized penetration vanishes.
@@ -222,12 +233,12 @@ NewtonStep newton_step(const Setting& setting, const Iterate& x, const std::vect
     switch (setting.method()) {
     case Method::penalty:
       if (active[p]) {
-        A.coeffRef(normal_dof, normal_dof) += w * c.r;
+        J.diagonal(normal_dof) += w * c.r;
         r0[normal_dof] += x.lambda[p];
       }
       break;
     case Method::projection:
-      if (!active[p]) A.coeffRef(normal_dof, normal_dof) += w / c.c;
+      if (!active[p]) J.diagonal(normal_dof) += w / c.c;
       [[fallthrough]];
     case Method::pdas:
     case Method::alm:
@@ -236,72 +247,71 @@ NewtonStep newton_step(const Setting& setting, const Iterate& x, const std::vect
     }
   }
   std::sort(imposed.begin(), imposed.end());
-
-  LinearSystem system;
-  system.K = A;
-  system.f = -r0;
-  for (const auto& [dof, value] : imposed)
-    system.dirichlet_dofs.push_back(dof);
-  system.dirichlet_values.resize(static_cast<Eigen::Index>(imposed.size()));
-  for (std::size_t k = 0; k < imposed.size(); ++k)
-    system.dirichlet_values[static_cast<Eigen::Index>(k)] = imposed[k].second;
-  const ReducedSystem reduced = reduce(system);
-  solver.factorize(reduced.K);
-  const Eigen::VectorXd dw = reduced.expand(solver.solve(reduced.f));
+  const Eigen::VectorXd dw = J.solve(r0, imposed, solver);
 
   // Multipliers: the reaction of an imposed normal (r0 + A dw + lambda = 0 on its row), the
   // Robin force w / c du_n on the inactive nodes of the projection, 0 elsewhere.
   NewtonStep step;
   step.lambda = Eigen::VectorXd::Zero(m);
   if (setting.method() != Method::penalty) {
-    const Eigen::VectorXd linear_residual = r0 + A * dw;
     for (int p = 0; p < m; ++p) {
       const int normal_dof = 2 * setting.node(p) + 1;
       if (active[p])
-        step.lambda[p] = -linear_residual[normal_dof];
+        step.lambda[p] = -(r0[normal_dof] + J.normal_row_times(p, dw));
       else if (setting.method() == Method::projection)
         step.lambda[p] = setting.weight(p) * dw[normal_dof] / c.c;
     }
   }
-  step.du = Q * dw;
+  // du = Q dw.
+  step.du = dw;
+  for (int p = 0; p < m; ++p) {
+    const int a = 2 * setting.node(p);
+    step.du.segment<2>(a) = nodal_frame(x.normal[p]) * dw.segment<2>(a);
+  }
   return step;
 }
 
 /// Line search (header): alpha = 1, 1/2, ... until the trial is admissible and lowers the
-/// residual ||R(x)|| = residual_before, else the largest admissible alpha; 0 if every length
-/// folds the mesh. The accepted trial's residual norm is returned in accepted_residual.
+/// residual ||R(x)|| = residual_before, else the largest admissible alpha (at once without
+/// seek_decrease); 0 if every length folds the mesh. Each trial counts one bulk evaluation. The
+/// first trial is assembled with its tangent (it is accepted in most iterations), the later ones
+/// without; the accepted one gets its tangent in load_step. The accepted trial's residual norm
+/// is returned in accepted_residual; `trial` is scratch space whose storage is reused from one
+/// iteration to the next.
 double line_search(const Setting& setting, const Iterate& x, const NewtonStep& step, double s,
                    const std::vector<char>& dirichlet, double residual_before, Iterate& accepted,
-                   double& accepted_residual) {
+                   Iterate& trial, bool seek_decrease, double& accepted_residual,
+                   int& evaluations) {
   double accepted_alpha = 0;
   double alpha = 1;
   for (int h = 0; h <= kMaxHalvings; ++h, alpha /= 2) {
-    Iterate trial;
     trial.u = x.u + alpha * step.du;
     trial.lambda = x.lambda + alpha * (step.lambda - x.lambda);
-    if (!setting.evaluate(trial)) continue;
+    ++evaluations;
+    if (!setting.evaluate(trial, h == 0)) continue;
     const double trial_residual = setting.residual_norm(trial, s, dirichlet);
     const bool decreases = trial_residual < residual_before;
     if (accepted_alpha == 0 || decreases) {
-      accepted = std::move(trial);
+      std::swap(accepted, trial);
       accepted_alpha = alpha;
       accepted_residual = trial_residual;
     }
-    if (decreases) break;
+    if (decreases || (!seek_decrease && accepted_alpha > 0)) break;
   }
   return accepted_alpha;
 }
 
 /// One load step s: Newton iterations from x (updated in place) until test (iv) holds.
 LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& problem, double s,
-                         const std::vector<char>& dirichlet, LinearSolver& solver, Iterate& x,
-                         std::vector<char>& previous_active) {
+                         const std::vector<char>& dirichlet, NewtonMatrix& J, LinearSolver& solver,
+                         Iterate& x, std::vector<char>& previous_active) {
   const ContactSolverParameters& c = setting.parameters();
   LoadStepResult result;
   result.load_factor = s;
   const Eigen::VectorXd target = s * problem.dirichlet_values;
 
   double residual_norm = setting.residual_norm(x, s, dirichlet);
+  Iterate accepted, trial; // line-search storage, reused by every iteration
   for (int iteration = 0; iteration < c.max_iterations; ++iteration) {
     // (ii) active set, (iii) the linearized problem with it, then the line search.
     const std::vector<char> active = setting.active_set(x, previous_active);
@@ -310,15 +320,20 @@ LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& prob
       dirichlet_increment[d] = target[d] - x.u[problem.dirichlet_dofs[d]];
     NewtonStep step;
     try {
-      step =
-          newton_step(setting, x, active, problem.dirichlet_dofs, dirichlet_increment, s, solver);
+      result.bulk_evaluations += setting.complete_tangent(x) ? 1 : 0;
+      step = newton_step(setting, x, active, problem.dirichlet_dofs, dirichlet_increment, s, J,
+                         solver);
     } catch (const Error& e) {
       result.failure = std::string("the generalized Jacobian could not be factorized: ") + e.what();
       break;
     }
-    Iterate accepted;
-    const double alpha =
-        line_search(setting, x, step, s, dirichlet, residual_norm, accepted, residual_norm);
+    // The first iteration of a load step starts from the previous load's converged state, whose
+    // residual is already below the tolerance (the new Dirichlet values are not in R): the
+    // trials, each carrying part of the new Dirichlet increment, do not lower it, and the search
+    // would end on the largest admissible alpha after 12 wasted bulk assemblies. Take it at once.
+    const bool seek_decrease = iteration > 0 || residual_norm > c.eps * setting.force_scale(x, s);
+    const double alpha = line_search(setting, x, step, s, dirichlet, residual_norm, accepted, trial,
+                                     seek_decrease, residual_norm, result.bulk_evaluations);
     if (alpha == 0) {
       result.failure =
           "every step length down to 2^-" + std::to_string(kMaxHalvings) + " inverts a triangle";
@@ -328,7 +343,7 @@ LoadStepResult load_step(const Setting& setting, const FiniteStrainProblem& prob
     const Increment increment =
         increment_between(stack(accepted.u, accepted.lambda, setting.weights()),
                           stack(x.u, x.lambda, setting.weights()));
-    x = std::move(accepted);
+    std::swap(x, accepted);
     const double residual = residual_norm / setting.force_scale(x, s);
     double mismatch = 0;
     for (Eigen::Index d = 0; d < target.size(); ++d)
@@ -407,12 +422,16 @@ FiniteStrainSolution solve_finite_strain_contact(const FiniteStrainProblem& prob
   Iterate x;
   x.u = Eigen::VectorXd::Zero(ndof);
   x.lambda = Eigen::VectorXd::Zero(m);
-  SIG_VERIFY(setting.evaluate(x), "the reference configuration has an inverted triangle");
+  SIG_VERIFY(setting.evaluate(x, true), "the reference configuration has an inverted triangle");
+  std::vector<int> contact_nodes(m);
+  for (int p = 0; p < m; ++p)
+    contact_nodes[p] = setting.node(p);
+  NewtonMatrix J(setting.pattern(), dirichlet, contact_nodes);
   std::vector<char> previous_active;
   for (int k = 1; k <= options.load_steps; ++k) {
     const double s = static_cast<double>(k) / options.load_steps;
     solution.steps.push_back(
-        load_step(setting, checked, s, dirichlet, *solver, x, previous_active));
+        load_step(setting, checked, s, dirichlet, J, *solver, x, previous_active));
     if (!solution.steps.back().converged) break; // later steps start from a wrong state
   }
   return solution;

@@ -7,12 +7,11 @@ Eigen::SparseMatrix<double> nodal_frames(int n, const std::vector<std::array<int
   std::vector<char> rotated(n, 0);
   std::vector<Eigen::Triplet<double>> entries;
   for (std::size_t p = 0; p < dofs.size(); ++p) {
-    const Eigen::Vector2d& normal = normals[p];
-    const Eigen::Vector2d tangent(-normal.y(), normal.x());
+    const Eigen::Matrix2d R = nodal_frame(normals[p]);
     for (int a = 0; a < 2; ++a) {
       rotated[dofs[p][a]] = 1;
-      entries.emplace_back(dofs[p][a], dofs[p][0], tangent[a]);
-      entries.emplace_back(dofs[p][a], dofs[p][1], -normal[a]);
+      for (int b = 0; b < 2; ++b)
+        entries.emplace_back(dofs[p][a], dofs[p][b], R(a, b));
     }
   }
   for (int i = 0; i < n; ++i)

@@ -37,4 +37,10 @@ void assemble_hyperelastic(const Mesh& mesh, const MaterialTable& table,
                            const SparsityPattern& pattern, const Eigen::VectorXd& u,
                            HyperelasticState& state);
 
+/// Energy and internal force alone at u (a line-search trial: no tangent is needed until the
+/// trial is accepted, and the scatter of 36 entries per triangle is skipped). state.tangent is
+/// left as it was, so it no longer matches u. Throws as assemble_hyperelastic.
+void assemble_hyperelastic_force(const Mesh& mesh, const MaterialTable& table,
+                                 const Eigen::VectorXd& u, HyperelasticState& state);
+
 } // namespace sig

@@ -14,8 +14,8 @@
 // Each Newton step works in nodal frames (t_p, -n_p) at the contact nodes, so the normal
 // displacement increment is one unknown, and the four methods of contact_solver.hpp act on it
 // exactly as in the small-strain classes:
-//   pdas        active iff pressure + gamma phi >= 0 (3.29); active: du_n = -phi (Dirichlet
-//               elimination, the multiplier is the reaction); inactive: lambda = 0
+//   pdas        active iff pressure + gamma phi >= 0 (3.29); active: du_n = -phi (held as a
+//               Dirichlet value, the multiplier is the reaction); inactive: lambda = 0
 //   alm         the same test with r (3.10), multipliers as unknowns (the Lagrange nodes,
 //               eliminated as in augmented_lagrangian.cpp); no active-set condition in the stop
 //   projection  active iff phi + c pressure >= 0 (7.19) with the pressure of nodes left inactive
@@ -30,7 +30,19 @@
 // kMaxHalvings times) until the body has no inverted triangle (hyperelastic_energy finite) and
 // the residual norm decreases. If no alpha decreases it, the largest admissible alpha is taken
 // (active-set changes may raise the residual for one step; the stopping test still needs a
-// small residual). If even the smallest alpha inverts a triangle the load step stops ("Nv").
+// small residual); at the first iteration of a load step, whose iterate already met the
+// residual test at the previous load (the new Dirichlet values are not in R), no decrease is
+// sought and that alpha is taken at once. If even the smallest alpha inverts a triangle the load
+// step stops ("Nv").
+//
+// Cost: the Newton matrix keeps ONE sparsity pattern for the whole solve, so the linear solver's
+// symbolic analysis is done once and an iteration costs one numeric factorization + solve plus
+// the bulk assemblies of its line search. The frames are applied in place to the tangent's
+// values (Q^T K Q has K's pattern); the normal dofs held by the active set are not eliminated
+// but decoupled (row and column zeroed, diagonal kept), which gives the elimination's solution
+// on a fixed pattern. The first trial of a line search is assembled with its tangent, the later
+// ones with the force only (the accepted one gets its tangent when the next iteration needs it).
+// LoadStepResult::bulk_evaluations counts the assemblies (drivers/bench-ring.sh reports them).
 //
 // Stop (test (iv)): relative increment of (u, lambda) <= eps, relative residual <= eps, the
 // Dirichlet values of the step reached, and (except alm) the active set unchanged. The residual
@@ -76,6 +88,9 @@ struct LoadStepResult {
   Eigen::VectorXd u;               ///< full displacement at the end of the step
   Eigen::VectorXd multiplier;      ///< nodal contact forces lambda_p (pressure = lambda / w)
   std::vector<char> active;
+  /// Hyperelastic assemblies (line-search trials and tangents of accepted force-only trials):
+  /// with the factorizations, the cost of the step.
+  int bulk_evaluations = 0;
   int iterations() const { return static_cast<int>(history.size()); }
 };
 

@@ -7,10 +7,17 @@
 
 namespace sig {
 
-/// The rotation u = Q w of an n-dof vector: at contact node p, whose two dofs are dofs[p], the
-/// pair becomes (w_t, w_n) = (t_p . u_p, -n_p . u_p) with t_p = (-n2, n1), so that the normal
-/// displacement u_n,p (towards the obstacle of outward normal n_p) is the unknown in the place
-/// of u2; elsewhere Q is the identity. Q is orthogonal.
+/// The frame of one contact node of outward obstacle normal n: its columns are the tangent
+/// t = (-n2, n1) and -n, so that u = R w takes w = (w_t, w_n) with w_n the normal displacement
+/// towards the obstacle. R is orthogonal.
+inline Eigen::Matrix2d nodal_frame(const Eigen::Vector2d& n) {
+  Eigen::Matrix2d R;
+  R << -n.y(), -n.x(), n.x(), -n.y();
+  return R;
+}
+
+/// The rotation u = Q w of an n-dof vector: the block nodal_frame(normals[p]) on the two dofs
+/// dofs[p] of contact node p, the identity elsewhere. Q is orthogonal.
 Eigen::SparseMatrix<double> nodal_frames(int n, const std::vector<std::array<int, 2>>& dofs,
                                          const std::vector<Eigen::Vector2d>& normals);
 

@@ -1,0 +1,162 @@
+// The Newton matrix of the large-deformation contact solve (newton_matrix.hpp).
+#include "solver/newton_matrix.hpp"
+
+#include "assembly/pattern.hpp"
+#include "core/error.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/nodal_frames.hpp"
+
+#include <algorithm>
+
+namespace sig {
+
+NewtonMatrix::NewtonMatrix(const SparsityPattern& pattern, const std::vector<char>& dirichlet,
+                           const std::vector<int>& contact_nodes)
+    : full_(pattern.zero_matrix()), nodes_(contact_nodes) {
+  const int n = pattern.num_dofs();
+  const std::vector<int>& outer = pattern.outer();
+  const std::vector<int>& inner = pattern.inner();
+  free_index_.assign(n, -1);
+  for (int i = 0; i < n; ++i)
+    if (!dirichlet[i]) {
+      free_index_[i] = static_cast<int>(free_dofs_.size());
+      free_dofs_.push_back(i);
+    }
+  // The reduced pattern: the free rows of the free columns, in order (so still sorted).
+  const int free = static_cast<int>(free_dofs_.size());
+  reduced_slot_.assign(inner.size(), -1);
+  diagonal_.assign(n, -1);
+  std::vector<int> reduced_outer(free + 1, 0), reduced_inner;
+  for (int j = 0; j < n; ++j)
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      if (inner[k] == j) diagonal_[j] = k;
+      if (free_index_[j] < 0 || free_index_[inner[k]] < 0) continue;
+      reduced_slot_[k] = static_cast<int>(reduced_inner.size());
+      reduced_inner.push_back(free_index_[inner[k]]);
+      reduced_outer[free_index_[j] + 1] = static_cast<int>(reduced_inner.size());
+    }
+  for (int r = 0; r < free; ++r)
+    reduced_outer[r + 1] = std::max(reduced_outer[r + 1], reduced_outer[r]);
+  reduced_.resize(free, free);
+  reduced_.resizeNonZeros(static_cast<Eigen::Index>(reduced_inner.size()));
+  std::copy(reduced_outer.begin(), reduced_outer.end(), reduced_.outerIndexPtr());
+  std::copy(reduced_inner.begin(), reduced_inner.end(), reduced_.innerIndexPtr());
+  std::fill(reduced_.valuePtr(), reduced_.valuePtr() + reduced_inner.size(), 0.0);
+
+  // Per contact node (dofs a, b = a + 1): its two columns hold the same rows; row a sits just
+  // above row b in each neighbouring column j.
+  row_slots_.resize(nodes_.size());
+  for (std::size_t p = 0; p < nodes_.size(); ++p) {
+    const int a = 2 * nodes_[p], b = a + 1;
+    SIG_VERIFY(outer[a + 1] - outer[a] == outer[b + 1] - outer[b],
+               "contact node " << nodes_[p] + 1 << ": its two dofs have different patterns");
+    for (int k = outer[a]; k < outer[a + 1]; ++k) {
+      const int j = inner[k];
+      const auto first = inner.begin() + outer[j], last = inner.begin() + outer[j + 1];
+      const auto row = std::lower_bound(first, last, a);
+      SIG_VERIFY(row != last && *row == a && row + 1 != last && *(row + 1) == b,
+                 "contact node " << nodes_[p] + 1 << ": its node block in column " << j + 1
+                                 << " is not full");
+      row_slots_[p].push_back(static_cast<int>(row - inner.begin()));
+    }
+  }
+}
+
+void NewtonMatrix::set_tangent(const Eigen::SparseMatrix<double>& K) {
+  SIG_VERIFY(K.isCompressed() && K.rows() == full_.rows() && K.nonZeros() == full_.nonZeros(),
+             "tangent is not on the Newton pattern");
+  std::copy(K.valuePtr(), K.valuePtr() + K.nonZeros(), full_.valuePtr());
+}
+
+void NewtonMatrix::add_node_block(int p, const Eigen::Matrix2d& block) {
+  const int a = 2 * nodes_[p];
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i)
+      if (block(i, j) != 0.0) value(a + i, a + j) += block(i, j);
+}
+
+void NewtonMatrix::rotate(const std::vector<Eigen::Vector2d>& normals) {
+  double* v = full_.valuePtr();
+  const int* outer = full_.outerIndexPtr();
+  for (std::size_t p = 0; p < nodes_.size(); ++p) {
+    const Eigen::Matrix2d R = nodal_frame(normals[p]);
+    const int a = 2 * nodes_[p], b = a + 1;
+    const int length = outer[a + 1] - outer[a];
+    for (int k = 0; k < length; ++k) { // A Q on the columns a, b
+      const double ca = v[outer[a] + k], cb = v[outer[b] + k];
+      v[outer[a] + k] = ca * R(0, 0) + cb * R(1, 0);
+      v[outer[b] + k] = ca * R(0, 1) + cb * R(1, 1);
+    }
+    for (const int slot : row_slots_[p]) { // Q^T (A Q) on the rows a, b
+      const double ra = v[slot], rb = v[slot + 1];
+      v[slot] = R(0, 0) * ra + R(1, 0) * rb;
+      v[slot + 1] = R(0, 1) * ra + R(1, 1) * rb;
+    }
+  }
+}
+
+Eigen::VectorXd NewtonMatrix::solve(const Eigen::VectorXd& r0,
+                                    const std::vector<std::pair<int, double>>& imposed,
+                                    LinearSolver& solver) {
+  const int n = static_cast<int>(full_.rows());
+  const double* v = full_.valuePtr();
+  const int* outer = full_.outerIndexPtr();
+  const int* inner = full_.innerIndexPtr();
+  std::vector<char> held(n, 0);
+  Eigen::VectorXd moved = Eigen::VectorXd::Zero(n); // A(:, imposed) * imposed values
+  for (const auto& [dof, value] : imposed) {
+    held[dof] = 1;
+    for (int k = outer[dof]; k < outer[dof + 1]; ++k)
+      moved[inner[k]] += v[k] * value;
+  }
+  // A held row keeps its diagonal d (the scale of its neighbours' rows); d = 0, which a stable
+  // tangent never has on a boundary node, would be singular, so it becomes 1.
+  const auto held_diagonal = [&](int dof) {
+    const double d = v[diagonal_[dof]];
+    return d != 0.0 ? d : 1.0;
+  };
+  double* reduced = reduced_.valuePtr();
+  for (int j = 0; j < n; ++j)
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      if (reduced_slot_[k] < 0) continue;
+      const bool decoupled = held[j] || held[inner[k]];
+      reduced[reduced_slot_[k]] = !decoupled ? v[k] : inner[k] == j ? held_diagonal(j) : 0.0;
+    }
+  const Eigen::VectorXd right = -r0 - moved;
+  Eigen::VectorXd rhs(static_cast<Eigen::Index>(free_dofs_.size()));
+  for (std::size_t r = 0; r < free_dofs_.size(); ++r)
+    rhs[static_cast<Eigen::Index>(r)] = right[free_dofs_[r]];
+  for (const auto& [dof, value] : imposed)
+    if (free_index_[dof] >= 0) rhs[free_index_[dof]] = held_diagonal(dof) * value;
+
+  solver.factorize(reduced_);
+  const Eigen::VectorXd dw_free = solver.solve(rhs);
+  Eigen::VectorXd dw(n);
+  for (std::size_t r = 0; r < free_dofs_.size(); ++r)
+    dw[free_dofs_[r]] = dw_free[static_cast<Eigen::Index>(r)];
+  for (const auto& [dof, value] : imposed)
+    dw[dof] = value; // exact, not value up to the round-off of the decoupled row
+  return dw;
+}
+
+double NewtonMatrix::normal_row_times(int p, const Eigen::VectorXd& dw) const {
+  const double* v = full_.valuePtr();
+  const int* inner = full_.innerIndexPtr();
+  const int* outer = full_.outerIndexPtr();
+  const int a = 2 * nodes_[p];
+  double sum = 0;
+  for (std::size_t k = 0; k < row_slots_[p].size(); ++k)
+    sum += v[row_slots_[p][k] + 1] * dw[inner[outer[a] + static_cast<int>(k)]];
+  return sum;
+}
+
+double& NewtonMatrix::value(int row, int column) {
+  const int* inner = full_.innerIndexPtr();
+  const int* outer = full_.outerIndexPtr();
+  const int* slot = std::lower_bound(inner + outer[column], inner + outer[column + 1], row);
+  SIG_VERIFY(slot != inner + outer[column + 1] && *slot == row,
+             "entry (" << row + 1 << ", " << column + 1 << ") is not on the Newton pattern");
+  return full_.valuePtr()[slot - inner];
+}
+
+} // namespace sig
