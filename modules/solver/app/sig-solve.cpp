@@ -20,6 +20,7 @@
 #include "mesh/nopo.hpp"
 #include "solver/finite_strain_stage.hpp"
 #include "solver/solution_ds.hpp"
+#include "solver/solver_card.hpp"
 
 #include <iostream>
 #include <optional>
@@ -38,30 +39,10 @@ int main(int argc, char** argv) {
                                                 "TIME card); a static deck has no strategy: ") +
                                         "remove it (the static method is SOLVER method=, its "
                                         "stiffness SOLVER r=)");
-    const sig::Card* card = datafile.find("SOLVER");
-    const sig::Card defaults;
-    const sig::Card& solver = card ? *card : defaults;
-    const std::string backend = solver.choice("linear", {"cholmod", "umfpack", "mumps"}, "cholmod");
-    const std::string method =
-        solver.choice("method", {"linear", "alm", "penalty", "pdas", "projection"},
-                      has_contact ? "pdas" : "linear");
-    if (method == "linear" && has_contact)
-      solver.fail("method",
-                  "the datafile has a CONTACT card: choose alm, penalty, pdas or projection");
-    if (method != "linear" && !has_contact)
-      solver.fail("method", "method " + method + " needs a CONTACT card");
-
-    sig::ContactSolverParameters parameters;
-    parameters.method = method;
-    parameters.r = solver.real("r", parameters.r);
-    parameters.gamma = solver.real("gamma", parameters.gamma);
-    parameters.c = solver.real("c", parameters.c);
-    parameters.eps = solver.real("eps", parameters.eps);
-    parameters.max_iterations =
-        static_cast<int>(solver.integer("maxit", parameters.max_iterations));
-    for (const char* positive : {"r", "gamma", "c", "eps", "maxit"})
-      if (solver.has(positive) && solver.real(positive) <= 0)
-        solver.fail(positive, "must be positive");
+    const sig::SolverCard card = sig::read_solver_card(datafile);
+    const std::string& backend = card.backend;
+    const sig::ContactSolverParameters& parameters = card.parameters;
+    const std::string& method = parameters.method;
 
     // 2. The assembled system and the contact elements.
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
@@ -69,12 +50,10 @@ int main(int argc, char** argv) {
     // 3. Large deformation when a law is hyperelastic (the TAE's K is then unused).
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
     if (sig::has_hyperelastic_law(table)) {
-      const sig::Card* steps_card = datafile.find("LOADSTEPS");
       sig::FiniteStrainOptions options;
       options.contact = parameters;
       options.backend = backend;
-      options.load_steps = steps_card ? static_cast<int>(steps_card->integer("n", 1)) : 1;
-      if (options.load_steps < 1) steps_card->fail("n", "must be at least 1");
+      options.load_steps = card.load_steps;
       if (method == "linear") options.contact.method = "pdas"; // no contact nodes: plain Newton
       const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
       std::optional<sig::ContactElements> contact;

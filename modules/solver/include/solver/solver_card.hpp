@@ -1,0 +1,28 @@
+#pragma once
+// The SOLVER and LOADSTEPS cards as sig-solve reads them, for every executable that solves a
+// static deck (sig-solve, sig-bench-finite-strain): one reading, one set of checks.
+//
+//   SOLVER method=linear|alm|penalty|pdas|projection linear=cholmod|umfpack|mumps
+//          r= gamma= c= eps= maxit=
+//   LOADSTEPS n=   (hyperelastic laws only; default 1)
+#include "solver/contact_solver.hpp"
+
+#include <string>
+
+namespace sig {
+
+class Datafile;
+
+struct SolverCard {
+  std::string backend;                ///< cholmod | umfpack | mumps (default cholmod)
+  ContactSolverParameters parameters; ///< method ("linear" without contact) and its parameters
+  int load_steps = 1;
+};
+
+/// The SOLVER card (absent: the defaults) and LOADSTEPS. The method defaults to pdas with a
+/// CONTACT card and to linear without; a contact method without a CONTACT card, linear with
+/// one, a non-positive r, gamma, c, eps or maxit, or n < 1 is a sig::Error naming the file,
+/// line and field.
+SolverCard read_solver_card(const Datafile& datafile);
+
+} // namespace sig
