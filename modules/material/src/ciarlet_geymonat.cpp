@@ -31,9 +31,19 @@ MaterialPoint3d CiarletGeymonat::at(const Eigen::Matrix3d& C) const {
   p.energy = c1_ * (I1 - 3.0 - lnI3) + c2_ * (I2 - 3.0 - 2.0 * lnI3) + a_ * (I3 - 1.0 - lnI3);
   // S = 2 dW/dC with dI1/dC = I, dI2/dC = I1 I - C, dI3/dC = I3 C^-1 (thesis 1.61).
   p.S = 2.0 * (c1_ * (I - Ci) + c2_ * (I1 * I - C - 2.0 * Ci) + a_ * (I3 - 1.0) * Ci);
-  // CC = 2 dS/dC, with d(C^-1)/dC = -symmetric_product(C^-1).
-  p.CC = 4.0 * (c2_ * (tensor_outer(I, I) - symmetric_product(I)) + a_ * I3 * tensor_outer(Ci, Ci) -
-                (a_ * I3 - d) * symmetric_product(Ci));
+  // CC = 2 dS/dC = 4 [c2 (I x I - sym(I)) + a I3 C^-1 x C^-1 - (a I3 - d) sym(C^-1)], with
+  // x = tensor_outer and d(C^-1)/dC = -sym(C^-1) = -symmetric_product(C^-1): written as one pass
+  // over the 81 entries, since it runs once per triangle and Newton iteration.
+  const double c_identity = 4.0 * c2_, c_outer = 4.0 * a_ * I3, c_sym = 2.0 * (a_ * I3 - d);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          const double identity =
+              (i == j && k == l) - 0.5 * ((i == k && j == l) + (i == l && j == k));
+          p.CC(3 * i + j, 3 * k + l) = c_identity * identity + c_outer * Ci(i, j) * Ci(k, l) -
+                                       c_sym * (Ci(i, k) * Ci(j, l) + Ci(i, l) * Ci(j, k));
+        }
   return p;
 }
 

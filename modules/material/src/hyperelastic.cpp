@@ -21,16 +21,6 @@ Eigen::Matrix3d embedded(const Eigen::Matrix2d& F, double F33) {
   return F3;
 }
 
-// kron(A, I3): (3 i + J, 3 I + L) -> A_iI delta_JL.
-Matrix9d kron_identity(const Eigen::Matrix3d& A) {
-  Matrix9d K = Matrix9d::Zero();
-  for (int i = 0; i < 3; ++i)
-    for (int I = 0; I < 3; ++I)
-      for (int J = 0; J < 3; ++J)
-        K(3 * i + J, 3 * I + J) = A(i, I);
-  return K;
-}
-
 // The 3D response at F3 (det > 0) in the 9x9 Voigt form.
 struct Response3d {
   double energy;
@@ -71,9 +61,21 @@ Matrix9d symmetric_product(const Eigen::Matrix3d& A) {
 }
 
 Matrix9d first_piola_tangent(const Eigen::Matrix3d& F, const MaterialPoint3d& point) {
-  // dP = dF S + F dS with dS_IJ = CC_IJKL F_kK dF_kL (CC minor symmetric, dC = dF^T F + F^T dF).
-  const Matrix9d KF = kron_identity(F);
-  Matrix9d A = KF * point.CC * KF.transpose();
+  // dP = dF S + F dS with dS_IJ = CC_IJKL F_kK dF_kL (CC minor symmetric, dC = dF^T F + F^T dF):
+  // A = kron(F, I) CC kron(F, I)^T + kron(I, S). The Kronecker factors are applied as the two
+  // index contractions they are (2 x 243 multiply-adds), not as 9 x 9 matrix products: this
+  // runs once per triangle and Newton iteration.
+  const Matrix9d& CC = point.CC;
+  Matrix9d T; // T(3 i + J, 3 K + L) = F_iI CC(3 I + J, 3 K + L)
+  for (int i = 0; i < 3; ++i)
+    for (int J = 0; J < 3; ++J)
+      for (int c = 0; c < 9; ++c)
+        T(3 * i + J, c) = F(i, 0) * CC(J, c) + F(i, 1) * CC(3 + J, c) + F(i, 2) * CC(6 + J, c);
+  Matrix9d A; // A(r, 3 k + L) = T(r, 3 K + L) F_kK
+  for (int k = 0; k < 3; ++k)
+    for (int L = 0; L < 3; ++L)
+      for (int r = 0; r < 9; ++r)
+        A(r, 3 * k + L) = T(r, L) * F(k, 0) + T(r, 3 + L) * F(k, 1) + T(r, 6 + L) * F(k, 2);
   for (int i = 0; i < 3; ++i)
     A.block<3, 3>(3 * i, 3 * i) += point.S;
   return A;
