@@ -17,8 +17,9 @@
 #   fig85/g<g>             IPM + EMM for g in 1e-4 5e-4 1e-3 2e-3, and specific penalty + EMM
 #                          (the thesis: g = 1e-3 behaves as specific penalty + EMM)
 #   sweep/<method>_k<k>    the window: the foundation moved up to x2 = 14.5 (impact at t = 0.05),
-#                          T = 0.12, k in 1e-2 3e-3 1e-3 3e-4 1e-4 (quick: 1e-2 1e-3 3e-4), deck
-#                          mesh: speed against accuracy and stability
+#                          T = 0.3, k in 1e-1 3e-2 1e-2 3e-3 1e-3 3e-4 1e-4 (quick: 1e-1 1e-2
+#                          1e-3 3e-4), deck mesh: speed against accuracy and stability (the issue
+#                          asks 1e-2 ... 1e-4; the coarser k show where strategies fail)
 #   fig82/ipm-emm          IPM + EMM in the window up to T = 0.08, every step kept with VTK
 #                          (Fig 8.2: positions and contact pressure before, during, after)
 # Methods: signorini (g = 0, consistent mass), compliance (-xi = r [u_n]_+, the thesis's
@@ -78,14 +79,15 @@ methods=(signorini compliance specific-penalty emm two-step ipm ipm-emm)
 fig85_gaps=(1e-4 5e-4 1e-3 2e-3)
 if [ $quick -eq 1 ]; then
   impact_mesh=deck
-  sweep_k=(1e-2 1e-3 3e-4)
+  sweep_k=(1e-1 1e-2 1e-3 3e-4)
 else
   impact_mesh=thesis
-  sweep_k=(1e-2 3e-3 1e-3 3e-4 1e-4)
+  sweep_k=(1e-1 3e-2 1e-2 3e-3 1e-3 3e-4 1e-4)
 fi
 # The window: the foundation 0.5 m below the ball (impact at t = 0.05 s), T a multiple of every k.
+# The sweep goes beyond the issue's k = 1e-2 ... 1e-4 to 3e-2 and 1e-1, where strategies fail.
 window_plane=14.5
-window_T=0.12
+window_T=0.3
 
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
