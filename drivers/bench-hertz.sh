@@ -68,9 +68,7 @@ done
 [[ $n =~ ^[0-9]+$ ]] && [ "$n" -ge 4 ] && [ $((n % 2)) -eq 0 ] || die "--n must be an even integer >= 4, got '$n'"
 [ -z "$grading" ] || [[ $grading =~ ^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$ ]] || die "--grading must be a number >= 0, got '$grading'"
 [[ $repeat =~ ^[0-9]+$ ]] && [ "$repeat" -ge 1 ] || die "--repeat must be a positive integer, got '$repeat'"
-for stage in mesh material contact assemble solve post; do
-  [ -x "$bin/sig-$stage" ] || die "no executable $bin/sig-$stage (build first, or set SIG_BIN)"
-done
+require_stages mesh material contact assemble solve post
 [ -r "$template" ] || die "cannot read the template deck $template"
 
 methods=(pdas projection alm penalty)

@@ -61,12 +61,9 @@ while [ $# -gt 0 ]; do
   shift
 done
 
-for stage in mesh material contact assemble solve post; do
-  [ -x "$bin/sig-$stage" ] || die "no executable $bin/sig-$stage (build first, or set SIG_BIN)"
-done
+require_stages mesh material contact assemble solve post
 [ -r "$template" ] || die "cannot read the template deck $template"
-"$python" -c 'import matplotlib, numpy' 2>/dev/null ||
-  die "$python lacks matplotlib or numpy (Debian: python3-matplotlib python3-numpy)"
+require_charts
 
 # The error study keeps its N = 512 reference in the quick variant too: against a reference
 # only twice finer, the reference's own error biases the slope (1.56 measured with 256).

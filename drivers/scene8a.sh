@@ -66,12 +66,9 @@ while [ $# -gt 0 ]; do
   shift
 done
 
-for stage in mesh material contact assemble march post; do
-  [ -x "$bin/sig-$stage" ] || die "no executable $bin/sig-$stage (build first, or set SIG_BIN)"
-done
+require_stages mesh material contact assemble march post
 [ -r "$template" ] || die "cannot read the deck $template"
-"$python" -c 'import matplotlib, numpy' 2>/dev/null ||
-  die "$python lacks matplotlib or numpy (Debian: python3-matplotlib python3-numpy)"
+require_charts
 
 r=1e12
 g=5e-4

@@ -9,3 +9,17 @@ die() {
   echo "$(basename "$0"): error: $*" >&2
   exit 1
 }
+
+# require_stages STAGE...: each stage executable sig-STAGE is built.
+require_stages() {
+  local stage
+  for stage; do
+    [ -x "$bin/sig-$stage" ] || die "no executable $bin/sig-$stage (build first, or set SIG_BIN)"
+  done
+}
+
+# require_charts: the Python of the reports has matplotlib and numpy.
+require_charts() {
+  "$python" -c 'import matplotlib, numpy' 2>/dev/null ||
+    die "$python lacks matplotlib or numpy (Debian: python3-matplotlib python3-numpy)"
+}
