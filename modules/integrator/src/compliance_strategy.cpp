@@ -6,22 +6,11 @@
 #include "integrator/dynamic_contact.hpp"
 #include "integrator/strategies.hpp"
 
-#include <numeric>
-
 namespace sig {
 
 ContactStepSolution ComplianceStrategy::solve(const NormalStep& step,
                                               const ContactBoundary& boundary) const {
-  if (!any_beyond(step.x_free, boundary.geometric_gap)) {
-    ContactStepSolution s;
-    s.lambda = Eigen::VectorXd::Zero(boundary.size());
-    s.converged = true;
-    return s;
-  }
-  std::vector<int> all(boundary.size());
-  std::iota(all.begin(), all.end(), 0);
-  return solve_with_static_method(step, boundary, all, boundary.geometric_gap,
-                                  static_method("penalty", p_));
+  return solve_unilateral(step, boundary, boundary.geometric_gap, static_method("penalty", p_));
 }
 
 } // namespace sig

@@ -5,6 +5,8 @@
 #include "integrator/strategies.hpp"
 #include "solver/contact_problem.hpp"
 
+#include <numeric>
+
 namespace sig {
 
 namespace {
@@ -70,6 +72,22 @@ solve_with_static_method(const NormalStep& step, const ContactBoundary& boundary
       c.converged && !s.lambda.allFinite() ? "the contact forces are not finite" : c.failure;
   s.iterations = c.iterations();
   return s;
+}
+
+ContactStepSolution solve_unilateral(const NormalStep& step, const ContactBoundary& boundary,
+                                     const Eigen::VectorXd& gap,
+                                     const ContactSolverParameters& method,
+                                     std::vector<char>* active) {
+  if (!any_beyond(step.x_free, gap)) {
+    ContactStepSolution s;
+    s.lambda = Eigen::VectorXd::Zero(boundary.size());
+    s.converged = true;
+    if (active) active->assign(boundary.size(), 0);
+    return s;
+  }
+  std::vector<int> all(boundary.size());
+  std::iota(all.begin(), all.end(), 0);
+  return solve_with_static_method(step, boundary, all, gap, method, active);
 }
 
 bool any_beyond(const Eigen::VectorXd& x, const Eigen::VectorXd& limit) {

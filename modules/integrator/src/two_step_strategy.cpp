@@ -16,8 +16,6 @@
 #include "integrator/dynamic_contact.hpp"
 #include "integrator/strategies.hpp"
 
-#include <numeric>
-
 namespace sig {
 
 ContactStepSolution TwoStepStrategy::solve(const NormalStep& step,
@@ -28,11 +26,9 @@ ContactStepSolution TwoStepStrategy::solve(const NormalStep& step,
   if (!any_beyond(step.x_free, boundary.bound)) return s;
 
   // (a) Signorini.
-  std::vector<int> all(boundary.size());
-  std::iota(all.begin(), all.end(), 0);
   std::vector<char> active_a;
-  const ContactStepSolution a = solve_with_static_method(step, boundary, all, boundary.bound,
-                                                         static_method("pdas", p_), &active_a);
+  const ContactStepSolution a =
+      solve_unilateral(step, boundary, boundary.bound, static_method("pdas", p_), &active_a);
   if (!a.converged) {
     ContactStepSolution failed = a;
     failed.failure = "step (a), Signorini: " + a.failure;

@@ -69,6 +69,13 @@ ContactStepSolution solve_with_static_method(const NormalStep& step,
                                              const ContactSolverParameters& method,
                                              std::vector<char>* active = nullptr);
 
+/// solve_with_static_method on every contact element, with bounds u_n <= gap; lambda = 0 at once
+/// when the free step x_free stays within them (free flight: every condition holds).
+ContactStepSolution solve_unilateral(const NormalStep& step, const ContactBoundary& boundary,
+                                     const Eigen::VectorXd& gap,
+                                     const ContactSolverParameters& method,
+                                     std::vector<char>* active = nullptr);
+
 /// The static method's parameters for a dynamic step: the strategy's iteration limit, and a
 /// stopping test (iv) tight enough that the converged active set, solved exactly, is the answer.
 ContactSolverParameters static_method(const std::string& method,
