@@ -33,6 +33,8 @@ from pathlib import Path
 
 import numpy as np
 
+from getfem_common import deck_cards, getfem_version
+
 try:
     import getfem as gf
 except ImportError:
@@ -50,11 +52,7 @@ def fail(message):
 
 def read_deck(path):
     """R, grading (MESH), E, nu (MATERIAL), f = |f| (TRACTION), eps (SOLVER) of a scene 7a deck."""
-    cards = {}
-    for line in path.read_text().splitlines():
-        words = line.split("#", 1)[0].split()
-        if words:
-            cards.setdefault(words[0].upper(), dict(w.lower().split("=", 1) for w in words[1:] if "=" in w))
+    cards = deck_cards(path)
     try:
         return {"R": float(cards["MESH"]["r"]), "grading": float(cards["MESH"].get("grading", 0)),
                 "E": float(cards["MATERIAL"]["e"]), "nu": float(cards["MATERIAL"]["nu"]),
@@ -63,13 +61,6 @@ def read_deck(path):
     except (KeyError, ValueError) as e:
         fail(f"{path}: cannot read R, E, nu, f from the MESH, MATERIAL, TRACTION cards ({e})")
 
-
-def getfem_version():
-    try:
-        return subprocess.run(["dpkg-query", "-W", "-f", "${Version}", "python3-getfem"],
-                              capture_output=True, text=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "5.4 (version not found)"
 
 
 def mesh(workdir, R, n, grading):

@@ -1,0 +1,165 @@
+// sig-bench-finite-strain DATAFILE [-o OUTDIR] [--repeat K]: how far the large-deformation
+// Newton of sig-solve (Scene 7b) is from its floor, both timed in this one process.
+//
+// Reads the same files and cards as sig-solve (case.nopo, case.mili, case.tae, case.cont; SOLVER,
+// LOADSTEPS) and writes nothing but OUTDIR/bench.json:
+//  - the solve: K runs (default 3) of solve_finite_strain_stage, as sig-solve runs it; wall
+//    seconds of each, Newton iterations, convergence, reactions;
+//  - the floor of a Newton method on this mesh: the bulk tangent at the final state of the last
+//    run, its Dirichlet dofs eliminated (the pattern the Newton matrix is factorized on), with
+//    the same backend: one symbolic analysis, then K x (numeric factorization + one solve);
+//    floor = median(factorize + solve) x iterations. The analysis, done once per solve, is
+//    reported apart;
+//  - one assembly of the hyperelastic force and tangent (median of K) and the number of bulk
+//    assemblies of the solve (line-search trials), for the breakdown.
+// Non-convergence is reported (converged = false), not an error.
+#include "assembly/dirichlet.hpp"
+#include "assembly/nonlinear.hpp"
+#include "assembly/pattern.hpp"
+#include "assembly/system.hpp"
+#include "contact/contact_elements.hpp"
+#include "core/datafile.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/stage.hpp"
+#include "material/mili.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/nopo.hpp"
+#include "solver/finite_strain_stage.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/solver_card.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::string json_list(const std::vector<double>& values) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "[";
+  for (std::size_t k = 0; k < values.size(); ++k)
+    out << (k ? ", " : "") << values[k];
+  out << "]";
+  return out.str();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  return sig::run_stage("bench-finite-strain", [&] {
+    // 1. Arguments: --repeat K, the rest as every stage.
+    int repeat = 3;
+    std::vector<char*> rest{argv[0]};
+    for (int i = 1; i < argc; ++i) {
+      if (std::string(argv[i]) == "--repeat") {
+        SIG_VERIFY(i + 1 < argc, "--repeat needs a count");
+        repeat = std::stoi(argv[++i]);
+        SIG_VERIFY(repeat >= 1, "--repeat must be >= 1, not " << repeat);
+      } else {
+        rest.push_back(argv[i]);
+      }
+    }
+    const sig::StageArgs args =
+        sig::parse_stage_args(static_cast<int>(rest.size()), rest.data(), "bench-finite-strain");
+    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+
+    // 2. The SOLVER and LOADSTEPS cards, as sig-solve reads them.
+    const sig::SolverCard card = sig::read_solver_card(datafile);
+    SIG_VERIFY(datafile.find("CONTACT"), args.datafile.string()
+                                             << ": the deck needs a CONTACT card");
+    sig::FiniteStrainOptions options;
+    options.backend = card.backend;
+    options.contact = card.parameters;
+    options.load_steps = card.load_steps;
+
+    const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
+    SIG_VERIFY(sig::has_hyperelastic_law(table), "the MILI has no hyperelastic law");
+    const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
+    const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));
+
+    // 3. The timed solves.
+    std::vector<double> solve_seconds;
+    std::optional<sig::FiniteStrainStageResult> result;
+    for (int k = 0; k < repeat; ++k) {
+      result = sig::solve_finite_strain_stage(mesh, table, system, &contact, options);
+      solve_seconds.push_back(result->seconds);
+    }
+    const sig::FiniteStrainSolution& solution = result->solution;
+    const int iterations = solution.total_iterations();
+    int bulk_evaluations = 0;
+    for (const sig::LoadStepResult& step : solution.steps)
+      bulk_evaluations += step.bulk_evaluations;
+
+    // 4. The floor: the tangent at the final state, the problem's Dirichlet dofs eliminated.
+    const sig::SparsityPattern pattern(mesh);
+    sig::HyperelasticState state;
+    std::vector<double> assembly_seconds;
+    for (int k = 0; k < repeat; ++k) {
+      const sig::Stopwatch clock;
+      sig::assemble_hyperelastic(mesh, table, pattern, solution.steps.back().u, state);
+      assembly_seconds.push_back(clock.seconds());
+    }
+    sig::LinearSystem tangent;
+    tangent.K = state.tangent;
+    tangent.f = Eigen::VectorXd::Ones(tangent.K.rows());
+    tangent.dirichlet_dofs = system.dirichlet_dofs;
+    tangent.dirichlet_values = Eigen::VectorXd::Zero(system.dirichlet_values.size());
+    const sig::ReducedSystem reduced = sig::reduce(tangent);
+    const auto solver = sig::make_linear_solver(options.backend, options.backend == "cholmod"
+                                                                     ? sig::MatrixKind::spd
+                                                                     : sig::MatrixKind::symmetric);
+    const sig::Stopwatch analysis_clock;
+    solver->analyze(reduced.K);
+    const double analyze_seconds = analysis_clock.seconds();
+    std::vector<double> factor_solve_seconds;
+    for (int k = 0; k < repeat; ++k) {
+      const sig::Stopwatch clock;
+      solver->factorize(reduced.K);
+      const Eigen::VectorXd x = solver->solve(reduced.f);
+      factor_solve_seconds.push_back(clock.seconds());
+      SIG_VERIFY(x.allFinite(), "the floor solve gave a non-finite solution");
+    }
+    const double floor = median(factor_solve_seconds) * iterations;
+
+    // 5. Report.
+    const std::filesystem::path json = args.outdir / "bench.json";
+    std::ofstream out(json);
+    out.precision(9);
+    out << "{\n  \"method\": \"" << options.contact.method << "\",\n  \"backend\": \""
+        << options.backend << "\",\n  \"dofs\": " << solution.unknowns
+        << ",\n  \"free_dofs\": " << reduced.num_free()
+        << ",\n  \"converged\": " << (solution.converged() ? "true" : "false")
+        << ",\n  \"iterations\": " << iterations
+        << ",\n  \"bulk_evaluations\": " << bulk_evaluations
+        << ",\n  \"reaction_x\": " << result->reaction_x
+        << ",\n  \"reaction_y\": " << result->reaction_y
+        << ",\n  \"solve_seconds\": " << json_list(solve_seconds)
+        << ",\n  \"solve_seconds_median\": " << median(solve_seconds)
+        << ",\n  \"analyze_seconds\": " << analyze_seconds
+        << ",\n  \"factor_solve_seconds\": " << json_list(factor_solve_seconds)
+        << ",\n  \"factor_solve_seconds_median\": " << median(factor_solve_seconds)
+        << ",\n  \"assembly_seconds_median\": " << median(assembly_seconds)
+        << ",\n  \"floor_seconds\": " << floor << "\n}\n";
+    SIG_VERIFY(out.good(), json.string() << ": cannot write");
+    std::cout << "sig-bench-finite-strain: " << options.contact.method << " (" << options.backend
+              << "), " << solution.unknowns << " dofs, "
+              << (solution.converged() ? "converged" : "NOT converged (Nv)") << " in " << iterations
+              << " iterations; solve median " << median(solve_seconds) << " s; floor "
+              << median(factor_solve_seconds) << " s x " << iterations << " = " << floor
+              << " s (analysis " << analyze_seconds << " s); ratio "
+              << median(solve_seconds) / floor << " -> " << json.string() << "\n";
+  });
+}
