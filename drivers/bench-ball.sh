@@ -39,9 +39,7 @@ while [ $# -gt 0 ]; do
 done
 [[ $repeat =~ ^[1-9][0-9]*$ ]] || die "--repeat $repeat is not a positive whole number"
 [[ $steps =~ ^[1-9][0-9]*$ ]] || die "--steps $steps is not a positive whole number"
-for stage in mesh material contact assemble march; do
-  [ -x "$bin/sig-$stage" ] || die "no executable $bin/sig-$stage (build first, or set SIG_BIN)"
-done
+require_stages mesh material contact assemble march
 gmsh=${GMSH:-gmsh}
 command -v "$gmsh" >/dev/null || die "no gmsh ($gmsh)"
 template=$root/datafiles/scene8a/ball.dat
@@ -86,7 +84,6 @@ declare -A fields=(
 )
 methods=(no-contact signorini compliance specific-penalty emm two-step ipm ipm-emm)
 
-echo "method,run,wall_seconds,steps_done" >"$out/bench.csv"
 for method in "${methods[@]}"; do
   dir=$out/runs/$method
   mkdir -p "$dir"
@@ -97,7 +94,14 @@ for method in "${methods[@]}"; do
     "$bin/sig-contact" "$dir/ball.dat" -o "$dir" >"$dir/contact.log" 2>&1 ||
       die "sig-contact failed for $method (see $dir/contact.log)"
   fi
-  for ((i = 1; i <= repeat; i++)); do
+done
+
+# Round robin: run i of every method before run i + 1 of any, so that a burst of load on the
+# shared machine falls on all methods alike rather than on the runs of one.
+echo "method,run,wall_seconds,steps_done" >"$out/bench.csv"
+for ((i = 1; i <= repeat; i++)); do
+  for method in "${methods[@]}"; do
+    dir=$out/runs/$method
     t0=$(date +%s.%N)
     status=ok
     "$bin/sig-march" "$dir/ball.dat" -o "$dir" >"$dir/march.log" 2>&1 || status=failed
@@ -106,6 +110,9 @@ for method in "${methods[@]}"; do
     [ $status = ok ] || done_steps=-1
     echo "$method,$i,$("$python" -c "print(f'{$t1 - $t0:.3f}')"),$done_steps" >>"$out/bench.csv"
   done
+  echo "bench-ball.sh: round $i of $repeat done"
+done
+for method in "${methods[@]}"; do
   echo "bench-ball.sh: $method: $(grep "^$method," "$out/bench.csv" | cut -d, -f3 | tr '\n' ' ')s"
 done
 
@@ -136,7 +143,8 @@ for m in methods:
     md.append(f"| {m} | {median[m]:.2f} | {spread} | {per * 1e3:.3f} | {per / free_step:.2f} | "
               f"{steps_done} | {'yes' if median[m] < 60 and done[m] == steps else 'no'} |")
 md += ["", "The machine is shared (2 cores): the spread of the runs is the noise of the "
-       "other users. A strategy whose Newton fails stops its march there (steps done < "
+       "other users; the runs go round robin (run i of every strategy, then run i + 1), so that "
+       "noise falls on all strategies alike. A strategy whose Newton fails stops its march there (steps done < "
        f"{steps}); its time is then not the time of the whole run and it is marked no.", ""]
 (out / "report.md").write_text("\n".join(md))
 print(out / "report.md")
