@@ -146,6 +146,7 @@ int main(int argc, char** argv) {
         << ",\n  \"bulk_evaluations\": " << bulk_evaluations
         << ",\n  \"reaction_x\": " << result->reaction_x
         << ",\n  \"reaction_y\": " << result->reaction_y
+        << ",\n  \"reaction_moment\": " << result->reaction_moment
         << ",\n  \"solve_seconds\": " << json_list(solve_seconds)
         << ",\n  \"solve_seconds_median\": " << median(solve_seconds)
         << ",\n  \"analyze_seconds\": " << analyze_seconds

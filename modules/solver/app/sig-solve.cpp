@@ -69,8 +69,9 @@ int main(int argc, char** argv) {
                 << s.total_iterations() << " iterations (per step:";
       for (const sig::LoadStepResult& step : s.steps)
         std::cout << " " << step.iterations() << (step.converged ? "" : "Nv");
-      std::cout << "), reaction " << result.reaction_x << "," << result.reaction_y << ", solve "
-                << result.seconds << " s -> " << args.ds_path("b").string() << "\n";
+      std::cout << "), reaction " << result.reaction_x << "," << result.reaction_y << " moment "
+                << result.reaction_moment << ", solve " << result.seconds << " s -> "
+                << args.ds_path("b").string() << "\n";
       return;
     }
 

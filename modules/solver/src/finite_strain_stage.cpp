@@ -58,6 +58,9 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
         double r = state.internal_force[dof];
         if (system.f.size() > 0) r -= last.load_factor * system.f[dof];
         (dof % 2 == 0 ? result.reaction_x : result.reaction_y) += r;
+        const int node = dof / 2;
+        const Eigen::Vector2d x = mesh.nodes[node] + last.u.segment<2>(2 * node);
+        result.reaction_moment += dof % 2 == 0 ? -x.y() * r : x.x() * r;
       }
     }
   }
@@ -163,6 +166,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   put_load_step_states(ds, result);
   ds.put_scalar("reaction_x", result.reaction_x);
   ds.put_scalar("reaction_y", result.reaction_y);
+  ds.put_scalar("reaction_moment", result.reaction_moment);
   ds.put_scalar("time_solve", result.seconds);
   write_ds(path, ds);
 }

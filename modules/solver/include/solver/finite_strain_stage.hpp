@@ -6,7 +6,10 @@
 // the contact elements and the obstacle.
 //
 // The support reactions are reported because a thin ring may leave the symmetric branch and
-// sway sideways (SCENES.md "Scene 7b"): a horizontal reaction that is not ~0 shows it.
+// sway sideways (SCENES.md "Scene 7b"). Against a frictionless plane the horizontal reaction is
+// zero by equilibrium whatever the state (the contact forces are all normal to the plane), so it
+// cannot show a sway; the moment of the reactions can: for a deck symmetric about x1 = 0 it is
+// zero on the symmetric branch and balances the moment of an off-centre contact zone otherwise.
 #include "solver/finite_strain_contact.hpp"
 
 #include <filesystem>
@@ -22,6 +25,8 @@ struct FiniteStrainStageResult {
   /// over the Dirichlet dofs: sum of (f_int(u) - s f_ext) over the x (resp. y) rows.
   double reaction_x = 0;
   double reaction_y = 0;
+  /// Their moment about the origin, at the current positions: sum x1 f2 - x2 f1.
+  double reaction_moment = 0;
   double seconds = 0; ///< wall time of the solve
   /// Tributary length of each contact element (empty without contact): turns the nodal
   /// contact forces of every load step into pressures.
@@ -44,7 +49,7 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
 /// per step step_load, step_iterations, step_converged; the histories of all steps concatenated
 /// (history_active, history_residual, history_increment, history_step_norm = E_k,
 /// history_step = 1-based step);
-/// finite_strain = 1; scalars reaction_x, reaction_y, time_solve.
+/// finite_strain = 1; scalars reaction_x, reaction_y, reaction_moment, time_solve.
 /// One state per CONVERGED load step (the attempted steps stop at the first failure, so these
 /// are steps 1 .. s, s = number of rows; row k belongs to step_load[k]), for ParaView's series
 /// and Fig 7.13: step_u {s, ndof}; with contact step_multiplier, step_status, step_pressure
