@@ -3,10 +3,10 @@
 # (scene 7b, ../shared/SCENES.md) with the methods and parameters of Tables 7.4 and 7.5, then its
 # report.
 #
-#   default: N = 128 256       (about 6 minutes on the shared 2 cores)
-#   --quick: N = 128           (about 40 s)
-#   --full:  N = 128 256 512   (N = 512 adds several minutes: the projection method at c = 1e2
-#                               needs ~100 Newton iterations per load step)
+#   default: N = 128 256       (about 70 s on the shared 2 cores)
+#   --quick: N = 128           (about 13 s)
+#   --full:  N = 128 256 512   (about 5.5 min: the projection method at c = 1e2 needs ~100 Newton
+#                               iterations per load step)
 #
 # Per N the bulk stages (sig-mesh, sig-material, sig-contact, sig-assemble) run once into
 # OUTDIR/N<N>/base/; each method and parameter then gets OUTDIR/N<N>/<method>[_<value>]/ with
@@ -21,6 +21,10 @@
 #                                                    not print its r)
 # Every run is bounded by the deck's maxit (Newton iterations per load step, 200): a run that
 # does not converge within it stops at that step as "Nv", the later steps are not attempted.
+# The accuracy of each run is measured against OUTDIR/reference: PDAS gamma = 1e4 on the next
+# finer ring, N = 2 x (largest N) (512 by default, 256 quick, 1024 full), whose Gamma3 nodes
+# include those of every coarser ring (the grid is halved exactly): error of the vertical reaction
+# on AB and of the final pressure at the shared nodes, charted against the solve time.
 # Then postproc/scene7b_report.py OUTDIR writes OUTDIR/report.md and its PNG charts.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
@@ -52,9 +56,8 @@ while [ $# -gt 0 ]; do
 done
 template=$root/datafiles/scene7b/ring.dat
 [ -r "$template" ] || die "cannot read $template"
-for stage in mesh material contact assemble solve post; do
-  [ -x "$bin/sig-$stage" ] || die "no $bin/sig-$stage (build first, or set SIG_BIN)"
-done
+require_stages mesh material contact assemble solve post
+require_charts
 
 # deck TEMPLATE OUTPUT N METHOD FIELD VALUE VTK: the template with MESH N= and the SOLVER card's
 # method and parameter replaced (any r=, gamma=, c= of the template dropped), OUTPUT vtk=VTK.
@@ -92,4 +95,15 @@ for n in "${sizes[@]}"; do
     done
   done
 done
+
+# The reference for the accuracy: PDAS on the ring with twice the largest N.
+n_ref=$((2 * sizes[${#sizes[@]} - 1]))
+reference=$out/reference
+mkdir -p "$reference"
+deck "$template" "$reference/ring.dat" "$n_ref" pdas gamma 1e4 no
+for stage in mesh material contact assemble solve post; do
+  "$bin/sig-$stage" "$reference/ring.dat" -o "$reference" >"$reference/$stage.log" 2>&1 ||
+    die "sig-$stage failed for the reference N = $n_ref (see $reference/$stage.log)"
+done
+echo "reference N=$n_ref pdas gamma=1e4: $(grep -o '[0-9/]* load steps.*' "$reference/solve.log" | sed 's/, solve.*//')"
 "$python" "$root/postproc/scene7b_report.py" "$out"

@@ -12,13 +12,15 @@ and writes OUT/report.md with its charts:
 - Figs 7.14-7.16 (fig7_14_16_ek.png): E_k = ||x(k+1) - x(k)|| of the same three runs;
 - the stability map (stability_map.png): method x parameter x N -> total iterations or Nv, with
   the solve time of each run beside its count;
-- per run: iterations per load step, support reactions (a horizontal reaction that is not ~0
-  relative to the vertical one means the ring swayed off the symmetric branch), time, and the
-  deviation of its final pressure from PDAS's.
+- the speed against accuracy chart (speed_accuracy.png): every run's solve time against its
+  errors relative to OUT/reference (PDAS on the next finer ring);
+- per run: iterations per load step, support reactions and their moment (a moment that is not
+  ~0 relative to Ry times the radius means the ring swayed off the symmetric branch: "sway",
+  also in the tables and the map), time, and the deviation of its final pressure from PDAS's.
 
 Usage: scene7b_report.py OUT. The module also offers read_ds(path[, shapes]) -> {name: value}
-for the DS container (core/ds.hpp layout), used by tests/pipeline/scene7b_small.sh, and
-pressure_deviation(p, reference).
+for the DS container (core/ds.hpp layout), pressure_deviation(p, reference) and
+accuracy(ds, reference), used by tests/pipeline/scene7b_small.sh.
 """
 import csv
 import math
@@ -30,6 +32,8 @@ HERE = Path(__file__).resolve().parent
 PARAMETERS = ["1", "10", "1e2", "1e3", "1e4", "1e5", "1e6"]
 FIGURE_VALUE = "1e4"  # c = gamma of Figs 7.14-7.16 and Table 7.6
 TOLERANCE = 0.01      # "the three methods reach the same final state": pressures within 1 %
+R_OUT = 10.0          # outer radius: the lever arm that makes the reaction moment relative
+SWAY = 1e-6           # |M| / (|Ry| R_OUT) above this: the state left the symmetric branch
 
 
 def read_ds(path, shapes=None):
@@ -128,11 +132,23 @@ class Runs:
         return {k: v for k, v in runs.items() if v is not None}
 
 
+def sway(ds):
+    """|M| / (|Ry| R_OUT): the moment of the support reactions relative to Ry's lever arm, zero
+    on the symmetric branch (the horizontal reaction is zero by equilibrium against a
+    frictionless plane, sway or not)."""
+    ry = scalar(ds, "reaction_y")
+    return abs(scalar(ds, "reaction_moment")) / (abs(ry) * R_OUT) if ry else 0.0
+
+
+def swayed(ds):
+    return scalar(ds, "converged") and sway(ds) > SWAY
+
+
 def iterations_cell(ds, with_time=False):
     if ds is None:
         return "-"
     if scalar(ds, "converged"):
-        text = str(scalar(ds, "iterations"))
+        text = str(scalar(ds, "iterations")) + (" sway" if swayed(ds) else "")
     else:
         text = f"Nv (step {len(ds['step_iterations'])})"
     return text + (f", {scalar(ds, 'time_solve'):.2f} s" if with_time else "")
@@ -158,7 +174,10 @@ def what_it_models():
             "normal of each Gamma3 node are taken at its current position. The mesh is "
             "structured, N nodes around and 3N/64 + 1 through the thickness (the thesis's dof "
             "counts), and exactly mirror-symmetric about x1 = 0: a mesh symmetric only to 1e-8 "
-            "lets the ring sway sideways, which the horizontal reaction on AB would show. The "
+            "lets the ring sway sideways. Even on this mesh a method can leave the symmetric "
+            "branch (round-off grows where that branch is unstable): the moment of the support "
+            "reactions shows it (the horizontal reaction cannot: it is zero by equilibrium on a "
+            "frictionless plane), and such runs are marked sway. The "
             "question is the thesis's: do the active-set methods (PDAS, iterative projection) "
             "reach the augmented Lagrangian's solution as fast in large deformation, and how does "
             "the projection method's c decide between convergence and Nv.", ""]
@@ -289,8 +308,11 @@ def stability_section(runs, plt, out, maxit):
     lines = ["## Stability map: method x parameter x N", "",
              "Total Newton iterations over the 14 load steps, and the solve time of the run; "
              f"Nv (step k) = load step k did not converge within maxit = {maxit} iterations, the "
-             "later steps were not attempted (so every run is bounded). ALM runs at r = 1e3 "
-             "only.", "", "![stability](stability_map.png)", "",
+             "later steps were not attempted (so every run is bounded); sway = converged, but "
+             "to a state off the symmetric branch (|M| / (|Ry| R) > "
+             f"{SWAY:g}, see the run table): the ring rolled to one side, a different solution of "
+             "the nonlinear problem, not the one of the tables. ALM runs at r = 1e3 only.", "",
+             "![stability](stability_map.png)", "",
              "| method | N | " + " | ".join(PARAMETERS) + " |",
              "|---|---" + "|---" * len(PARAMETERS) + "|"]
     for method, name in (("projection", "c"), ("pdas", "gamma")):
@@ -316,8 +338,8 @@ def stability_section(runs, plt, out, maxit):
                 ds = runs.get(n, method, p)
                 converged = ds is not None and scalar(ds, "converged")
                 row.append(math.log10(scalar(ds, "iterations")) if converged else float("nan"))
-                labels.append(str(scalar(ds, "iterations")) if converged
-                              else "-" if ds is None else "Nv")
+                labels.append(str(scalar(ds, "iterations")) + ("\nsway" if swayed(ds) else "")
+                              if converged else "-" if ds is None else "Nv")
             grid.append(row)
             text.append(labels)
         image = ax.imshow(np.ma.masked_invalid(np.array(grid)), cmap=cmap, vmin=1,
@@ -331,6 +353,11 @@ def stability_section(runs, plt, out, maxit):
         ax.set_xlabel(name)
         ax.set_yticks(range(len(runs.sizes)), [f"N = {n}" for n in runs.sizes])
         ax.set_title(f"{method}: total iterations, grey = Nv", fontsize=10)
+        for i, row in enumerate(text):  # a swayed run: its cell framed in red
+            for j, label in enumerate(row):
+                if label.endswith("sway"):
+                    ax.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False,
+                                               edgecolor="red", linewidth=2))
     fig.subplots_adjust(wspace=0.3)
     fig.colorbar(image, ax=axes[0].tolist(), label="log10(total iterations)")
     fig.savefig(out / "stability_map.png", dpi=110, bbox_inches="tight")
@@ -341,10 +368,14 @@ def stability_section(runs, plt, out, maxit):
 def run_table(runs):
     lines = ["## Per run: iterations per load step, reactions, time, final pressure", "",
              "Reaction: force of the supports on the ring at AB after the last attempted step "
-             "(sum of f_int over the imposed dofs); |Rx / Ry| ~ 1e-12 or below means no sway. "
+             "(sum of f_int over the imposed dofs). Rx is zero by equilibrium (the foundation is "
+             "a frictionless plane, its forces are vertical), so it cannot show a sway; M, the "
+             "moment of the reactions about the origin at the current positions, can: it is zero "
+             "on the symmetric branch and balances an off-centre contact zone otherwise. "
+             f"|M| / (|Ry| R), R = {R_OUT:g}, above {SWAY:g} is marked sway. "
              f"dp: max pressure difference to PDAS gamma = {FIGURE_VALUE} at the final step, "
              "relative to its maximum.", "",
-             "| N | run | per-step iterations | Rx | Ry | Rx / Ry | solve s | dp | failure |",
+             "| N | run | per-step iterations | Rx | Ry | M / (Ry R) | solve s | dp | failure |",
              "|---|---|---|---|---|---|---|---|---|"]
     order = sorted(runs.runs.items(), key=lambda kv: (kv[0][0], kv[0][1],
                                                       float(kv[0][2] or 0)))
@@ -352,7 +383,7 @@ def run_table(runs):
         steps = " ".join(f"{i}" + ("" if c else "Nv")
                          for i, c in zip(ds["step_iterations"], ds["step_converged"]))
         rx, ry = scalar(ds, "reaction_x"), scalar(ds, "reaction_y")
-        ratio = f"{abs(rx / ry):.1e}" if ry else "-"
+        ratio = f"{sway(ds):.1e}" + (" **sway**" if swayed(ds) else "")
         reference = runs.get(n, "pdas", FIGURE_VALUE)
         dp = "-"
         if scalar(ds, "converged") and reference and scalar(reference, "converged"):
@@ -366,13 +397,91 @@ def run_table(runs):
     return lines + [""]
 
 
-def deck_maxit(runs):
+def contact_pressures(ds):
+    """{(x1, x2) of the reference node, rounded: final pressure} from contact.csv, or None."""
+    path = ds["dir"] / "contact.csv"
+    if not path.exists():
+        return None
+    with open(path) as f:
+        return {(round(float(r["x1"]), 9), round(float(r["x2"]), 9)): float(r["pressure"])
+                for r in csv.DictReader(f)}
+
+
+def accuracy(ds, reference):
+    """(reaction error, pressure error) of a converged run against the reference run: the
+    relative error of the vertical reaction on AB, and max |p - p_ref| / max p_ref over the
+    Gamma3 nodes the two rings share; None for an Nv run."""
+    if not scalar(ds, "converged"):
+        return None
+    ry, ry_ref = scalar(ds, "reaction_y"), scalar(reference, "reaction_y")
+    p, p_ref = contact_pressures(ds), contact_pressures(reference)
+    shared = [x for x in p if x in p_ref]
+    if len(shared) < len(p):
+        raise SystemExit(f"scene7b_report: {ds['dir']}: {len(p) - len(shared)} Gamma3 nodes are "
+                         f"not nodes of the reference ring {reference['dir']}")
+    scale = max(p_ref.values())
+    return abs(ry - ry_ref) / abs(ry_ref), max(abs(p[x] - p_ref[x]) for x in shared) / scale
+
+
+def speed_accuracy_section(runs, reference, plt, out):
+    mesh_card = next(line for line in (reference["dir"] / "ring.dat").read_text().splitlines()
+                     if line.startswith("MESH"))
+    n_ref = next(w[2:] for w in mesh_card.split() if w.startswith("N="))
+    lines = ["## Speed against accuracy", "",
+             f"Every run is a point: its solve time against its error, measured against the "
+             f"reference run PDAS gamma = {FIGURE_VALUE} on the next finer ring "
+             f"(N = {n_ref}, {scalar(reference, 'dofs')} dofs, reference/), whose Gamma3 nodes "
+             f"include those of the coarser rings. Error: of the vertical reaction on AB (the "
+             f"chart), and the largest final-pressure difference at the shared Gamma3 nodes "
+             f"relative to the reference's maximum pressure (a pointwise measure, dominated by the "
+             f"edges of the contact zone). A run that does not converge has no "
+             f"error: it is drawn on the top edge as Nv. The error is the mesh's (at a given N "
+             f"every converged method gives the same state within the tolerance, but for a run "
+             f"marked sway, which found another equilibrium); the methods differ in time.", "", "![speed against accuracy](speed_accuracy.png)", "",
+             "| N | run | solve s | reaction error | pressure error |", "|---|---|---|---|---|"]
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    marker = {"pdas": "o", "projection": "s", "alm": "^"}
+    colors = dict(zip(runs.sizes, ("tab:blue", "tab:orange", "tab:green", "tab:red")))
+    errors = [a[0] for ds in runs.runs.values() if (a := accuracy(ds, reference))]
+    top = 3 * max(errors, default=1.0)
+    order = sorted(runs.runs.items(), key=lambda kv: (kv[0][0], kv[0][1], float(kv[0][2] or 0)))
+    labelled = set()
+    for (n, method, value), ds in order:
+        a = accuracy(ds, reference)
+        t = scalar(ds, "time_solve")
+        run = method + (f" {value}" if value else "")
+        ax.scatter([t], [a[0] if a else top], marker=marker[method], color=colors[n],
+                   facecolors=colors[n] if a else "none", s=40)
+        if (method, n) not in labelled:  # a filled legend entry, whatever the first point was
+            ax.scatter([], [], marker=marker[method], color=colors[n], label=f"{method}, N = {n}")
+            labelled.add((method, n))
+        if not a or swayed(ds):
+            ax.annotate("Nv" if not a else "sway", (t, a[0] if a else top),
+                        textcoords="offset points", xytext=(3, 3), fontsize=7)
+        run += " (sway)" if swayed(ds) else ""
+        lines.append(f"| {n} | {run} | {t:.2f} | " + (f"{a[0]:.2e} | {a[1]:.2e} |" if a
+                                                       else "Nv | Nv |"))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("solve time (s)")
+    ax.set_ylabel("error of the vertical reaction vs the reference ring")
+    ax.set_title("Ring: speed against accuracy (hollow on top = Nv)")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    fig.savefig(out / "speed_accuracy.png", dpi=110)
+    plt.close(fig)
+    return lines + [""]
+
+
+def deck_field(runs, name):
+    """The value of `name=` in the decks of the runs ('?' if none has it)."""
     for ds in runs.runs.values():
         deck = ds["dir"] / "ring.dat"
         if deck.exists():
             for word in deck.read_text().split():
-                if word.startswith("maxit="):
-                    return word[6:]
+                if word.startswith(name + "="):
+                    return word[len(name) + 1:]
     return "?"
 
 
@@ -388,12 +497,17 @@ def main():
     if not runs.runs:
         raise SystemExit(f"scene7b_report: no N*/*/case.b under {out}")
     thesis = thesis_values()
-    maxit = deck_maxit(runs)
+    maxit = deck_field(runs, "maxit")
+    reference_b = out / "reference" / "case.b"
+    reference = read_ds(reference_b) if reference_b.exists() else None
+    if reference:
+        reference["dir"] = reference_b.parent
     lines = ["# Scene 7b: hyperelastic ring pressed on a rigid foundation", "",
              "Cells are ours (thesis). Our count is the total of Newton iterations over the 14 "
              "load steps; 'Nv' = not converged (the load step that failed). Deck: "
              "datafiles/scene7b/ring.dat (plane strain, 14 load steps to u = (0,-14) on AB, "
-             f"eps = 1e-5, maxit = {maxit} per load step, UMFPACK). The deformed ring of the "
+             f"eps = 1e-5, maxit = {maxit} per load step, linear solver {deck_field(runs, 'linear')}). "
+             f"The deformed ring of the "
              f"figure runs is in N<n>/<run>/ring.pvd, one state per load step (ParaView).", ""]
     lines += what_it_models()
     lines += iteration_tables(runs, thesis)
@@ -402,6 +516,12 @@ def main():
     lines += pressure_section(runs, plt, out)
     lines += ek_section(runs, plt, out)
     lines += stability_section(runs, plt, out, maxit)
+    if reference and scalar(reference, "converged"):
+        lines += speed_accuracy_section(runs, reference, plt, out)
+    else:
+        lines += ["## Speed against accuracy", "",
+                  "No converged reference run in reference/ (drivers/scene7b.sh makes it): no "
+                  "errors to chart.", ""]
     lines += run_table(runs)
     (out / "report.md").write_text("\n".join(lines))
     print(f"scene7b_report: wrote {out / 'report.md'} ({len(runs.runs)} runs)")
