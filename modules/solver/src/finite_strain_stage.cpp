@@ -1,7 +1,6 @@
 #include "solver/finite_strain_stage.hpp"
 
 #include "assembly/nonlinear.hpp"
-#include "assembly/pattern.hpp"
 #include "assembly/system.hpp"
 #include "contact/obstacle.hpp"
 #include "core/ds.hpp"
@@ -49,11 +48,18 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
 
   // Reactions at the last attempted step: the equilibrium residual f_int - s f_ext on the
   // imposed dofs is what the supports must supply (contact nodes carry no Dirichlet dof).
+  // The force alone is needed: one pass, no tangent; a state outside the law's domain (which
+  // the assembly refuses) has no reactions.
   if (!result.solution.steps.empty()) {
     const LoadStepResult& last = result.solution.steps.back();
-    if (last.u.allFinite() && std::isfinite(hyperelastic_energy(mesh, table, last.u))) {
-      HyperelasticState state;
-      assemble_hyperelastic(mesh, table, SparsityPattern(mesh), last.u, state);
+    HyperelasticState state;
+    bool admissible = last.u.allFinite();
+    try {
+      if (admissible) assemble_hyperelastic_force(mesh, table, last.u, state);
+    } catch (const Error&) {
+      admissible = false;
+    }
+    if (admissible) {
       for (int dof : system.dirichlet_dofs) {
         double r = state.internal_force[dof];
         if (system.f.size() > 0) r -= last.load_factor * system.f[dof];
