@@ -23,6 +23,7 @@ for the DS container (core/ds.hpp layout), pressure_deviation(p, reference) and
 accuracy(ds, reference), used by tests/pipeline/scene7b_small.sh.
 """
 import csv
+import functools
 import math
 import struct
 import sys
@@ -397,14 +398,17 @@ def run_table(runs):
     return lines + [""]
 
 
-def contact_pressures(ds):
-    """{(x1, x2) of the reference node, rounded: final pressure} from contact.csv, or None."""
-    path = ds["dir"] / "contact.csv"
-    if not path.exists():
-        return None
+@functools.lru_cache(maxsize=None)
+def _pressures_at(path):
     with open(path) as f:
         return {(round(float(r["x1"]), 9), round(float(r["x2"]), 9)): float(r["pressure"])
                 for r in csv.DictReader(f)}
+
+
+def contact_pressures(ds):
+    """{(x1, x2) of the reference node, rounded: final pressure} from contact.csv (read once per
+    file: the reference's serves every run)."""
+    return _pressures_at(ds["dir"] / "contact.csv")
 
 
 def accuracy(ds, reference):
@@ -424,9 +428,7 @@ def accuracy(ds, reference):
 
 
 def speed_accuracy_section(runs, reference, plt, out):
-    mesh_card = next(line for line in (reference["dir"] / "ring.dat").read_text().splitlines()
-                     if line.startswith("MESH"))
-    n_ref = next(w[2:] for w in mesh_card.split() if w.startswith("N="))
+    n_ref = deck_value(reference["dir"] / "ring.dat", "N")
     lines = ["## Speed against accuracy", "",
              f"Every run is a point: its solve time against its error, measured against the "
              f"reference run PDAS gamma = {FIGURE_VALUE} on the next finer ring "
@@ -437,17 +439,18 @@ def speed_accuracy_section(runs, reference, plt, out):
              f"edges of the contact zone). A run that does not converge has no "
              f"error: it is drawn on the top edge as Nv. The error is the mesh's (at a given N "
              f"every converged method gives the same state within the tolerance, but for a run "
-             f"marked sway, which found another equilibrium); the methods differ in time.", "", "![speed against accuracy](speed_accuracy.png)", "",
+             f"marked sway, which found another equilibrium); the methods differ in time.", "",
+             "![speed against accuracy](speed_accuracy.png)", "",
              "| N | run | solve s | reaction error | pressure error |", "|---|---|---|---|---|"]
     fig, ax = plt.subplots(figsize=(7.5, 5))
     marker = {"pdas": "o", "projection": "s", "alm": "^"}
     colors = dict(zip(runs.sizes, ("tab:blue", "tab:orange", "tab:green", "tab:red")))
-    errors = [a[0] for ds in runs.runs.values() if (a := accuracy(ds, reference))]
-    top = 3 * max(errors, default=1.0)
     order = sorted(runs.runs.items(), key=lambda kv: (kv[0][0], kv[0][1], float(kv[0][2] or 0)))
+    errors = {key: accuracy(ds, reference) for key, ds in order}
+    top = 3 * max((a[0] for a in errors.values() if a), default=1.0)
     labelled = set()
     for (n, method, value), ds in order:
-        a = accuracy(ds, reference)
+        a = errors[(n, method, value)]
         t = scalar(ds, "time_solve")
         run = method + (f" {value}" if value else "")
         ax.scatter([t], [a[0] if a else top], marker=marker[method], color=colors[n],
@@ -474,14 +477,20 @@ def speed_accuracy_section(runs, reference, plt, out):
     return lines + [""]
 
 
+def deck_value(deck, name):
+    """The value of the first `name=` word of a deck, or None."""
+    for word in deck.read_text().split():
+        if word.startswith(name + "="):
+            return word[len(name) + 1:]
+    return None
+
+
 def deck_field(runs, name):
     """The value of `name=` in the decks of the runs ('?' if none has it)."""
     for ds in runs.runs.values():
         deck = ds["dir"] / "ring.dat"
-        if deck.exists():
-            for word in deck.read_text().split():
-                if word.startswith(name + "="):
-                    return word[len(name) + 1:]
+        if deck.exists() and (value := deck_value(deck, name)) is not None:
+            return value
     return "?"
 
 
