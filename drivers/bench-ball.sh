@@ -144,7 +144,8 @@ for m in methods:
               f"{steps_done} | {'yes' if median[m] < 60 and done[m] == steps else 'no'} |")
 md += ["", "The machine is shared (2 cores): the spread of the runs is the noise of the "
        "other users; the runs go round robin (run i of every strategy, then run i + 1), so that "
-       "noise falls on all strategies alike. A strategy whose Newton fails stops its march there (steps done < "
+       "noise falls on all strategies alike. A strategy whose Newton fails stops its march "
+       "there (steps done < "
        f"{steps}); its time is then not the time of the whole run and it is marked no.", ""]
 (out / "report.md").write_text("\n".join(md))
 print(out / "report.md")
