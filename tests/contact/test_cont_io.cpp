@@ -25,6 +25,7 @@ void expect_same(const ContactElements& a, const ContactElements& b) {
   EXPECT_EQ(a.node, b.node);
   EXPECT_EQ(a.lagrange_node, b.lagrange_node);
   EXPECT_EQ(a.normal, b.normal);
+  EXPECT_EQ(a.tangent, b.tangent);
   EXPECT_EQ(a.gap, b.gap);
   EXPECT_EQ(a.weight, b.weight);
   EXPECT_EQ(a.law, b.law);
@@ -38,30 +39,45 @@ TEST(ContIo, RoundTripPlaneAndDisc) {
   const Mesh mesh = test::square_mesh(4, 1.0, 0.125, test::scrambled(4));
   const HalfPlane plane({0, 0}, {0.1, 1});
   const Disc disc({0.5, -3}, 3);
-  for (const Obstacle* obstacle :
-       {static_cast<const Obstacle*>(&plane), static_cast<const Obstacle*>(&disc)}) {
-    const ContactElements written = build_contact_elements(mesh, 3, *obstacle, 0.01, 0.5);
-    const auto path = temp_path("case_" + obstacle->kind() + ".cont");
-    write_cont(path, written, "round trip");
-    expect_same(read_cont(path), written);
+  // Every law and parameter survives, the truncation "none" included.
+  ContactLaw unilateral;
+  unilateral.normal = NormalLaw::compliance_unilateral;
+  unilateral.cn = 10;
+  unilateral.depth = 0.01;
+  unilateral.friction = FrictionLaw::coulomb;
+  unilateral.mu = 0.3;
+  ContactLaw truncated;
+  truncated.normal = NormalLaw::compliance;
+  truncated.cn = 7;
+  truncated.c3 = 1e8;
+  truncated.friction = FrictionLaw::tresca;
+  truncated.threshold = 2;
+  for (const ContactLaw& law : {unilateral, truncated, ContactLaw{}})
+    for (const Obstacle* obstacle :
+         {static_cast<const Obstacle*>(&plane), static_cast<const Obstacle*>(&disc)}) {
+      const ContactElements written = build_contact_elements(mesh, 3, *obstacle, law, 0.5);
+      const auto path = temp_path("case_" + obstacle->kind() + ".cont");
+      write_cont(path, written, "round trip");
+      expect_same(read_cont(path), written);
 
-    // On disk the numbering is 1-based and Lagrange nodes follow the mesh nodes.
-    const Ds ds = read_ds(path, "CONT");
-    EXPECT_EQ(ds.header.creator, "sig-contact");
-    const auto node = ds.ints("node");
-    const auto lagrange = ds.ints("lagrange_node");
-    for (int i = 0; i < written.size(); ++i) {
-      EXPECT_EQ(node[i], written.node[i] + 1);
-      EXPECT_EQ(lagrange[i], mesh.num_nodes() + i + 1);
+      // On disk the numbering is 1-based and Lagrange nodes follow the mesh nodes.
+      const Ds ds = read_ds(path, "CONT");
+      EXPECT_EQ(ds.header.creator, "sig-contact");
+      const auto node = ds.ints("node");
+      const auto lagrange = ds.ints("lagrange_node");
+      for (int i = 0; i < written.size(); ++i) {
+        EXPECT_EQ(node[i], written.node[i] + 1);
+        EXPECT_EQ(lagrange[i], mesh.num_nodes() + i + 1);
+      }
+      EXPECT_EQ(ds.shape("normal"), (std::vector<std::int64_t>{written.size(), 2}));
+      EXPECT_EQ(ds.integer("num_nodes"), mesh.num_nodes());
+      EXPECT_EQ(ds.text("obstacle_kind"), obstacle->kind());
     }
-    EXPECT_EQ(ds.shape("normal"), (std::vector<std::int64_t>{written.size(), 2}));
-    EXPECT_EQ(ds.integer("num_nodes"), mesh.num_nodes());
-    EXPECT_EQ(ds.text("obstacle_kind"), obstacle->kind());
-  }
 }
 
 // A CONT file rewritten with one array changed.
-std::filesystem::path damaged(const std::string& array, const std::vector<std::int64_t>& values) {
+template <class Value>
+std::filesystem::path damaged(const std::string& array, const std::vector<Value>& values) {
   const Mesh mesh = test::square_mesh(2);
   const auto path = temp_path("damaged_" + array + ".cont");
   write_cont(path, build_contact_elements(mesh, 3, HalfPlane({0, 0}, {0, 1})));
@@ -84,10 +100,18 @@ void expect_error_naming(const std::filesystem::path& path, const std::string& w
 
 TEST(ContIo, InconsistentFilesAreRefused) {
   // 3 elements on a 9-node mesh: nodes 1, 2, 3; Lagrange nodes 10, 11, 12.
-  expect_error_naming(damaged("lagrange_node", {10, 12, 11}), "lagrange_node");
-  expect_error_naming(damaged("node", {1, 2, 10}), "node");
-  expect_error_naming(damaged("law", {1, 7, 1}), "law");
-  expect_error_naming(damaged("node", {1, 2}), "length");
+  using Ints = std::vector<std::int64_t>;
+  expect_error_naming(damaged("lagrange_node", Ints{10, 12, 11}), "lagrange_node");
+  expect_error_naming(damaged("node", Ints{1, 2, 10}), "node");
+  expect_error_naming(damaged("law", Ints{1, 7, 1}), "law");
+  expect_error_naming(damaged("friction_law", Ints{0, 3, 0}), "friction_law");
+  // A compliance law without its slope: the ranges of the card reader hold for the file too.
+  expect_error_naming(damaged("law", Ints{1, 2, 1}), "array cn, element 2");
+  expect_error_naming(damaged("node", std::vector<std::int64_t>{1, 2}), "length");
+  expect_error_naming(damaged("mu", std::vector<double>{0, -1, 0}), "array mu, element 2");
+  expect_error_naming(damaged("depth", std::vector<double>{0, 0, NAN}), "array depth, element 3");
+  expect_error_naming(damaged("tangent", std::vector<double>{1, 0, -1, 0, 1, 0}),
+                      "array tangent, element 2");
 }
 
 TEST(ContIo, OtherKindIsRefused) {

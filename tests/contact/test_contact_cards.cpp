@@ -50,8 +50,10 @@ TEST(ContactCards, PlaneCardBuildsTheElements) {
   EXPECT_EQ(e->ref, 3);
   EXPECT_EQ(e->obstacle.kind, "plane");
   EXPECT_EQ(e->obstacle.normal, Eigen::Vector2d(0, 1)); // normalized
-  for (int i = 0; i < e->size(); ++i)
-    EXPECT_NEAR(e->gap(i), 0.75, 1e-15);
+  for (int i = 0; i < e->size(); ++i) {
+    EXPECT_NEAR(e->gap(i), 0.5, 1e-15); // the old spelling gap= is the wall depth g
+    EXPECT_NEAR(e->bound(i), 0.75, 1e-15);
+  }
   EXPECT_NEAR(e->weight.sum(), 1.0, 1e-14);
 }
 
@@ -60,8 +62,9 @@ TEST(ContactCards, DefaultsAreSignoriniWithoutExtraGap) {
       from_text("CONTACT ref=3 obstacle=plane point=0,-1 normal=0,1\n", test::square_mesh(2));
   ASSERT_TRUE(e.has_value());
   for (int i = 0; i < e->size(); ++i) {
-    EXPECT_EQ(e->law[i], kLawSignorini);
+    EXPECT_EQ(e->law[i], ContactLaw{});
     EXPECT_EQ(e->gap(i), 1.0);
+    EXPECT_EQ(e->bound(i), 1.0);
   }
 }
 
@@ -96,9 +99,86 @@ TEST(ContactCards, ZeroNormal) {
   expect_input_error("CONTACT ref=3 obstacle=plane point=0,0 normal=0,0", "normal", "zero-length");
 }
 
+TEST(ContactCards, LawsAndFriction) {
+  const Mesh mesh = test::square_mesh(2);
+  const auto e = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 "
+                           "law=compliance-unilateral cn=10 g=0.5\n"
+                           "FRICTION ref=3 law=coulomb mu=0.3\n",
+                           mesh);
+  ASSERT_TRUE(e.has_value());
+  EXPECT_TRUE(e->has_friction());
+  for (const ContactLaw& law : e->law) {
+    EXPECT_EQ(law.normal, NormalLaw::compliance_unilateral);
+    EXPECT_EQ(law.cn, 10);
+    EXPECT_EQ(law.depth, 0.5);
+    EXPECT_EQ(law.c3, INFINITY);
+    EXPECT_EQ(law.friction, FrictionLaw::coulomb);
+    EXPECT_EQ(law.mu, 0.3);
+  }
+  const auto t = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=compliance "
+                           "cn=2 c3=1e8\nFRICTION ref=3 law=tresca threshold=4\n",
+                           mesh);
+  EXPECT_EQ(t->law.front().c3, 1e8);
+  EXPECT_EQ(t->law.front().friction, FrictionLaw::tresca);
+  EXPECT_EQ(t->law.front().threshold, 4);
+  EXPECT_FALSE(from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1\n"
+                         "FRICTION ref=3 law=none\n",
+                         mesh)
+                   ->has_friction());
+}
+
 TEST(ContactCards, UnknownLaw) {
   expect_input_error("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=tresca", "law",
-                     "law 'tresca' is not implemented; known: signorini");
+                     "tresca");
+}
+
+TEST(ContactCards, BadLawParameters) {
+  const std::string plane = "CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 ";
+  expect_input_error(plane + "law=compliance cn=0", "cn", "> 0");
+  expect_input_error(plane + "law=compliance cn=-2", "cn", "> 0");
+  expect_input_error(plane + "law=compliance", "cn", "");
+  expect_input_error(plane + "law=compliance cn=1 c3=0", "c3", "> 0");
+  expect_input_error(plane + "law=compliance-unilateral cn=1 g=-0.5", "g", ">= 0");
+  expect_input_error(plane + "g=1 gap=1", "gap", "once");
+  // A field the law does not read.
+  expect_input_error(plane + "cn=10", "cn", "not a parameter of law=signorini");
+  expect_input_error(plane + "law=compliance cn=10 g=0.5", "g", "not a parameter");
+}
+
+// FRICTION on line 3 of a deck with a CONTACT card on line 2 must fail on `field`.
+void expect_friction_error(const std::string& friction, const std::string& field,
+                           const std::string& detail) {
+  const Mesh mesh = test::square_mesh(2);
+  try {
+    from_text("TITLE friction errors\nCONTACT ref=3 obstacle=plane point=0,0 normal=0,1\n" +
+                  friction + "\n",
+              mesh);
+    ADD_FAILURE() << "no error for: " << friction;
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.line(), 3) << message;
+    EXPECT_EQ(e.field(), field) << message;
+    EXPECT_NE(message.find(kFile + ":3"), std::string::npos) << message;
+    EXPECT_NE(message.find(detail), std::string::npos) << message;
+  }
+}
+
+TEST(ContactCards, BadFriction) {
+  expect_friction_error("FRICTION ref=3 law=coulomb mu=-0.1", "mu", ">= 0");
+  expect_friction_error("FRICTION ref=3 law=coulomb", "mu", "");
+  expect_friction_error("FRICTION ref=3 law=tresca threshold=-1", "threshold", ">= 0");
+  expect_friction_error("FRICTION ref=3 law=coulomb mu=0.2 threshold=1", "threshold",
+                        "not a parameter of law=coulomb");
+  expect_friction_error("FRICTION ref=2 law=coulomb mu=0.2", "ref", "has no CONTACT card");
+  expect_friction_error("FRICTION ref=3 law=viscous", "law", "viscous");
+  // Friction without any CONTACT card.
+  try {
+    from_text("TITLE no contact\nFRICTION ref=3 law=coulomb mu=0.2\n", test::square_mesh(2));
+    ADD_FAILURE() << "no error for friction without contact";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_EQ(e.field(), "ref");
+  }
 }
 
 TEST(ContactCards, OtherMistakes) {

@@ -33,7 +33,9 @@ TEST(ContactElements, SquareRestingOnTheFoundation) {
     EXPECT_EQ(e.lagrange_node[i], mesh.num_nodes() + i);
     EXPECT_EQ(e.gap(i), 0.0);
     EXPECT_EQ(e.normal[i], Eigen::Vector2d(0, 1));
-    EXPECT_EQ(e.law[i], kLawSignorini);
+    EXPECT_EQ(e.tangent[i], Eigen::Vector2d(1, 0)); // +x1 on the foundation: S+ of the thesis
+    EXPECT_EQ(e.law[i], ContactLaw{});
+    EXPECT_EQ(e.bound(i), 0.0);
     // End nodes carry half an edge, inner nodes two halves.
     const bool end = i == 0 || i == n;
     EXPECT_NEAR(e.weight(i), end ? h / 2 : h, 1e-14);
@@ -44,7 +46,7 @@ TEST(ContactElements, SquareRestingOnTheFoundation) {
 
 TEST(ContactElements, ThicknessScalesWeights) {
   const Mesh mesh = square_mesh(3, 1.5);
-  const ContactElements e = build_contact_elements(mesh, 3, kFoundation, 0.0, 0.2);
+  const ContactElements e = build_contact_elements(mesh, 3, kFoundation, {}, 0.2);
   EXPECT_NEAR(e.weight.sum(), 1.5 * 0.2, 1e-14);
   EXPECT_EQ(e.thickness, 0.2);
 }
@@ -55,10 +57,19 @@ TEST(ContactElements, LiftedSquareHasTheLiftAsGap) {
     const ContactElements e = build_contact_elements(mesh, 3, kFoundation);
     for (int i = 0; i < e.size(); ++i)
       EXPECT_NEAR(e.gap(i), lift, 1e-15 * (1 + lift));
-    // An extra gap adds to the geometric one.
-    const ContactElements f = build_contact_elements(mesh, 3, kFoundation, 0.05);
-    for (int i = 0; i < f.size(); ++i)
-      EXPECT_NEAR(f.gap(i), lift + 0.05, 1e-15 * (1 + lift));
+    // A wall depth g leaves the gap and moves the unilateral bound by g.
+    ContactLaw deeper;
+    deeper.depth = 0.05;
+    const ContactElements f = build_contact_elements(mesh, 3, kFoundation, deeper);
+    for (int i = 0; i < f.size(); ++i) {
+      EXPECT_NEAR(f.gap(i), lift, 1e-15 * (1 + lift));
+      EXPECT_NEAR(f.bound(i), lift + 0.05, 1e-15 * (1 + lift));
+    }
+    // Pure compliance has no wall.
+    ContactLaw compliance;
+    compliance.normal = NormalLaw::compliance;
+    compliance.cn = 10;
+    EXPECT_EQ(build_contact_elements(mesh, 3, kFoundation, compliance).bound(0), INFINITY);
   }
 }
 
@@ -163,8 +174,10 @@ TEST(ContactElements, GeometricErrors) {
   EXPECT_THROW(build_contact_elements(mesh, 3, HalfPlane({0, 0.25}, {0, 1})), Error);
   // No edge with the reference.
   EXPECT_THROW(build_contact_elements(mesh, 9, kFoundation), Error);
-  EXPECT_THROW(build_contact_elements(mesh, 3, kFoundation, -0.1), Error);
-  EXPECT_THROW(build_contact_elements(mesh, 3, kFoundation, 0.0, 0.0), Error);
+  ContactLaw negative;
+  negative.depth = -0.1;
+  EXPECT_THROW(build_contact_elements(mesh, 3, kFoundation, negative), Error);
+  EXPECT_THROW(build_contact_elements(mesh, 3, kFoundation, {}, 0.0), Error);
   // Roundoff below the plane is a touching node, not a penetration.
   const ContactElements e = build_contact_elements(mesh, 3, HalfPlane({0, 1e-14}, {0, 1}));
   for (int i = 0; i < e.size(); ++i)

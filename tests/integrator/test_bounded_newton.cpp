@@ -80,8 +80,9 @@ TEST(ContactBoundary, GeometricGapIsTheDistanceAndTheBoundAddsTheExtraGap) {
   const LinearSystem system = test::free_body_system(mesh, test::unit_material());
   const ReducedSystem reduced = reduce(system);
   const double extra = 0.01;
-  const ContactElements elements =
-      build_contact_elements(mesh, 3, HalfPlane({0, 0}, {0, 1}), extra);
+  ContactLaw law;
+  law.depth = extra;
+  const ContactElements elements = build_contact_elements(mesh, 3, HalfPlane({0, 0}, {0, 1}), law);
   const ContactBoundary b = contact_boundary(elements, mesh, reduced);
   ASSERT_EQ(b.size(), 7);
   for (int i = 0; i < b.size(); ++i) {

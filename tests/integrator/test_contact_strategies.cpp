@@ -33,7 +33,9 @@ struct ThrownBlock {
   ContactElements elements;
 
   explicit ThrownBlock(double extra_gap = 0.0) {
-    elements = build_contact_elements(mesh, 3, HalfPlane({0, 0}, {0, 1}), extra_gap);
+    ContactLaw law;
+    law.depth = extra_gap;
+    elements = build_contact_elements(mesh, 3, HalfPlane({0, 0}, {0, 1}), law);
   }
   static Mesh lifted() {
     Mesh m = test::perturbed_rectangle(1.0, 1.0, 8, 8);

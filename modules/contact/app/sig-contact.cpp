@@ -1,6 +1,6 @@
 // sig-contact DATAFILE [-o OUTDIR]
-// Reads the CONTACT card and OUTDIR/case.nopo, builds the node-to-rigid contact elements
-// (thesis Remark 3.1: a Gamma3 node + a Lagrange node each) and writes OUTDIR/case.cont.
+// Reads the CONTACT and FRICTION cards and OUTDIR/case.nopo, builds the node-to-rigid contact
+// elements (thesis Remark 3.1: a Gamma3 node + a Lagrange node each) and writes OUTDIR/case.cont.
 // Without a CONTACT card there is no contact: nothing is written (a case.cont left by an earlier
 // run of the same case is removed so later stages cannot pick it up) and the stage exits 0.
 #include "contact/contact_elements.hpp"
@@ -33,9 +33,8 @@ int main(int argc, char** argv) {
     // 3. Write the CONT DS and summarize.
     sig::write_cont(cont_path, *elements, datafile.title());
     const sig::ContactElements& e = *elements;
-    std::cout << "sig-contact: " << e.size() << " contact elements on reference " << e.ref
-              << " (law " << sig::contact_law_name(e.law.front()) << ", obstacle "
-              << e.obstacle.kind << ")\n"
+    std::cout << "sig-contact: " << e.size() << " contact elements on reference " << e.ref << " ("
+              << sig::describe(e.law.front()) << "; obstacle " << e.obstacle.kind << ")\n"
               << "  Lagrange nodes " << e.lagrange_node.front() + 1 << ".."
               << e.lagrange_node.back() + 1 << " after " << e.num_nodes << " mesh nodes\n"
               << "  gap min " << e.gap.minCoeff() << " max " << e.gap.maxCoeff() << "\n"

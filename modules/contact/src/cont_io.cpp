@@ -3,6 +3,7 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -12,17 +13,27 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
                 const std::string& title, const std::string& creator) {
   const int m = elements.size();
   SIG_VERIFY(static_cast<int>(elements.lagrange_node.size()) == m &&
-                 static_cast<int>(elements.normal.size()) == m && elements.gap.size() == m &&
+                 static_cast<int>(elements.normal.size()) == m &&
+                 static_cast<int>(elements.tangent.size()) == m && elements.gap.size() == m &&
                  elements.weight.size() == m && static_cast<int>(elements.law.size()) == m,
              "write_cont " << path.string() << ": arrays of different lengths");
-  std::vector<std::int64_t> node(m), lagrange(m), law(m);
-  std::vector<double> normal(2 * m);
+  std::vector<std::int64_t> node(m), lagrange(m), law(m), friction_law(m);
+  std::vector<double> normal(2 * m), tangent(2 * m), cn(m), c3(m), depth(m), mu(m), threshold(m);
   for (int i = 0; i < m; ++i) { // files are 1-based
     node[i] = elements.node[i] + 1;
     lagrange[i] = elements.lagrange_node[i] + 1;
-    law[i] = elements.law[i];
     normal[2 * i] = elements.normal[i].x();
     normal[2 * i + 1] = elements.normal[i].y();
+    tangent[2 * i] = elements.tangent[i].x();
+    tangent[2 * i + 1] = elements.tangent[i].y();
+    const ContactLaw& l = elements.law[i];
+    law[i] = static_cast<std::int64_t>(l.normal);
+    cn[i] = l.cn;
+    c3[i] = std::isfinite(l.c3) ? l.c3 : 0.0; // 0: no truncation
+    depth[i] = l.depth;
+    friction_law[i] = static_cast<std::int64_t>(l.friction);
+    mu[i] = l.mu;
+    threshold[i] = l.threshold;
   }
   Ds ds("CONT", title, creator);
   ds.put_int("num_nodes", elements.num_nodes);
@@ -31,9 +42,16 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
   ds.put("node", node);
   ds.put("lagrange_node", lagrange);
   ds.put("normal", normal, {m, 2});
+  ds.put("tangent", tangent, {m, 2});
   ds.put("gap", std::span<const double>(elements.gap.data(), m));
   ds.put("weight", std::span<const double>(elements.weight.data(), m));
   ds.put("law", law);
+  ds.put("cn", cn);
+  ds.put("c3", c3);
+  ds.put("depth", depth);
+  ds.put("friction_law", friction_law);
+  ds.put("mu", mu);
+  ds.put("threshold", threshold);
   ds.put_text("obstacle_kind", elements.obstacle.kind);
   ds.put("obstacle_point", std::span<const double>(elements.obstacle.point.data(), 2));
   ds.put("obstacle_normal", std::span<const double>(elements.obstacle.normal.data(), 2));
@@ -51,13 +69,26 @@ ContactElements read_cont(const std::filesystem::path& path) {
   const std::vector<std::int64_t> node = ds.ints("node");
   const std::vector<std::int64_t> lagrange = ds.ints("lagrange_node");
   const std::vector<std::int64_t> law = ds.ints("law");
+  const std::vector<std::int64_t> friction_law = ds.ints("friction_law");
   const std::vector<double> normal = ds.reals("normal");
+  const std::vector<double> tangent = ds.reals("tangent");
   const std::vector<double> gap = ds.reals("gap");
   const std::vector<double> weight = ds.reals("weight");
+  const std::vector<double> cn = ds.reals("cn");
+  const std::vector<double> c3 = ds.reals("c3");
+  const std::vector<double> depth = ds.reals("depth");
+  const std::vector<double> mu = ds.reals("mu");
+  const std::vector<double> threshold = ds.reals("threshold");
   const std::size_t m = node.size();
-  SIG_VERIFY(lagrange.size() == m && law.size() == m && gap.size() == m && weight.size() == m &&
-                 normal.size() == 2 * m,
-             where << ": arrays node, lagrange_node, normal, gap, weight, law disagree in length");
+  const std::initializer_list<std::size_t> per_element = {
+      lagrange.size(), law.size(),       friction_law.size(), gap.size(),
+      weight.size(),   cn.size(),        c3.size(),           depth.size(),
+      mu.size(),       threshold.size(), normal.size() / 2,   tangent.size() / 2};
+  SIG_VERIFY(normal.size() % 2 == 0 && tangent.size() % 2 == 0 &&
+                 std::all_of(per_element.begin(), per_element.end(),
+                             [m](std::size_t size) { return size == m; }),
+             where << ": arrays node, lagrange_node, normal, tangent, gap, weight and the law "
+                      "arrays disagree in length");
   for (std::size_t i = 0; i < m; ++i) {
     SIG_VERIFY(node[i] >= 1 && node[i] <= elements.num_nodes,
                where << ": array node, element " << i + 1 << ": node " << node[i]
@@ -69,17 +100,34 @@ ContactElements read_cont(const std::filesystem::path& path) {
     const Eigen::Vector2d n(normal[2 * i], normal[2 * i + 1]);
     SIG_VERIFY(std::abs(n.norm() - 1) <= 1e-12,
                where << ": array normal, element " << i + 1 << " is not a unit vector");
+    const Eigen::Vector2d t(tangent[2 * i], tangent[2 * i + 1]);
+    SIG_VERIFY((t - contact_tangent(n)).norm() <= 1e-12,
+               where << ": array tangent, element " << i + 1 << " is not (n2, -n1)");
     SIG_VERIFY(std::isfinite(gap[i]) && gap[i] >= 0,
                where << ": array gap, element " << i + 1 << ": " << gap[i] << " is not >= 0");
     SIG_VERIFY(std::isfinite(weight[i]) && weight[i] > 0,
                where << ": array weight, element " << i + 1 << ": " << weight[i] << " is not > 0");
-    SIG_VERIFY(law[i] == kLawSignorini, where << ": array law, element " << i + 1 << ": law id "
-                                              << law[i] << " is unknown; known: " << kLawSignorini
-                                              << " = signorini");
+    ContactLaw l;
+    try {
+      l.normal = normal_law_of_id(law[i]);
+      l.friction = friction_law_of_id(friction_law[i]);
+    } catch (const Error& e) {
+      SIG_VERIFY(false,
+                 where << ": arrays law / friction_law, element " << i + 1 << ": " << e.what());
+    }
+    l.cn = cn[i];
+    l.c3 = c3[i] == 0 ? l.c3 : c3[i];
+    l.depth = depth[i];
+    l.mu = mu[i];
+    l.threshold = threshold[i];
+    if (const std::optional<LawProblem> problem = law_problem(l))
+      SIG_VERIFY(false, where << ": array " << (problem->field == "g" ? "depth" : problem->field)
+                              << ", element " << i + 1 << ": " << problem->what);
+    elements.law.push_back(l);
+    elements.tangent.push_back(t);
     elements.node.push_back(static_cast<int>(node[i] - 1));
     elements.lagrange_node.push_back(static_cast<int>(lagrange[i] - 1));
     elements.normal.push_back(n);
-    elements.law.push_back(static_cast<int>(law[i]));
   }
   elements.gap = Eigen::Map<const Eigen::VectorXd>(gap.data(), static_cast<Eigen::Index>(m));
   elements.weight = Eigen::Map<const Eigen::VectorXd>(weight.data(), static_cast<Eigen::Index>(m));

@@ -3,8 +3,6 @@
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -22,12 +20,6 @@ Eigen::Vector2d pair_field(const Card& card, const std::string& name) {
     card.fail(name, what.str());
   }
   return {v[0], v[1]};
-}
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
 }
 
 // The reference must carry Gamma3 edges: list what the mesh has so the user can pick.
@@ -60,27 +52,89 @@ std::unique_ptr<Obstacle> obstacle_from_card(const Card& card) {
   return std::make_unique<HalfPlane>(point, normal);
 }
 
+/// g= (the wall depth), or its old spelling gap=; both at once is ambiguous.
+double wall_depth(const Card& card) {
+  if (card.has("g") && card.has("gap"))
+    card.fail("gap", "give the wall depth once: g= (gap= is its old spelling)");
+  return card.has("gap") ? card.real("gap") : card.real("g", 0.0);
+}
+
+/// A field the law does not read is a mistake in the deck (a compliance given to signorini
+/// would be silently ignored otherwise).
+void refuse_unused(const Card& card, const std::string& field, const std::string& law) {
+  if (card.has(field)) card.fail(field, "is not a parameter of law=" + law);
+}
+
+/// The normal law and its parameters from CONTACT.
+ContactLaw normal_law_from_card(const Card& card) {
+  ContactLaw law;
+  const std::string name =
+      card.choice("law", {"signorini", "compliance", "compliance-unilateral"}, "signorini");
+  law.normal = normal_law_named(name);
+  if (law.has_compliance()) {
+    law.cn = card.real("cn");
+    law.c3 = card.real("c3", law.c3);
+  } else {
+    refuse_unused(card, "cn", name);
+    refuse_unused(card, "c3", name);
+  }
+  if (law.has_wall()) {
+    law.depth = wall_depth(card);
+  } else {
+    refuse_unused(card, "g", name);
+    refuse_unused(card, "gap", name);
+  }
+  return law;
+}
+
+/// The friction law of the FRICTION card (if any) on reference `ref`, into `law`.
+void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
+  for (const Card* card : datafile.all("FRICTION")) {
+    const long friction_ref = card->integer("ref");
+    if (friction_ref != ref)
+      card->fail("ref", "reference " + std::to_string(friction_ref) +
+                            " has no CONTACT card (the CONTACT card is on ref=" +
+                            std::to_string(ref) + ")");
+    const std::string name = card->choice("law", {"none", "tresca", "coulomb"});
+    law.friction = friction_law_named(name);
+    if (law.friction == FrictionLaw::coulomb)
+      law.mu = card->real("mu");
+    else
+      refuse_unused(*card, "mu", name);
+    if (law.friction == FrictionLaw::tresca)
+      law.threshold = card->real("threshold");
+    else
+      refuse_unused(*card, "threshold", name);
+    if (const std::optional<LawProblem> problem = law_problem(law))
+      card->fail(problem->field, problem->what);
+  }
+}
+
 } // namespace
 
 std::optional<ContactElements> contact_from_cards(const Datafile& datafile, const Mesh& mesh) {
   const std::vector<const Card*> cards = datafile.all("CONTACT");
+  const std::vector<const Card*> friction = datafile.all("FRICTION");
+  if (cards.empty() && !friction.empty())
+    friction.front()->fail("ref", "friction needs a CONTACT card on the same reference");
   if (cards.empty()) return std::nullopt;
+  if (friction.size() > 1)
+    friction[1]->fail("", "only one FRICTION card is supported (one contact boundary)");
   if (cards.size() > 1)
     cards[1]->fail("", "only one CONTACT card is supported (one contact boundary, one obstacle)");
   const Card& card = *cards.front();
 
   const long ref = card.integer("ref");
   check_reference(card, mesh, static_cast<int>(ref));
-  const std::string law = lower(card.text("law", "signorini"));
-  if (law != "signorini")
-    card.fail("law", "law '" + law + "' is not implemented; known: signorini");
-  const double extra_gap = card.real("gap", 0.0);
-  if (!(std::isfinite(extra_gap) && extra_gap >= 0)) card.fail("gap", "must be >= 0");
+  ContactLaw law = normal_law_from_card(card);
+  if (const std::optional<LawProblem> problem = law_problem(law))
+    card.fail(problem->field == "g" && card.has("gap") ? "gap" : problem->field, problem->what);
+  friction_from_cards(datafile, static_cast<int>(ref), law);
   const std::unique_ptr<Obstacle> obstacle = obstacle_from_card(card);
 
   // A node starting inside the obstacle is a geometric error of this card's obstacle.
   try {
-    return build_contact_elements(mesh, static_cast<int>(ref), *obstacle, extra_gap, 1.0);
+    return build_contact_elements(mesh, static_cast<int>(ref), *obstacle, law, 1.0);
   } catch (const InputError&) {
     throw;
   } catch (const Error& e) {

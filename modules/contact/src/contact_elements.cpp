@@ -92,18 +92,21 @@ std::vector<int> nodes_along_boundary(const std::vector<BoundaryEdge>& edges) {
 
 } // namespace
 
-std::string contact_law_name(int law) {
-  SIG_VERIFY(law == kLawSignorini,
-             "contact law id " << law << " is unknown; known: " << kLawSignorini << " = signorini");
-  return "signorini";
+bool ContactElements::has_friction() const {
+  return std::any_of(law.begin(), law.end(), [](const ContactLaw& l) { return l.has_friction(); });
+}
+
+double ContactElements::bound(int i) const {
+  return law[i].has_wall() ? gap[i] + law[i].depth : std::numeric_limits<double>::infinity();
 }
 
 ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle& obstacle,
-                                       double extra_gap, double thickness) {
+                                       const ContactLaw& law, double thickness) {
   SIG_VERIFY(std::isfinite(thickness) && thickness > 0,
              "contact elements: thickness " << thickness << " must be > 0");
-  SIG_VERIFY(std::isfinite(extra_gap) && extra_gap >= 0,
-             "contact elements: extra gap " << extra_gap << " must be >= 0");
+  const std::optional<LawProblem> inadmissible = law_problem(law);
+  SIG_VERIFY(!inadmissible,
+             "contact elements: " << inadmissible->field << " " << inadmissible->what);
   const std::vector<BoundaryEdge> edges = unique_edges(mesh, ref);
   SIG_VERIFY(!edges.empty(), "contact elements: no mesh edge carries reference " << ref);
 
@@ -141,26 +144,42 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
     distance = std::max(distance, 0.0);
     elements.lagrange_node.push_back(elements.num_nodes + i);
     elements.normal.push_back(obstacle.normal(x));
-    elements.gap(i) = distance + extra_gap;
+    elements.tangent.push_back(contact_tangent(elements.normal.back()));
+    elements.gap(i) = distance;
     elements.weight(i) = weight_of.at(k);
-    elements.law.push_back(kLawSignorini);
+    elements.law.push_back(law);
   }
   return elements;
 }
 
-Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof) {
+namespace {
+
+/// (B u)_i = sign c_i . u_i with the direction c_i of element i.
+Eigen::SparseMatrix<double> nodal_operator(const ContactElements& elements, int ndof,
+                                           const std::vector<Eigen::Vector2d>& direction,
+                                           double sign) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(2 * elements.size());
   for (int i = 0; i < elements.size(); ++i) {
     const int k = elements.node[i];
     SIG_VERIFY(k >= 0 && 2 * k + 1 < ndof,
-               "normal operator: contact node " << k + 1 << " has no dofs among " << ndof);
-    entries.emplace_back(i, 2 * k, -elements.normal[i].x());
-    entries.emplace_back(i, 2 * k + 1, -elements.normal[i].y());
+               "contact operator: contact node " << k + 1 << " has no dofs among " << ndof);
+    entries.emplace_back(i, 2 * k, sign * direction[i].x());
+    entries.emplace_back(i, 2 * k + 1, sign * direction[i].y());
   }
-  Eigen::SparseMatrix<double> b_n(elements.size(), ndof);
-  b_n.setFromTriplets(entries.begin(), entries.end());
-  return b_n;
+  Eigen::SparseMatrix<double> b(elements.size(), ndof);
+  b.setFromTriplets(entries.begin(), entries.end());
+  return b;
+}
+
+} // namespace
+
+Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof) {
+  return nodal_operator(elements, ndof, elements.normal, -1.0);
+}
+
+Eigen::SparseMatrix<double> tangential_operator(const ContactElements& elements, int ndof) {
+  return nodal_operator(elements, ndof, elements.tangent, 1.0);
 }
 
 } // namespace sig

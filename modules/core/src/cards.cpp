@@ -79,7 +79,9 @@ const std::vector<CardSpec>& card_schema() {
        }},
       {"CONTACT",
        false,
-       "unilateral contact of a boundary reference (Gamma3) with a rigid obstacle",
+       "contact of a boundary reference (Gamma3) with a rigid obstacle: node-to-rigid elements "
+       "with their normal law (penetration q_n = u_n - d beyond the obstacle surface, d the "
+       "initial gap from the mesh)",
        {
            {"ref", "boundary reference of the contact zone"},
            {"obstacle", "plane | disc"},
@@ -87,13 +89,31 @@ const std::vector<CardSpec>& card_schema() {
            {"normal", "outward unit normal of the obstacle: nx,ny"},
            {"centre", "disc obstacle: centre x,y"},
            {"radius", "disc obstacle: radius"},
-           {"law", "signorini"},
-           {"gap", "initial gap added to the geometric one: where the unilateral bound sits "
-                   "beyond the obstacle (ipm: the allowed penetration g)"},
+           {"law", "signorini (1.22) | compliance (1.24): pressure cn [q_n]+, truncated at c3 | "
+                   "compliance-unilateral (1.26): compliance while q_n < g, a rigid wall at "
+                   "q_n = g; default signorini"},
+           {"cn", "compliance: pressure per unit penetration (GPa/m in the thesis's units), > 0"},
+           {"c3", "compliance: truncation pressure min(cn [q_n]+, c3) of ch. 6, > 0; default "
+                  "none"},
+           {"g", "depth of the rigid wall beyond the obstacle surface, >= 0, default 0: "
+                 "signorini's extra gap, compliance-unilateral's layer, ipm's allowed "
+                 "penetration (sig-march)"},
+           {"gap", "old spelling of g"},
            {"strategy", "dynamic contact strategy of sig-march (a TIME deck only): signorini | "
                         "compliance | specific-penalty | two-step | ipm; default signorini"},
            {"r", "foundation stiffness per unit area of compliance, specific-penalty and ipm "
                  "(sig-march), > 0"},
+       }},
+      {"FRICTION",
+       false,
+       "friction law of the contact boundary of a CONTACT card (slip q_t = t . u, t = (n2, -n1): "
+       "+x1 on the foundation x2 <= 0)",
+       {
+           {"ref", "boundary reference of the CONTACT card"},
+           {"law", "none | tresca (1.33): |T| <= threshold on every contact node | coulomb "
+                   "(1.35): |T| <= mu N"},
+           {"mu", "coulomb: friction coefficient, >= 0"},
+           {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
        }},
       {"SOLVER",
        false,

@@ -18,11 +18,18 @@ ContactHistoryInfo contact_history_info(const Card& contact) {
   if (contact.has("r") && !(info.r > 0)) contact.fail("r", "must be > 0");
   if (contact.has("r") && !needs_r)
     log_warning("CONTACT r= is not used by strategy=" + info.strategy);
-  info.gap = contact.real("gap", 0.0);
-  if (!(info.gap >= 0)) contact.fail("gap", "must be >= 0");
+  // The strategies define their own normal forces; the card's law must be the default.
+  if (contact.has("law") &&
+      contact.choice("law", {"signorini", "compliance", "compliance-unilateral"}) != "signorini")
+    contact.fail("law", "a TIME deck's contact law is its strategy= (signorini, compliance, "
+                        "specific-penalty, two-step, ipm): remove law=");
+  const char* depth = contact.has("gap") ? "gap" : "g";
+  info.gap = contact.real(depth, 0.0);
+  if (!(info.gap >= 0)) contact.fail(depth, "must be >= 0");
   if (info.gap > 0 && (info.strategy == "compliance" || info.strategy == "specific-penalty"))
-    log_warning("CONTACT gap= sets a unilateral bound, which strategy=" + info.strategy +
-                " does not have: its force acts from the obstacle surface, gap is ignored");
+    log_warning(std::string("CONTACT ") + depth + "= sets a unilateral bound, which strategy=" +
+                info.strategy + " does not have: its force acts from the obstacle surface, " +
+                depth + " is ignored");
   return info;
 }
 

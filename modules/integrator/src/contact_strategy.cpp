@@ -3,7 +3,7 @@
 #include "core/error.hpp"
 #include "integrator/dynamic_contact.hpp"
 #include "integrator/strategies.hpp"
-#include "solver/contact_problem.hpp"
+#include "solver/condensed_contact.hpp"
 
 #include <numeric>
 
@@ -48,24 +48,27 @@ ContactStepSolution
 solve_with_static_method(const NormalStep& step, const ContactBoundary& boundary,
                          const std::vector<int>& elements, const Eigen::VectorXd& gap,
                          const ContactSolverParameters& method, std::vector<char>* active) {
-  // The condensed step as a static problem: K = A, f = A x_free, equilibrium A x + lambda = f.
-  ContactProblem problem;
-  problem.K = step.A;
+  // The condensed step as a static problem: S = A, f = A x_free, equilibrium A x + lambda = f,
+  // Signorini with the bound `gap` on the elements.
+  CondensedProblem problem;
+  problem.S = step.A;
   problem.f = step.A * step.x_free;
   problem.normal_dof = elements;
   problem.gap.resize(static_cast<Eigen::Index>(elements.size()));
-  problem.weight.resize(problem.gap.size());
+  ContactSetting setting;
+  setting.weight.resize(problem.gap.size());
   for (std::size_t e = 0; e < elements.size(); ++e) {
     problem.gap[static_cast<Eigen::Index>(e)] = gap[elements[e]];
-    problem.weight[static_cast<Eigen::Index>(e)] = boundary.weight[elements[e]];
+    setting.weight[static_cast<Eigen::Index>(e)] = boundary.weight[elements[e]];
   }
-  const ContactSolution c = make_contact_solver(method)->solve(problem);
+  setting.law.assign(elements.size(), ContactLaw{});
+  const ContactNewtonResult c = solve_condensed_contact(problem, setting, method).contact;
   ContactStepSolution s;
   s.lambda = Eigen::VectorXd::Zero(boundary.size());
   if (active) active->assign(boundary.size(), 0);
   for (std::size_t e = 0; e < elements.size(); ++e) {
-    s.lambda[elements[e]] = c.multiplier[static_cast<Eigen::Index>(e)];
-    if (active) (*active)[elements[e]] = c.active[e];
+    s.lambda[elements[e]] = c.normal_force[static_cast<Eigen::Index>(e)];
+    if (active) (*active)[elements[e]] = c.normal_status[e] != NormalStatus::free;
   }
   s.converged = c.converged && s.lambda.allFinite();
   s.failure =

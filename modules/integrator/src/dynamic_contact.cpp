@@ -16,33 +16,20 @@ Eigen::VectorXd ContactBoundary::penetration(const Eigen::VectorXd& x) const {
   return (x - geometric_gap).cwiseMax(0.0);
 }
 
-Eigen::VectorXd geometric_gaps(const ContactElements& elements, const Mesh& mesh) {
-  const auto obstacle = make_obstacle(elements.obstacle);
-  Eigen::VectorXd d(elements.size());
-  for (int i = 0; i < elements.size(); ++i) {
-    SIG_VERIFY(elements.node[i] >= 0 && elements.node[i] < mesh.num_nodes(),
-               "contact element " << i + 1 << ": node " << elements.node[i] + 1
-                                  << " is not a node of the mesh");
-    d[i] = std::max(obstacle->signed_distance(mesh.nodes[elements.node[i]]), 0.0);
-  }
-  return d;
-}
-
 ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& mesh,
                                  const ReducedSystem& reduced) {
   ContactBoundary b;
   b.nodes = elements.node;
-  b.bound = elements.gap;
   b.weight = elements.weight;
-  b.geometric_gap = geometric_gaps(elements, mesh);
+  b.geometric_gap = elements.gap;
   const int p = elements.size();
-  // The CONT gap is d + extra with extra >= 0; below d beyond round-off means the CONT file and
-  // the mesh disagree.
-  for (int i = 0; i < p; ++i)
-    SIG_VERIFY(b.bound[i] >= b.geometric_gap[i] - 1e-9 * (1 + std::abs(b.geometric_gap[i])),
-               "contact element " << i + 1 << " (node " << b.nodes[i] + 1 << "): CONT gap "
-                                  << b.bound[i] << " is below the distance " << b.geometric_gap[i]
-                                  << " to the obstacle; rerun sig-contact on this mesh");
+  b.bound.resize(p);
+  for (int i = 0; i < p; ++i) {
+    SIG_VERIFY(elements.node[i] >= 0 && elements.node[i] < mesh.num_nodes(),
+               "contact element " << i + 1 << ": node " << elements.node[i] + 1
+                                  << " is not a node of the mesh");
+    b.bound[i] = elements.bound(i);
+  }
   std::vector<Eigen::Triplet<double>> entries;
   for (int i = 0; i < p; ++i)
     for (int component = 0; component < 2; ++component) {

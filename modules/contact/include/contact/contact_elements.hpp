@@ -1,12 +1,24 @@
 #pragma once
-// Node-to-rigid contact elements (thesis Remark 3.1): one Gamma3 node plus one Lagrange-multiplier
-// node each. This is the geometry half of contact (STYLE.md 1): mesh + obstacle in, the normal
-// operator B_N and the gaps g out; solvers see only (K, f, B_N, g) and never the mesh.
+// Node-to-rigid contact elements (thesis Remark 3.1): one Gamma3 node plus one Lagrange node
+// each, the node carrying the normal and (with friction) the tangential multiplier. This is the
+// geometry half of contact (STYLE.md 1): mesh + obstacle + laws in, the operators B_N, B_T, the
+// gaps and the laws out, once, before any solver; solvers see only these and never the mesh.
 //
-// Per element i (node X_i): gap g_i = d(X_i) + extra gap >= 0, normal n_i = n(proj(X_i)) of the
-// obstacle, normal displacement u_n,i = -n_i . u_i (positive towards the obstacle), Signorini
-// (1.22): u_n,i <= g_i, lambda_i >= 0, lambda_i (u_n,i - g_i) = 0, with lambda_i the nodal
-// contact force pushing the body along +n_i (pressure = lambda_i / weight_i).
+// Per element i (node X_i):
+//   normal n_i = n(proj(X_i)) of the obstacle (pointing to the body's side), tangent
+//   t_i = (n_i2, -n_i1) (for the foundation x2 <= 0 with n = (0, 1): t = (1, 0), so slip towards
+//   +x1 is positive, the S+ of the thesis);
+//   normal displacement u_n,i = -n_i . u_i (positive towards the obstacle), slip u_t,i = t_i . u_i;
+//   gap d_i = d(X_i) >= 0, the distance to the obstacle surface: the penetration is
+//   q_n,i = u_n,i - d_i, and the laws (contact_law.hpp) are written in q_n, with the wall at
+//   q_n = g_i (the law's depth);
+//   weight w_i, the tributary length: nodal force = pressure x w_i.
+// Gaps, one name for one meaning each (the CONTACT card and the CONT file use the same):
+//   gap    d_i, from the mesh and the obstacle (never set by hand)
+//   g      the depth of the rigid wall beyond the obstacle surface (card field g=, the old
+//          spelling gap= still read): signorini's extra gap, compliance-unilateral's layer, IPM's
+//          allowed penetration; the unilateral bound is u_n,i <= d_i + g_i.
+#include "contact/contact_law.hpp"
 #include "contact/obstacle.hpp"
 #include "mesh/mesh.hpp"
 
@@ -21,24 +33,24 @@ namespace sig {
 
 class Datafile;
 
-/// Law identifiers stored per element (CONT array "law").
-inline constexpr int kLawSignorini = 1;
-/// "signorini" for kLawSignorini; throws sig::Error for an unknown id.
-std::string contact_law_name(int law);
-
 struct ContactElements {
   int num_nodes = 0;     ///< mesh node count; Lagrange nodes are numbered after the mesh nodes
   int ref = 0;           ///< mesh reference of Gamma3
   double thickness = 1;  ///< out-of-plane thickness the weights include
   std::vector<int> node; ///< mesh node, 0-based, in boundary order (see below)
-  std::vector<int> lagrange_node;      ///< num_nodes + i, 0-based
-  std::vector<Eigen::Vector2d> normal; ///< outward unit normal of the obstacle at proj(X_i)
-  Eigen::VectorXd gap;                 ///< initial gap g_i >= 0
+  std::vector<int> lagrange_node;       ///< num_nodes + i, 0-based
+  std::vector<Eigen::Vector2d> normal;  ///< outward unit normal of the obstacle at proj(X_i)
+  std::vector<Eigen::Vector2d> tangent; ///< contact_tangent(normal[i])
+  Eigen::VectorXd gap;                  ///< d_i >= 0: distance to the obstacle surface
   Eigen::VectorXd weight; ///< tributary length: half of each adjacent Gamma3 edge, x thickness
-  std::vector<int> law;   ///< kLawSignorini
+  std::vector<ContactLaw> law;
   ObstacleDescription obstacle;
 
   int size() const { return static_cast<int>(node.size()); }
+  /// True if some element has a friction law.
+  bool has_friction() const;
+  /// The unilateral bound of element i on u_n: d_i + g_i (infinite without a wall).
+  double bound(int i) const;
 };
 
 /// Contact elements on the nodes of the edges with reference `ref`.
@@ -48,28 +60,36 @@ struct ContactElements {
 /// number; a closed chain starts at its smallest node; where the edges do not form simple chains
 /// (a node on three or more of them) the order falls back to node numbers.
 /// A node inside the obstacle (gap < 0 beyond roundoff, 1e-9 of the shortest Gamma3 edge) is a
-/// sig::Error; roundoff-negative gaps of nodes lying on the obstacle are set to 0.
+/// sig::Error; roundoff-negative gaps of nodes lying on the obstacle are set to 0. Every element
+/// gets `law` (sig::Error if law_error finds it inadmissible).
 ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle& obstacle,
-                                       double extra_gap = 0, double thickness = 1);
+                                       const ContactLaw& law = {}, double thickness = 1);
 
 /// B_N (size() x ndof, dof = 2 node + component): (B_N u)_i = u_n,i = -n_i . u_i.
 Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof);
+/// B_T (size() x ndof): (B_T u)_i = u_t,i = t_i . u_i.
+Eigen::SparseMatrix<double> tangential_operator(const ContactElements& elements, int ndof);
 
 /// Gap at a current position x (large deformation: g = d(X_i + u_i)).
 inline double gap_at(const Obstacle& obstacle, const Eigen::Vector2d& x) {
   return obstacle.signed_distance(x);
 }
 
-/// The CONTACT card of a datafile, or nothing if there is none:
-///   CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=signorini gap=0
-///   CONTACT ref=3 obstacle=disc centre=0,0 radius=1 law=signorini
-/// ref must carry edges on the mesh; law defaults to signorini (the only one for now); gap is an
-/// extra initial gap added to the geometric one (default 0). Thickness 1 (plane strain).
-/// Errors are sig::InputError naming the file, line and field.
+/// The CONTACT card of a datafile (and its FRICTION card), or nothing if there is none:
+///   CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=signorini g=0
+///   CONTACT ref=3 obstacle=disc centre=0,0 radius=1 law=compliance cn=10 c3=1e8
+///   CONTACT ref=3 ... law=compliance-unilateral cn=10 g=0.5
+///   FRICTION ref=3 law=coulomb mu=0.3          (or law=tresca threshold=2, law=none)
+/// ref must carry edges on the mesh; law defaults to signorini, g to 0 (gap= is its old
+/// spelling); a field the law does not use is an error, as is a FRICTION card whose ref has no
+/// CONTACT card. Thickness 1 (plane strain). Errors are sig::InputError naming the file, line
+/// and field.
 std::optional<ContactElements> contact_from_cards(const Datafile& datafile, const Mesh& mesh);
 
-/// DS kind "CONT": node, lagrange_node (1-based), normal (m x 2), gap, weight, law,
-/// obstacle_kind, obstacle_point, obstacle_normal, obstacle_radius, num_nodes, ref, thickness.
+/// DS kind "CONT": node, lagrange_node (1-based), normal and tangent (m x 2), gap (d_i), weight;
+/// the laws per element: law (normal law id, contact_law.hpp), cn, c3 (0 = no truncation),
+/// depth (g), friction_law (id), mu, threshold; obstacle_kind, obstacle_point, obstacle_normal,
+/// obstacle_radius, num_nodes, ref, thickness.
 void write_cont(const std::filesystem::path& path, const ContactElements& elements,
                 const std::string& title = "contact elements",
                 const std::string& creator = "sig-contact");

@@ -1,14 +1,15 @@
 #pragma once
 // The dynamic fields of the CONTACT card (stage sig-march; sig-contact reads the geometry):
 //
-//   CONTACT ... [strategy=signorini|compliance|specific-penalty|two-step|ipm] [r=] [gap=]
+//   CONTACT ... [strategy=signorini|compliance|specific-penalty|two-step|ipm] [r=] [g=]
 //
 // strategy defaults to signorini; r (foundation stiffness per unit area, nodal force
-// r * weight * penetration) is required and > 0 for compliance, specific-penalty and ipm. gap
-// keeps its static meaning, the extra gap of the unilateral bound beyond the obstacle (sig-contact
-// stores geometric + extra in the CONT gap): for ipm it is the allowed penetration g; compliance
-// and specific-penalty have no bound and ignore it (with a warning). SOLVER maxit= sets the
-// strategy's Newton iterations per phase. Errors are sig::InputError (file, line, field).
+// r * weight * penetration) is required and > 0 for compliance, specific-penalty and ipm. g (old
+// spelling gap=) keeps its static meaning, the depth of the wall beyond the obstacle surface
+// (sig-contact stores it in the CONT depth): for ipm it is the allowed penetration; compliance
+// and specific-penalty have no bound and ignore it (with a warning). The strategy is the normal
+// law: law= other than signorini is refused. SOLVER maxit= sets the strategy's Newton iterations
+// per phase. Errors are sig::InputError (file, line, field).
 #include "integrator/contact_strategy.hpp"
 #include "integrator/history_io.hpp"
 
@@ -16,7 +17,7 @@ namespace sig {
 
 class Card;
 
-/// strategy, r, gap of the card (the nodes are filled from the CONT file).
+/// strategy, r, g of the card (the nodes are filled from the CONT file).
 ContactHistoryInfo contact_history_info(const Card& contact);
 
 /// The strategy's parameters: r of the CONTACT card, max_iterations of SOLVER maxit (may be null).

@@ -29,11 +29,11 @@ class TimeScheme;
 struct ContactBoundary {
   std::vector<int> nodes;        ///< 0-based mesh nodes, in CONT element order
   Eigen::SparseMatrix<double> B; ///< p x free dofs: (B u)_i = u_n,i
-  /// The unilateral bound on u_n: the CONT gap = geometric gap + the card's extra gap
-  /// (signorini, two-step (a); for ipm the extra gap is the allowed penetration g).
+  /// The unilateral bound on u_n: d_i + g, the CONT gap and wall depth (signorini, two-step
+  /// (a); for ipm g is the allowed penetration).
   Eigen::VectorXd bound;
-  /// d_i = distance of node i to the obstacle in the reference configuration: penetration
-  /// [u_n - d]_+ and the compliance and specific penalty laws are measured from it.
+  /// d_i = distance of node i to the obstacle in the reference configuration (the CONT gap):
+  /// penetration [u_n - d]_+ and the compliance and specific penalty laws are measured from it.
   Eigen::VectorXd geometric_gap;
   Eigen::VectorXd weight; ///< tributary length x thickness: pressure = lambda / weight
 
@@ -42,13 +42,8 @@ struct ContactBoundary {
   Eigen::VectorXd penetration(const Eigen::VectorXd& x) const;
 };
 
-/// The geometric gap of each element, recomputed from the obstacle the CONT file stores:
-/// max(d(X_i), 0) (the contact stage sets round-off negatives to 0). The CONT gap minus this is
-/// the card's extra gap.
-Eigen::VectorXd geometric_gaps(const ContactElements& elements, const Mesh& mesh);
-
-/// The boundary on the free dofs of `reduced`; sig::Error if a contact node has a Dirichlet dof
-/// or the CONT gap is below the geometric one (a CONT file written for another mesh).
+/// The boundary on the free dofs of `reduced`, B, gaps and weights as the CONT file has them;
+/// sig::Error if a contact node has a Dirichlet dof or is not a node of the mesh.
 ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& mesh,
                                  const ReducedSystem& reduced);
 

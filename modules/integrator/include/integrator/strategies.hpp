@@ -2,7 +2,7 @@
 // The five strategies of contact_strategy.hpp (one file each in src/) and the pieces they share.
 #include "integrator/bounded_newton.hpp"
 #include "integrator/contact_strategy.hpp"
-#include "solver/contact_solver.hpp"
+#include "solver/contact_method.hpp"
 
 #include <vector>
 
@@ -58,7 +58,7 @@ private:
   ContactStrategyParameters p_;
 };
 
-/// A static contact method (solver/contact_solver.hpp) on the condensed step restricted to the
+/// A static contact method (solver/contact_method.hpp) on the condensed step restricted to the
 /// contact elements `elements` (indices into the boundary), with bounds u_n <= gap on them; the
 /// other nodes carry no force. Returns lambda on all p nodes (0 off `elements`), the static
 /// method's convergence, failure and iteration count, and its final statuses on `active`.

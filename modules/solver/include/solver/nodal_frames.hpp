@@ -7,12 +7,12 @@
 
 namespace sig {
 
-/// The frame of one contact node of outward obstacle normal n: its columns are the tangent
-/// t = (-n2, n1) and -n, so that u = R w takes w = (w_t, w_n) with w_n the normal displacement
-/// towards the obstacle. R is orthogonal.
+/// The frame of one contact node of outward obstacle normal n: its columns are the contact
+/// tangent t = (n2, -n1) (contact/contact_law.hpp) and -n, so that u = R w takes w = (w_t, w_n):
+/// w_t the slip along t, w_n the normal displacement towards the obstacle. R is orthogonal.
 inline Eigen::Matrix2d nodal_frame(const Eigen::Vector2d& n) {
   Eigen::Matrix2d R;
-  R << -n.y(), -n.x(), n.x(), -n.y();
+  R << n.y(), -n.x(), -n.x(), -n.y();
   return R;
 }
 

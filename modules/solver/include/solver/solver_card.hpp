@@ -5,7 +5,7 @@
 //   SOLVER method=linear|alm|penalty|pdas|projection linear=cholmod|umfpack|mumps
 //          r= gamma= c= eps= maxit=
 //   LOADSTEPS n=   (hyperelastic laws only; default 1)
-#include "solver/contact_solver.hpp"
+#include "solver/contact_method.hpp"
 
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Scalar complementarity kernels of the normal contact laws: each value sits next to its
+// Scalar complementarity kernels of the contact and friction laws: each value sits next to its
 // generalized derivative, and every formula carries the thesis equation it comes from. Solvers
 // build their residuals and generalized Jacobians from these and nothing else (STYLE.md 2).
 //
@@ -16,6 +16,8 @@
 // the inactive side (active if lambda + gamma u_n > 0), but its active-set test (step (ii) after
 // (3.29) and after (7.19)) uses >= 0; we follow the active-set test so that the derivative of
 // every kernel is the derivative of the branch the active-set test selects.
+#include <cmath>
+
 namespace sig {
 
 /// \f$ [x]_+ = \max(x, 0) \f$, the projection onto \f$\mathbb{R}_+\f$ (thesis (1.21)).
@@ -112,6 +114,23 @@ inline double truncated_normal_compliance(double un, double g, double cn, double
 /// cap's kink \f$ c_n (u_n - g) = c_3 \f$ belongs to the plateau.
 inline double d_truncated_normal_compliance(double un, double g, double cn, double c3) {
   return normal_compliance(un, g, cn) < c3 ? d_normal_compliance(un, g, cn) : 0.0;
+}
+
+// --- Friction (2D: the ball of radius s is the interval [-s, s]) ------------------------------
+
+/// \f$ \mathrm{proj}_{[-s, s]}(z) \f$, s >= 0: the tangential pressure of a node whose trial
+/// pressure z = t + r q_t meets the slip bound s (the projection of (3.19), 3rd row).
+inline double project_interval(double z, double s) {
+  return z > s ? s : (z < -s ? -s : z);
+}
+/// \f$ \partial\,\mathrm{proj} / \partial z \f$: 1 inside, 0 beyond the bound; the kink
+/// |z| = s belongs to the inside (stick), as [x]_+'s kink belongs to contact.
+inline double d_project_interval_dz(double z, double s) {
+  return std::abs(z) <= s ? 1.0 : 0.0;
+}
+/// \f$ \partial\,\mathrm{proj} / \partial s \f$: sign(z) beyond the bound (slip), 0 inside.
+inline double d_project_interval_ds(double z, double s) {
+  return std::abs(z) <= s ? 0.0 : (z > 0 ? 1.0 : -1.0);
 }
 
 } // namespace sig

@@ -3,6 +3,7 @@
 #include "assembly/dirichlet.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "solver/condensed_contact.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/nodal_frames.hpp"
 #include "solver/schur.hpp"
@@ -38,6 +39,12 @@ std::vector<std::array<int, 2>> contact_dofs(const ReducedSystem& reduced,
   return dofs;
 }
 
+/// Position of `dof` in the sorted `interface`.
+int position_in(const std::vector<int>& interface, int dof) {
+  return static_cast<int>(std::lower_bound(interface.begin(), interface.end(), dof) -
+                          interface.begin());
+}
+
 } // namespace
 
 StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::string& backend) {
@@ -57,24 +64,27 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 
 StaticSolution solve_static_contact(const LinearSystem& system, const ContactElements& contact,
                                     const ContactSolverParameters& parameters,
-                                    const std::string& backend) {
+                                    const std::string& backend, const Eigen::VectorXd& start) {
   const ReducedSystem reduced = reduce(system);
   const std::vector<std::array<int, 2>> dofs = contact_dofs(reduced, contact);
+  const int m = contact.size();
+  const bool friction = contact.has_friction();
   StaticSolution s;
 
-  // 1. Nodal frames at the contact nodes, so each normal displacement is one unknown.
+  // 1. Nodal frames at the contact nodes, so each normal displacement and slip is one unknown.
   Stopwatch clock;
   const Eigen::SparseMatrix<double> Q = nodal_frames(reduced.num_free(), dofs, contact.normal);
   const Eigen::SparseMatrix<double> K = Q.transpose() * reduced.K * Q;
   const Eigen::VectorXd f = Q.transpose() * reduced.f;
 
-  // 2. Condense the bulk onto the normal unknowns: one sparse factorization of the rest (the
-  //    body with Gamma3 held normally, positive definite even when K is not). Frictionless
-  //    contact acts on these m unknowns only.
-  std::vector<int> normal(contact.size());
-  for (int p = 0; p < contact.size(); ++p)
-    normal[p] = dofs[p][1];
-  std::vector<int> interface = normal;
+  // 2. Condense the bulk onto the normal unknowns (and the slips with friction): one sparse
+  //    factorization of the rest, the body with Gamma3 held, positive definite even when K is
+  //    not. Frictionless contact acts on the m normal unknowns only.
+  std::vector<int> interface;
+  for (int p = 0; p < m; ++p) {
+    interface.push_back(dofs[p][1]);
+    if (friction) interface.push_back(dofs[p][0]);
+  }
   std::sort(interface.begin(), interface.end());
   SIG_VERIFY(std::adjacent_find(interface.begin(), interface.end()) == interface.end(),
              "a node appears in two contact elements");
@@ -83,41 +93,43 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   s.seconds["factorize"] = schur.seconds_factorize();
   s.seconds["schur"] = schur.seconds_schur();
 
-  // 3. The contact method iterates on the small dense problem, in element order.
+  // 3. The contact method iterates on the small dense problem.
   Stopwatch solve_clock;
-  std::vector<int> position(contact.size());
-  for (int p = 0; p < contact.size(); ++p)
-    position[p] = static_cast<int>(std::lower_bound(interface.begin(), interface.end(), normal[p]) -
-                                   interface.begin());
-  const Eigen::VectorXd f_condensed = schur.condense(f);
-  ContactProblem problem;
-  problem.K.resize(contact.size(), contact.size());
-  problem.f.resize(contact.size());
-  for (int p = 0; p < contact.size(); ++p) {
-    problem.f[p] = f_condensed[position[p]];
-    for (int q = 0; q < contact.size(); ++q)
-      problem.K(p, q) = schur.matrix()(position[p], position[q]);
-    problem.normal_dof.push_back(p);
-  }
+  CondensedProblem problem;
+  problem.S = schur.matrix();
+  problem.f = schur.condense(f);
   problem.gap = contact.gap;
-  problem.weight = contact.weight;
-  problem.regularization = kRelativeRegularization * problem.K.diagonal().cwiseAbs().maxCoeff();
-  const ContactSolution c = make_contact_solver(parameters)->solve(problem);
+  for (int p = 0; p < m; ++p) {
+    problem.normal_dof.push_back(position_in(interface, dofs[p][1]));
+    if (friction) problem.tangential_dof.push_back(position_in(interface, dofs[p][0]));
+  }
+  problem.regularization = kRelativeRegularization * problem.S.diagonal().cwiseAbs().maxCoeff();
+  Eigen::VectorXd w_start;
+  if (start.size() > 0) {
+    SIG_VERIFY(start.size() == system.num_dofs(),
+               "start displacement of size " << start.size() << " for " << system.num_dofs());
+    const Eigen::VectorXd w = Q.transpose() * reduced.restrict(start);
+    w_start.resize(static_cast<Eigen::Index>(interface.size()));
+    for (std::size_t k = 0; k < interface.size(); ++k)
+      w_start[static_cast<Eigen::Index>(k)] = w[interface[k]];
+  }
+  const CondensedSolution condensed =
+      solve_condensed_contact(problem, {contact.law, contact.weight}, parameters, w_start);
+  const ContactNewtonResult& c = condensed.contact;
   if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);
 
   // 4. Back to the whole body.
-  Eigen::VectorXd un(contact.size());
-  for (int p = 0; p < contact.size(); ++p)
-    un[position[p]] = c.u[p];
-  s.u = reduced.expand(Q * schur.expand(f, un));
+  s.u = reduced.expand(Q * schur.expand(f, condensed.w));
   s.seconds["solve"] = solve_clock.seconds();
-  s.multiplier = c.multiplier;
-  s.active = c.active;
+  s.multiplier = c.normal_force;
+  s.tangential = c.tangential_force;
+  s.normal_status = c.normal_status;
+  s.friction_status = c.friction_status;
   s.converged = c.converged;
   s.failure = c.failure;
   s.history = c.history;
   // As the thesis counts them: every displacement dof, plus the Lagrange nodes for ALM.
-  s.unknowns = system.num_dofs() + (c.unknowns - problem.size());
+  s.unknowns = system.num_dofs() + condensed.multiplier_unknowns;
   return s;
 }
 

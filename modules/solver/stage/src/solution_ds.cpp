@@ -7,6 +7,28 @@
 
 namespace sig {
 
+void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::VectorXd& tangential,
+                       const std::vector<NormalStatus>& normal_status,
+                       const std::vector<FrictionStatus>& friction_status) {
+  const auto m = static_cast<std::size_t>(normal.size());
+  SIG_VERIFY(static_cast<std::size_t>(tangential.size()) == m && normal_status.size() == m &&
+                 friction_status.size() == m,
+             "contact state: " << normal.size() << " normal forces, " << tangential.size()
+                               << " tangential, " << normal_status.size() << " and "
+                               << friction_status.size() << " statuses");
+  std::vector<std::int64_t> status(m), normal_code(m), friction_code(m);
+  for (std::size_t p = 0; p < m; ++p) {
+    status[p] = normal_status[p] != NormalStatus::free ? 1 : 0;
+    normal_code[p] = static_cast<std::int64_t>(normal_status[p]);
+    friction_code[p] = static_cast<std::int64_t>(friction_status[p]);
+  }
+  ds.put("multiplier", std::span<const double>(normal.data(), m));
+  ds.put("tangential_multiplier", std::span<const double>(tangential.data(), m));
+  ds.put("status", std::span<const std::int64_t>(status));
+  ds.put("normal_status", std::span<const std::int64_t>(normal_code));
+  ds.put("friction_status", std::span<const std::int64_t>(friction_code));
+}
+
 void write_solution(const std::filesystem::path& path, const StaticSolution& solution,
                     const std::string& method, const std::string& backend,
                     const std::string& title) {
@@ -24,19 +46,21 @@ void write_solution(const std::filesystem::path& path, const StaticSolution& sol
   ds.put_int("dofs", solution.unknowns);
   ds.put_text("failure", solution.failure);
   if (solution.multiplier.size() > 0) {
-    ds.put("multiplier",
-           std::span<const double>(solution.multiplier.data(), solution.multiplier.size()));
-    std::vector<std::int64_t> status(solution.active.begin(), solution.active.end());
-    ds.put("status", std::span<const std::int64_t>(status));
-    std::vector<std::int64_t> active;
+    put_contact_state(ds, solution.multiplier, solution.tangential, solution.normal_status,
+                      solution.friction_status);
+    std::vector<std::int64_t> active, stick, slip;
     std::vector<double> residual, increment, step_norm;
     for (const auto& h : solution.history) {
       active.push_back(h.active);
+      stick.push_back(h.stick);
+      slip.push_back(h.slip);
       residual.push_back(h.residual);
       increment.push_back(h.increment);
       step_norm.push_back(h.step);
     }
     ds.put("history_active", std::span<const std::int64_t>(active));
+    ds.put("history_stick", std::span<const std::int64_t>(stick));
+    ds.put("history_slip", std::span<const std::int64_t>(slip));
     ds.put("history_residual", std::span<const double>(residual));
     ds.put("history_increment", std::span<const double>(increment));
     ds.put("history_step_norm", std::span<const double>(step_norm));

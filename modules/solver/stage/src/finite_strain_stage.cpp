@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
+#include "solver/solution_ds.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -93,13 +94,14 @@ void put_load_step_states(Ds& ds, const FiniteStrainStageResult& result) {
                             << ndof << ") or not finite");
     u.insert(u.end(), step.u.begin(), step.u.end());
     if (m == 0) continue;
-    SIG_VERIFY(step.multiplier.size() == m && step.active.size() == static_cast<std::size_t>(m),
-               "load step " << k + 1 << ": " << step.multiplier.size() << " multipliers and "
-                            << step.active.size() << " statuses for " << m << " contact elements");
+    SIG_VERIFY(
+        step.multiplier.size() == m && step.normal_status.size() == static_cast<std::size_t>(m),
+        "load step " << k + 1 << ": " << step.multiplier.size() << " multipliers and "
+                     << step.normal_status.size() << " statuses for " << m << " contact elements");
     for (Eigen::Index i = 0; i < m; ++i) {
       multiplier.push_back(step.multiplier[i]);
       pressure.push_back(step.multiplier[i] / result.contact_weight[i]);
-      status.push_back(step.active[i] ? 1 : 0);
+      status.push_back(step.normal_status[i] != NormalStatus::free ? 1 : 0);
     }
   }
   const auto rows = static_cast<std::int64_t>(converged);
@@ -163,11 +165,10 @@ void write_finite_strain_solution(const std::filesystem::path& path,
                                                << ": array 'u' would hold " << last.u[i]
                                                << " at dof " << i + 1 << "; nothing written");
     ds.put("u", std::span<const double>(last.u.data(), last.u.size()));
-    if (last.multiplier.size() > 0) {
-      ds.put("multiplier", std::span<const double>(last.multiplier.data(), last.multiplier.size()));
-      std::vector<std::int64_t> status(last.active.begin(), last.active.end());
-      ds.put("status", std::span<const std::int64_t>(status));
-    }
+    if (last.multiplier.size() > 0)
+      put_contact_state(
+          ds, last.multiplier, Eigen::VectorXd::Zero(last.multiplier.size()), last.normal_status,
+          std::vector<FrictionStatus>(last.normal_status.size(), FrictionStatus::none));
   }
   put_load_step_states(ds, result);
   ds.put_scalar("reaction_x", result.reaction_x);

@@ -1,0 +1,80 @@
+#pragma once
+// The laws of one contact element (thesis ch. 1, l.1284-1960): a normal law and a friction law
+// with their parameters. Forces are pressures here (a traction on Gamma3, the thesis's
+// multiplier densities); the nodal weight turns them into nodal forces.
+//
+// Kinematics of a contact node (contact_elements.hpp): q_n = u_n - d is the penetration beyond
+// the obstacle surface (u_n the normal displacement towards the obstacle, d the initial gap, so
+// q_n > 0 means the node is past the surface), q_t the tangential displacement (slip) along the
+// tangent t = (n2, -n1). One depth g describes every rigid wall of the code: the wall sits at
+// q_n = g, g beyond the obstacle surface.
+//   signorini               (1.22) the wall: q_n <= g, N >= 0, N (q_n - g) = 0 (g = 0: the
+//                           surface itself; g > 0: the body may sink g into the obstacle freely)
+//   compliance              (1.24) N = p(q_n) = cn [q_n]+, truncated min(cn [q_n]+, c3) (ch. 6);
+//                           no wall
+//   compliance-unilateral   (1.26) N = p(q_n) while q_n < g, a Signorini wall at q_n = g (g the
+//                           depth of the compliant layer)
+// and the friction laws, with s the slip bound (|T| <= s, T = s sign(q_t) where q_t != 0):
+//   none                    T = 0
+//   tresca                  (1.33) s = threshold, a given traction, on every contact element
+//                           whatever its normal state (the classical Tresca model)
+//   coulomb                 (1.35) s = mu N, N the whole normal pressure (compliance + wall)
+#include <Eigen/Core>
+
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace sig {
+
+/// The tangent of the contact frame at a node of obstacle normal n (pointing to the body's
+/// side): t = (n2, -n1), +x1 on the foundation x2 <= 0.
+inline Eigen::Vector2d contact_tangent(const Eigen::Vector2d& n) {
+  return {n.y(), -n.x()};
+}
+
+enum class NormalLaw { signorini = 1, compliance = 2, compliance_unilateral = 3 };
+enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2 };
+
+inline constexpr const char* normal_law_names = "signorini | compliance | compliance-unilateral";
+inline constexpr const char* friction_law_names = "none | tresca | coulomb";
+
+std::string to_string(NormalLaw law);
+std::string to_string(FrictionLaw law);
+/// The laws of their card names; sig::Error listing the names for anything else.
+NormalLaw normal_law_named(const std::string& name);
+FrictionLaw friction_law_named(const std::string& name);
+/// The laws of their CONT ids (the enum values); sig::Error for an unknown id.
+NormalLaw normal_law_of_id(long id);
+FrictionLaw friction_law_of_id(long id);
+
+struct ContactLaw {
+  NormalLaw normal = NormalLaw::signorini;
+  double cn = 0; ///< compliance slope, pressure per unit penetration (> 0 for compliance laws)
+  double c3 = std::numeric_limits<double>::infinity(); ///< truncation pressure (ch. 6), > 0
+  double depth = 0; ///< g >= 0: the wall at q_n = g (signorini, compliance-unilateral)
+  FrictionLaw friction = FrictionLaw::none;
+  double mu = 0;        ///< coulomb: friction coefficient >= 0
+  double threshold = 0; ///< tresca: slip bound, a traction >= 0
+
+  bool has_wall() const { return normal != NormalLaw::compliance; }
+  bool has_compliance() const { return normal != NormalLaw::signorini; }
+  bool has_friction() const { return friction != FrictionLaw::none; }
+  bool operator==(const ContactLaw&) const = default;
+};
+
+/// A parameter out of its range: the card field that holds it (cn, c3, g, mu, threshold) and
+/// why ("must be > 0 for law=compliance, got -1").
+struct LawProblem {
+  std::string field;
+  std::string what;
+};
+/// The first inadmissible parameter of `law`, or nothing. The one statement of the parameter
+/// ranges: the datafile reader (contact_cards.cpp) and the CONT reader (cont_io.cpp) both use
+/// it, each naming its own file and place.
+std::optional<LawProblem> law_problem(const ContactLaw& law);
+
+/// "signorini g=0, coulomb mu=0.3" (logs and dumps).
+std::string describe(const ContactLaw& law);
+
+} // namespace sig

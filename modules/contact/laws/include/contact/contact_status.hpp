@@ -1,0 +1,28 @@
+#pragma once
+// The statuses the thesis reports per contact node (SCENES.md "Contact and friction laws",
+// ALGORITHMS.md 0.5), read off the kernel's branches (contact_kernel.hpp) at the converged state:
+//   normal      free (no normal force), CN (compliance, 0 < q_n < g), CU (on the wall: the
+//               Signorini contact or the unilateral wall of (1.26))
+//   tangential  S= (stick), S+ / S- (slip towards +t / -t), or none (no friction law, or Coulomb
+//               friction on a node with no normal force, where no friction acts)
+// The integer codes are the ones DS files store (case.b arrays normal_status, friction_status).
+#include "contact/contact_kernel.hpp"
+
+#include <string>
+
+namespace sig {
+
+enum class NormalStatus { free = 0, compliance = 1, unilateral = 2 };
+enum class FrictionStatus { none = 0, stick = 1, slip_forward = 2, slip_backward = 3 };
+
+NormalStatus normal_status(const ContactKernel& kernel);
+FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel);
+
+/// "free", "CN", "CU"; "-", "S=", "S+", "S-" (the thesis's labels).
+std::string label(NormalStatus status);
+std::string label(FrictionStatus status);
+/// The statuses of their DS codes; sig::Error for a code out of range.
+NormalStatus normal_status_of_code(long code);
+FrictionStatus friction_status_of_code(long code);
+
+} // namespace sig

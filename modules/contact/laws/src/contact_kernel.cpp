@@ -1,0 +1,77 @@
+#include "contact/contact_kernel.hpp"
+
+#include "contact/complementarity.hpp"
+
+#include <algorithm>
+
+namespace sig {
+
+namespace {
+
+/// The penetration the compliance sees: clipped at the wall, where the wall takes over.
+double clipped(const ContactLaw& law, double q_n) {
+  return law.has_wall() ? std::min(q_n, law.depth) : q_n;
+}
+
+} // namespace
+
+double compliance_pressure(const ContactLaw& law, double q_n) {
+  if (!law.has_compliance()) return 0.0;
+  return truncated_normal_compliance(clipped(law, q_n), 0.0, law.cn, law.c3);
+}
+
+double d_compliance_pressure(const ContactLaw& law, double q_n) {
+  if (!law.has_compliance() || (law.has_wall() && q_n >= law.depth)) return 0.0;
+  return d_truncated_normal_compliance(q_n, 0.0, law.cn, law.c3);
+}
+
+ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n,
+                             double r_t) {
+  ContactKernel k;
+  // Normal: compliance P plus the wall's augmented multiplier Lambda.
+  k.compliance = compliance_pressure(law, x.q_n);
+  k.compliance_slope = d_compliance_pressure(law, x.q_n);
+  if (law.has_wall()) {
+    const double augmented = x.lambda + r_n * (x.q_n - law.depth);
+    k.wall_active = d_positive_part(augmented) > 0;
+    k.wall = positive_part(augmented);
+  }
+  const double chi = k.wall_active ? 1.0 : 0.0;
+  k.normal = k.compliance + k.wall;
+  k.d_force(0, kQn) = k.compliance_slope + chi * r_n;
+  k.d_force(0, kLambda) = chi;
+  k.complementarity[0] = x.lambda - k.wall;
+  k.d_complementarity(0, kQn) = -chi * r_n;
+  k.d_complementarity(0, kLambda) = 1.0 - chi;
+
+  // Tangential: the trial pressure projected on [-s, s].
+  switch (law.friction) {
+  case FrictionLaw::none:
+    break;
+  case FrictionLaw::tresca:
+    k.bound = law.threshold;
+    break;
+  case FrictionLaw::coulomb:
+    k.bound = law.mu * k.normal;
+    k.bound_slope = law.mu;
+    break;
+  }
+  if (law.has_friction()) {
+    const double z = x.t + r_t * x.q_t;
+    k.tangential = project_interval(z, k.bound);
+    k.stick = k.bound > 0 && d_project_interval_dz(z, k.bound) > 0;
+    if (k.stick) {
+      k.d_force(1, kQt) = r_t;
+      k.d_force(1, kT) = 1.0;
+    } else {
+      k.slip = z > 0 ? 1 : (z < 0 ? -1 : 0);
+      k.d_force.row(1) = k.slip * k.bound_slope * k.d_force.row(0);
+    }
+  }
+  k.complementarity[1] = x.t - k.tangential;
+  k.d_complementarity.row(1) = -k.d_force.row(1);
+  k.d_complementarity(1, kT) += 1.0;
+  return k;
+}
+
+} // namespace sig

@@ -1,0 +1,60 @@
+#include "contact/contact_status.hpp"
+
+#include "core/error.hpp"
+
+namespace sig {
+
+NormalStatus normal_status(const ContactKernel& kernel) {
+  if (kernel.wall_active) return NormalStatus::unilateral;
+  return kernel.compliance > 0 ? NormalStatus::compliance : NormalStatus::free;
+}
+
+FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel) {
+  if (!law.has_friction()) return FrictionStatus::none;
+  if (law.friction == FrictionLaw::coulomb && normal_status(kernel) == NormalStatus::free)
+    return FrictionStatus::none;
+  if (kernel.slip > 0) return FrictionStatus::slip_forward;
+  if (kernel.slip < 0) return FrictionStatus::slip_backward;
+  return FrictionStatus::stick;
+}
+
+std::string label(NormalStatus status) {
+  switch (status) {
+  case NormalStatus::free:
+    return "free";
+  case NormalStatus::compliance:
+    return "CN";
+  case NormalStatus::unilateral:
+    return "CU";
+  }
+  return "?";
+}
+
+std::string label(FrictionStatus status) {
+  switch (status) {
+  case FrictionStatus::none:
+    return "-";
+  case FrictionStatus::stick:
+    return "S=";
+  case FrictionStatus::slip_forward:
+    return "S+";
+  case FrictionStatus::slip_backward:
+    return "S-";
+  }
+  return "?";
+}
+
+NormalStatus normal_status_of_code(long code) {
+  SIG_VERIFY(code >= 0 && code <= 2,
+             "normal status code " << code << " is unknown; known: 0 = free, 1 = CN, 2 = CU");
+  return static_cast<NormalStatus>(code);
+}
+
+FrictionStatus friction_status_of_code(long code) {
+  SIG_VERIFY(code >= 0 && code <= 3, "friction status code "
+                                         << code
+                                         << " is unknown; known: 0 = none, 1 = S=, 2 = S+, 3 = S-");
+  return static_cast<FrictionStatus>(code);
+}
+
+} // namespace sig

@@ -1,0 +1,87 @@
+#pragma once
+// A linear bulk condensed onto its contact dofs (DESIGN.md "Inside the modules"): S w = f, with
+// S the Schur complement of the stiffness on the frame components of the contact nodes (normal
+// only when frictionless, normal and tangential with friction) and f the condensed load. Every
+// step of the contact driver is then a small dense problem, and this class makes each one cost
+// O(n^2) instead of a dense factorization:
+//
+//  - the step matrix of a node the step leaves in its default state (no imposed component, the
+//    method's default normal spring, no tangential force: a node off the obstacle) never
+//    changes. B = S + eps I + D0 (D0 the default springs, eps the proximal term below) is
+//    factorized ONCE, by Cholesky, with the nodes ordered by decreasing initial gap, so the
+//    nodes likely to touch come last;
+//  - the trailing block L22 of the factor gives the Schur complement L22 L22^T of B onto any
+//    tail of that order: a step solves the small dense problem of the tail that holds every
+//    node with non-default conditions (the contact zone), the rest by triangular solves with
+//    the leading block L11.
+// This is the primal elimination (the contact rows are eliminated, never inverted), so a
+// semi-coercive bulk (rigid modes held by contact alone) keeps its accuracy.
+//
+// Semi-coercive steps: every step carries a proximal term eps dw (eps = `regularization`). It
+// makes a step with too few contact nodes to hold the rigid modes well posed (the Hertz
+// problem's first iterate has one), and vanishes at convergence, where dw = 0.
+#include "solver/contact_bulk.hpp"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace sig {
+
+struct CondensedProblem {
+  Eigen::MatrixXd S;               ///< symmetric positive semi-definite, n x n
+  Eigen::VectorXd f;               ///< condensed load, n
+  std::vector<int> normal_dof;     ///< per contact node: its w_n among the n unknowns
+  std::vector<int> tangential_dof; ///< per contact node: its w_t, or empty without friction
+  Eigen::VectorXd gap;             ///< d per contact node: q_n = w_n - d
+  Eigen::VectorXd slip_origin;     ///< w_t where the slip is measured from (empty: 0)
+  double regularization = 0;       ///< eps of the proximal term, >= 0
+};
+
+class CondensedBulk final : public ContactBulk {
+public:
+  /// `default_normal_stiffness` (one per contact node, may be empty: zeros) is the normal
+  /// spring a node gets when nothing else is imposed on it (the projection method's Robin
+  /// term); `start` the first iterate (empty: 0). sig::Error for inconsistent sizes or dofs.
+  CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_normal_stiffness = {},
+                const Eigen::VectorXd& start = {});
+
+  int contacts() const override { return static_cast<int>(p_.normal_dof.size()); }
+  bool has_tangential() const override { return !p_.tangential_dof.empty(); }
+  Eigen::VectorXd penetration() const override;
+  Eigen::VectorXd slip() const override;
+  double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const override;
+  double force_scale() const override;
+  StepSolution solve(const std::vector<NodeConditions>& conditions,
+                     const Eigen::VectorXd& normal_force) override;
+  bool move(double alpha) override;
+  void keep() override { kept_ = w_; }
+  void restore() override { w_ = kept_; }
+  double displacement_norm() const override { return w_.norm(); }
+  double displacement_step() const override { return (w_ - base_).norm(); }
+  bool nonlinear() const override { return false; }
+
+  /// The iterate w (all n unknowns).
+  const Eigen::VectorXd& displacement() const { return w_; }
+  /// Unknowns of the last solve's dense tail problem (its size shows the contact zone).
+  int last_tail_size() const { return last_tail_; }
+
+private:
+  CondensedProblem p_;
+  Eigen::VectorXd default_stiffness_; ///< per unknown: D0
+  std::vector<int> order_;            ///< position -> unknown (far first)
+  std::vector<int> position_;         ///< unknown -> position
+  std::vector<int> node_start_;       ///< per contact node: the first position of its unknowns
+  std::vector<int> node_of_;          ///< per unknown: its contact node, or -1
+  Eigen::MatrixXd L_;                 ///< Cholesky factor of the permuted B (lower)
+  bool factorized_ = false;
+  int tail_start_ = -1; ///< position of the cached H
+  Eigen::MatrixXd H_;   ///< L22 L22^T for tail_start_
+  Eigen::VectorXd w_, base_, step_, kept_;
+  int last_tail_ = 0;
+
+  void factorize();
+  bool is_default(int node, const NodeConditions& c) const;
+};
+
+} // namespace sig

@@ -1,0 +1,87 @@
+#pragma once
+// The bulk as the contact Newton driver (contact_newton.hpp) sees it: never the mesh, only the
+// displacement of each contact node in its nodal frame (slip w_t along t, normal displacement
+// w_n towards the obstacle), the bulk residual, and one linearized solve with a condition on
+// each of those components. Two bulks implement it:
+//   CondensedBulk (condensed_bulk.hpp)  a linear bulk condensed once onto the contact dofs
+//   FiniteStrainBulk (solve stage)      the hyperelastic residual and tangent of the assembly
+//
+// Sign convention of a linearized step (frames at the contact nodes): with r the bulk residual
+// (internal minus external force), dw the increment and N, T the nodal contact forces after the
+// step (N >= 0 pushes the node away from the obstacle, i.e. along -w_n; T opposes slip),
+//     r + J dw + N e_n + T e_t = 0     on the two rows of each contact node,
+//     r + J dw = 0                     on the other free dofs.
+// Each contact component is either imposed (its increment given, its force the reaction) or
+// carries a force law linear in the increments:
+//     N = force + stiffness dw_n
+//     T = force + stiffness dw_t + coupling N     (Coulomb's slip: T = sigma mu N)
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace sig {
+
+struct DofCondition {
+  bool imposed = false;
+  double value = 0; ///< the increment, where imposed
+  double force = 0; ///< otherwise: the force law of the header
+  double stiffness = 0;
+  double coupling = 0; ///< tangential component only
+  bool operator==(const DofCondition&) const = default;
+};
+
+struct NodeConditions {
+  DofCondition normal, tangential;
+};
+
+struct StepSolution {
+  Eigen::VectorXd normal_increment;     ///< dw_n per contact node
+  Eigen::VectorXd tangential_increment; ///< dw_t per contact node (0 without tangential dofs)
+  Eigen::VectorXd normal_force;         ///< N after the step, per node
+  Eigen::VectorXd tangential_force;     ///< T after the step, per node
+};
+
+class ContactBulk {
+public:
+  virtual ~ContactBulk() = default;
+
+  virtual int contacts() const = 0;
+  /// True if the contact nodes' slips are unknowns (friction); otherwise only w_n is, and the
+  /// tangential conditions are ignored (T = 0).
+  virtual bool has_tangential() const = 0;
+
+  /// Penetration q_n = w_n - d beyond the obstacle surface and slip q_t, per contact node, at
+  /// the iterate.
+  virtual Eigen::VectorXd penetration() const = 0;
+  virtual Eigen::VectorXd slip() const = 0;
+
+  /// ||r + contact forces|| over the free dofs at the iterate, with nodal contact forces N and T.
+  virtual double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const = 0;
+  /// The force the residual test divides by.
+  virtual double force_scale() const = 0;
+
+  /// The linearized step at the iterate under `conditions` (one per contact node); `normal_force`
+  /// holds the present normal forces (a curved obstacle turns them into stiffness). Throws
+  /// sig::Error when the step matrix cannot be factorized.
+  virtual StepSolution solve(const std::vector<NodeConditions>& conditions,
+                             const Eigen::VectorXd& normal_force) = 0;
+  /// Move the iterate to (iterate of the last solve) + alpha (its increment); false, and the
+  /// iterate undefined until the next move, if that state is outside the bulk's domain (an
+  /// inverted element).
+  virtual bool move(double alpha) = 0;
+  /// A line search's bookkeeping: keep() remembers the present (admissible) iterate, restore()
+  /// returns to the kept one without evaluating it again.
+  virtual void keep() = 0;
+  virtual void restore() = 0;
+
+  /// ||u|| at the iterate and ||u - u of the last solve||, for the increment test.
+  virtual double displacement_norm() const = 0;
+  virtual double displacement_step() const = 0;
+
+  /// A bulk whose residual is not linear in u: its steps need a line search.
+  virtual bool nonlinear() const = 0;
+  /// The bulk's own targets are met (a load step's imposed displacements reached).
+  virtual bool settled() const { return true; }
+};
+
+} // namespace sig

@@ -1,0 +1,58 @@
+#pragma once
+// The four contact methods of the thesis as policies of the one semi-smooth Newton driver
+// (contact_newton.hpp). Each is the Alart-Curnier kernel of contact/contact_kernel.hpp with its
+// own augmentation parameters and its own treatment of a node off the wall; one class and file
+// each (src/):
+//   alm         Alart-Curnier augmented Lagrangian (3.7)-(3.19), generalized Newton on
+//               (u, lambda, t): r_n = r_t = r; the thesis's stopping test (iii), without the
+//               active set
+//   pdas        primal-dual active set (3.20)-(3.32): the same Newton steps with gamma; active
+//               nodes are Dirichlet conditions, inactive ones Neumann (lambda = 0)
+//   projection  iterative projection (7.16)-(7.22): active iff (q_n - g) + c lambda >= 0, i.e.
+//               r_n = 1 / c; a node off the wall gets the Robin condition (7.22), a normal
+//               spring w / c, and the multiplier the active-set test sees is 0 at a node the
+//               previous iteration left inactive (iterative_projection.cpp says why).
+//               [choice] Chapter 7 is frictionless; the tangential test uses r_t = 1 / c too
+//   penalty     Remark 3.2: the kernel with lambda = t = 0 and r the foundation stiffness per
+//               unit area: the contact forces are springs, there are no multipliers
+#include <memory>
+#include <string>
+
+namespace sig {
+
+struct ContactSolverParameters {
+  std::string method = "pdas"; ///< alm | penalty | pdas | projection
+  double r = 100;              ///< ALM augmentation / penalty stiffness
+  double gamma = 100;          ///< PDAS
+  double c = 100;              ///< projection
+  double eps = 1e-5;           ///< stopping tolerance of test (iv)
+  int max_iterations = 100;
+};
+
+/// Card field `SOLVER method=` of the contact methods.
+inline constexpr const char* contact_method_names = "alm | penalty | pdas | projection";
+
+class ContactMethod {
+public:
+  virtual ~ContactMethod() = default;
+  virtual std::string name() const = 0;
+  /// r_n and r_t of the kernel (pressure per unit length).
+  virtual double normal_augmentation() const = 0;
+  virtual double tangential_augmentation() const = 0;
+  /// False for penalty: the kernel's forces are the contact forces, nothing is imposed.
+  virtual bool has_multipliers() const { return true; }
+  /// The normal multiplier the active-set test sees at a node the previous iteration left off
+  /// the wall (`was_inactive`; false at the first iteration).
+  virtual double tested_multiplier(double lambda, bool /*was_inactive*/) const { return lambda; }
+  /// The normal spring of a node off the wall, of weight w (0: the Neumann condition lambda = 0).
+  virtual double inactive_stiffness(double /*weight*/) const { return 0.0; }
+  /// Test (iv) asks the statuses to repeat; alm's test (iii) does not.
+  virtual bool needs_settled_statuses() const { return true; }
+  /// Unknowns beyond the displacements, per contact node (alm: its Lagrange node's multipliers).
+  virtual int multiplier_unknowns(bool /*friction*/) const { return 0; }
+};
+
+/// The method of `parameters.method`; sig::Error for an unknown name.
+std::unique_ptr<ContactMethod> make_contact_method(const ContactSolverParameters& parameters);
+
+} // namespace sig

@@ -1,0 +1,84 @@
+#pragma once
+// The one semi-smooth Newton driver of every contact solve (static linear, finite strain, the
+// time steps): generalized Newton (3.11) on (u, lambda, t) for the per-node kernel of
+// contact/contact_kernel.hpp, with the method (contact_method.hpp) as a policy and the bulk
+// (contact_bulk.hpp) behind an interface. Its loop is the thesis's, steps (i)-(iv) of ch. 3/7:
+//   (i)   start from the given iterate: the bulk's displacement and `iterate` (warm start);
+//   (ii)  per node, the kernel's branches at the iterate: wall active or not, stick or slip;
+//   (iii) one linearized step with the matching condition on each node: on the wall q_n = g
+//         (Dirichlet, the multiplier its reaction), off it lambda = 0 (or projection's Robin
+//         spring), the compliance as a spring, stick q_t = 0, slip t = sigma s (for Coulomb
+//         s = mu N, coupled to the normal force); nonlinear bulks search the step length;
+//   (iv)  stop when ||x(k+1) - x(k)|| <= eps ||x(k+1)||, ||R(x(k+1))|| <= eps and (but for
+//         alm) the branches repeat, x = (u, lambda / w, t / w) with the multipliers as
+//         pressures, R = (equilibrium, w C_n, w C_t) relative to the bulk's force scale.
+// A solve that does not converge is a result: converged = false, failure and the history.
+#include "contact/contact_law.hpp"
+#include "contact/contact_status.hpp"
+#include "solver/contact_bulk.hpp"
+#include "solver/contact_method.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace sig {
+
+/// What the driver knows of the contact elements: their laws and nodal weights (no mesh).
+struct ContactSetting {
+  std::vector<ContactLaw> law;
+  Eigen::VectorXd weight; ///< w > 0: nodal force = pressure x w
+  int size() const { return static_cast<int>(law.size()); }
+  bool has_friction() const;
+};
+
+/// The branch of the kernel a node's linear step used (step (ii)).
+struct NodeBranch {
+  bool wall = false;
+  bool stick = false;
+  int slip = 0;
+  bool operator==(const NodeBranch&) const = default;
+};
+
+/// The multiplier part of the Newton vector, nodal forces (pressure x weight), and the branches
+/// of the last iteration: a warm start in, the solution out. Empty vectors start from zero.
+struct ContactIterate {
+  Eigen::VectorXd lambda; ///< wall multipliers
+  Eigen::VectorXd t;      ///< tangential multipliers
+  std::vector<NodeBranch> branch;
+};
+
+struct IterationRecord {
+  int active = 0;       ///< nodes on the wall in the iteration's step
+  int stick = 0;        ///< nodes sticking
+  int slip = 0;         ///< nodes slipping with a friction bound s > 0
+  double residual = 0;  ///< relative residual after the iteration
+  double increment = 0; ///< relative increment ||x(k+1) - x(k)|| / ||x(k+1)||
+  double step = 0;      ///< E_k = ||x(k+1) - x(k)||, the measure of the thesis's Figs 7.14-7.16
+};
+
+struct ContactNewtonOptions {
+  double eps = 1e-5;
+  int max_iterations = 100;
+};
+
+struct ContactNewtonResult {
+  bool converged = false;
+  std::string failure; ///< why it stopped without converging
+  std::vector<IterationRecord> history;
+  std::vector<double> step_length;  ///< line-search alpha per iteration (1 for linear bulks)
+  Eigen::VectorXd normal_force;     ///< N per node at the end (nodal force, >= 0 at a solution)
+  Eigen::VectorXd tangential_force; ///< T per node
+  std::vector<NormalStatus> normal_status;     ///< of the last iteration's branches
+  std::vector<FrictionStatus> friction_status; ///< of the last iteration's branches
+  int iterations() const { return static_cast<int>(history.size()); }
+};
+
+/// Newton from the bulk's iterate and `iterate`, which end at the last iterate. sig::Error for
+/// inconsistent sizes; non-convergence is returned.
+ContactNewtonResult solve_contact(ContactBulk& bulk, const ContactSetting& setting,
+                                  const ContactMethod& method, const ContactNewtonOptions& options,
+                                  ContactIterate& iterate);
+
+} // namespace sig

@@ -1,0 +1,258 @@
+// The condensed linear bulk (condensed_bulk.hpp): one Cholesky factorization of the default step
+// matrix, and each step a dense problem on the tail of the order that holds the contact zone.
+#include "solver/condensed_bulk.hpp"
+
+#include "core/error.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <algorithm>
+#include <numeric>
+
+namespace sig {
+
+CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_normal_stiffness,
+                             const Eigen::VectorXd& start)
+    : p_(std::move(problem)) {
+  const int n = static_cast<int>(p_.f.size());
+  const int m = contacts();
+  SIG_VERIFY(p_.S.rows() == n && p_.S.cols() == n, "condensed bulk: S is " << p_.S.rows() << " x "
+                                                                           << p_.S.cols() << " for "
+                                                                           << n << " unknowns");
+  SIG_VERIFY(p_.gap.size() == m &&
+                 (p_.tangential_dof.empty() || static_cast<int>(p_.tangential_dof.size()) == m),
+             "condensed bulk: one gap (and one tangential dof, if any) per contact node");
+  if (p_.slip_origin.size() == 0) p_.slip_origin = Eigen::VectorXd::Zero(m);
+  if (default_normal_stiffness.size() == 0) default_normal_stiffness = Eigen::VectorXd::Zero(m);
+  SIG_VERIFY(p_.slip_origin.size() == m && default_normal_stiffness.size() == m,
+             "condensed bulk: one slip origin and one default stiffness per contact node");
+  SIG_VERIFY(p_.regularization >= 0, "condensed bulk: negative regularization");
+
+  node_of_.assign(n, -1);
+  default_stiffness_ = Eigen::VectorXd::Zero(n);
+  const auto claim = [&](int dof, int node) {
+    SIG_VERIFY(dof >= 0 && dof < n && node_of_[dof] < 0, "condensed bulk: contact node "
+                                                             << node + 1 << " has dof " << dof
+                                                             << ", out of range or shared");
+    node_of_[dof] = node;
+  };
+  for (int p = 0; p < m; ++p) {
+    claim(p_.normal_dof[p], p);
+    if (has_tangential()) claim(p_.tangential_dof[p], p);
+    default_stiffness_[p_.normal_dof[p]] = default_normal_stiffness[p];
+  }
+
+  // Far first: the unknowns of no contact node, then the nodes by decreasing gap (stable, so
+  // equal gaps keep the element order), each node's unknowns together.
+  for (int d = 0; d < n; ++d)
+    if (node_of_[d] < 0) order_.push_back(d);
+  std::vector<int> nodes(m);
+  std::iota(nodes.begin(), nodes.end(), 0);
+  std::stable_sort(nodes.begin(), nodes.end(), [&](int a, int b) { return p_.gap[a] > p_.gap[b]; });
+  node_start_.assign(m, 0);
+  for (int p : nodes) {
+    node_start_[p] = static_cast<int>(order_.size());
+    if (has_tangential()) order_.push_back(p_.tangential_dof[p]);
+    order_.push_back(p_.normal_dof[p]);
+  }
+  position_.assign(n, 0);
+  for (int k = 0; k < n; ++k)
+    position_[order_[k]] = k;
+
+  w_ = start.size() ? start : Eigen::VectorXd::Zero(n);
+  SIG_VERIFY(w_.size() == n, "condensed bulk: start of size " << w_.size() << " for " << n);
+  base_ = w_;
+  step_ = Eigen::VectorXd::Zero(n);
+}
+
+void CondensedBulk::factorize() {
+  const int n = static_cast<int>(p_.f.size());
+  Eigen::MatrixXd B(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      B(i, j) = p_.S(order_[i], order_[j]);
+  for (int k = 0; k < n; ++k)
+    B(k, k) += p_.regularization + default_stiffness_[order_[k]];
+  Eigen::LLT<Eigen::MatrixXd> cholesky(B);
+  SIG_VERIFY(cholesky.info() == Eigen::Success,
+             "the condensed step matrix is not positive definite (a rigid mode that neither the "
+             "bulk nor the proximal term holds)");
+  L_ = cholesky.matrixL();
+  factorized_ = true;
+}
+
+bool CondensedBulk::is_default(int node, const NodeConditions& c) const {
+  DofCondition normal;
+  normal.stiffness = default_stiffness_[p_.normal_dof[node]];
+  return c.normal == normal && (!has_tangential() || c.tangential == DofCondition{});
+}
+
+Eigen::VectorXd CondensedBulk::penetration() const {
+  Eigen::VectorXd q(contacts());
+  for (int p = 0; p < contacts(); ++p)
+    q[p] = w_[p_.normal_dof[p]] - p_.gap[p];
+  return q;
+}
+
+Eigen::VectorXd CondensedBulk::slip() const {
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(contacts());
+  if (has_tangential())
+    for (int p = 0; p < contacts(); ++p)
+      q[p] = w_[p_.tangential_dof[p]] - p_.slip_origin[p];
+  return q;
+}
+
+double CondensedBulk::equilibrium_residual(const Eigen::VectorXd& N,
+                                           const Eigen::VectorXd& T) const {
+  Eigen::VectorXd r = p_.S * w_ - p_.f;
+  for (int p = 0; p < contacts(); ++p) {
+    r[p_.normal_dof[p]] += N[p];
+    if (has_tangential()) r[p_.tangential_dof[p]] += T[p];
+  }
+  return r.norm();
+}
+
+double CondensedBulk::force_scale() const {
+  return std::max(p_.f.norm(), 1e-300);
+}
+
+StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
+                                  const Eigen::VectorXd&) {
+  const int n = static_cast<int>(p_.f.size());
+  const int m = contacts();
+  SIG_VERIFY(static_cast<int>(conditions.size()) == m, "condensed bulk: one condition per node");
+  if (!factorized_) factorize();
+
+  // 1. The tail: from the first position of a node with non-default conditions.
+  int start = n;
+  for (int p = 0; p < m; ++p)
+    if (!is_default(p, conditions[p])) start = std::min(start, node_start_[p]);
+  const int tail = n - start;
+  last_tail_ = tail;
+  if (tail > 0 && start != tail_start_) {
+    const auto L22 = L_.bottomRightCorner(tail, tail).triangularView<Eigen::Lower>();
+    H_ = L22 * L_.bottomRightCorner(tail, tail).transpose();
+    tail_start_ = start;
+  }
+
+  // 2. The step in the new iterate z = w + dw, not in dw: its right side f + (eps + D0) w has no
+  //    cancellation (S w - f would carry round-off of ||S|| ||w|| into every reaction, and the
+  //    increment test would never see a repeated step settle). Condensed onto the tail:
+  //    y = L11^-1 b_far, c = b_tail - L21 y.
+  Eigen::VectorXd b(n);
+  for (int k = 0; k < n; ++k) {
+    const int d = order_[k];
+    b[k] = p_.f[d] + (p_.regularization + default_stiffness_[d]) * w_[d];
+  }
+  const auto L11 = L_.topLeftCorner(start, start).triangularView<Eigen::Lower>();
+  const Eigen::VectorXd y = L11.solve(b.head(start));
+  const Eigen::VectorXd c = b.tail(tail) - L_.bottomLeftCorner(tail, start) * y;
+
+  // 3. The tail problem: per tail unknown i, (H z)_i - D0_i (z_i - w_i) + F_i = c_i, F_i the
+  //    contact force of its condition, F = force + k (z - w) (+ coupling N); imposed unknowns
+  //    z = w + value move to the right side, Coulomb's coupling brings in the normal row of the
+  //    node (its reaction) or its spring.
+  const auto condition = [&](int i) -> const DofCondition& {
+    const int dof = order_[start + i];
+    const NodeConditions& node = conditions[node_of_[dof]];
+    return dof == p_.normal_dof[node_of_[dof]] ? node.normal : node.tangential;
+  };
+  const auto k0 = [&](int i) { return default_stiffness_[order_[start + i]]; };
+  const auto now = [&](int i) { return w_[order_[start + i]]; };
+  const auto normal_of = [&](int i) {
+    return position_[p_.normal_dof[node_of_[order_[start + i]]]] - start;
+  };
+  Eigen::VectorXd z_tail = Eigen::VectorXd::Zero(tail);
+  std::vector<int> unknown(tail, -1), free;
+  for (int i = 0; i < tail; ++i)
+    if (condition(i).imposed)
+      z_tail[i] = now(i) + condition(i).value;
+    else {
+      unknown[i] = static_cast<int>(free.size());
+      free.push_back(i);
+    }
+  const int nu = static_cast<int>(free.size());
+  Eigen::MatrixXd A(nu, nu);
+  Eigen::VectorXd rhs(nu);
+  bool coupled = false;
+  Eigen::RowVectorXd row(tail);
+  for (int a = 0; a < nu; ++a) {
+    const int i = free[a];
+    const DofCondition& ci = condition(i);
+    row = H_.row(i);
+    row[i] += ci.stiffness - k0(i);
+    double right = c[i] - ci.force + (ci.stiffness - k0(i)) * now(i);
+    if (ci.coupling != 0) {
+      coupled = true;
+      const int nrow = normal_of(i);
+      const DofCondition& cn = condition(nrow);
+      if (cn.imposed) { // N = c_n - (H z)_n + D0_n (z_n - w_n), the reaction
+        row -= ci.coupling * H_.row(nrow);
+        right -= ci.coupling * (c[nrow] + k0(nrow) * cn.value);
+      } else { // N = force + k (z_n - w_n)
+        row[nrow] += ci.coupling * cn.stiffness;
+        right -= ci.coupling * (cn.force - cn.stiffness * now(nrow));
+      }
+    }
+    for (int j = 0; j < tail; ++j)
+      if (unknown[j] < 0)
+        right -= row[j] * z_tail[j];
+      else
+        A(a, unknown[j]) = row[j];
+    rhs[a] = right;
+  }
+  if (nu > 0) {
+    Eigen::VectorXd x;
+    if (!coupled) {
+      const Eigen::LLT<Eigen::MatrixXd> cholesky(A);
+      SIG_VERIFY(cholesky.info() == Eigen::Success,
+                 "the contact step matrix is not positive definite (" << nu << " free of " << tail
+                                                                      << " tail unknowns)");
+      x = cholesky.solve(rhs);
+    } else {
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+      x = lu.solve(rhs);
+    }
+    SIG_VERIFY(x.allFinite(), "the contact step matrix is singular");
+    for (int a = 0; a < nu; ++a)
+      z_tail[free[a]] = x[a];
+  }
+
+  // 4. Back to the far unknowns, z_far = L11^-T (y - L21^T z_tail), and the contact forces:
+  //    F = c - H z + D0 (z - w) on the tail, the default spring D0 (z - w) elsewhere.
+  Eigen::VectorXd z(n);
+  z.tail(tail) = z_tail;
+  z.head(start) = L11.transpose().solve(y - L_.bottomLeftCorner(tail, start).transpose() * z_tail);
+  const Eigen::VectorXd F =
+      tail > 0 ? Eigen::VectorXd(c - H_ * z_tail) : Eigen::VectorXd(Eigen::VectorXd::Zero(0));
+  for (int k = 0; k < n; ++k)
+    step_[order_[k]] = z[k] - w_[order_[k]];
+
+  StepSolution s;
+  s.normal_increment.resize(m);
+  s.tangential_increment = Eigen::VectorXd::Zero(m);
+  s.normal_force.resize(m);
+  s.tangential_force = Eigen::VectorXd::Zero(m);
+  const auto force_at = [&](int dof) {
+    const int k = position_[dof];
+    const double spring = default_stiffness_[dof] * step_[dof];
+    return k >= start ? F[k - start] + spring : spring;
+  };
+  for (int p = 0; p < m; ++p) {
+    s.normal_increment[p] = step_[p_.normal_dof[p]];
+    s.normal_force[p] = force_at(p_.normal_dof[p]);
+    if (has_tangential()) {
+      s.tangential_increment[p] = step_[p_.tangential_dof[p]];
+      s.tangential_force[p] = force_at(p_.tangential_dof[p]);
+    }
+  }
+  base_ = w_;
+  return s;
+}
+
+bool CondensedBulk::move(double alpha) {
+  w_ = base_ + alpha * step_;
+  return true;
+}
+
+} // namespace sig

@@ -1,0 +1,25 @@
+#include "solver/condensed_contact.hpp"
+
+namespace sig {
+
+CondensedSolution solve_condensed_contact(CondensedProblem problem, const ContactSetting& setting,
+                                          const ContactSolverParameters& parameters,
+                                          const Eigen::VectorXd& start) {
+  const std::unique_ptr<ContactMethod> method = make_contact_method(parameters);
+  const int m = setting.size();
+  Eigen::VectorXd default_stiffness(m);
+  for (int p = 0; p < m; ++p)
+    default_stiffness[p] =
+        setting.law[p].has_wall() ? method->inactive_stiffness(setting.weight[p]) : 0.0;
+  const bool friction = !problem.tangential_dof.empty();
+  CondensedBulk bulk(std::move(problem), default_stiffness, start);
+  ContactIterate iterate;
+  CondensedSolution s;
+  s.contact =
+      solve_contact(bulk, setting, *method, {parameters.eps, parameters.max_iterations}, iterate);
+  s.w = bulk.displacement();
+  s.multiplier_unknowns = m * method->multiplier_unknowns(friction);
+  return s;
+}
+
+} // namespace sig

@@ -1,0 +1,107 @@
+#pragma once
+// The hyperelastic bulk in large deformation as the contact Newton driver sees it
+// (solver/contact_bulk.hpp): the residual f_int(u) - s f_ext and the tangent of the assembly
+// module (assembly/nonlinear.hpp), with u = s u_D on the Dirichlet dofs at load factor s.
+//
+// Contact kinematics at the CURRENT position x_p = X_p + u_p of each contact node: the
+// penetration q_n = -d(x_p) beyond the obstacle surface, and the frame (t_p, -n_p) of the
+// obstacle's normal n_p = n(x_p) (the foundation's normal, thesis Remark 1.1). The Jacobian is
+// consistent for any obstacle whose d is the true distance (grad d = n): the constraint rows use
+// n, and the contact force N_p n(x_p) adds -N_p dn/dx (the obstacle's curvature, zero for a
+// plane) to the tangent; dn/dx is a central difference of Obstacle::normal, since the obstacle
+// interface offers n only. Friction is not modelled in large deformation yet: the bulk has no
+// tangential unknowns.
+//
+// Cost: the Newton matrix keeps ONE sparsity pattern for the whole solve (newton_matrix.hpp), so
+// the linear solver's symbolic analysis is done once and a step costs one numeric factorization
+// and solve. A move to alpha = 1 is assembled with its tangent (it is accepted in most
+// iterations), the other line-search trials with the force only; an accepted force-only trial
+// gets its tangent when the next step needs it. evaluations() counts the assemblies.
+#include "assembly/nonlinear.hpp"
+#include "assembly/pattern.hpp"
+#include "contact/contact_elements.hpp"
+#include "contact/obstacle.hpp"
+#include "solver/contact_bulk.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/newton_matrix.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sig {
+
+struct Mesh;
+struct MaterialTable;
+
+/// The data of the hyperelastic contact problem at the final load (scaled by the load factor).
+/// The contact nodes must carry no Dirichlet condition.
+struct FiniteStrainProblem {
+  const Mesh* mesh = nullptr;
+  const MaterialTable* materials = nullptr; ///< every sub-domain hyperelastic
+  std::vector<int> dirichlet_dofs;          ///< sorted, unique, dof = 2 node + component
+  Eigen::VectorXd dirichlet_values;         ///< imposed displacement at the final step
+  Eigen::VectorXd load;                     ///< external nodal force at the final step (or empty)
+  const ContactElements* contact = nullptr; ///< may be null or empty: no contact
+  const Obstacle* obstacle = nullptr;       ///< required when there are contact elements
+};
+
+class FiniteStrainBulk final : public ContactBulk {
+public:
+  /// At u = 0. `backend`: cholmod (spd tangent only) | umfpack | mumps; `eps` the tolerance of
+  /// settled() on the Dirichlet values. sig::Error for inconsistent input (sizes, a Dirichlet
+  /// contact node, an inverted reference configuration).
+  FiniteStrainBulk(const FiniteStrainProblem& problem, const std::string& backend, double eps);
+
+  /// The load factor s of the next solves (the targets of the Dirichlet dofs become s u_D).
+  void set_load_factor(double s);
+
+  int contacts() const override { return contacts_; }
+  bool has_tangential() const override { return false; }
+  Eigen::VectorXd penetration() const override { return now_.penetration; }
+  Eigen::VectorXd slip() const override { return Eigen::VectorXd::Zero(contacts_); }
+  double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const override;
+  double force_scale() const override;
+  StepSolution solve(const std::vector<NodeConditions>& conditions,
+                     const Eigen::VectorXd& normal_force) override;
+  bool move(double alpha) override;
+  void keep() override { std::swap(now_, kept_); }
+  void restore() override { std::swap(now_, kept_); }
+  double displacement_norm() const override { return now_.u.norm(); }
+  double displacement_step() const override { return (now_.u - base_).norm(); }
+  bool nonlinear() const override { return true; }
+  bool settled() const override;
+
+  const Eigen::VectorXd& displacement() const { return now_.u; }
+  /// Hyperelastic assemblies so far (line-search trials and completed tangents).
+  int evaluations() const { return evaluations_; }
+
+private:
+  struct State {
+    Eigen::VectorXd u;
+    HyperelasticState bulk;
+    Eigen::VectorXd penetration;         ///< q_n per contact node
+    std::vector<Eigen::Vector2d> normal; ///< obstacle normal at the current position
+    bool has_tangent = false;            ///< bulk.tangent belongs to u
+  };
+
+  const FiniteStrainProblem& problem_;
+  int contacts_ = 0;
+  double eps_;
+  SparsityPattern pattern_;
+  std::vector<char> dirichlet_;
+  std::unique_ptr<LinearSolver> solver_;
+  std::unique_ptr<NewtonMatrix> J_;
+  double load_factor_ = 1;
+  State now_, kept_;
+  Eigen::VectorXd base_, step_;
+  int evaluations_ = 0;
+
+  int node(int p) const { return problem_.contact->node[p]; }
+  Eigen::VectorXd load() const;
+  /// Fill s at s.u, the tangent only `with_tangent`; false outside the law's domain.
+  bool evaluate(State& s, bool with_tangent);
+  Eigen::Matrix2d curvature_block(int p, double force) const;
+};
+
+} // namespace sig

@@ -1,0 +1,26 @@
+#pragma once
+// DS "B", the solution of sig-solve (MODULEF's B: global vectors). Arrays: u (2 dofs per node,
+// interleaved), method, linear (backend), converged, iterations, dofs, failure; for contact
+// cases the contact state (put_contact_state) and history_active, history_stick, history_slip,
+// history_residual, history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||); scalars
+// time_<phase> in seconds.
+#include "solver/static_solve.hpp"
+
+#include <filesystem>
+
+namespace sig {
+
+class Ds;
+
+/// The contact state per element: multiplier (normal nodal force), tangential_multiplier,
+/// normal_status and friction_status (codes of contact/contact_status.hpp) and status (1 where
+/// the normal status is not free, 0 elsewhere: the frictionless code, kept for old readers).
+void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::VectorXd& tangential,
+                       const std::vector<NormalStatus>& normal_status,
+                       const std::vector<FrictionStatus>& friction_status);
+
+void write_solution(const std::filesystem::path& path, const StaticSolution& solution,
+                    const std::string& method, const std::string& backend,
+                    const std::string& title);
+
+} // namespace sig

@@ -1,0 +1,40 @@
+#pragma once
+// The static problem of sig-solve: a linear elastic bulk, with or without node-to-rigid contact.
+// Without contact it is one factorization and one solve. With contact the stiffness is turned
+// into nodal frames (tangent, normal) at the contact nodes and condensed once onto their normal
+// displacements, and their slips when some element has friction (one sparse factorization,
+// solver/schur.hpp); the contact method then iterates on the small dense problem
+// (solver/condensed_bulk.hpp) with the one Newton driver (solver/contact_newton.hpp).
+#include "assembly/system.hpp"
+#include "contact/contact_elements.hpp"
+#include "contact/contact_status.hpp"
+#include "solver/contact_method.hpp"
+#include "solver/contact_newton.hpp"
+
+#include <map>
+#include <string>
+
+namespace sig {
+
+struct StaticSolution {
+  Eigen::VectorXd u;          ///< full displacement (2 dofs per node)
+  Eigen::VectorXd multiplier; ///< normal contact force per element (empty without contact)
+  Eigen::VectorXd tangential; ///< tangential contact force per element
+  std::vector<NormalStatus> normal_status;
+  std::vector<FrictionStatus> friction_status;
+  bool converged = true;
+  std::string failure;
+  std::vector<IterationRecord> history;
+  int unknowns = 0;                      ///< dofs of the Newton vector, as the thesis counts them
+  std::map<std::string, double> seconds; ///< factorize, frames, schur, solve
+};
+
+StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::string& backend);
+
+/// `start` (empty: 0) is the first iterate of the displacement, 2 dofs per node: a warm start,
+/// or the small rigid shift a semi-coercive body may need to start from several contact nodes.
+StaticSolution solve_static_contact(const LinearSystem& system, const ContactElements& contact,
+                                    const ContactSolverParameters& parameters,
+                                    const std::string& backend, const Eigen::VectorXd& start = {});
+
+} // namespace sig

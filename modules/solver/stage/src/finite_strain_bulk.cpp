@@ -1,0 +1,186 @@
+// The hyperelastic bulk of the large-deformation contact solve (finite_strain_bulk.hpp).
+#include "solver/finite_strain_bulk.hpp"
+
+#include "core/error.hpp"
+#include "mesh/mesh.hpp"
+#include "solver/nodal_frames.hpp"
+
+#include <algorithm>
+
+namespace sig {
+
+namespace {
+
+/// Relative step of the central differences of the obstacle normal (error O(h^2) ~ 1e-12,
+/// round-off ~ 1e-16 / h ~ 1e-10 of the curvature).
+constexpr double kNormalDifferenceStep = 1e-6;
+
+} // namespace
+
+FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std::string& backend,
+                                   double eps)
+    : problem_(problem), eps_(eps), pattern_(*problem.mesh) {
+  SIG_VERIFY(problem.mesh && problem.materials, "finite-strain contact needs a mesh and materials");
+  const int ndof = 2 * problem.mesh->num_nodes();
+  contacts_ = problem.contact ? problem.contact->size() : 0;
+  SIG_VERIFY(contacts_ == 0 || problem.obstacle, "contact elements without an obstacle");
+  SIG_VERIFY(problem.load.size() == 0 || problem.load.size() == ndof,
+             "load has " << problem.load.size() << " values for " << ndof << " dofs");
+  SIG_VERIFY(static_cast<Eigen::Index>(problem.dirichlet_dofs.size()) ==
+                 problem.dirichlet_values.size(),
+             problem.dirichlet_dofs.size()
+                 << " Dirichlet dofs but " << problem.dirichlet_values.size() << " values");
+  dirichlet_.assign(ndof, 0);
+  for (std::size_t k = 0; k < problem.dirichlet_dofs.size(); ++k) {
+    const int dof = problem.dirichlet_dofs[k];
+    SIG_VERIFY(dof >= 0 && dof < ndof && (k == 0 || dof > problem.dirichlet_dofs[k - 1]),
+               "Dirichlet dofs must be sorted, unique and < " << ndof);
+    dirichlet_[dof] = 1;
+  }
+  std::vector<int> contact_nodes(contacts_);
+  for (int p = 0; p < contacts_; ++p) {
+    contact_nodes[p] = node(p);
+    for (int a = 0; a < 2; ++a)
+      SIG_VERIFY(!dirichlet_[2 * node(p) + a],
+                 "contact node " << node(p) + 1 << " has a Dirichlet condition");
+  }
+  solver_ =
+      make_linear_solver(backend, backend == "cholmod" ? MatrixKind::spd : MatrixKind::symmetric);
+  J_ = std::make_unique<NewtonMatrix>(pattern_, dirichlet_, contact_nodes);
+  now_.u = Eigen::VectorXd::Zero(ndof);
+  SIG_VERIFY(evaluate(now_, true), "the reference configuration has an inverted triangle");
+  base_ = now_.u;
+  step_ = Eigen::VectorXd::Zero(ndof);
+}
+
+void FiniteStrainBulk::set_load_factor(double s) {
+  load_factor_ = s;
+}
+
+Eigen::VectorXd FiniteStrainBulk::load() const {
+  return problem_.load.size() ? Eigen::VectorXd(load_factor_ * problem_.load)
+                              : Eigen::VectorXd(Eigen::VectorXd::Zero(now_.u.size()));
+}
+
+bool FiniteStrainBulk::evaluate(State& s, bool with_tangent) {
+  ++evaluations_;
+  // The assembly refuses an inverted triangle or a law without admissible state there.
+  try {
+    if (with_tangent)
+      assemble_hyperelastic(*problem_.mesh, *problem_.materials, pattern_, s.u, s.bulk);
+    else
+      assemble_hyperelastic_force(*problem_.mesh, *problem_.materials, s.u, s.bulk);
+  } catch (const Error&) {
+    return false;
+  }
+  s.has_tangent = with_tangent;
+  s.penetration.resize(contacts_);
+  s.normal.resize(contacts_);
+  for (int p = 0; p < contacts_; ++p) {
+    const Eigen::Vector2d x = problem_.mesh->nodes[node(p)] + s.u.segment<2>(2 * node(p));
+    s.penetration[p] = -problem_.obstacle->signed_distance(x);
+    s.normal[p] = problem_.obstacle->normal(x);
+  }
+  return true;
+}
+
+double FiniteStrainBulk::equilibrium_residual(const Eigen::VectorXd& N,
+                                              const Eigen::VectorXd&) const {
+  Eigen::VectorXd r = now_.bulk.internal_force - load();
+  for (int p = 0; p < contacts_; ++p)
+    r.segment<2>(2 * node(p)) -= N[p] * now_.normal[p];
+  for (Eigen::Index i = 0; i < r.size(); ++i)
+    if (dirichlet_[i]) r[i] = 0;
+  return r.norm();
+}
+
+double FiniteStrainBulk::force_scale() const {
+  return std::max({load().norm(), now_.bulk.internal_force.norm(), 1e-300});
+}
+
+Eigen::Matrix2d FiniteStrainBulk::curvature_block(int p, double force) const {
+  const Eigen::Vector2d x = problem_.mesh->nodes[node(p)] + now_.u.segment<2>(2 * node(p));
+  const double h = kNormalDifferenceStep * (1.0 + x.norm());
+  Eigen::Matrix2d block;
+  for (int j = 0; j < 2; ++j) {
+    const Eigen::Vector2d e = h * Eigen::Vector2d::Unit(j);
+    block.col(j) =
+        -force * (problem_.obstacle->normal(x + e) - problem_.obstacle->normal(x - e)) / (2 * h);
+  }
+  return block;
+}
+
+StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditions,
+                                     const Eigen::VectorXd& normal_force) {
+  if (!now_.has_tangent) evaluate(now_, true); // an accepted force-only trial
+  J_->set_tangent(now_.bulk.tangent);
+  for (int p = 0; p < contacts_; ++p)
+    if (normal_force[p] != 0.0) J_->add_node_block(p, curvature_block(p, normal_force[p]));
+  J_->rotate(now_.normal);
+  // r0 = Q^T (f_int - s f_ext), plus the contact force laws of the free normal components.
+  Eigen::VectorXd r0 = now_.bulk.internal_force - load();
+  for (int p = 0; p < contacts_; ++p) {
+    const Eigen::Vector2d r = r0.segment<2>(2 * node(p));
+    r0.segment<2>(2 * node(p)) = nodal_frame(now_.normal[p]).transpose() * r;
+  }
+
+  // Imposed increments: the Dirichlet dofs towards their targets (never contact nodes) and the
+  // imposed normal components.
+  std::vector<std::pair<int, double>> imposed;
+  for (std::size_t k = 0; k < problem_.dirichlet_dofs.size(); ++k) {
+    const int dof = problem_.dirichlet_dofs[k];
+    imposed.emplace_back(
+        dof, load_factor_ * problem_.dirichlet_values[static_cast<Eigen::Index>(k)] - now_.u[dof]);
+  }
+  for (int p = 0; p < contacts_; ++p) {
+    const int normal_dof = 2 * node(p) + 1;
+    const DofCondition& c = conditions[p].normal;
+    if (c.imposed) {
+      imposed.emplace_back(normal_dof, c.value);
+    } else {
+      J_->diagonal(normal_dof) += c.stiffness;
+      r0[normal_dof] += c.force;
+    }
+  }
+  std::sort(imposed.begin(), imposed.end());
+  const Eigen::VectorXd dw = J_->solve(r0, imposed, *solver_);
+
+  // Forces: the reaction of an imposed normal (r0 + A dw + N = 0 on its row), else the force law.
+  StepSolution s;
+  s.normal_increment.resize(contacts_);
+  s.normal_force.resize(contacts_);
+  s.tangential_increment = Eigen::VectorXd::Zero(contacts_);
+  s.tangential_force = Eigen::VectorXd::Zero(contacts_);
+  for (int p = 0; p < contacts_; ++p) {
+    const int normal_dof = 2 * node(p) + 1;
+    const DofCondition& c = conditions[p].normal;
+    s.normal_increment[p] = dw[normal_dof];
+    s.normal_force[p] = c.imposed ? -(r0[normal_dof] + J_->normal_row_times(p, dw))
+                                  : c.force + c.stiffness * dw[normal_dof];
+  }
+  // du = Q dw.
+  step_ = dw;
+  for (int p = 0; p < contacts_; ++p) {
+    const int a = 2 * node(p);
+    step_.segment<2>(a) = nodal_frame(now_.normal[p]) * dw.segment<2>(a);
+  }
+  base_ = now_.u;
+  return s;
+}
+
+bool FiniteStrainBulk::move(double alpha) {
+  now_.u = base_ + alpha * step_;
+  return evaluate(now_, alpha == 1.0);
+}
+
+bool FiniteStrainBulk::settled() const {
+  double mismatch = 0, target = 0;
+  for (std::size_t k = 0; k < problem_.dirichlet_dofs.size(); ++k) {
+    const double value = load_factor_ * problem_.dirichlet_values[static_cast<Eigen::Index>(k)];
+    mismatch = std::max(mismatch, std::abs(value - now_.u[problem_.dirichlet_dofs[k]]));
+    target = std::max(target, std::abs(value));
+  }
+  return mismatch <= eps_ * std::max(target, now_.u.lpNorm<Eigen::Infinity>());
+}
+
+} // namespace sig

@@ -1,0 +1,242 @@
+// The per-node contact kernel (contact/contact_kernel.hpp) for every normal law and friction law:
+// its generalized derivatives against finite differences on both sides of every kink (offsets
+// 1e-8 ... 1, augmentation parameters over decades), the derivative AT each kink against the
+// one-sided difference into the side the kink belongs to, and the value identities: the
+// Alart-Curnier functions vanish exactly on the states that satisfy the laws.
+#include "contact/contact_kernel.hpp"
+#include "contact/contact_status.hpp"
+#include "core/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace sig {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+const std::vector<double> kOffsets = {1e-8, 1e-6, 1e-4, 1e-2, 1.0};
+const std::vector<double> kAugmentations = {1e-2, 1.0, 1e2, 1e4};
+
+/// The kernel's six outputs (N, T, C_n, C_t) and the branch that must not change under a finite
+/// difference step.
+Eigen::Vector4d outputs(const ContactKernel& k) {
+  return {k.normal, k.tangential, k.complementarity[0], k.complementarity[1]};
+}
+Eigen::Matrix4d derivatives(const ContactKernel& k) {
+  Eigen::Matrix4d d;
+  d << k.d_force, k.d_complementarity;
+  return d;
+}
+bool same_branch(const ContactKernel& a, const ContactKernel& b) {
+  return a.wall_active == b.wall_active && a.stick == b.stick && a.slip == b.slip &&
+         a.compliance_slope == b.compliance_slope && (a.bound > 0) == (b.bound > 0);
+}
+
+NodeVariables with(NodeVariables x, int variable, double delta) {
+  double* v[] = {&x.q_n, &x.q_t, &x.lambda, &x.t};
+  *v[variable] += delta;
+  return x;
+}
+
+double scale_of(const NodeVariables& x, double r) {
+  return 1 + std::abs(x.q_n) * r + std::abs(x.q_t) * r + std::abs(x.lambda) + std::abs(x.t);
+}
+
+/// Central differences in each variable, with a step that stays on x's branch (the kernel is
+/// piecewise affine, so the difference is exact there up to round-off).
+void expect_derivatives(const ContactLaw& law, const NodeVariables& x, double r,
+                        const std::string& where) {
+  const ContactKernel k = contact_kernel(law, x, r, r);
+  const Eigen::Matrix4d analytic = derivatives(k);
+  for (int j = 0; j < 4; ++j) {
+    double h = 1e-3 * (1 + std::abs(with(x, j, 0).q_n));
+    ContactKernel plus, minus;
+    for (; h > 1e-13; h /= 4) {
+      plus = contact_kernel(law, with(x, j, h), r, r);
+      minus = contact_kernel(law, with(x, j, -h), r, r);
+      if (same_branch(plus, k) && same_branch(minus, k)) break;
+    }
+    ASSERT_GT(h, 1e-13) << where << ": no step stays on the branch in variable " << j;
+    const Eigen::Vector4d fd = (outputs(plus) - outputs(minus)) / (2 * h);
+    for (int i = 0; i < 4; ++i)
+      EXPECT_NEAR(analytic(i, j), fd[i],
+                  1e-7 * (1 + std::abs(analytic(i, j))) + 16 * kEps * scale_of(x, r) / h)
+          << where << ": output " << i << " variable " << j;
+  }
+}
+
+/// At a kink: the derivative in `variable` is the one-sided difference into `side`.
+void expect_kink_side(const ContactLaw& law, const NodeVariables& x, double r, int variable,
+                      double side, const std::string& where) {
+  const ContactKernel k = contact_kernel(law, x, r, r);
+  for (double h : {1e-8, 1e-5}) {
+    const Eigen::Vector4d one_sided =
+        (outputs(contact_kernel(law, with(x, variable, side * h), r, r)) - outputs(k)) / (side * h);
+    for (int i = 0; i < 4; ++i)
+      EXPECT_NEAR(derivatives(k)(i, variable), one_sided[i],
+                  1e-6 * (1 + std::abs(derivatives(k)(i, variable))) +
+                      16 * kEps * scale_of(x, r) / h)
+          << where << ": output " << i << " h " << h;
+  }
+}
+
+ContactLaw law_of(NormalLaw normal, FrictionLaw friction) {
+  ContactLaw law;
+  law.normal = normal;
+  law.cn = 7.5;
+  law.depth = normal == NormalLaw::compliance ? 0.0 : 0.4;
+  law.friction = friction;
+  law.mu = 0.3;
+  law.threshold = 2.0;
+  return law;
+}
+
+struct Case {
+  NormalLaw normal;
+  FrictionLaw friction;
+};
+
+class EveryLaw : public ::testing::TestWithParam<Case> {};
+
+TEST_P(EveryLaw, DerivativesOnBothSidesOfEveryKink) {
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  for (double r : kAugmentations)
+    for (double delta : kOffsets)
+      for (double side : {-1.0, 1.0}) {
+        const std::string where = "r " + std::to_string(r) + " offset " +
+                                  std::to_string(side * delta) + " law " + describe(law);
+        // The wall kink lambda + r (q_n - g) = 0, crossed along lambda.
+        if (law.has_wall())
+          for (double q_n : {-0.3, 0.1, 0.25, 0.9}) {
+            const NodeVariables x{q_n, 0.02, -r * (q_n - law.depth) + side * delta, 0.1};
+            expect_derivatives(law, x, r, "wall kink, " + where);
+          }
+        // The compliance's kinks: [q_n]+ at 0, the wall's clip at g, the truncation.
+        if (law.has_compliance()) {
+          expect_derivatives(law, {side * delta, -0.05, -1.0, 0.0}, r, "[q_n]+ kink, " + where);
+          if (law.has_wall())
+            expect_derivatives(law, {law.depth + side * delta, 0.05, -1.0 - 2 * r, 0.0}, r,
+                               "clip at g, " + where);
+          ContactLaw truncated = law;
+          truncated.c3 = 1.5;
+          expect_derivatives(truncated, {1.5 / law.cn + side * delta, 0.01, -1.0 - 2 * r, 0}, r,
+                             "truncation, " + where);
+        }
+        // The friction kink |t + r q_t| = s on both bounds, crossed along t.
+        if (law.has_friction())
+          for (double sign : {-1.0, 1.0})
+            for (double q_n : {0.1, 0.45}) {
+              NodeVariables x{q_n, 0.03, 0.8, 0.0};
+              const double s = contact_kernel(law, x, r, r).bound;
+              x.t = sign * s - r * x.q_t + side * delta;
+              expect_derivatives(law, x, r, "friction kink, " + where);
+            }
+      }
+}
+
+TEST_P(EveryLaw, DerivativeAtTheKinkIsTheOneOfItsSide) {
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  for (double r : kAugmentations) {
+    const std::string where = "r " + std::to_string(r) + ", " + describe(law);
+    if (law.has_wall()) // the kink belongs to the wall: increasing lambda stays active
+      expect_kink_side(law, {0.1, 0.0, -r * (0.1 - law.depth), 0.0}, r, kLambda, 1.0,
+                       "wall, " + where);
+    if (law.has_compliance()) { // [q_n]+ at 0: to compliance
+      expect_kink_side(law, {0.0, 0.0, -1.0, 0.0}, r, kQn, 1.0, "[q_n]+, " + where);
+      if (law.has_wall()) // the clip at g: to the wall side, slope 0
+        expect_kink_side(law, {law.depth, 0.0, -1.0 - 2 * r, 0.0}, r, kQn, 1.0, "clip, " + where);
+    }
+    if (law.has_friction()) { // |z| = s: to the inside (stick)
+      NodeVariables x{0.45, 0.0, 0.8, 0.0};
+      x.t = contact_kernel(law, x, r, r).bound;
+      expect_kink_side(law, x, r, kT, -1.0, "friction, " + where);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Laws, EveryLaw,
+    ::testing::Values(Case{NormalLaw::signorini, FrictionLaw::none},
+                      Case{NormalLaw::signorini, FrictionLaw::tresca},
+                      Case{NormalLaw::signorini, FrictionLaw::coulomb},
+                      Case{NormalLaw::compliance, FrictionLaw::none},
+                      Case{NormalLaw::compliance, FrictionLaw::coulomb},
+                      Case{NormalLaw::compliance_unilateral, FrictionLaw::none},
+                      Case{NormalLaw::compliance_unilateral, FrictionLaw::tresca},
+                      Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb}));
+
+TEST(ContactKernel, ZerosAreTheSignoriniCoulombStates) {
+  const ContactLaw law = law_of(NormalLaw::signorini, FrictionLaw::coulomb);
+  const double g = law.depth;
+  for (double r : kAugmentations) {
+    // Contact and stick: q_n = g, lambda > 0, q_t = 0, |t| < mu lambda.
+    EXPECT_EQ(contact_kernel(law, {g, 0.0, 2.0, 0.3}, r, r).complementarity.norm(), 0.0);
+    // Contact and slip: t = mu lambda sign(q_t).
+    EXPECT_NEAR(contact_kernel(law, {g, -0.2, 2.0, -0.6}, r, r).complementarity.norm(), 0.0, 1e-15);
+    // Separated: lambda = t = 0, q_n < g, any slip.
+    EXPECT_EQ(contact_kernel(law, {g - 0.1, 5.0, 0.0, 0.0}, r, r).complementarity.norm(), 0.0);
+    // Violations: penetration, tension, friction beyond the cone, slip against the force.
+    EXPECT_GT(std::abs(contact_kernel(law, {g + 0.1, 0.0, 0.0, 0.0}, r, r).complementarity[0]), 0);
+    EXPECT_GT(std::abs(contact_kernel(law, {g, 0.0, -1.0, 0.0}, r, r).complementarity[0]), 0);
+    EXPECT_GT(std::abs(contact_kernel(law, {g, 0.0, 2.0, 0.7}, r, r).complementarity[1]), 0);
+    EXPECT_GT(std::abs(contact_kernel(law, {g, 0.2, 2.0, -0.6}, r, r).complementarity[1]), 0);
+  }
+}
+
+TEST(ContactKernel, ComplianceForcesAndWall) {
+  ContactLaw law = law_of(NormalLaw::compliance_unilateral, FrictionLaw::none);
+  // Between the surface and the wall: the compliance alone, CN.
+  const ContactKernel between = contact_kernel(law, {0.2, 0.0, 0.0, 0.0}, 10, 10);
+  EXPECT_DOUBLE_EQ(between.normal, 7.5 * 0.2);
+  EXPECT_EQ(normal_status(between), NormalStatus::compliance);
+  // On the wall: p(g) plus the wall's multiplier, CU.
+  const ContactKernel wall = contact_kernel(law, {0.4, 0.0, 3.0, 0.0}, 10, 10);
+  EXPECT_DOUBLE_EQ(wall.normal, 7.5 * 0.4 + 3.0);
+  EXPECT_EQ(normal_status(wall), NormalStatus::unilateral);
+  // Off the obstacle: free.
+  EXPECT_EQ(normal_status(contact_kernel(law, {-0.1, 0.0, 0.0, 0.0}, 10, 10)), NormalStatus::free);
+  // Pure compliance has no wall: deep penetration is compliance, truncated at c3.
+  law.normal = NormalLaw::compliance;
+  law.c3 = 9.0;
+  const ContactKernel deep = contact_kernel(law, {5.0, 0.0, 1.0, 0.0}, 10, 10);
+  EXPECT_DOUBLE_EQ(deep.normal, 9.0);
+  EXPECT_EQ(deep.complementarity[0], 1.0); // lambda must vanish without a wall
+  EXPECT_EQ(normal_status(deep), NormalStatus::compliance);
+}
+
+TEST(ContactKernel, FrictionStatuses) {
+  const ContactLaw coulomb = law_of(NormalLaw::signorini, FrictionLaw::coulomb);
+  const double g = coulomb.depth;
+  EXPECT_EQ(friction_status(coulomb, contact_kernel(coulomb, {g, 0.0, 2.0, 0.3}, 1, 1)),
+            FrictionStatus::stick);
+  EXPECT_EQ(friction_status(coulomb, contact_kernel(coulomb, {g, 0.5, 2.0, 0.6}, 1, 1)),
+            FrictionStatus::slip_forward);
+  EXPECT_EQ(friction_status(coulomb, contact_kernel(coulomb, {g, -0.5, 2.0, -0.6}, 1, 1)),
+            FrictionStatus::slip_backward);
+  // Coulomb off the obstacle: no friction acts.
+  EXPECT_EQ(friction_status(coulomb, contact_kernel(coulomb, {-1.0, 0.5, 0.0, 0.0}, 1, 1)),
+            FrictionStatus::none);
+  // Tresca bounds the slip on every node, in contact or not.
+  const ContactLaw tresca = law_of(NormalLaw::signorini, FrictionLaw::tresca);
+  EXPECT_EQ(friction_status(tresca, contact_kernel(tresca, {-1.0, 0.0, 0.0, 1.0}, 1, 1)),
+            FrictionStatus::stick);
+  EXPECT_EQ(friction_status(tresca, contact_kernel(tresca, {-1.0, 1.0, 0.0, 2.0}, 1, 1)),
+            FrictionStatus::slip_forward);
+  // Frictionless: no status.
+  const ContactLaw none = law_of(NormalLaw::signorini, FrictionLaw::none);
+  EXPECT_EQ(friction_status(none, contact_kernel(none, {g, 0.5, 2.0, 0.0}, 1, 1)),
+            FrictionStatus::none);
+  for (long code = 0; code <= 3; ++code)
+    EXPECT_EQ(static_cast<long>(friction_status_of_code(code)), code);
+  EXPECT_EQ(label(FrictionStatus::slip_backward), "S-");
+  EXPECT_EQ(label(NormalStatus::compliance), "CN");
+  EXPECT_THROW(normal_status_of_code(3), Error);
+}
+
+} // namespace
+} // namespace sig
