@@ -1,6 +1,10 @@
 #pragma once
 // Small meshes for the post tests, built by hand so the tests need no mesh reader.
+#include "core/ds.hpp"
 #include "mesh/mesh.hpp"
+
+#include <cstdint>
+#include <vector>
 
 namespace sig::test {
 
@@ -18,6 +22,20 @@ inline Mesh small_mesh() {
   m.edges = {{0, 4, 3}, {4, 1, 3}, {1, 2, 2}, {2, 3, 1}, {3, 0, 4}};
   m.vertex_ref = {0, 0, 0, 0, 0};
   return m;
+}
+
+/// Contact on the bottom nodes 1, 5, 2 (1-based) of small_mesh against the plane x2 = -0.1,
+/// normal (0, 1), tangent (1, 0); Signorini, frictionless.
+inline Ds bottom_contact() {
+  Ds cont("CONT", "bottom", "test");
+  cont.put("node", std::vector<std::int64_t>{1, 5, 2});
+  cont.put("lagrange_node", std::vector<std::int64_t>{6, 7, 8});
+  cont.put("normal", std::vector<double>{0, 1, 0, 1, 0, 1}, {3, 2});
+  cont.put("tangent", std::vector<double>{1, 0, 1, 0, 1, 0}, {3, 2});
+  cont.put("gap", std::vector<double>{0.1, 0.1, 0.1});
+  cont.put("weight", std::vector<double>{0.5, 1.0, 0.5});
+  cont.put("law", std::vector<std::int64_t>{1, 1, 1});
+  return cont;
 }
 
 } // namespace sig::test

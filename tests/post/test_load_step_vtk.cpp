@@ -40,18 +40,6 @@ MaterialTable hooke_table() {
   return table;
 }
 
-// Contact on the bottom nodes 1, 5, 2 (1-based) against the plane x2 = -0.1, normal (0, 1).
-Ds bottom_contact() {
-  Ds cont("CONT", "bottom", "test");
-  cont.put("node", std::vector<std::int64_t>{1, 5, 2});
-  cont.put("lagrange_node", std::vector<std::int64_t>{6, 7, 8});
-  cont.put("normal", std::vector<double>{0, 1, 0, 1, 0, 1}, {3, 2});
-  cont.put("gap", std::vector<double>{0.1, 0.1, 0.1});
-  cont.put("weight", std::vector<double>{0.5, 1.0, 0.5});
-  cont.put("law", std::vector<std::int64_t>{1, 1, 1});
-  return cont;
-}
-
 // `steps` load steps of which the first `kept` converged: state s (0-based) has
 // u = (s + 1) (0.1 x, -0.2 y), multipliers (s + 1) (1, 2, 3) and node 5 alone in contact.
 Ds load_stepped(const Mesh& mesh, int steps, int kept) {
@@ -64,13 +52,13 @@ Ds load_stepped(const Mesh& mesh, int steps, int kept) {
     for (const Eigen::Vector2d& x : mesh.nodes)
       u.insert(u.end(), {(s + 1) * 0.1 * x.x(), -(s + 1) * 0.2 * x.y()});
     multiplier.insert(multiplier.end(), {s + 1.0, 2.0 * (s + 1), 3.0 * (s + 1)});
-    status.insert(status.end(), {0, 1, 0});
+    status.insert(status.end(), {0, 2, 0}); // CU
   }
   const auto ndof = static_cast<std::int64_t>(2 * mesh.num_nodes());
   b.put("step_load", load);
   b.put("step_u", u, {kept, ndof});
   b.put("step_multiplier", multiplier, {kept, 3});
-  b.put("step_status", status, {kept, 3});
+  b.put("step_normal_status", status, {kept, 3});
   b.put("u", std::vector<double>(u.end() - ndof, u.end()));
   b.put_text("method", "pdas");
   return b;
@@ -102,7 +90,7 @@ protected:
 
 TEST_F(LoadStepVtk, StatesWrittenAreStatesRead) {
   const Mesh mesh = test::small_mesh();
-  const Ds cont = bottom_contact();
+  const Ds cont = test::bottom_contact();
   const Ds b = load_stepped(mesh, 3, 3);
   const auto files =
       write_load_step_vtk(dir_, "ring", mesh, hooke_table(), b, &cont, {{"title", "t"}});
@@ -135,6 +123,15 @@ TEST_F(LoadStepVtk, StatesWrittenAreStatesRead) {
     EXPECT_EQ(pressure->GetComponent(3, 0), 0.0); // off Gamma3
     EXPECT_EQ(status->GetComponent(4, 0), 1.0);
     EXPECT_EQ(status->GetComponent(0, 0), 0.0);
+    // The statuses as their codes: CU (2) at node 5, no friction anywhere.
+    vtkDataArray* normal = grid->GetPointData()->GetArray("normal_status");
+    vtkDataArray* friction = grid->GetPointData()->GetArray("friction_status");
+    ASSERT_NE(normal, nullptr);
+    ASSERT_NE(friction, nullptr);
+    EXPECT_EQ(normal->GetComponent(4, 0), 2.0);
+    EXPECT_EQ(normal->GetComponent(0, 0), 0.0);
+    EXPECT_EQ(friction->GetComponent(4, 0), 0.0);
+    ASSERT_NE(grid->GetPointData()->GetArray("tangential_pressure"), nullptr);
   }
 }
 
@@ -156,12 +153,12 @@ TEST_F(LoadStepVtk, FailedLastStepIsLeftOutAndNoContactMeansNoPressure) {
 
 TEST_F(LoadStepVtk, RefusesWrongShapesAndNaN) {
   const Mesh mesh = test::small_mesh();
-  const Ds cont = bottom_contact();
+  const Ds cont = test::bottom_contact();
   Ds b = load_stepped(mesh, 2, 2);
   b.put("step_load", std::vector<double>{1.0}); // two states, one load step
   EXPECT_THROW(write_load_step_vtk(dir_, "x", mesh, hooke_table(), b, &cont, {}), Error);
   b = load_stepped(mesh, 2, 2);
-  b.put("step_status", std::vector<std::int64_t>{0, 1, 0, 0, 1}, {1, 5}); // not 2 x 3
+  b.put("step_normal_status", std::vector<std::int64_t>{0, 2, 0, 0, 2}, {1, 5}); // not 2 x 3
   EXPECT_THROW(write_load_step_vtk(dir_, "x", mesh, hooke_table(), b, &cont, {}), Error);
   b = load_stepped(mesh, 2, 2);
   std::vector<double> u = b.reals("step_u");

@@ -22,18 +22,6 @@ std::string key_of(const char* key) {
   return quoted;
 }
 
-// Contact on the bottom nodes 1, 5, 2 (1-based) against the plane x2 = -0.1, normal (0, 1).
-Ds bottom_contact() {
-  Ds cont("CONT", "bottom", "test");
-  cont.put("node", std::vector<std::int64_t>{1, 5, 2});
-  cont.put("lagrange_node", std::vector<std::int64_t>{6, 7, 8});
-  cont.put("normal", std::vector<double>{0, 1, 0, 1, 0, 1}, {3, 2});
-  cont.put("gap", std::vector<double>{0.1, 0.1, 0.1});
-  cont.put("weight", std::vector<double>{0.5, 1.0, 0.5});
-  cont.put("law", std::vector<std::int64_t>{1, 1, 1});
-  return cont;
-}
-
 Ds solved(const std::string& method) {
   Ds b("B", "solution", "test");
   // Node 5 (index 4) went down by the whole gap and touches; nodes 1 and 2 went down less.
@@ -46,9 +34,12 @@ Ds solved(const std::string& method) {
   b.put_text("linear", "cholmod");
   b.put_int("converged", 1);
   b.put_int("iterations", 4);
-  b.put_int("dofs", 13);
+  b.put_int("dofs", method == "alm" ? 13 : 10); // 5 nodes, 3 Lagrange nodes for alm
   b.put("multiplier", std::vector<double>{0.0, 3.0, 0.0});
+  b.put("tangential_multiplier", std::vector<double>{0.0, -1.5, 0.0});
   b.put("status", std::vector<std::int64_t>{0, 1, 0});
+  b.put("normal_status", std::vector<std::int64_t>{0, 2, 0});
+  b.put("friction_status", std::vector<std::int64_t>{0, 3, 0});
   b.put("history_active", std::vector<std::int64_t>{3, 1, 1, 1});
   b.put("history_residual", std::vector<double>{1.0, 0.5, 0.125, 0.0625});
   b.put_scalar("time_factorize", 0.25);
@@ -58,7 +49,7 @@ Ds solved(const std::string& method) {
 
 TEST(ContactTable, JoinsElementsWithTheirFinalState) {
   const Mesh mesh = test::small_mesh();
-  const auto rows = contact_rows(mesh, bottom_contact(), solved("alm"));
+  const auto rows = contact_rows(mesh, test::bottom_contact(), solved("alm"));
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].node, 1);
   EXPECT_EQ(rows[1].node, 5);
@@ -75,30 +66,44 @@ TEST(ContactTable, JoinsElementsWithTheirFinalState) {
   EXPECT_EQ(rows[1].pressure, 3.0); // weight 1
   EXPECT_TRUE(rows[1].contact);
   EXPECT_FALSE(rows[0].contact);
+  EXPECT_EQ(rows[1].normal_status, NormalStatus::unilateral);
+  EXPECT_EQ(rows[1].friction_status, FrictionStatus::slip_backward);
+  EXPECT_EQ(rows[1].tangential_multiplier, -1.5);
+  EXPECT_EQ(rows[1].tangential_pressure, -1.5);
+  // The slip is the tangential displacement t . u, t = (1, 0).
+  EXPECT_EQ(rows[0].slip, 0.01);
+  EXPECT_EQ(rows[2].slip, -0.01);
 }
 
 TEST(ContactTable, DisagreeingSizesAndBadNodesAreErrors) {
   const Mesh mesh = test::small_mesh();
   Ds b = solved("pdas");
-  b.put("status", std::vector<std::int64_t>{0, 1});
-  EXPECT_THROW(contact_rows(mesh, bottom_contact(), b), Error);
-  Ds cont = bottom_contact();
+  b.put("normal_status", std::vector<std::int64_t>{0, 2});
+  EXPECT_THROW(contact_rows(mesh, test::bottom_contact(), b), Error);
+  b = solved("pdas");
+  b.put("friction_status", std::vector<std::int64_t>{0, 9, 0}); // no such status
+  EXPECT_THROW(contact_rows(mesh, test::bottom_contact(), b), Error);
+  Ds cont = test::bottom_contact();
   cont.put("node", std::vector<std::int64_t>{1, 6, 2});
   EXPECT_THROW(contact_rows(mesh, cont, solved("pdas")), Error);
 }
 
 TEST(ContactTable, CsvHeaderAndRows) {
-  const auto csv = contact_csv(contact_rows(test::small_mesh(), bottom_contact(), solved("alm")));
-  const std::string header = "node,x1,x2,u1,u2,gap,multiplier,pressure,status\n";
+  const auto csv =
+      contact_csv(contact_rows(test::small_mesh(), test::bottom_contact(), solved("alm")));
+  const std::string header = "node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,"
+                             "friction_status,tangential_multiplier,tangential_pressure,slip\n";
   ASSERT_EQ(csv.substr(0, header.size()), header);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
-  EXPECT_NE(csv.find("\n5,1,0,0,-0.10000000000000001,0,3,3,contact\n"), std::string::npos);
+  EXPECT_NE(csv.find("\n5,1,0,0,-0.10000000000000001,0,3,3,contact,CU,S-,-1.5,-1.5,0\n"),
+            std::string::npos)
+      << csv;
   EXPECT_NE(csv.find("\n1,0,0,0.01"), std::string::npos);
-  EXPECT_NE(csv.find(",free\n"), std::string::npos);
+  EXPECT_NE(csv.find(",free,free,-,0,0,"), std::string::npos);
 }
 
 TEST(ContactTable, SamplesAreCentred) {
-  const auto rows = contact_rows(test::small_mesh(), bottom_contact(), solved("alm"));
+  const auto rows = contact_rows(test::small_mesh(), test::bottom_contact(), solved("alm"));
   const auto samples = pressure_samples(rows, 1.0);
   EXPECT_EQ(samples[0].x, -1.0);
   EXPECT_EQ(samples[1].x, 0.0);
@@ -109,13 +114,18 @@ TEST(ContactTable, SamplesAreCentred) {
 TEST(Summary, KeysInStableOrderWithValuesFromTheSolution) {
   const Mesh mesh = test::small_mesh();
   const Ds b = solved("alm");
-  const auto rows = contact_rows(mesh, bottom_contact(), b);
+  const auto rows = contact_rows(mesh, test::bottom_contact(), b);
   const std::string json = build_summary("Hertz N=8", mesh, b, rows, gather_times({&b})).dump(-1);
   const char* keys[] = {
       "title",     "method",      "converged",        "failure",           "iterations",
       "dofs",      "multipliers", "contact_elements", "contact_nodes",     "nodes",
       "triangles", "backend",     "residual_history", "increment_history", "active_history",
       "times"};
+  EXPECT_NE(json.find("\"normal_status_counts\":{\"free\":2,\"CN\":0,\"CU\":1}"), std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"friction_status_counts\":{\"-\":2,\"S=\":0,\"S+\":0,\"S-\":1}"),
+            std::string::npos)
+      << json;
   std::size_t last = 0;
   for (const char* key : keys) {
     const auto at = json.find(key_of(key));
@@ -140,7 +150,7 @@ TEST(Summary, MultipliersAreUnknownsOfAlmOnly) {
   const Mesh mesh = test::small_mesh();
   Ds b = solved("pdas");
   b.put_int("converged", 0);
-  const auto rows = contact_rows(mesh, bottom_contact(), b);
+  const auto rows = contact_rows(mesh, test::bottom_contact(), b);
   const std::string json = build_summary("t", mesh, b, rows, {}).dump(-1);
   EXPECT_NE(json.find("\"multipliers\":0"), std::string::npos);
   EXPECT_NE(json.find("\"contact_elements\":3"), std::string::npos);

@@ -10,18 +10,25 @@ namespace sig {
 std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds& solution) {
   const auto node = numbers(cont, "node");
   const auto normal = numbers(cont, "normal");
+  const auto tangent = numbers(cont, "tangent");
   const auto gap = numbers(cont, "gap");
   const auto weight = numbers(cont, "weight");
   const auto u = solution.reals("u");
   const auto multiplier = numbers(solution, "multiplier");
-  const auto status = numbers(solution, "status");
+  const auto tangential = numbers(solution, "tangential_multiplier");
+  const auto normal_status = numbers(solution, "normal_status");
+  const auto friction_status = numbers(solution, "friction_status");
   const std::size_t m = node.size();
-  SIG_VERIFY(normal.size() == 2 * m && gap.size() == m && weight.size() == m,
-             cont.source << ": arrays node, normal (m x 2), gap, weight disagree for m = " << m);
-  SIG_VERIFY(multiplier.size() == m && status.size() == m,
-             solution.source << ": arrays multiplier and status hold " << multiplier.size()
-                             << " and " << status.size() << " values for " << m
-                             << " contact elements");
+  SIG_VERIFY(
+      normal.size() == 2 * m && tangent.size() == 2 * m && gap.size() == m && weight.size() == m,
+      cont.source << ": arrays node, normal, tangent (m x 2), gap, weight disagree for m = " << m);
+  SIG_VERIFY(multiplier.size() == m && tangential.size() == m && normal_status.size() == m &&
+                 friction_status.size() == m,
+             solution.source << ": arrays multiplier, tangential_multiplier, normal_status and "
+                                "friction_status hold "
+                             << multiplier.size() << ", " << tangential.size() << ", "
+                             << normal_status.size() << " and " << friction_status.size()
+                             << " values for " << m << " contact elements");
   SIG_VERIFY(u.size() == 2 * mesh.nodes.size(), solution.source << ": array 'u' holds " << u.size()
                                                                 << " values for "
                                                                 << mesh.num_nodes() << " nodes");
@@ -45,18 +52,31 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
     SIG_VERIFY(weight[i] > 0,
                cont.source << ": array 'weight' holds " << weight[i] << " at element " << i + 1);
     r.pressure = multiplier[i] / weight[i];
-    r.contact = status[i] == 1;
+    r.tangential_multiplier = tangential[i];
+    r.tangential_pressure = tangential[i] / weight[i];
+    r.slip = r.u1 * tangent[2 * i] + r.u2 * tangent[2 * i + 1];
+    try {
+      r.normal_status = normal_status_of_code(static_cast<long>(normal_status[i]));
+      r.friction_status = friction_status_of_code(static_cast<long>(friction_status[i]));
+    } catch (const Error& e) {
+      SIG_VERIFY(false, solution.source << ": element " << i + 1 << ": " << e.what());
+    }
+    r.contact = r.normal_status != NormalStatus::free;
   }
   return rows;
 }
 
 std::string contact_csv(const std::vector<ContactRow>& rows) {
-  std::string out = "node,x1,x2,u1,u2,gap,multiplier,pressure,status\n";
-  char line[512];
+  std::string out = "node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,"
+                    "friction_status,tangential_multiplier,tangential_pressure,slip\n";
+  char line[768];
   for (const auto& r : rows) {
-    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s\n", r.node,
-                  r.x1, r.x2, r.u1, r.u2, r.gap, r.multiplier, r.pressure,
-                  r.contact ? "contact" : "free");
+    std::snprintf(line, sizeof line,
+                  "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%s,%s,%.17g,%.17g,%.17g\n",
+                  r.node, r.x1, r.x2, r.u1, r.u2, r.gap, r.multiplier, r.pressure,
+                  r.contact ? "contact" : "free", label(r.normal_status).c_str(),
+                  label(r.friction_status).c_str(), r.tangential_multiplier, r.tangential_pressure,
+                  r.slip);
     out += line;
   }
   return out;

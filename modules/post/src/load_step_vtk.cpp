@@ -49,15 +49,16 @@ std::vector<std::filesystem::path> write_load_step_vtk(const std::filesystem::pa
 
   // With contact, each state is joined with case.cont exactly as the final state is
   // (contact_rows), through a one-state DS "B" holding that step's arrays.
+  // Large deformation is frictionless: the states carry no tangential force.
   std::vector<double> multiplier;
   std::vector<std::int64_t> status;
   std::size_t m = 0;
   if (cont != nullptr) {
     multiplier = solution.reals("step_multiplier");
-    status = solution.ints("step_status");
+    status = solution.ints("step_normal_status");
     m = cont->ints("node").size();
     verify_finite(multiplier, solution.source, "step_multiplier");
-    for (const char* name : {"step_multiplier", "step_status"}) {
+    for (const char* name : {"step_multiplier", "step_normal_status"}) {
       const std::vector<std::int64_t>& shape = solution.shape(name);
       SIG_VERIFY(shape.size() == 2 && static_cast<std::size_t>(shape[0]) == states &&
                      static_cast<std::size_t>(shape[1]) == m,
@@ -73,7 +74,9 @@ std::vector<std::filesystem::path> write_load_step_vtk(const std::filesystem::pa
     std::vector<ContactRow> contact;
     if (cont != nullptr) {
       state.put("multiplier", row_of(multiplier, s, m));
-      state.put("status", row_of(status, s, m));
+      state.put("normal_status", row_of(status, s, m));
+      state.put("tangential_multiplier", std::vector<double>(m, 0.0));
+      state.put("friction_status", std::vector<std::int64_t>(m, 0));
       contact = contact_rows(mesh, *cont, state);
     }
     SolutionFields fields = solution_fields(mesh, state.reals("u"), materials, contact);

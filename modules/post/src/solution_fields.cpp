@@ -19,14 +19,23 @@ SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,
   }
   f.point.push_back(std::move(displacement));
   if (!contact.empty()) {
+    // Statuses as their DS codes (contact/contact_status.hpp): normal 0 free, 1 CN, 2 CU;
+    // friction 0 none, 1 S=, 2 S+, 3 S-.
     VtkField pressure{"contact_pressure", 1, std::vector<double>(n, 0.0)};
     VtkField status{"contact_status", 1, std::vector<double>(n, 0.0), true};
+    VtkField normal{"normal_status", 1, std::vector<double>(n, 0.0), true};
+    VtkField friction{"friction_status", 1, std::vector<double>(n, 0.0), true};
+    VtkField tangential{"tangential_pressure", 1, std::vector<double>(n, 0.0)};
     for (const auto& row : contact) {
-      pressure.values[row.node - 1] = row.pressure;
-      status.values[row.node - 1] = row.contact ? 1.0 : 0.0;
+      const std::size_t i = row.node - 1;
+      pressure.values[i] = row.pressure;
+      status.values[i] = row.contact ? 1.0 : 0.0;
+      normal.values[i] = static_cast<double>(row.normal_status);
+      friction.values[i] = static_cast<double>(row.friction_status);
+      tangential.values[i] = row.tangential_pressure;
     }
-    f.point.push_back(std::move(pressure));
-    f.point.push_back(std::move(status));
+    for (VtkField* field : {&pressure, &status, &normal, &friction, &tangential})
+      f.point.push_back(std::move(*field));
   }
 
   CellStress stress = cell_stresses(mesh, u, materials);

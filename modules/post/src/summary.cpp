@@ -62,9 +62,25 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("failure", solution.has("failure") ? solution.text("failure") : std::string());
   s.set("iterations", static_cast<long>(solution.integer("iterations")));
   s.set("dofs", static_cast<long>(solution.integer("dofs")));
-  s.set("multipliers", method == "alm" ? elements : 0L);
+  // The Newton vector holds the displacements and the multipliers the method adds (alm).
+  s.set("multipliers", static_cast<long>(solution.integer("dofs")) - 2L * mesh.num_nodes());
   s.set("contact_elements", elements);
   s.set("contact_nodes", active);
+  Json normal = Json::object(), friction = Json::object();
+  for (NormalStatus status :
+       {NormalStatus::free, NormalStatus::compliance, NormalStatus::unilateral})
+    normal.set(label(status), static_cast<long>(std::count_if(contact.begin(), contact.end(),
+                                                              [status](const ContactRow& r) {
+                                                                return r.normal_status == status;
+                                                              })));
+  for (FrictionStatus status : {FrictionStatus::none, FrictionStatus::stick,
+                                FrictionStatus::slip_forward, FrictionStatus::slip_backward})
+    friction.set(label(status), static_cast<long>(std::count_if(
+                                    contact.begin(), contact.end(), [status](const ContactRow& r) {
+                                      return r.friction_status == status;
+                                    })));
+  s.set("normal_status_counts", std::move(normal));
+  s.set("friction_status_counts", std::move(friction));
   s.set("nodes", mesh.num_nodes());
   s.set("triangles", mesh.num_triangles());
   s.set("backend", solution.has("linear") ? solution.text("linear") : std::string());
@@ -72,6 +88,10 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("increment_history", history(solution, "history_increment"));
   s.set("step_norm_history", history(solution, "history_step_norm"));
   s.set("active_history", history(solution, "history_active"));
+  if (solution.has("history_stick")) {
+    s.set("stick_history", history(solution, "history_stick"));
+    s.set("slip_history", history(solution, "history_slip"));
+  }
   s.set("times", std::move(times_json));
   return s;
 }

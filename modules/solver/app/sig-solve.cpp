@@ -5,12 +5,15 @@
 //
 //   LOADSTEPS n=   (hyperelastic laws only; default 1)
 //
+//   INITIAL u=ux,uy [region=]   (contact decks: the first iterate of the contact Newton)
+//
 // Reads case.tae (sig-assemble) and, when the datafile has a CONTACT card, case.cont
 // (sig-contact). When the MILI (case.mili) has a hyperelastic law the problem is solved in large
 // deformation (solver/finite_strain_stage.hpp): Newton in LOADSTEPS steps up to the imposed
 // displacements of case.tae, with per-step results in case.b. Non-convergence of a contact method
 // is a result: the stage exits 0 and the DS records converged = 0 with the iteration history ("Nv"
 // in the tables).
+#include "assembly/initial.hpp"
 #include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
@@ -40,6 +43,13 @@ int main(int argc, char** argv) {
                                         "remove it (the static method is SOLVER method=, its "
                                         "stiffness SOLVER r=)");
     const sig::SolverCard card = sig::read_solver_card(datafile);
+    for (const sig::Card* initial : datafile.all("INITIAL")) {
+      if (initial->has("v"))
+        initial->fail("v", "a static deck has no velocity (INITIAL v= is for TIME decks)");
+      if (!has_contact)
+        initial->fail("u", "a static deck without contact is one linear solve: it has no first "
+                           "iterate to start from");
+    }
     const std::string& backend = card.backend;
     const sig::ContactSolverParameters& parameters = card.parameters;
     const std::string& method = parameters.method;
@@ -50,6 +60,9 @@ int main(int argc, char** argv) {
     // 3. Large deformation when a law is hyperelastic (the TAE's K is then unused).
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
     if (sig::has_hyperelastic_law(table)) {
+      if (!datafile.all("INITIAL").empty())
+        datafile.all("INITIAL").front()->fail(
+            "u", "the large-deformation solve starts from the reference configuration");
       sig::FiniteStrainOptions options;
       options.contact = parameters;
       options.backend = backend;
@@ -75,13 +88,16 @@ int main(int argc, char** argv) {
       return;
     }
 
-    // 4. Solve.
+    // 4. Solve, from the INITIAL displacement (the first iterate of the contact Newton).
     sig::StaticSolution solution;
     if (method == "linear") {
       solution = sig::solve_linear_elasticity(system, backend);
     } else {
       const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));
-      solution = sig::solve_static_contact(system, contact, parameters, backend);
+      Eigen::VectorXd start;
+      if (!datafile.all("INITIAL").empty())
+        start = sig::initial_fields(datafile, sig::read_nopo(args.ds_path("nopo"))).u;
+      solution = sig::solve_static_contact(system, contact, parameters, backend, start);
     }
 
     // 5. Write case.b and report.

@@ -6,6 +6,7 @@
 //
 // Every check names the file, the line and the field (sig::InputError), so that a bad deck is
 // refused before anything is factorized.
+#include "assembly/initial.hpp"
 #include "integrator/elastodynamics.hpp"
 
 #include <Eigen/Core>
@@ -29,15 +30,5 @@ struct TimeParameters {
 /// The TIME card, checked: k > 0, T > 0, T / k within 1e-9 relative of a whole number of steps,
 /// output_every >= 1, mass=emm only when the deck has a CONTACT card (`has_contact`).
 TimeParameters time_parameters(const Card& time, bool has_contact);
-
-/// Full-size (2 per node, interleaved) initial displacement and velocity of the INITIAL cards:
-/// the uniform u and v of each card on the nodes of the triangles of its sub-domains (a card
-/// sets only the fields it gives; a later card wins on shared nodes). Zero without INITIAL card; an
-/// InputError for a vector without two components or an unknown region.
-struct InitialFields {
-  Eigen::VectorXd u;
-  Eigen::VectorXd v;
-};
-InitialFields initial_fields(const Datafile& datafile, const Mesh& mesh);
 
 } // namespace sig

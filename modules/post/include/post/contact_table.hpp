@@ -1,8 +1,11 @@
 #pragma once
 // The contact table of a solved case: one row per node-to-rigid contact element, in the order of
 // case.cont (the boundary order of Gamma3), with the state the solver ended in. Signs follow
-// contact/contact_elements.hpp: u_n = -n . u is positive towards the obstacle, Signorini reads
-// u_n <= g, and the multiplier is the nodal contact force (>= 0 when pressing).
+// contact/contact_elements.hpp: u_n = -n . u is positive towards the obstacle, the gap is
+// d - u_n (negative: penetration), the multiplier is the nodal normal contact force (>= 0 when
+// pressing), the slip u_t = t . u with t = (n2, -n1), the tangential multiplier the nodal
+// tangential force T (the force on the body is -T t: it opposes the slip).
+#include "contact/contact_status.hpp"
 #include "core/ds.hpp"
 #include "mesh/mesh.hpp"
 #include "post/hertz.hpp"
@@ -16,19 +19,27 @@ struct ContactRow {
   int node = 0; ///< 1-based mesh node
   double x1 = 0, x2 = 0;
   double u1 = 0, u2 = 0;
-  double gap = 0;        ///< current normal gap g - u_n, u_n = -n . u (n: obstacle normal)
-  double multiplier = 0; ///< nodal contact force
+  double gap = 0;        ///< current normal gap d - u_n, u_n = -n . u (n: obstacle normal)
+  double multiplier = 0; ///< nodal normal contact force
   double pressure = 0;   ///< multiplier / weight (tributary length)
   double weight = 0;
-  bool contact = false; ///< status 1 of case.b
+  bool contact = false; ///< normal status not free (status 1 of case.b)
+  NormalStatus normal_status = NormalStatus::free;
+  FrictionStatus friction_status = FrictionStatus::none;
+  double tangential_multiplier = 0; ///< nodal tangential force T
+  double tangential_pressure = 0;   ///< T / weight
+  double slip = 0;                  ///< u_t = t . u
 };
 
-/// Join case.cont (node, normal, gap, weight) with case.b (u, multiplier, status). Throws
-/// sig::Error naming the file when arrays disagree in length or a node is out of range.
+/// Join case.cont (node, normal, tangent, gap, weight) with case.b (u, multiplier,
+/// tangential_multiplier, normal_status, friction_status). Throws sig::Error naming the file when
+/// arrays disagree in length or hold a node or status code out of range.
 std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds& solution);
 
-/// contact.csv: header `node,x1,x2,u1,u2,gap,multiplier,pressure,status`, status written as the
-/// word `contact` or `free`, numbers with 17 significant digits.
+/// contact.csv: header `node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,
+/// friction_status,tangential_multiplier,tangential_pressure,slip`, status written as the word
+/// `contact` or `free`, the statuses as the thesis's labels (free, CN, CU; -, S=, S+, S-),
+/// numbers with 17 significant digits.
 std::string contact_csv(const std::vector<ContactRow>& rows);
 
 /// The rows as Hertz samples, x measured from the vertical line x1 = centre_x1.

@@ -86,7 +86,7 @@ void put_load_step_states(Ds& ds, const FiniteStrainStageResult& result) {
   const Eigen::Index ndof = steps.front().u.size();
   const Eigen::Index m = result.contact_weight.size();
   std::vector<double> u, multiplier, pressure;
-  std::vector<std::int64_t> status;
+  std::vector<std::int64_t> status, normal_status;
   for (std::size_t k = 0; k < converged; ++k) {
     const LoadStepResult& step = steps[k];
     SIG_VERIFY(step.u.size() == ndof && step.u.allFinite(),
@@ -102,6 +102,7 @@ void put_load_step_states(Ds& ds, const FiniteStrainStageResult& result) {
       multiplier.push_back(step.multiplier[i]);
       pressure.push_back(step.multiplier[i] / result.contact_weight[i]);
       status.push_back(step.normal_status[i] != NormalStatus::free ? 1 : 0);
+      normal_status.push_back(static_cast<std::int64_t>(step.normal_status[i]));
     }
   }
   const auto rows = static_cast<std::int64_t>(converged);
@@ -111,6 +112,7 @@ void put_load_step_states(Ds& ds, const FiniteStrainStageResult& result) {
   ds.put("step_multiplier", std::span<const double>(multiplier), shape);
   ds.put("step_pressure", std::span<const double>(pressure), shape);
   ds.put("step_status", std::span<const std::int64_t>(status), shape);
+  ds.put("step_normal_status", std::span<const std::int64_t>(normal_status), shape);
 }
 
 } // namespace

@@ -52,9 +52,10 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
 /// finite_strain = 1; scalars reaction_x, reaction_y, reaction_moment, time_solve.
 /// One state per CONVERGED load step (the attempted steps stop at the first failure, so these
 /// are steps 1 .. s, s = number of rows; row k belongs to step_load[k]), for ParaView's series
-/// and Fig 7.13: step_u {s, ndof}; with contact step_multiplier, step_status, step_pressure
-/// {s, m} (m contact elements, pressure = multiplier / weight, the nominal pressure per unit
-/// reference length). s = 0 writes no step_* state arrays.
+/// and Fig 7.13: step_u {s, ndof}; with contact step_multiplier, step_status, step_normal_status
+/// (codes of contact/contact_status.hpp), step_pressure {s, m} (m contact elements, pressure =
+/// multiplier / weight, the nominal pressure per unit reference length). s = 0 writes no step_*
+/// state arrays. The final state's contact arrays are put_contact_state's (solution_ds.hpp).
 void write_finite_strain_solution(const std::filesystem::path& path,
                                   const FiniteStrainStageResult& result, const std::string& method,
                                   const std::string& backend, const std::string& title);
