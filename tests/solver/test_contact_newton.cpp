@@ -520,3 +520,115 @@ TEST(ContactLaws, UnilateralComplianceBetweenComplianceAndSignorini) {
 
 } // namespace
 } // namespace sig
+
+namespace sig {
+namespace {
+
+// --- The condensed bulk's step against a dense solve of the same linear step --------------------
+
+/// The linear step of condensed_bulk.hpp written out densely: unknowns z (all n) and the contact
+/// forces F of the contact dofs; (S z)_i + eps (z_i - w_i) + F_i = f_i, and per contact dof
+/// either z = w + value or F = force + k (z - w) + coupling N_p + cross (z_n - w_n).
+void dense_step(const CondensedProblem& p, const std::vector<NodeConditions>& conditions,
+                const Eigen::VectorXd& w, Eigen::VectorXd& z, Eigen::VectorXd& N,
+                Eigen::VectorXd& T) {
+  const int n = static_cast<int>(p.f.size()), m = static_cast<int>(p.normal_dof.size());
+  const int size = n + 2 * m; // z, then (N_p, T_p) per node
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(size, size);
+  Eigen::VectorXd b(size);
+  A.topLeftCorner(n, n) = p.S;
+  A.topLeftCorner(n, n).diagonal().array() += p.regularization;
+  b.head(n) = p.f + p.regularization * w;
+  for (int q = 0; q < m; ++q) {
+    const int dof[2] = {p.normal_dof[q], p.tangential_dof[q]};
+    const DofCondition* c[2] = {&conditions[q].normal, &conditions[q].tangential};
+    for (int k = 0; k < 2; ++k) {
+      const int force = n + 2 * q + k, row = force;
+      A(dof[k], force) = 1; // + F in the equilibrium row
+      if (c[k]->imposed) {
+        A(row, dof[k]) = 1;
+        b[row] = w[dof[k]] + c[k]->value;
+      } else { // F - k z - coupling N - cross z_n = force - k w - cross w_n
+        A(row, force) = 1;
+        A(row, dof[k]) -= c[k]->stiffness;
+        b[row] = c[k]->force - c[k]->stiffness * w[dof[k]];
+        if (k == 1) {
+          A(row, n + 2 * q) -= c[k]->coupling;
+          A(row, dof[0]) -= c[k]->cross;
+          b[row] -= c[k]->cross * w[dof[0]];
+        }
+      }
+    }
+  }
+  const Eigen::VectorXd x = A.fullPivLu().solve(b);
+  z = x.head(n);
+  N.resize(m);
+  T.resize(m);
+  for (int q = 0; q < m; ++q) {
+    N[q] = x[n + 2 * q];
+    T[q] = x[n + 2 * q + 1];
+  }
+}
+
+TEST(CondensedBulk, EveryStepIsTheDenseStepWhateverTheTail) {
+  // 40 nodes, ordered by decreasing gap (node q at place q); a contact zone that grows and
+  // shrinks at the end of the order (the tail updated both ways), then jumps to its start (a
+  // reorder puts it last) and moves on from there.
+  const int m = 40;
+  Frictional fr = frictional_problem(coulomb(0.3), m);
+  fr.problem.regularization = 1e-3;
+  for (int q = 0; q < m; ++q)
+    fr.problem.gap[q] = 0.01 * (m - q);
+  Eigen::VectorXd k0 = Eigen::VectorXd::Zero(m);
+  for (int q = 0; q < m; q += 3)
+    k0[q] = 0.7; // projection-like default springs on some nodes
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::VectorXd w(2 * m);
+  for (int i = 0; i < 2 * m; ++i)
+    w[i] = 0.1 * uniform(random);
+  CondensedBulk bulk(fr.problem, k0, w);
+  const int zones[][2] = {{30, 40}, {28, 40}, {25, 40}, {27, 40}, {31, 40}, {0, 3},
+                          {0, 4},   {0, 2},   {0, 40},  {20, 24}, {21, 24}, {18, 26}};
+  for (const auto& zone : zones) {
+    std::vector<NodeConditions> conditions(m);
+    for (int q = 0; q < m; ++q) {
+      conditions[q].normal.stiffness = k0[q];
+      if (q < zone[0] || q >= zone[1]) continue;
+      NodeConditions& c = conditions[q];
+      switch (q % 4) {
+      case 0: // on the wall, sticking
+        c.normal = {true, 0.01 * uniform(random), 0, 0, 0, 0};
+        c.tangential = {true, 0.01 * uniform(random), 0, 0, 0, 0};
+        break;
+      case 1: // on the wall, Coulomb slip
+        c.normal = {true, 0.01 * uniform(random), 0, 0, 0, 0};
+        c.tangential.coupling = 0.3;
+        break;
+      case 2: // compliance, Coulomb slip on it
+        c.normal = {false, 0, 0.2, 1.5, 0, 0};
+        c.tangential.force = -0.06;
+        c.tangential.cross = -0.45;
+        break;
+      default: // penalty stick
+        c.normal = {false, 0, 0.1, 2.0, 0, 0};
+        c.tangential = {false, 0, 0.05, 3.0, 0, 0};
+      }
+    }
+    Eigen::VectorXd z, N, T;
+    dense_step(fr.problem, conditions, bulk.displacement(), z, N, T);
+    const StepSolution s = bulk.solve(conditions, Eigen::VectorXd::Zero(m));
+    ASSERT_TRUE(bulk.move(1.0));
+    const double tol = 1e-10 * (1 + z.cwiseAbs().maxCoeff());
+    for (int i = 0; i < 2 * m; ++i)
+      ASSERT_NEAR(bulk.displacement()[i], z[i], tol) << "zone " << zone[0] << "-" << zone[1];
+    for (int q = 0; q < m; ++q) {
+      ASSERT_NEAR(s.normal_force[q], N[q], 1e-9 * (1 + N.cwiseAbs().maxCoeff())) << q;
+      ASSERT_NEAR(s.tangential_force[q], T[q], 1e-9 * (1 + T.cwiseAbs().maxCoeff())) << q;
+    }
+  }
+  EXPECT_GT(bulk.reorders(), 0) << "the sequence should make the bulk reorder";
+}
+
+} // namespace
+} // namespace sig

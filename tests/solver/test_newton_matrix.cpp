@@ -46,11 +46,12 @@ struct Case {
     }
   }
 
-  Eigen::SparseMatrix<double> frames() const {
-    std::vector<std::array<int, 2>> pairs;
-    for (int node : contact_nodes)
-      pairs.push_back({2 * node, 2 * node + 1});
-    return sig::nodal_frames(pattern.num_dofs(), pairs, normals);
+  /// Q as a dense matrix: the node's frame on its two dofs, the identity elsewhere.
+  Eigen::MatrixXd frames() const {
+    Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(pattern.num_dofs(), pattern.num_dofs());
+    for (std::size_t p = 0; p < contact_nodes.size(); ++p)
+      Q.block<2, 2>(2 * contact_nodes[p], 2 * contact_nodes[p]) = sig::nodal_frame(normals[p]);
+    return Q;
   }
 };
 
@@ -65,7 +66,7 @@ TEST(NewtonMatrix, RotationInPlaceIsQTransposeAQ) {
   Eigen::MatrixXd A = Eigen::MatrixXd(c.K);
   const int a = 2 * c.contact_nodes[1];
   A.block<2, 2>(a, a) += block;
-  const Eigen::MatrixXd Q = Eigen::MatrixXd(c.frames());
+  const Eigen::MatrixXd Q = c.frames();
   const Eigen::MatrixXd expected = Q.transpose() * A * Q;
   EXPECT_LE((Eigen::MatrixXd(J.matrix()) - expected).norm(), 1e-13 * expected.norm());
 }

@@ -42,14 +42,27 @@ CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_n
     default_stiffness_[p_.normal_dof[p]] = default_normal_stiffness[p];
   }
 
-  // Far first: the unknowns of no contact node, then the nodes by decreasing gap (stable, so
-  // equal gaps keep the element order), each node's unknowns together.
-  for (int d = 0; d < n; ++d)
-    if (node_of_[d] < 0) order_.push_back(d);
+  // At first the nodes by decreasing gap (stable, so equal gaps keep the element order).
   std::vector<int> nodes(m);
   std::iota(nodes.begin(), nodes.end(), 0);
   std::stable_sort(nodes.begin(), nodes.end(), [&](int a, int b) { return p_.gap[a] > p_.gap[b]; });
-  node_start_.assign(m, 0);
+  order_nodes(nodes);
+
+  w_ = start.size() ? start : Eigen::VectorXd::Zero(n);
+  SIG_VERIFY(w_.size() == n, "condensed bulk: start of size " << w_.size() << " for " << n);
+  base_ = w_;
+  step_ = Eigen::VectorXd::Zero(n);
+  last_normal_force_ = Eigen::VectorXd::Zero(m);
+}
+
+void CondensedBulk::order_nodes(const std::vector<int>& nodes) {
+  // Far first: the unknowns of no contact node, then the nodes in the given order, each node's
+  // unknowns together.
+  const int n = static_cast<int>(p_.f.size());
+  order_.clear();
+  for (int d = 0; d < n; ++d)
+    if (node_of_[d] < 0) order_.push_back(d);
+  node_start_.assign(contacts(), 0);
   for (int p : nodes) {
     node_start_[p] = static_cast<int>(order_.size());
     if (has_tangential()) order_.push_back(p_.tangential_dof[p]);
@@ -58,11 +71,24 @@ CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_n
   position_.assign(n, 0);
   for (int k = 0; k < n; ++k)
     position_[order_[k]] = k;
+  factorized_ = false;
+  tail_start_ = -1;
+}
 
-  w_ = start.size() ? start : Eigen::VectorXd::Zero(n);
-  SIG_VERIFY(w_.size() == n, "condensed bulk: start of size " << w_.size() << " for " << n);
-  base_ = w_;
-  step_ = Eigen::VectorXd::Zero(n);
+void CondensedBulk::reorder(const std::vector<char>& contact_zone) {
+  // The zone last, the other nodes before it from the most separated to the closest, so that a
+  // node about to touch sits next to the zone and the tail grows by little; within the zone the
+  // weakest normal force first, the node most likely to leave it, so that it shrinks from its
+  // start.
+  const Eigen::VectorXd q = penetration();
+  std::vector<int> nodes(contacts());
+  std::iota(nodes.begin(), nodes.end(), 0);
+  std::stable_sort(nodes.begin(), nodes.end(), [&](int a, int b) {
+    if (contact_zone[a] != contact_zone[b]) return contact_zone[b] != 0;
+    return contact_zone[a] ? last_normal_force_[a] < last_normal_force_[b] : q[a] < q[b];
+  });
+  order_nodes(nodes);
+  ++reorders_;
 }
 
 void CondensedBulk::factorize() {
@@ -73,12 +99,51 @@ void CondensedBulk::factorize() {
       B(i, j) = p_.S(order_[i], order_[j]);
   for (int k = 0; k < n; ++k)
     B(k, k) += p_.regularization + default_stiffness_[order_[k]];
+  B_ = B;
   Eigen::LLT<Eigen::MatrixXd> cholesky(B);
   SIG_VERIFY(cholesky.info() == Eigen::Success,
              "the condensed step matrix is not positive definite (a rigid mode that neither the "
              "bulk nor the proximal term holds)");
   L_ = cholesky.matrixL();
   factorized_ = true;
+}
+
+void CondensedBulk::tail_schur(int start) {
+  // H = L22 L22^T for the tail from `start`. From the previous tail (from s0), with the block C
+  // of L between them (rows of the longer tail, columns of the shift): a tail longer by
+  // d = s0 - start gains d leading rows and columns, [[A A^T, A C^T], [C A^T, H0 + C C^T]]
+  // (A the d x d diagonal block of L); one shorter by d loses them, H0 minus C C^T. That costs
+  // t^2 d, against t^3 / 3 (L22 L22^T) or t^2 (n - t) (B_tail - L21 L21^T) afresh.
+  const int n = static_cast<int>(p_.f.size());
+  const int tail = n - start;
+  const int shift = tail_start_ - start; // > 0: longer
+  if (tail_start_ >= 0 && 4 * std::abs(shift) < tail) {
+    if (shift > 0) {
+      const int old_tail = n - tail_start_;
+      const auto A = L_.block(start, start, shift, shift).triangularView<Eigen::Lower>();
+      const auto C = L_.block(tail_start_, start, old_tail, shift);
+      Eigen::MatrixXd H(tail, tail);
+      H.topLeftCorner(shift, shift) = A * L_.block(start, start, shift, shift).transpose();
+      H.bottomLeftCorner(old_tail, shift) =
+          C * L_.block(start, start, shift, shift).triangularView<Eigen::Lower>().transpose();
+      H.topRightCorner(shift, old_tail) = H.bottomLeftCorner(old_tail, shift).transpose();
+      H.bottomRightCorner(old_tail, old_tail) = H_;
+      H.bottomRightCorner(old_tail, old_tail).noalias() += C * C.transpose();
+      H_ = std::move(H);
+    } else {
+      const auto C = L_.block(start, tail_start_, tail, -shift);
+      Eigen::MatrixXd H = H_.bottomRightCorner(tail, tail);
+      H.noalias() -= C * C.transpose();
+      H_ = std::move(H);
+    }
+  } else if (3 * start < tail) {
+    H_ = B_.bottomRightCorner(tail, tail);
+    H_.noalias() -= L_.bottomLeftCorner(tail, start) * L_.bottomLeftCorner(tail, start).transpose();
+  } else {
+    const auto L22 = L_.bottomRightCorner(tail, tail).triangularView<Eigen::Lower>();
+    H_ = L22 * L_.bottomRightCorner(tail, tail).transpose();
+  }
+  tail_start_ = start;
 }
 
 bool CondensedBulk::is_default(int node, const NodeConditions& c) const {
@@ -121,19 +186,34 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   const int n = static_cast<int>(p_.f.size());
   const int m = contacts();
   SIG_VERIFY(static_cast<int>(conditions.size()) == m, "condensed bulk: one condition per node");
-  if (!factorized_) factorize();
 
-  // 1. The tail: from the first position of a node with non-default conditions.
-  int start = n;
+  // 1. The tail: from the first position of a node with non-default conditions. When it holds
+  //    many more unknowns than those nodes (a contact zone away from the smallest gaps, or a
+  //    wide first active set), its dense problem would cost more than a new factorization with
+  //    the zone last: reorder.
+  std::vector<char> zone(m, 0);
+  int zone_unknowns = 0;
   for (int p = 0; p < m; ++p)
-    if (!is_default(p, conditions[p])) start = std::min(start, node_start_[p]);
+    if (!is_default(p, conditions[p])) {
+      zone[p] = 1;
+      zone_unknowns += has_tangential() ? 2 : 1;
+    }
+  const auto tail_start = [&] {
+    int start = n;
+    for (int p = 0; p < m; ++p)
+      if (zone[p]) start = std::min(start, node_start_[p]);
+    return start;
+  };
+  int start = tail_start();
+  const double t = n - start, t_zone = zone_unknowns, size = n;
+  if (t > 1.5 * t_zone + 32 && 4 * t * t * t > size * size * size) {
+    reorder(zone);
+    start = tail_start();
+  }
+  if (!factorized_) factorize();
   const int tail = n - start;
   last_tail_ = tail;
-  if (tail > 0 && start != tail_start_) {
-    const auto L22 = L_.bottomRightCorner(tail, tail).triangularView<Eigen::Lower>();
-    H_ = L22 * L_.bottomRightCorner(tail, tail).transpose();
-    tail_start_ = start;
-  }
+  if (tail > 0 && start != tail_start_) tail_schur(start);
 
   // 2. The step in the new iterate z = w + dw, not in dw: its right side f + (eps + D0) w has no
   //    cancellation (S w - f would carry round-off of ||S|| ||w|| into every reaction, and the
@@ -182,6 +262,11 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
     row = H_.row(i);
     row[i] += ci.stiffness - k0(i);
     double right = c[i] - ci.force + (ci.stiffness - k0(i)) * now(i);
+    if (ci.cross != 0) {
+      coupled = true;
+      row[normal_of(i)] += ci.cross;
+      right += ci.cross * now(normal_of(i));
+    }
     if (ci.coupling != 0) {
       coupled = true;
       const int nrow = normal_of(i);
@@ -247,6 +332,7 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
     }
   }
   base_ = w_;
+  last_normal_force_ = s.normal_force;
   return s;
 }
 

@@ -8,12 +8,15 @@
 //  - the step matrix of a node the step leaves in its default state (no imposed component, the
 //    method's default normal spring, no tangential force: a node off the obstacle) never
 //    changes. B = S + eps I + D0 (D0 the default springs, eps the proximal term below) is
-//    factorized ONCE, by Cholesky, with the nodes ordered by decreasing initial gap, so the
-//    nodes likely to touch come last;
+//    factorized by Cholesky, with the nodes ordered by decreasing initial gap, so the nodes
+//    likely to touch come last;
 //  - the trailing block L22 of the factor gives the Schur complement L22 L22^T of B onto any
 //    tail of that order: a step solves the small dense problem of the tail that holds every
 //    node with non-default conditions (the contact zone), the rest by triangular solves with
-//    the leading block L11.
+//    the leading block L11;
+//  - when the tail is much longer than the zone (the zone away from the smallest gaps, or the
+//    wide active set of an early iteration) and its dense problem would cost more than a new
+//    factorization, the nodes are ordered again, the zone last, and B factorized again.
 // This is the primal elimination (the contact rows are eliminated, never inverted), so a
 // semi-coercive bulk (rigid modes held by contact alone) keeps its accuracy.
 //
@@ -65,6 +68,8 @@ public:
   const Eigen::VectorXd& displacement() const { return w_; }
   /// Unknowns of the last solve's dense tail problem (its size shows the contact zone).
   int last_tail_size() const { return last_tail_; }
+  /// Times the nodes were reordered (and B factorized again) to shorten the tail.
+  int reorders() const { return reorders_; }
 
 private:
   CondensedProblem p_;
@@ -73,14 +78,20 @@ private:
   std::vector<int> position_;         ///< unknown -> position
   std::vector<int> node_start_;       ///< per contact node: the first position of its unknowns
   std::vector<int> node_of_;          ///< per unknown: its contact node, or -1
-  Eigen::MatrixXd L_;                 ///< Cholesky factor of the permuted B (lower)
+  Eigen::MatrixXd B_;                 ///< the permuted B
+  Eigen::MatrixXd L_;                 ///< its Cholesky factor (lower)
   bool factorized_ = false;
   int tail_start_ = -1; ///< position of the cached H
   Eigen::MatrixXd H_;   ///< L22 L22^T for tail_start_
   Eigen::VectorXd w_, base_, step_, kept_;
+  Eigen::VectorXd last_normal_force_; ///< N of the last solve, per contact node
   int last_tail_ = 0;
+  int reorders_ = 0;
 
+  void order_nodes(const std::vector<int>& nodes);
+  void reorder(const std::vector<char>& contact_zone);
   void factorize();
+  void tail_schur(int start);
   bool is_default(int node, const NodeConditions& c) const;
 };
 

@@ -14,7 +14,9 @@
 // Each contact component is either imposed (its increment given, its force the reaction) or
 // carries a force law linear in the increments:
 //     N = force + stiffness dw_n
-//     T = force + stiffness dw_t + coupling N     (Coulomb's slip: T = sigma mu N)
+//     T = force + stiffness dw_t + coupling N + cross dw_n
+// (Coulomb's slip, T = sigma mu N: coupling = sigma mu where the normal is imposed, N its
+// reaction; otherwise force and cross carry sigma mu times N's own force law).
 #include <Eigen/Core>
 
 #include <vector>
@@ -26,7 +28,8 @@ struct DofCondition {
   double value = 0; ///< the increment, where imposed
   double force = 0; ///< otherwise: the force law of the header
   double stiffness = 0;
-  double coupling = 0; ///< tangential component only
+  double coupling = 0; ///< tangential component only: times the node's normal force N
+  double cross = 0;    ///< tangential component only: times the node's dw_n
   bool operator==(const DofCondition&) const = default;
 };
 

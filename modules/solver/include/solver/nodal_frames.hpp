@@ -1,8 +1,10 @@
 #pragma once
-// Nodal frames at contact nodes, shared by the small- and large-deformation contact solves.
+// Nodal frames at contact nodes, shared by the small- and large-deformation contact solves: the
+// unknowns of a contact node become (w_t, w_n), its slip and its normal displacement towards the
+// obstacle, u = R w on the node's two dofs and u = w elsewhere (u = Q w, Q orthogonal).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-#include <array>
+
 #include <vector>
 
 namespace sig {
@@ -16,9 +18,30 @@ inline Eigen::Matrix2d nodal_frame(const Eigen::Vector2d& n) {
   return R;
 }
 
-/// The rotation u = Q w of an n-dof vector: the block nodal_frame(normals[p]) on the two dofs
-/// dofs[p] of contact node p, the identity elsewhere. Q is orthogonal.
-Eigen::SparseMatrix<double> nodal_frames(int n, const std::vector<std::array<int, 2>>& dofs,
-                                         const std::vector<Eigen::Vector2d>& normals);
+/// Q applied in place, on the values of a sparse matrix whose pattern holds the full 2 x 2 block
+/// of every contact node: Q^T A Q has A's pattern, since Q only mixes the two dofs of a node, so
+/// the rotation costs a pass over those nodes' rows and columns, with no matrix product and no
+/// new pattern.
+class FrameRotation {
+public:
+  /// `first_dofs[p]`: the dof a of contact node p, whose two dofs are a and a + 1 (column-major,
+  /// compressed A with sorted rows). sig::Error if a node's block is not full in A.
+  FrameRotation(const Eigen::SparseMatrix<double>& A, std::vector<int> first_dofs);
+
+  /// A := Q^T A Q for the frames of `normals` (one per contact node); A has the pattern of the
+  /// constructor's.
+  void rotate(Eigen::SparseMatrix<double>& A, const std::vector<Eigen::Vector2d>& normals) const;
+  /// v := Q^T v (into the frames) or v := Q v (back).
+  void to_frames(Eigen::VectorXd& v, const std::vector<Eigen::Vector2d>& normals) const;
+  void from_frames(Eigen::VectorXd& v, const std::vector<Eigen::Vector2d>& normals) const;
+
+  /// (A w)[a + 1], the normal row of contact node p.
+  double normal_row_times(const Eigen::SparseMatrix<double>& A, int p,
+                          const Eigen::VectorXd& w) const;
+
+private:
+  std::vector<int> first_;                  ///< dof a of contact node p
+  std::vector<std::vector<int>> row_slots_; ///< per node: slot of row a in each column of a
+};
 
 } // namespace sig

@@ -4,7 +4,6 @@
 #include "assembly/pattern.hpp"
 #include "core/error.hpp"
 #include "solver/linear_solver.hpp"
-#include "solver/nodal_frames.hpp"
 
 #include <algorithm>
 
@@ -43,23 +42,10 @@ NewtonMatrix::NewtonMatrix(const SparsityPattern& pattern, const std::vector<cha
   std::copy(reduced_inner.begin(), reduced_inner.end(), reduced_.innerIndexPtr());
   std::fill(reduced_.valuePtr(), reduced_.valuePtr() + reduced_inner.size(), 0.0);
 
-  // Per contact node (dofs a, b = a + 1): its two columns hold the same rows; row a sits just
-  // above row b in each neighbouring column j.
-  row_slots_.resize(nodes_.size());
-  for (std::size_t p = 0; p < nodes_.size(); ++p) {
-    const int a = 2 * nodes_[p], b = a + 1;
-    SIG_VERIFY(outer[a + 1] - outer[a] == outer[b + 1] - outer[b],
-               "contact node " << nodes_[p] + 1 << ": its two dofs have different patterns");
-    for (int k = outer[a]; k < outer[a + 1]; ++k) {
-      const int j = inner[k];
-      const auto first = inner.begin() + outer[j], last = inner.begin() + outer[j + 1];
-      const auto row = std::lower_bound(first, last, a);
-      SIG_VERIFY(row != last && *row == a && row + 1 != last && *(row + 1) == b,
-                 "contact node " << nodes_[p] + 1 << ": its node block in column " << j + 1
-                                 << " is not full");
-      row_slots_[p].push_back(static_cast<int>(row - inner.begin()));
-    }
-  }
+  std::vector<int> first_dofs(nodes_.size());
+  for (std::size_t p = 0; p < nodes_.size(); ++p)
+    first_dofs[p] = 2 * nodes_[p];
+  frames_ = std::make_unique<FrameRotation>(full_, std::move(first_dofs));
 }
 
 void NewtonMatrix::set_tangent(const Eigen::SparseMatrix<double>& K) {
@@ -76,23 +62,7 @@ void NewtonMatrix::add_node_block(int p, const Eigen::Matrix2d& block) {
 }
 
 void NewtonMatrix::rotate(const std::vector<Eigen::Vector2d>& normals) {
-  double* v = full_.valuePtr();
-  const int* outer = full_.outerIndexPtr();
-  for (std::size_t p = 0; p < nodes_.size(); ++p) {
-    const Eigen::Matrix2d R = nodal_frame(normals[p]);
-    const int a = 2 * nodes_[p], b = a + 1;
-    const int length = outer[a + 1] - outer[a];
-    for (int k = 0; k < length; ++k) { // A Q on the columns a, b
-      const double ca = v[outer[a] + k], cb = v[outer[b] + k];
-      v[outer[a] + k] = ca * R(0, 0) + cb * R(1, 0);
-      v[outer[b] + k] = ca * R(0, 1) + cb * R(1, 1);
-    }
-    for (const int slot : row_slots_[p]) { // Q^T (A Q) on the rows a, b
-      const double ra = v[slot], rb = v[slot + 1];
-      v[slot] = R(0, 0) * ra + R(1, 0) * rb;
-      v[slot + 1] = R(0, 1) * ra + R(1, 1) * rb;
-    }
-  }
+  frames_->rotate(full_, normals);
 }
 
 Eigen::VectorXd NewtonMatrix::solve(const Eigen::VectorXd& r0,
@@ -140,14 +110,7 @@ Eigen::VectorXd NewtonMatrix::solve(const Eigen::VectorXd& r0,
 }
 
 double NewtonMatrix::normal_row_times(int p, const Eigen::VectorXd& dw) const {
-  const double* v = full_.valuePtr();
-  const int* inner = full_.innerIndexPtr();
-  const int* outer = full_.outerIndexPtr();
-  const int a = 2 * nodes_[p];
-  double sum = 0;
-  for (std::size_t k = 0; k < row_slots_[p].size(); ++k)
-    sum += v[row_slots_[p][k] + 1] * dw[inner[outer[a] + static_cast<int>(k)]];
-  return sum;
+  return frames_->normal_row_times(full_, p, dw);
 }
 
 double& NewtonMatrix::value(int row, int column) {

@@ -71,11 +71,21 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   const bool friction = contact.has_friction();
   StaticSolution s;
 
-  // 1. Nodal frames at the contact nodes, so each normal displacement and slip is one unknown.
+  // 1. Nodal frames at the contact nodes, so each normal displacement and slip is one unknown;
+  //    applied in place, K keeps its pattern.
   Stopwatch clock;
-  const Eigen::SparseMatrix<double> Q = nodal_frames(reduced.num_free(), dofs, contact.normal);
-  const Eigen::SparseMatrix<double> K = Q.transpose() * reduced.K * Q;
-  const Eigen::VectorXd f = Q.transpose() * reduced.f;
+  std::vector<int> first_dofs(m);
+  for (int p = 0; p < m; ++p) {
+    SIG_VERIFY(dofs[p][1] == dofs[p][0] + 1,
+               "contact node " << contact.node[p] + 1 << ": its dofs are not consecutive");
+    first_dofs[p] = dofs[p][0];
+  }
+  Eigen::SparseMatrix<double> K = reduced.K;
+  K.makeCompressed();
+  const FrameRotation frames(K, std::move(first_dofs));
+  frames.rotate(K, contact.normal);
+  Eigen::VectorXd f = reduced.f;
+  frames.to_frames(f, contact.normal);
 
   // 2. Condense the bulk onto the normal unknowns (and the slips with friction): one sparse
   //    factorization of the rest, the body with Gamma3 held, positive definite even when K is
@@ -108,7 +118,8 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   if (start.size() > 0) {
     SIG_VERIFY(start.size() == system.num_dofs(),
                "start displacement of size " << start.size() << " for " << system.num_dofs());
-    const Eigen::VectorXd w = Q.transpose() * reduced.restrict(start);
+    Eigen::VectorXd w = reduced.restrict(start);
+    frames.to_frames(w, contact.normal);
     w_start.resize(static_cast<Eigen::Index>(interface.size()));
     for (std::size_t k = 0; k < interface.size(); ++k)
       w_start[static_cast<Eigen::Index>(k)] = w[interface[k]];
@@ -119,7 +130,9 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);
 
   // 4. Back to the whole body.
-  s.u = reduced.expand(Q * schur.expand(f, condensed.w));
+  Eigen::VectorXd u = schur.expand(f, condensed.w);
+  frames.from_frames(u, contact.normal);
+  s.u = reduced.expand(u);
   s.seconds["solve"] = solve_clock.seconds();
   s.multiplier = c.normal_force;
   s.tangential = c.tangential_force;

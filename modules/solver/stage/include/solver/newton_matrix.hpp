@@ -14,6 +14,9 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "solver/nodal_frames.hpp"
+
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -51,14 +54,14 @@ public:
 private:
   double& value(int row, int column);
 
-  Eigen::SparseMatrix<double> full_;        ///< Q^T K Q + the method's terms, K's pattern
-  Eigen::SparseMatrix<double> reduced_;     ///< its free rows and columns: the factorized matrix
-  std::vector<int> nodes_;                  ///< contact node p
-  std::vector<int> free_dofs_;              ///< reduced index -> dof
-  std::vector<int> free_index_;             ///< dof -> reduced index, -1 for a Dirichlet dof
-  std::vector<int> reduced_slot_;           ///< slot of full_ -> slot of reduced_ (or -1)
-  std::vector<int> diagonal_;               ///< dof -> slot of its diagonal entry
-  std::vector<std::vector<int>> row_slots_; ///< per node: slot of row a in each column of a
+  Eigen::SparseMatrix<double> full_;      ///< Q^T K Q + the method's terms, K's pattern
+  Eigen::SparseMatrix<double> reduced_;   ///< its free rows and columns: the factorized matrix
+  std::vector<int> nodes_;                ///< contact node p
+  std::vector<int> free_dofs_;            ///< reduced index -> dof
+  std::vector<int> free_index_;           ///< dof -> reduced index, -1 for a Dirichlet dof
+  std::vector<int> reduced_slot_;         ///< slot of full_ -> slot of reduced_ (or -1)
+  std::vector<int> diagonal_;             ///< dof -> slot of its diagonal entry
+  std::unique_ptr<FrameRotation> frames_; ///< the nodal frames, in place on full_
 };
 
 } // namespace sig
