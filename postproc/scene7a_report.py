@@ -133,9 +133,10 @@ def read_contact(path):
     """contact.csv as arrays (rows in boundary order)."""
     with open(path, newline="") as f:
         reader = csv.DictReader(f)
+        # The frictionless columns come first; the friction columns after them are not read here.
         expected = ["node", "x1", "x2", "u1", "u2", "gap", "multiplier", "pressure", "status"]
-        if reader.fieldnames != expected:
-            fail(f"{path}: header {reader.fieldnames}, expected {expected}")
+        if reader.fieldnames[:len(expected)] != expected:
+            fail(f"{path}: header {reader.fieldnames}, expected it to start with {expected}")
         rows = list(reader)
     if not rows:
         fail(f"{path}: no rows")

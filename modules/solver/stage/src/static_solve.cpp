@@ -129,8 +129,16 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   const ContactNewtonResult& c = condensed.contact;
   if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);
 
-  // 4. Back to the whole body.
+  // 4. Back to the whole body, and its equilibrium checked there: a rigid mode that neither
+  //    the supports nor the contact laws hold (a tangential load on a frictionless body) leaves
+  //    the interior factorization singular, and the condensed solve a meaningless drift.
   Eigen::VectorXd u = schur.expand(f, condensed.w);
+  Eigen::VectorXd r = K * u - f;
+  for (int p = 0; p < m; ++p) {
+    r[dofs[p][1]] += c.normal_force[p];
+    r[dofs[p][0]] += c.tangential_force[p];
+  }
+  const double imbalance = r.norm() / std::max(f.norm(), 1e-300);
   frames.from_frames(u, contact.normal);
   s.u = reduced.expand(u);
   s.seconds["solve"] = solve_clock.seconds();
@@ -140,6 +148,13 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   s.friction_status = c.friction_status;
   s.converged = c.converged;
   s.failure = c.failure;
+  if (s.converged && imbalance > std::max(1e3 * parameters.eps, 1e-6)) {
+    s.converged = false;
+    s.failure = "the body is not in equilibrium (relative residual " + std::to_string(imbalance) +
+                "): a rigid motion is held neither by the Dirichlet conditions nor by contact "
+                "and friction (a tangential load on a frictionless body?)";
+    log_warning(s.failure);
+  }
   s.history = c.history;
   // As the thesis counts them: every displacement dof, plus the Lagrange nodes for ALM.
   s.unknowns = system.num_dofs() + condensed.multiplier_unknowns;

@@ -1,0 +1,172 @@
+#!/usr/bin/env bash
+# drivers/friction_hertz.sh [--quick] [-o OUTDIR]: the frictional Hertz half disc (issue 10,
+# datafiles/friction/hertz_coulomb.dat): pressed and pushed sideways, held by contact and Coulomb
+# friction alone; every method, the stick and slip zones against Cattaneo and Mindlin, then the
+# report.
+#
+#   full:    N = 128 256 512, reference N = 1024
+#   --quick: N = 128 256,     reference N = 512
+#
+# Runs (each in OUTDIR/N<N>/<variant>/ on the base DS files of OUTDIR/N<N>/base/, as scene7a.sh):
+#   pdas_1e2, alm_1e2, projection_1, penalty_1e2    every N (the parameters that converge on this
+#                                                  body held by friction alone: the sweep shows
+#                                                  where the others fail)
+#   a parameter sweep at N = 256: pdas gamma, alm r in 1 1e2 1e4, projection c in 1e2 1 1e-2
+#   1e-4, penalty r in 1e1 1e2 1e3 1e4 1e6
+#   pdas_1e2_from_zero at N = 256: the Newton from u = 0 instead of the rigid shift (a single
+#                                   node touches and holds nothing sideways: shown failing)
+#   tresca_pdas_1e2 at N = 256:     the Tresca law with threshold 1 GPa instead of Coulomb
+# Every run starts from the rigid shift u = (0, -h^2 / R), h = pi R / N (the INITIAL card).
+# Then postproc/friction_hertz_report.py OUTDIR writes OUTDIR/report.md and its PNGs.
+#
+# Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
+
+usage() {
+  cat <<EOF
+usage: drivers/friction_hertz.sh [--quick] [-o OUTDIR]
+  --quick     N = 128 256, reference 512 (instead of 128 256 512, reference 1024)
+  -o OUTDIR   results folder (default out/friction_hertz)
+  -h, --help  this message
+Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
+EOF
+}
+
+invocation="drivers/friction_hertz.sh${*:+ $*}"
+template=$root/datafiles/friction/hertz_coulomb.dat
+out=out/friction_hertz
+quick=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    --quick) quick=1 ;;
+    -o)
+      [ $# -ge 2 ] || die "-o needs a folder"
+      out=$2
+      shift
+      ;;
+    -h | --help)
+      usage
+      exit 0
+      ;;
+    *)
+      usage >&2
+      die "unknown argument '$1'"
+      ;;
+  esac
+  shift
+done
+
+require_stages mesh material contact assemble solve post
+[ -r "$template" ] || die "cannot read the template deck $template"
+require_charts
+
+if [ $quick -eq 1 ]; then
+  meshes=(128 256)
+  reference=512
+else
+  meshes=(128 256 512)
+  reference=1024
+fi
+sweep_n=256
+declare -A sweep=([pdas]="1 1e2 1e4" [alm]="1 1e2 1e4" [projection]="1e2 1 1e-2 1e-4"
+  [penalty]="1e1 1e2 1e3 1e4 1e6")
+declare -A default=([pdas]=1e2 [alm]=1e2 [projection]=1 [penalty]=1e2)
+
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+source "$root/drivers/lib/hertz_deck.sh"
+
+# The rigid shift h^2 / R of mesh N, h = pi R / N (R of the template's MESH card).
+radius=$(sed -nE '/^[[:space:]]*MESH[[:space:]]/ s/.*[[:space:]]R=([^[:space:]]+).*/\1/p' "$template")
+[ -n "$radius" ] || die "$template: no R= on the MESH card"
+shift_of() {
+  "$python" -c "import math, sys; R, n = float(sys.argv[1]), int(sys.argv[2]); print(f'{(math.pi * R / n) ** 2 / R:.6g}')" "$radius" "$1"
+}
+
+# write_deck DECK N [METHOD VALUE [EDIT...]]: the template for mesh N with its rigid shift, the
+# method and parameter, and further sed edits.
+write_deck() {
+  local deck=$1 n=$2 method=${3:-} value=${4:-}
+  hertz_deck "$template" "$deck" "$n" "" "$method" "$value"
+  sed -i -E "/^[[:space:]]*INITIAL[[:space:]]/ s/u=[^[:space:]]+/u=0,-$(shift_of "$n")/" "$deck"
+  grep -qE "^[[:space:]]*INITIAL[[:space:]].*u=0,-" "$deck" || die "$template: no INITIAL card"
+  [ $# -le 4 ] || sed -i -E "${@:5}" "$deck"
+}
+
+failed=()
+
+# base N: mesh, materials, contact elements and the assembled system in OUTDIR/N<N>/base.
+base() {
+  local n=$1 dir=$out/N$1/base
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  write_deck "$dir/hertz.dat" "$n"
+  for stage in mesh material contact assemble; do
+    run_stage "$stage" "$dir/hertz.dat" "$dir" || die "cannot build the base case of N = $n"
+  done
+}
+
+# variant N NAME METHOD VALUE [EDIT...]: sig-solve and sig-post in OUTDIR/N<N>/NAME/ on the base
+# DS files (with edits of the FRICTION card, its own case.cont).
+variant() {
+  local n=$1 name=$2 dir=$out/N$1/$2
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  for ds in nopo mili cont tae; do
+    ln -s "../base/case.$ds" "$dir/case.$ds"
+  done
+  write_deck "$dir/hertz.dat" "$n" "${@:3}"
+  if ! cmp -s <(grep -iE '^[[:space:]]*(contact|friction)' "$dir/hertz.dat") \
+    <(grep -iE '^[[:space:]]*(contact|friction)' "$out/N$n/base/hertz.dat"); then
+    rm "$dir/case.cont"
+    run_stage contact "$dir/hertz.dat" "$dir" || failed+=("$dir")
+  fi
+  run_stage solve "$dir/hertz.dat" "$dir" && run_stage post "$dir/hertz.dat" "$dir" ||
+    failed+=("$dir")
+}
+
+{
+  echo "command: $invocation"
+  echo "outdir: $out"
+  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "host: $(uname -n), $(nproc) cores"
+  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "SIG_BIN: $bin"
+  echo "template: $template"
+  echo "meshes: ${meshes[*]}"
+  echo "reference: $reference"
+  echo "sweep_n: $sweep_n"
+} >"$out/command.txt"
+cp "$template" "$out/hertz.template.dat"
+
+rm -rf "$out"/N[0-9]*
+start=$SECONDS
+for n in "${meshes[@]}" "$reference"; do
+  t0=$SECONDS
+  base "$n"
+  if [ "$n" = "$reference" ]; then
+    variant "$n" pdas_1e2 pdas 1e2
+  else
+    for method in pdas alm projection penalty; do
+      variant "$n" "${method}_${default[$method]}" "$method" "${default[$method]}"
+    done
+  fi
+  if [ "$n" = "$sweep_n" ]; then
+    for method in pdas alm projection penalty; do
+      for value in ${sweep[$method]}; do
+        [ "$value" = "${default[$method]}" ] || variant "$n" "${method}_$value" "$method" "$value"
+      done
+    done
+    variant "$n" pdas_1e2_from_zero pdas 1e2 -e "/^[[:space:]]*INITIAL[[:space:]]/ d"
+    variant "$n" tresca_pdas_1e2 pdas 1e2 \
+      -e "/^[[:space:]]*FRICTION[[:space:]]/ s/law=coulomb mu=[^[:space:]]+/law=tresca threshold=1/"
+  fi
+  echo "friction_hertz.sh: N = $n done ($((SECONDS - t0)) s)"
+done
+echo "friction_hertz.sh: all runs done in $((SECONDS - start)) s"
+
+"$python" "$root/postproc/friction_hertz_report.py" "$out"
+if [ ${#failed[@]} -gt 0 ]; then
+  die "${#failed[@]} run(s) failed: ${failed[*]}"
+fi
