@@ -297,7 +297,7 @@ def section_zones(runs, data, info, out):
     ax.set_xlabel("x1")
     ax.set_ylabel("traction (GPa)")
     ax.set_title(f"Frictional Hertz, PDAS, N = {n}")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left")
     fig.tight_layout()
     fig.savefig(out / f"tractions_N{n}.png", dpi=120)
     plt.close(fig)

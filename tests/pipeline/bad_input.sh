@@ -42,6 +42,17 @@ expect assemble  's/^TRACTION ref=2/TRACTION ref=9/'      "bad.dat:" "'ref'"
 expect solve     's/method=pdas/method=newton/'           "bad.dat:" "'method'" "newton"
 expect solve     's/eps=1e-5/eps=-1/'                     "bad.dat:" "'eps'"
 expect solve     's/^SOLVER /SOLVER colour=red /'         "bad.dat:" "'colour'"
+# Contact and friction laws (issue 10): ranges and fields the law does not read, on their line.
+expect contact   's/law=signorini gap=0/law=compliance cn=0/'  "bad.dat:" "'cn'" "> 0"
+expect contact   's/law=signorini gap=0/law=compliance/'       "bad.dat:" "'cn'"
+expect contact   's/law=signorini gap=0/law=compliance-unilateral cn=10 g=-1/' "bad.dat:" "'g'" ">= 0"
+expect contact   's/law=signorini gap=0/law=signorini cn=10/'  "bad.dat:" "'cn'" "not a parameter"
+expect contact   's/law=signorini gap=0/law=tresca/'           "bad.dat:" "'law'" "tresca"
+expect contact   '$a FRICTION ref=3 law=coulomb mu=-0.2'      "bad.dat:" "'mu'" ">= 0"
+expect contact   '$a FRICTION ref=3 law=tresca threshold=-1'  "bad.dat:" "'threshold'" ">= 0"
+expect contact   '$a FRICTION ref=2 law=coulomb mu=0.2'       "bad.dat:" "'ref'" "no CONTACT card"
+expect contact   '/^CONTACT/d; $a FRICTION ref=3 law=coulomb mu=0.2' "bad.dat:" "'ref'" "CONTACT"
+expect solve     '$a INITIAL u=0,-1 v=1,0'                    "bad.dat:" "'v'" "static"
 
 # A truncated and a corrupted DS are refused with the file and array named.
 cp "$work/out/case.tae" "$work/keep.tae"
@@ -60,4 +71,4 @@ after=$(cd "$work/out" && sha256sum case.* | sha256sum)
 [ "$before" = "$after" ] || { echo "FAIL: a failed stage changed a DS file"; failures=$((failures + 1)); }
 
 [ "$failures" -eq 0 ] || exit 1
-echo "bad_input: 13 bad inputs refused with file, line and field; DS files intact"
+echo "bad_input: 23 bad inputs refused with file, line and field; DS files intact"

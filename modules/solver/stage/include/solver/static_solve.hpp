@@ -33,6 +33,8 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 
 /// `start` (empty: 0) is the first iterate of the displacement, 2 dofs per node: a warm start,
 /// or the small rigid shift a semi-coercive body may need to start from several contact nodes.
+/// Non-convergence of the method is returned; a body with a rigid motion that neither its
+/// Dirichlet conditions nor its contact laws can hold (no equilibrium exists) is a sig::Error.
 StaticSolution solve_static_contact(const LinearSystem& system, const ContactElements& contact,
                                     const ContactSolverParameters& parameters,
                                     const std::string& backend, const Eigen::VectorXd& start = {});
