@@ -12,7 +12,9 @@
 #                                                  body held by friction alone: the sweep shows
 #                                                  where the others fail)
 #   a parameter sweep at N = 256: pdas gamma, alm r in 1 1e2 1e4, projection c in 1e2 1 1e-2
-#   1e-4, penalty r in 1e1 1e2 1e3 1e4 1e6
+#   1e-4, penalty r in 1e1 1e2 1e3 1e4 1e6; each with the default line search (SOLVER
+#   search=auto, <method>_<value>), with a line search (search=yes, <method>_<value>_search) and
+#   with full Newton steps (search=no, <method>_<value>_full)
 #   pdas_1e2_from_zero at N = 256: the Newton from u = 0 instead of the rigid shift (a single
 #                                   node touches and holds nothing sideways: shown failing)
 #   tresca_pdas_1e2 at N = 256:     the Tresca law with threshold 1 GPa instead of Coulomb
@@ -156,6 +158,10 @@ for n in "${meshes[@]}" "$reference"; do
     for method in pdas alm projection penalty; do
       for value in ${sweep[$method]}; do
         [ "$value" = "${default[$method]}" ] || variant "$n" "${method}_$value" "$method" "$value"
+        variant "$n" "${method}_${value}_search" "$method" "$value" \
+          -e "/^[[:space:]]*SOLVER[[:space:]]/ s/\$/ search=yes/"
+        variant "$n" "${method}_${value}_full" "$method" "$value" \
+          -e "/^[[:space:]]*SOLVER[[:space:]]/ s/\$/ search=no/"
       done
     done
     variant "$n" pdas_1e2_from_zero pdas 1e2 -e "/^[[:space:]]*INITIAL[[:space:]]/ d"

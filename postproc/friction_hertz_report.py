@@ -351,27 +351,37 @@ def section_agreement(runs, data, info):
 def section_stability(runs, info):
     n = info["sweep_n"]
     lines = [f"## Stability: where the methods fail (N = {n})", "",
-             "Newton iterations for each method and parameter (Nv: no convergence within maxit, "
-             "with the reason sig-solve recorded):", ""]
+             "Newton iterations for each method and parameter with a line search (`SOLVER "
+             "search=yes`: alpha = 1, 1/2, ... the first step length that lowers the residual, "
+             "else the one of least residual, while the residual is above 1e3 eps) and with full "
+             "Newton steps, as the thesis's methods (`search=no`). By default (`search=auto`) "
+             "a frictional solve searches with alm, pdas and projection, not with penalty. Nv: "
+             "no convergence within maxit.", ""]
     rows = []
     for method in METHODS:
-        for run in sorted((r for r in runs.values() if r["n"] == n and r["method"] == method
-                           and r["name"].count("_") == 1), key=lambda r: float(r["value"])):
-            rows.append([LABEL[method], f"{PARAMETER[method]} = {run['value']}", iterations_cell(run),
-                         f"{run['seconds']:.3f}", run["summary"]["failure"] or "—"])
-    lines += table(["method", "parameter", "iterations", "time s", "failure"], rows)
+        values = sorted({r["name"].split("_")[1] for r in runs.values() if r["n"] == n and
+                         r["method"] == method and r["name"].endswith("_full")}, key=float)
+        for value in values:
+            cells = [LABEL[method], f"{PARAMETER[method]} = {value}"]
+            for mode in ("search", "full"):
+                run = runs.get((n, f"{method}_{value}_{mode}"))
+                cells += [iterations_cell(run), f"{run['seconds']:.3f}"] if run else ["—", "—"]
+            rows.append(cells)
+    lines += table(["method", "parameter", "iterations (search=yes)", "time s",
+                    "iterations (search=no)", "time s"], rows)
     zero = runs.get((n, "pdas_1e2_from_zero"))
     if zero:
         lines += ["", f"From u = 0 instead of the rigid shift (PDAS gamma = 1e2): "
                   f"{iterations_cell(zero)}; {zero['summary']['failure'] or 'converged'}. A single "
                   f"node touches at u = 0: its first step holds nothing sideways and the body drifts "
                   f"by the tangential load over the proximal term."]
-    lines += ["", "Where a stick test t + gamma q_t (or r q_t, q_t / c) sees a large slip at once — "
-              "a large parameter, or projection's held-back normals — every node of the first "
-              "contact zone slips; a body held sideways by friction alone then has no tangential "
-              "stiffness in the step, drifts by the tangential load over the proximal term, and "
-              "the iteration cycles (Nv). Bodies held by a Dirichlet condition do not have this "
-              "mode.", ""]
+    lines += ["", "With full steps, where a stick test t + gamma q_t (or r q_t, q_t / c) sees a "
+              "large slip — a large parameter, a coarse mesh, projection's held-back normals — the "
+              "nodes of the contact zone slip one after the other; once none sticks, a body held "
+              "sideways by friction alone has no tangential stiffness in the step, drifts by the "
+              "tangential load over the proximal term, and the iteration cycles (Nv). The line "
+              "search damps the steps that would raise the residual and keeps a stick zone. "
+              "Bodies held by a Dirichlet condition do not have this mode.", ""]
     return lines
 
 
@@ -403,7 +413,8 @@ def section_speed_accuracy(runs, info, out):
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     top = 1.0
     for run in sorted(runs.values(), key=lambda r: (r["n"], r["name"])):
-        if run["n"] == info["reference"] or run["name"] in ("pdas_1e2_from_zero", "tresca_pdas_1e2"):
+        if run["n"] == info["reference"] or run["name"] in ("pdas_1e2_from_zero", "tresca_pdas_1e2") \
+                or run["name"].endswith(("_full", "_search")):
             continue
         en, et = shared_error(run, ref) if (ref and run["converged"]) else (math.nan, math.nan)
         rows.append([run["n"], LABEL[run["method"]], f"{PARAMETER[run['method']]} = {run['value']}",

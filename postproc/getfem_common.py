@@ -1,6 +1,9 @@
-"""What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py) share: reading a deck's
-cards, and the version of Debian's python3-getfem."""
+"""What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py, getfem_friction.py) share:
+reading a deck's cards, the version of Debian's python3-getfem, the gmsh half disc, the node
+coordinates of sig-mesh's case.nopo and the nodal weights of the contact nodes."""
 import subprocess
+
+import numpy as np
 
 
 def deck_cards(path):
@@ -20,3 +23,77 @@ def getfem_version():
                               capture_output=True, text=True, check=True).stdout.strip()
     except (OSError, subprocess.CalledProcessError):
         return "5.4 (version not found)"
+
+
+def gmsh_half_disc(geo, workdir, R, n, grading):
+    """meshes/half_disc.geo meshed by gmsh as sig-mesh's half-disc generator does (N uniform
+    segments on the arc, the same grading), written as msh 2.2 for GetFEM's importer; returns the
+    path. Raises RuntimeError with gmsh's output when it fails."""
+    msh = workdir / f"half_disc_N{n}.msh"
+    cmd = ["gmsh", str(geo), "-2", "-format", "msh22", "-v", "2", "-setnumber", "R", repr(R),
+           "-setnumber", "N", str(n), "-setnumber", "grading", repr(grading), "-o", str(msh)]
+    done = subprocess.run(cmd, capture_output=True, text=True)
+    if done.returncode != 0 or not msh.is_file():
+        raise RuntimeError(f"gmsh failed ({' '.join(cmd)}):\n{done.stdout}{done.stderr}")
+    return msh
+
+
+def nopo_coordinates(path):
+    """Node coordinates (NP x NDIM numpy array, mesh order) of a case.nopo written by sig-mesh: a
+    NOPO file of Fortran sequential records (4-byte markers) in the 8-byte-integer, 8-byte-real
+    variant, each array NOP0, NOP1, NOP2, NOP4, NOP5 one record opening with its word count.
+    NOP2 gives NDIM (word 1) and NP (word 22), NOP4 the coordinates. Raises ValueError when the
+    file is not in that layout."""
+    data = path.read_bytes()
+    records, pos = [], 0
+    while pos + 4 <= len(data):
+        size = int.from_bytes(data[pos:pos + 4], "little", signed=True)
+        end = pos + 4 + size
+        if size < 8 or end + 4 > len(data) or data[end:end + 4] != data[pos:pos + 4]:
+            raise ValueError(f"{path}: record at byte {pos} is not a Fortran record")
+        records.append(data[pos + 4:end])
+        pos = end + 4
+    if len(records) < 4:
+        raise ValueError(f"{path}: {len(records)} records, a NOPO file has NOP0 NOP1 NOP2 NOP4 NOP5")
+    words = [np.frombuffer(r, "<i8") for r in records[:3]]
+    for name, w, r in zip(("NOP0", "NOP1", "NOP2"), words, records):
+        if len(r) % 8 or w[0] != len(r) // 8 - 1:
+            raise ValueError(f"{path}: {name} is not an 8-byte record opening with its length")
+    ndim, npoints = int(words[2][1]), int(words[2][22])
+    nop4 = records[3]
+    if int(np.frombuffer(nop4[:8], "<i8")[0]) != ndim * npoints or len(nop4) != 8 * (1 + ndim * npoints):
+        raise ValueError(f"{path}: NOP4 does not hold NDIM x NP = {ndim} x {npoints} reals")
+    return np.frombuffer(nop4[8:], "<f8").reshape(npoints, ndim).copy()
+
+
+def tributary_lengths(points):
+    """Half the chords to the neighbours along a polyline (points 2 x n, in order): the nodal
+    weights of sig-contact's node-to-rigid elements."""
+    chord = np.linalg.norm(np.diff(points, axis=1), axis=0)
+    w = np.zeros(points.shape[1])
+    w[:-1] += chord / 2
+    w[1:] += chord / 2
+    return w
+
+
+def snap_arc(points, ids, center, R, angle0, segments, step):
+    """sig-mesh's snap_arc (modules/mesh/src/generators_gmsh.cpp): move the points `ids` (columns
+    of the 2 x n array `points`, changed in place) of a gmsh arc to center + R (cos, sin)(angle0 +
+    k step), k = 0..segments the nearest arc position, cos and sin set to exactly 0 below 1e-15
+    (gmsh places arc nodes to about 1e-9 R). Raises ValueError unless the ids fill the positions
+    one each."""
+    import math
+
+    if len(ids) != segments + 1:
+        raise ValueError(f"{len(ids)} nodes on the arc, expected {segments + 1}")
+    period = round(2 * math.pi / step)
+    taken = set()
+    for i in ids:
+        angle = math.atan2(points[1, i] - center[1], points[0, i] - center[0])
+        k = round((angle - angle0) / step) % period  # std::lround: halves away from zero, never hit
+        if k > segments or k in taken:
+            raise ValueError(f"point {i} is not at a free arc position")
+        taken.add(k)
+        c, s = math.cos(angle0 + k * step), math.sin(angle0 + k * step)
+        points[0, i] = center[0] + R * (0.0 if abs(c) < 1e-15 else c)
+        points[1, i] = center[1] + R * (0.0 if abs(s) < 1e-15 else s)

@@ -131,7 +131,7 @@ for law in ("coulomb", "tresca"):
     label = f"mu = {g['mu']:g}" if law == "coulomb" else f"threshold {g['threshold']:g}"
     print(f"\n== {law} ({label}), N = {g['n']}, {g['dofs']} dofs, GetFEM {g['getfem_version']}: "
           f"Newton {g['newton_iterations'][0]}, {'converged' if g['converged'] else 'NOT converged'}, "
-          f"{g['active_nodes']} in contact, {g['stick_nodes']} S=, {g['slip_nodes']} slipping; "
+          f"{g['active_nodes']} in contact, friction {g['stick_nodes']} S=, {g['slip_nodes']} S+/S-; "
           f"max N {Nmax:.6g}, max |T| {Tmax:.6g}")
     mc = g["mesh_check"]
     if not mc or mc["max_distance"] > 1e-12:

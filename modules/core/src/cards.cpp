@@ -126,6 +126,9 @@ const std::vector<CardSpec>& card_schema() {
            {"c", "parameter of the iterative projection method (7.16)"},
            {"eps", "tolerance of stopping test (iv): relative increment and residual"},
            {"maxit", "maximum number of nonlinear iterations"},
+           {"search", "auto | yes | no: line search on the residual of a linear contact solve "
+                      "(auto: with friction, for alm, pdas and projection; the large-deformation "
+                      "solve always searches)"},
        }},
       {"LOADSTEPS",
        false,

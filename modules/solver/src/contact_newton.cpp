@@ -13,6 +13,10 @@ namespace {
 
 /// Halvings of the Newton step before the line search gives up on a decrease.
 constexpr int kMaxHalvings = 12;
+/// A linear bulk searches while its relative residual exceeds this many times eps: near the
+/// solution the Newton steps are sound, and round-off (penalty's r ||u|| eps_machine) would make
+/// the search stall on residuals it cannot lower.
+constexpr double kSearchFar = 1e3;
 
 /// The contact state the kernel and the residual see at the bulk's iterate.
 struct ContactPoint {
@@ -180,27 +184,28 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
         if (law.has_friction()) t[p] = step.tangential_force[p];
       }
 
-    // Step length: 1 on a linear bulk; else alpha = 1, 1/2, ... until the state is admissible
-    // and lowers ||R||; if none lowers it, the largest admissible alpha (an active-set change
-    // may raise the residual for one step). A first iteration whose iterate already meets the
-    // residual test (a load step starting from the previous one's solution, the new Dirichlet
-    // values not in R) seeks no decrease: its trials would not lower it.
+    // Step length (header). A first iteration whose iterate already meets the residual test (a
+    // load step starting from the previous one's solution, the new Dirichlet values not in R)
+    // seeks no decrease: its trials would not lower it.
+    const bool nonlinear = bulk_.nonlinear();
+    const bool far = residual_norm > kSearchFar * options_.eps * bulk_.force_scale();
+    const bool search = nonlinear || (options_.line_search && far);
     const bool seek_decrease = iteration > 0 || residual_norm > options_.eps * bulk_.force_scale();
     double alpha = 1, accepted = 0, accepted_residual = 0;
     ContactPoint trial;
-    for (int h = 0; h <= (bulk_.nonlinear() ? kMaxHalvings : 0); ++h, alpha /= 2) {
+    for (int h = 0; h <= (search ? kMaxHalvings : 0); ++h, alpha /= 2) {
       if (!bulk_.move(alpha)) continue;
       trial = point(iterate.lambda + alpha * (lambda - iterate.lambda),
                     iterate.t + alpha * (t - iterate.t));
       const double trial_residual = residual(trial);
       const bool decreases = trial_residual < residual_norm;
-      if (accepted == 0 || decreases) {
+      if (accepted == 0 || decreases || (!nonlinear && trial_residual < accepted_residual)) {
         bulk_.keep();
         std::swap(now, trial);
         accepted = alpha;
         accepted_residual = trial_residual;
       }
-      if (decreases || !bulk_.nonlinear() || (!seek_decrease && accepted > 0)) break;
+      if (decreases || !search || (!seek_decrease && accepted > 0)) break;
     }
     if (accepted == 0) {
       result.failure = "every step length down to 2^-" + std::to_string(kMaxHalvings) +
@@ -249,6 +254,19 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
 }
 
 } // namespace
+
+ContactNewtonOptions newton_options(const ContactSolverParameters& parameters, bool with_friction) {
+  SIG_VERIFY(parameters.search == "auto" || parameters.search == "yes" || parameters.search == "no",
+             "line search '" << parameters.search << "' is unknown; known: auto, yes, no");
+  ContactNewtonOptions o;
+  o.eps = parameters.eps;
+  o.max_iterations = parameters.max_iterations;
+  // Penalty's steps are Newton's on piecewise-linear springs, stiff for a large r: a residual
+  // search would creep along them; it takes full steps unless asked.
+  o.line_search = parameters.search == "yes" ||
+                  (parameters.search == "auto" && with_friction && parameters.method != "penalty");
+  return o;
+}
 
 bool ContactSetting::has_friction() const {
   return std::any_of(law.begin(), law.end(), [](const ContactLaw& l) { return l.has_friction(); });

@@ -25,6 +25,7 @@ SolverCard read_solver_card(const Datafile& datafile) {
   p.c = solver.real("c", p.c);
   p.eps = solver.real("eps", p.eps);
   p.max_iterations = static_cast<int>(solver.integer("maxit", p.max_iterations));
+  p.search = solver.choice("search", {"auto", "yes", "no"}, "auto");
   for (const char* positive : {"r", "gamma", "c", "eps", "maxit"})
     if (solver.has(positive) && solver.real(positive) <= 0)
       solver.fail(positive, "must be positive");

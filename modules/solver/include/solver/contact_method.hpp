@@ -27,6 +27,10 @@ struct ContactSolverParameters {
   double c = 100;              ///< projection
   double eps = 1e-5;           ///< stopping tolerance of test (iv)
   int max_iterations = 100;
+  /// Line search of a linear contact solve: "auto" (on with friction for alm, pdas and
+  /// projection; off without friction, where the thesis's methods take full steps, and for
+  /// penalty), "yes" or "no" (contact_newton.hpp).
+  std::string search = "auto";
 };
 
 /// Card field `SOLVER method=` of the contact methods.

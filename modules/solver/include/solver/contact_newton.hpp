@@ -8,11 +8,21 @@
 //   (iii) one linearized step with the matching condition on each node: on the wall q_n = g
 //         (Dirichlet, the multiplier its reaction), off it lambda = 0 (or projection's Robin
 //         spring), the compliance as a spring, stick q_t = 0, slip t = sigma s (for Coulomb
-//         s = mu N, coupled to the normal force); nonlinear bulks search the step length;
+//         s = mu N, coupled to the normal force); then the step length (below);
 //   (iv)  stop when ||x(k+1) - x(k)|| <= eps ||x(k+1)||, ||R(x(k+1))|| <= eps and (but for
 //         alm) the branches repeat, x = (u, lambda / w, t / w) with the multipliers as
 //         pressures, R = (equilibrium, w C_n, w C_t) relative to the bulk's force scale.
 // A solve that does not converge is a result: converged = false, failure and the history.
+//
+// Step length: alpha = 1, 1/2, ... 2^-12 of the step (u and the multipliers), the first that lowers
+// ||R||. A nonlinear bulk always searches (a trial may leave its domain) and, if no alpha lowers
+// ||R||, takes the largest admissible one (an active-set change may raise the residual for one
+// step). A linear bulk searches when `line_search` says so, while its relative residual is above
+// 1e3 eps, and then takes the alpha of least ||R||: friction needs it where the tangential rigid
+// motion of the body is held by friction alone, since a full step that leaves every node slipping
+// holds nothing sideways and drifts by the tangential load over the proximal term of
+// condensed_bulk.hpp, a state the stick tests never leave again. The thesis's frictionless methods
+// take full steps (Tables 7.1, 7.2).
 #include "contact/contact_law.hpp"
 #include "contact/contact_status.hpp"
 #include "solver/contact_bulk.hpp"
@@ -61,7 +71,11 @@ struct IterationRecord {
 struct ContactNewtonOptions {
   double eps = 1e-5;
   int max_iterations = 100;
+  bool line_search = false; ///< on a linear bulk (a nonlinear one always searches)
 };
+
+/// The options of `parameters`, the line search resolved for a problem `with_friction`.
+ContactNewtonOptions newton_options(const ContactSolverParameters& parameters, bool with_friction);
 
 struct ContactNewtonResult {
   bool converged = false;
