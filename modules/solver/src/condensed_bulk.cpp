@@ -52,6 +52,7 @@ CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_n
   SIG_VERIFY(w_.size() == n, "condensed bulk: start of size " << w_.size() << " for " << n);
   base_ = w_;
   step_ = Eigen::VectorXd::Zero(n);
+  Sw_ = p_.S * w_;
   last_normal_force_ = Eigen::VectorXd::Zero(m);
 }
 
@@ -169,7 +170,7 @@ Eigen::VectorXd CondensedBulk::slip() const {
 
 double CondensedBulk::equilibrium_residual(const Eigen::VectorXd& N,
                                            const Eigen::VectorXd& T) const {
-  Eigen::VectorXd r = p_.S * w_ - p_.f;
+  Eigen::VectorXd r = Sw_ - p_.f;
   for (int p = 0; p < contacts(); ++p) {
     r[p_.normal_dof[p]] += N[p];
     if (has_tangential()) r[p_.tangential_dof[p]] += T[p];
@@ -333,12 +334,27 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   }
   base_ = w_;
   last_normal_force_ = s.normal_force;
+  // S w along the step, for the residuals of a line search: one product here, then O(n) a trial.
+  Sw_ = p_.S * w_;
+  Sw_base_ = Sw_;
+  S_step_ = p_.S * step_;
   return s;
 }
 
 bool CondensedBulk::move(double alpha) {
   w_ = base_ + alpha * step_;
+  Sw_ = Sw_base_ + alpha * S_step_;
   return true;
+}
+
+void CondensedBulk::keep() {
+  kept_ = w_;
+  kept_Sw_ = Sw_;
+}
+
+void CondensedBulk::restore() {
+  w_ = kept_;
+  Sw_ = kept_Sw_;
 }
 
 } // namespace sig

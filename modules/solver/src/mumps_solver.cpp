@@ -74,6 +74,9 @@ struct MumpsSolver::State {
   std::uint64_t pattern = 0; ///< fingerprint of the analyzed pattern
   bool analyzed = false;
   bool factorized = false;
+  /// Between reduce() and expand(): MUMPS's right side after the forward elimination, which the
+  /// backward substitution continues from, and the reduced right side.
+  std::vector<double> reduced_rhs, redrhs;
 
   int& icntl(int i) { return id.icntl[i - 1]; }
   int infog(int i) const { return id.infog[i - 1]; }
@@ -217,6 +220,54 @@ Eigen::MatrixXd MumpsSolver::solve(const Eigen::MatrixXd& B) const {
   s.id.rhs = nullptr;
   s.verify("solve");
   return X;
+}
+
+Eigen::VectorXd MumpsSolver::reduce(const Eigen::VectorXd& b) const {
+  State& s = *state_;
+  const int m = static_cast<int>(s.schur_dofs.size());
+  SIG_VERIFY(s.factorized && m > 0, "MUMPS: reduce needs a factorization with Schur variables");
+  SIG_VERIFY(b.size() == s.id.n,
+             "MUMPS: right side has " << b.size() << " rows, matrix " << s.id.n);
+  s.reduced_rhs.assign(b.data(), b.data() + b.size());
+  s.redrhs.assign(static_cast<std::size_t>(m), 0.0);
+  s.id.nrhs = 1;
+  s.id.lrhs = s.id.n;
+  s.id.rhs = s.reduced_rhs.data();
+  s.id.redrhs = s.redrhs.data();
+  s.id.lredrhs = m;
+  s.icntl(20) = 0;
+  s.icntl(21) = 0;
+  s.icntl(26) = 1; // forward elimination; the reduced right side comes out in REDRHS
+  s.call(job_solve);
+  s.id.rhs = nullptr;
+  s.id.redrhs = nullptr;
+  s.icntl(26) = 0;
+  s.verify("reduction (ICNTL(26) = 1)");
+  return Eigen::Map<const Eigen::VectorXd>(s.redrhs.data(), m);
+}
+
+Eigen::VectorXd MumpsSolver::expand(const Eigen::VectorXd& x_schur) const {
+  State& s = *state_;
+  const int m = static_cast<int>(s.schur_dofs.size());
+  SIG_VERIFY(!s.reduced_rhs.empty() && x_schur.size() == m,
+             "MUMPS: expand needs a reduce() before it and " << m << " Schur values");
+  std::copy(x_schur.data(), x_schur.data() + m, s.redrhs.begin());
+  s.id.nrhs = 1;
+  s.id.lrhs = s.id.n;
+  s.id.rhs = s.reduced_rhs.data();
+  s.id.redrhs = s.redrhs.data();
+  s.id.lredrhs = m;
+  s.icntl(20) = 0;
+  s.icntl(21) = 0;
+  s.icntl(26) = 2; // backward substitution from the Schur variables' values
+  s.call(job_solve);
+  s.id.rhs = nullptr;
+  s.id.redrhs = nullptr;
+  s.icntl(26) = 0;
+  s.verify("expansion (ICNTL(26) = 2)");
+  Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(s.reduced_rhs.data(), s.id.n);
+  s.reduced_rhs.clear(); // one expansion per reduction
+  return x;
 }
 
 std::string MumpsSolver::ordering() const {

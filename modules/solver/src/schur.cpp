@@ -120,6 +120,7 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
     seconds_factorize_ = factor_clock.seconds();
     const Stopwatch schur_clock;
     S_ = mumps->schur_complement();
+    mumps_ = mumps.get();
     interior_solver_ = std::make_unique<MumpsInterior>(std::move(mumps), interior_, n);
     seconds_schur_ = schur_clock.seconds();
   } else {
@@ -163,25 +164,33 @@ Eigen::VectorXd SchurComplement::interface_part(const Eigen::VectorXd& v) const 
   return p;
 }
 
-Eigen::VectorXd SchurComplement::condense(const Eigen::VectorXd& f) const {
+Eigen::VectorXd SchurComplement::condense(const Eigen::VectorXd& f) {
   SIG_VERIFY(f.size() == size(),
              "Schur complement: load of size " << f.size() << ", expected " << size());
+  if (mumps_ != nullptr) {
+    condensed_load_ = f;
+    return mumps_->reduce(f);
+  }
   const Eigen::VectorXd y = interior_solver_->solve(interior_part(f)).col(0);
   return interface_part(f) - K_ic_.transpose() * y;
 }
 
-Eigen::VectorXd SchurComplement::expand(const Eigen::VectorXd& f,
-                                        const Eigen::VectorXd& u_c) const {
+Eigen::VectorXd SchurComplement::expand(const Eigen::VectorXd& f, const Eigen::VectorXd& u_c) {
   SIG_VERIFY(f.size() == size(),
              "Schur complement: load of size " << f.size() << ", expected " << size());
   SIG_VERIFY(u_c.size() == static_cast<Eigen::Index>(interface_.size()),
              "Schur complement: interface displacement of size " << u_c.size() << ", expected "
                                                                  << interface_.size());
-  const Eigen::VectorXd r = interior_part(f) - K_ic_ * u_c;
-  const Eigen::VectorXd u_i = interior_solver_->solve(r).col(0);
   Eigen::VectorXd u(size());
-  for (size_t k = 0; k < interior_.size(); ++k)
-    u[interior_[k]] = u_i[Eigen::Index(k)];
+  if (mumps_ != nullptr && condensed_load_.size() == f.size() && condensed_load_ == f) {
+    u = mumps_->expand(u_c);
+    condensed_load_.resize(0);
+  } else {
+    const Eigen::VectorXd r = interior_part(f) - K_ic_ * u_c;
+    const Eigen::VectorXd u_i = interior_solver_->solve(r).col(0);
+    for (size_t k = 0; k < interior_.size(); ++k)
+      u[interior_[k]] = u_i[Eigen::Index(k)];
+  }
   for (size_t k = 0; k < interface_.size(); ++k)
     u[interface_[k]] = u_c[Eigen::Index(k)];
   return u;

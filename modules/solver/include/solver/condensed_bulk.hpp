@@ -58,8 +58,8 @@ public:
   StepSolution solve(const std::vector<NodeConditions>& conditions,
                      const Eigen::VectorXd& normal_force) override;
   bool move(double alpha) override;
-  void keep() override { kept_ = w_; }
-  void restore() override { w_ = kept_; }
+  void keep() override;
+  void restore() override;
   double displacement_norm() const override { return w_.norm(); }
   double displacement_step() const override { return (w_ - base_).norm(); }
   bool nonlinear() const override { return false; }
@@ -84,7 +84,8 @@ private:
   int tail_start_ = -1; ///< position of the cached H
   Eigen::MatrixXd H_;   ///< L22 L22^T for tail_start_
   Eigen::VectorXd w_, base_, step_, kept_;
-  Eigen::VectorXd last_normal_force_; ///< N of the last solve, per contact node
+  Eigen::VectorXd Sw_, Sw_base_, S_step_, kept_Sw_; ///< S w_ and its pieces along the step
+  Eigen::VectorXd last_normal_force_;               ///< N of the last solve, per contact node
   int last_tail_ = 0;
   int reorders_ = 0;
 

@@ -4,7 +4,9 @@
 //
 // With Schur variables it performs MUMPS's partial factorization (ICNTL(19)): the interior
 // block K_ii is factorized and S = K_cc - K_ci K_ii^{-1} K_ic comes out of the same pass. Solves
-// then act on the interior problem only: x_i = K_ii^{-1} b_i and x_c = 0 (ICNTL(26) = 0).
+// then act on the interior problem only: x_i = K_ii^{-1} b_i and x_c = 0 (ICNTL(26) = 0); or a
+// full solve is split around the Schur problem, reduce() then expand() (ICNTL(26) = 1, 2), for
+// the cost of one solve.
 #include "solver/linear_solver.hpp"
 
 #include <memory>
@@ -36,6 +38,14 @@ public:
   /// The Schur complement of the last factorization (full symmetric matrix for SYM > 0),
   /// rows and columns in the order of schur_dofs.
   Eigen::MatrixXd schur_complement() const;
+  /// The condensation of one right side b (all n variables) in half a solve (ICNTL(26) = 1, the
+  /// forward elimination): the reduced right side b_c - K_ci K_ii^{-1} b_i on the Schur
+  /// variables (schur_dofs order). MUMPS keeps the eliminated b for the next expand().
+  Eigen::VectorXd reduce(const Eigen::VectorXd& b) const;
+  /// The whole solution for the last reduce()'s b and the Schur variables' values x_c (the
+  /// solution of S x_c = reduce(b)), in the other half (ICNTL(26) = 2, the backward
+  /// substitution); x_c kept on its variables. One expand() per reduce().
+  Eigen::VectorXd expand(const Eigen::VectorXd& x_schur) const;
 
 private:
   struct State;

@@ -18,6 +18,8 @@
 
 namespace sig {
 
+class MumpsSolver;
+
 namespace detail {
 /// Solves K_ii y = r (columns of r in interior order); one kind per backend path (schur.cpp).
 class InteriorSolver;
@@ -38,9 +40,11 @@ public:
   /// S (m x m, symmetric), rows and columns in the order of interface_dofs().
   const Eigen::MatrixXd& matrix() const { return S_; }
   /// The condensed load f_c - K_ci K_ii^{-1} f_i of a full load f (size n).
-  Eigen::VectorXd condense(const Eigen::VectorXd& f) const;
+  Eigen::VectorXd condense(const Eigen::VectorXd& f);
   /// The full displacement: u_c on the interface, u_i = K_ii^{-1} (f_i - K_ic u_c) inside.
-  Eigen::VectorXd expand(const Eigen::VectorXd& f, const Eigen::VectorXd& u_c) const;
+  /// With MUMPS, expanding the load of the last condense() continues its solve (the backward
+  /// substitution after condense()'s forward elimination, ICNTL(26)): the pair costs one solve.
+  Eigen::VectorXd expand(const Eigen::VectorXd& f, const Eigen::VectorXd& u_c);
 
   const std::vector<int>& interface_dofs() const { return interface_; }
   const std::vector<int>& interior_dofs() const { return interior_; }
@@ -58,6 +62,8 @@ private:
   Eigen::SparseMatrix<double> K_ic_;
   Eigen::MatrixXd S_;
   std::unique_ptr<detail::InteriorSolver> interior_solver_;
+  MumpsSolver* mumps_ = nullptr;   ///< the partial factorization, when the backend is MUMPS
+  Eigen::VectorXd condensed_load_; ///< f of the last condense() that expand() can continue
   double seconds_factorize_ = 0;
   double seconds_schur_ = 0;
 

@@ -113,7 +113,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
     SIG_VERIFY(false, "the body with its contact nodes held cannot be factorized ("
                           << e.what() << "): " << unheld);
   }
-  const SchurComplement& schur = *condensation;
+  SchurComplement& schur = *condensation;
   s.seconds["frames"] = clock.seconds() - schur.seconds_factorize() - schur.seconds_schur();
   s.seconds["factorize"] = schur.seconds_factorize();
   s.seconds["schur"] = schur.seconds_schur();
