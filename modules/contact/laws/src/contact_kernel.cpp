@@ -17,12 +17,12 @@ double clipped(const ContactLaw& law, double q_n) {
 
 double compliance_pressure(const ContactLaw& law, double q_n) {
   if (!law.has_compliance()) return 0.0;
-  return truncated_normal_compliance(clipped(law, q_n), 0.0, law.cn, law.c3);
+  return truncated_normal_compliance(clipped(law, q_n), law.cn, law.c3);
 }
 
 double d_compliance_pressure(const ContactLaw& law, double q_n) {
   if (!law.has_compliance() || (law.has_wall() && q_n >= law.depth)) return 0.0;
-  return d_truncated_normal_compliance(q_n, 0.0, law.cn, law.c3);
+  return d_truncated_normal_compliance(q_n, law.cn, law.c3);
 }
 
 ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n,
@@ -64,7 +64,7 @@ ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, doub
       k.d_force(1, kQt) = r_t;
       k.d_force(1, kT) = 1.0;
     } else {
-      k.slip = z > 0 ? 1 : (z < 0 ? -1 : 0);
+      k.slip = static_cast<int>(d_project_interval_ds(z, k.bound)); // 0 for z = s = 0
       k.d_force.row(1) = k.slip * k.bound_slope * k.d_force.row(0);
     }
   }
