@@ -94,18 +94,17 @@ void CondensedBulk::reorder(const std::vector<char>& contact_zone) {
 
 void CondensedBulk::factorize() {
   const int n = static_cast<int>(p_.f.size());
-  Eigen::MatrixXd B(n, n);
+  B_.resize(n, n);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      B(i, j) = p_.S(order_[i], order_[j]);
+      B_(i, j) = p_.S(order_[i], order_[j]);
   for (int k = 0; k < n; ++k)
-    B(k, k) += p_.regularization + default_stiffness_[order_[k]];
-  B_ = B;
-  Eigen::LLT<Eigen::MatrixXd> cholesky(B);
+    B_(k, k) += p_.regularization + default_stiffness_[order_[k]];
+  L_ = B_;
+  const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(L_); // in place: L_ holds the factor
   SIG_VERIFY(cholesky.info() == Eigen::Success,
              "the condensed step matrix is not positive definite (a rigid mode that neither the "
              "bulk nor the proximal term holds)");
-  L_ = cholesky.matrixL();
   factorized_ = true;
 }
 
@@ -121,12 +120,11 @@ void CondensedBulk::tail_schur(int start) {
   if (tail_start_ >= 0 && 4 * std::abs(shift) < tail) {
     if (shift > 0) {
       const int old_tail = n - tail_start_;
-      const auto A = L_.block(start, start, shift, shift).triangularView<Eigen::Lower>();
+      const Eigen::MatrixXd A = L_.block(start, start, shift, shift).triangularView<Eigen::Lower>();
       const auto C = L_.block(tail_start_, start, old_tail, shift);
       Eigen::MatrixXd H(tail, tail);
-      H.topLeftCorner(shift, shift) = A * L_.block(start, start, shift, shift).transpose();
-      H.bottomLeftCorner(old_tail, shift) =
-          C * L_.block(start, start, shift, shift).triangularView<Eigen::Lower>().transpose();
+      H.topLeftCorner(shift, shift) = A * A.transpose();
+      H.bottomLeftCorner(old_tail, shift) = C * A.transpose();
       H.topRightCorner(shift, old_tail) = H.bottomLeftCorner(old_tail, shift).transpose();
       H.bottomRightCorner(old_tail, old_tail) = H_;
       H.bottomRightCorner(old_tail, old_tail).noalias() += C * C.transpose();
@@ -141,8 +139,8 @@ void CondensedBulk::tail_schur(int start) {
     H_ = B_.bottomRightCorner(tail, tail);
     H_.noalias() -= L_.bottomLeftCorner(tail, start) * L_.bottomLeftCorner(tail, start).transpose();
   } else {
-    const auto L22 = L_.bottomRightCorner(tail, tail).triangularView<Eigen::Lower>();
-    H_ = L22 * L_.bottomRightCorner(tail, tail).transpose();
+    const Eigen::MatrixXd L22 = L_.bottomRightCorner(tail, tail).triangularView<Eigen::Lower>();
+    H_ = L22.triangularView<Eigen::Lower>() * L22.transpose();
   }
   tail_start_ = start;
 }

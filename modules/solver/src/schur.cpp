@@ -96,15 +96,17 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
     }
   const int ni = n - m;
 
+  // MUMPS factorizes K itself; the other backends need K_ii apart.
+  const bool split_interior = backend_ != "mumps";
   Triplets ii, ic;
   Eigen::MatrixXd K_cc = Eigen::MatrixXd::Zero(m, m);
   for (int j = 0; j < K.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it) {
       const int pr = position[static_cast<size_t>(it.row())];
       const int pc = position[static_cast<size_t>(j)];
-      if (pr >= 0 && pc >= 0)
-        ii.emplace_back(pr, pc, it.value());
-      else if (pr >= 0)
+      if (pr >= 0 && pc >= 0) {
+        if (split_interior) ii.emplace_back(pr, pc, it.value());
+      } else if (pr >= 0)
         ic.emplace_back(pr, -pc - 1, it.value());
       else if (pc < 0)
         K_cc(-pr - 1, -pc - 1) = it.value();
@@ -112,7 +114,7 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
   K_ic_.resize(ni, m);
   K_ic_.setFromTriplets(ic.begin(), ic.end());
 
-  if (backend_ == "mumps") {
+  if (!split_interior) {
     // One partial factorization of K gives K_ii's factor and S together.
     const Stopwatch factor_clock;
     auto mumps = std::make_unique<MumpsSolver>(kind, interface_);

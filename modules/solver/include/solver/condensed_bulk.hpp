@@ -79,7 +79,7 @@ private:
   std::vector<int> node_start_;       ///< per contact node: the first position of its unknowns
   std::vector<int> node_of_;          ///< per unknown: its contact node, or -1
   Eigen::MatrixXd B_;                 ///< the permuted B
-  Eigen::MatrixXd L_;                 ///< its Cholesky factor (lower)
+  Eigen::MatrixXd L_; ///< its Cholesky factor in the lower triangle (B's above it: in place)
   bool factorized_ = false;
   int tail_start_ = -1; ///< position of the cached H
   Eigen::MatrixXd H_;   ///< L22 L22^T for tail_start_

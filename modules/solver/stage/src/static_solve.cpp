@@ -66,7 +66,7 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 StaticSolution solve_static_contact(const LinearSystem& system, const ContactElements& contact,
                                     const ContactSolverParameters& parameters,
                                     const std::string& backend, const Eigen::VectorXd& start) {
-  const ReducedSystem reduced = reduce(system);
+  ReducedSystem reduced = reduce(system);
   const std::vector<std::array<int, 2>> dofs = contact_dofs(reduced, contact);
   const int m = contact.size();
   const bool friction = contact.has_friction();
@@ -81,7 +81,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
                "contact node " << contact.node[p] + 1 << ": its dofs are not consecutive");
     first_dofs[p] = dofs[p][0];
   }
-  Eigen::SparseMatrix<double> K = reduced.K;
+  Eigen::SparseMatrix<double>& K = reduced.K; // rotated in place: the reduced stiffness is ours
   K.makeCompressed();
   const FrameRotation frames(K, std::move(first_dofs));
   frames.rotate(K, contact.normal);
@@ -139,8 +139,8 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
     for (std::size_t k = 0; k < interface.size(); ++k)
       w_start[static_cast<Eigen::Index>(k)] = w[interface[k]];
   }
-  const CondensedSolution condensed =
-      solve_condensed_contact(problem, {contact.law, contact.weight}, parameters, w_start);
+  const CondensedSolution condensed = solve_condensed_contact(
+      std::move(problem), {contact.law, contact.weight}, parameters, w_start);
   const ContactNewtonResult& c = condensed.contact;
   if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);
 
