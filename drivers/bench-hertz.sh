@@ -104,10 +104,9 @@ write_deck() {
   hertz_deck "${template[$problem]}" "$deck" "$n" "$grading" "${@:3}"
   sed -i -E "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/" "$deck"
   if [ "$problem" = coulomb ]; then
-    local radius shift
+    local radius
     radius=$(sed -nE '/^[[:space:]]*MESH[[:space:]]/ s/.*[[:space:]]R=([^[:space:]]+).*/\1/p' "$deck")
-    shift=$("$python" -c "import math; print(f'{(math.pi * $radius / $n) ** 2 / $radius:.6g}')")
-    sed -i -E "/^[[:space:]]*INITIAL[[:space:]]/ s/u=[^[:space:]]+/u=0,-$shift/" "$deck"
+    sed -i -E "/^[[:space:]]*INITIAL[[:space:]]/ s/u=[^[:space:]]+/u=0,-$(rigid_shift "$radius" "$n")/" "$deck"
     if [ "${3:-}" = linear ]; then
       sed -i -E -e '/^[[:space:]]*(FRICTION|INITIAL)[[:space:]]/ d' \
         -e 's/^DIRICHLET ref=3 uy=0$/DIRICHLET ref=3 ux=0 uy=0/' "$deck"

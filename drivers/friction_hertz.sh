@@ -79,19 +79,16 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 source "$root/drivers/lib/hertz_deck.sh"
 
-# The rigid shift h^2 / R of mesh N, h = pi R / N (R of the template's MESH card).
+# The rigid shift of mesh N (R of the template's MESH card).
 radius=$(sed -nE '/^[[:space:]]*MESH[[:space:]]/ s/.*[[:space:]]R=([^[:space:]]+).*/\1/p' "$template")
 [ -n "$radius" ] || die "$template: no R= on the MESH card"
-shift_of() {
-  "$python" -c "import math, sys; R, n = float(sys.argv[1]), int(sys.argv[2]); print(f'{(math.pi * R / n) ** 2 / R:.6g}')" "$radius" "$1"
-}
 
 # write_deck DECK N [METHOD VALUE [EDIT...]]: the template for mesh N with its rigid shift, the
 # method and parameter, and further sed edits.
 write_deck() {
   local deck=$1 n=$2 method=${3:-} value=${4:-}
   hertz_deck "$template" "$deck" "$n" "" "$method" "$value"
-  sed -i -E "/^[[:space:]]*INITIAL[[:space:]]/ s/u=[^[:space:]]+/u=0,-$(shift_of "$n")/" "$deck"
+  sed -i -E "/^[[:space:]]*INITIAL[[:space:]]/ s/u=[^[:space:]]+/u=0,-$(rigid_shift "$radius" "$n")/" "$deck"
   grep -qE "^[[:space:]]*INITIAL[[:space:]].*u=0,-" "$deck" || die "$template: no INITIAL card"
   [ $# -le 4 ] || sed -i -E "${@:5}" "$deck"
 }

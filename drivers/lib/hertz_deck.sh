@@ -1,4 +1,5 @@
-# Sourced by scene7a.sh and bench-hertz.sh: variants of the Hertz deck and one-stage runs.
+# Sourced by scene7a.sh, friction_hertz.sh and bench-hertz.sh: variants of the Hertz deck and
+# one-stage runs.
 # Needs $bin (stage executables) and a die() function from the caller.
 
 # The parameter a method's value sets on the SOLVER card.
@@ -48,6 +49,13 @@ DIRICHLET ref=3 uy=0"
     grep -qE "^[[:space:]]*SOLVER[[:space:]].*method=$method $name=$value([[:space:]]|$)" "$deck" ||
       die "$template: no SOLVER card with method= to replace"
   fi
+}
+
+# rigid_shift R N: h^2 / R, h = pi R / N, the rigid start shift that puts the three lowest nodes
+# of a half disc of radius R with N arc segments into contact (the frictional Hertz deck's INITIAL
+# card). Needs $python.
+rigid_shift() {
+  "$python" -c "import math, sys; R, n = float(sys.argv[1]), int(sys.argv[2]); print(f'{(math.pi * R / n) ** 2 / R:.6g}')" "$1" "$2"
 }
 
 # run_stage STAGE DECK DIR: one stage, its output kept in DIR/<stage>.log and shown on failure.

@@ -3,6 +3,7 @@
 #include "solver/condensed_bulk.hpp"
 
 #include "core/error.hpp"
+#include "solver/dense_cholesky.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -101,8 +102,7 @@ void CondensedBulk::factorize() {
   for (int k = 0; k < n; ++k)
     B_(k, k) += p_.regularization + default_stiffness_[order_[k]];
   L_ = B_;
-  const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(L_); // in place: L_ holds the factor
-  SIG_VERIFY(cholesky.info() == Eigen::Success,
+  SIG_VERIFY(cholesky_in_place(L_),
              "the condensed step matrix is not positive definite (a rigid mode that neither the "
              "bulk nor the proximal term holds)");
   factorized_ = true;

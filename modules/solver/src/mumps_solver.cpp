@@ -85,6 +85,23 @@ struct MumpsSolver::State {
     id.job = job;
     dmumps_c(&id);
   }
+  /// One half of a solve split around the Schur problem (ICNTL(26) = phase) on reduced_rhs and
+  /// redrhs.
+  void schur_solve(int phase, const char* what) {
+    id.nrhs = 1;
+    id.lrhs = id.n;
+    id.rhs = reduced_rhs.data();
+    id.redrhs = redrhs.data();
+    id.lredrhs = static_cast<int>(redrhs.size());
+    icntl(20) = 0;
+    icntl(21) = 0;
+    icntl(26) = phase;
+    call(job_solve);
+    id.rhs = nullptr;
+    id.redrhs = nullptr;
+    icntl(26) = 0;
+    verify(what);
+  }
   void verify(const char* phase) const {
     SIG_VERIFY(infog(1) >= 0, "MUMPS: " << phase << " failed: INFOG(1) = " << infog(1)
                                         << ", INFOG(2) = " << infog(2) << " ("
@@ -230,19 +247,7 @@ Eigen::VectorXd MumpsSolver::reduce(const Eigen::VectorXd& b) const {
              "MUMPS: right side has " << b.size() << " rows, matrix " << s.id.n);
   s.reduced_rhs.assign(b.data(), b.data() + b.size());
   s.redrhs.assign(static_cast<std::size_t>(m), 0.0);
-  s.id.nrhs = 1;
-  s.id.lrhs = s.id.n;
-  s.id.rhs = s.reduced_rhs.data();
-  s.id.redrhs = s.redrhs.data();
-  s.id.lredrhs = m;
-  s.icntl(20) = 0;
-  s.icntl(21) = 0;
-  s.icntl(26) = 1; // forward elimination; the reduced right side comes out in REDRHS
-  s.call(job_solve);
-  s.id.rhs = nullptr;
-  s.id.redrhs = nullptr;
-  s.icntl(26) = 0;
-  s.verify("reduction (ICNTL(26) = 1)");
+  s.schur_solve(1, "reduction (ICNTL(26) = 1)"); // the reduced right side comes out in REDRHS
   return Eigen::Map<const Eigen::VectorXd>(s.redrhs.data(), m);
 }
 
@@ -252,19 +257,7 @@ Eigen::VectorXd MumpsSolver::expand(const Eigen::VectorXd& x_schur) const {
   SIG_VERIFY(!s.reduced_rhs.empty() && x_schur.size() == m,
              "MUMPS: expand needs a reduce() before it and " << m << " Schur values");
   std::copy(x_schur.data(), x_schur.data() + m, s.redrhs.begin());
-  s.id.nrhs = 1;
-  s.id.lrhs = s.id.n;
-  s.id.rhs = s.reduced_rhs.data();
-  s.id.redrhs = s.redrhs.data();
-  s.id.lredrhs = m;
-  s.icntl(20) = 0;
-  s.icntl(21) = 0;
-  s.icntl(26) = 2; // backward substitution from the Schur variables' values
-  s.call(job_solve);
-  s.id.rhs = nullptr;
-  s.id.redrhs = nullptr;
-  s.icntl(26) = 0;
-  s.verify("expansion (ICNTL(26) = 2)");
+  s.schur_solve(2, "expansion (ICNTL(26) = 2)"); // backward from the Schur variables' values
   Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(s.reduced_rhs.data(), s.id.n);
   s.reduced_rhs.clear(); // one expansion per reduction
   return x;

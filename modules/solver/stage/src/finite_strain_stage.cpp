@@ -131,8 +131,8 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   ds.put_int("load_steps", static_cast<std::int64_t>(solution.steps.size()));
 
   std::vector<double> load;
-  std::vector<std::int64_t> step_iterations, step_converged, history_active, history_step;
-  std::vector<double> residual, increment, step_norm;
+  std::vector<std::int64_t> step_iterations, step_converged, history_step;
+  std::vector<IterationRecord> history;
   std::string failure;
   for (std::size_t k = 0; k < solution.steps.size(); ++k) {
     const LoadStepResult& step = solution.steps[k];
@@ -141,22 +141,14 @@ void write_finite_strain_solution(const std::filesystem::path& path,
     step_converged.push_back(step.converged ? 1 : 0);
     if (!step.converged && failure.empty())
       failure = "load step " + std::to_string(k + 1) + ": " + step.failure;
-    for (const IterationRecord& h : step.history) {
-      history_active.push_back(h.active);
-      residual.push_back(h.residual);
-      increment.push_back(h.increment);
-      step_norm.push_back(h.step);
-      history_step.push_back(static_cast<std::int64_t>(k + 1));
-    }
+    history.insert(history.end(), step.history.begin(), step.history.end());
+    history_step.insert(history_step.end(), step.history.size(), static_cast<std::int64_t>(k + 1));
   }
   ds.put_text("failure", failure);
   ds.put("step_load", std::span<const double>(load));
   ds.put("step_iterations", std::span<const std::int64_t>(step_iterations));
   ds.put("step_converged", std::span<const std::int64_t>(step_converged));
-  ds.put("history_active", std::span<const std::int64_t>(history_active));
-  ds.put("history_residual", std::span<const double>(residual));
-  ds.put("history_increment", std::span<const double>(increment));
-  ds.put("history_step_norm", std::span<const double>(step_norm));
+  put_history(ds, history);
   ds.put("history_step", std::span<const std::int64_t>(history_step));
 
   if (!solution.steps.empty()) {

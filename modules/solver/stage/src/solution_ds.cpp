@@ -29,6 +29,25 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
   ds.put("friction_status", std::span<const std::int64_t>(friction_code));
 }
 
+void put_history(Ds& ds, const std::vector<IterationRecord>& history) {
+  std::vector<std::int64_t> active, stick, slip;
+  std::vector<double> residual, increment, step_norm;
+  for (const IterationRecord& h : history) {
+    active.push_back(h.active);
+    stick.push_back(h.stick);
+    slip.push_back(h.slip);
+    residual.push_back(h.residual);
+    increment.push_back(h.increment);
+    step_norm.push_back(h.step);
+  }
+  ds.put("history_active", std::span<const std::int64_t>(active));
+  ds.put("history_stick", std::span<const std::int64_t>(stick));
+  ds.put("history_slip", std::span<const std::int64_t>(slip));
+  ds.put("history_residual", std::span<const double>(residual));
+  ds.put("history_increment", std::span<const double>(increment));
+  ds.put("history_step_norm", std::span<const double>(step_norm));
+}
+
 void write_solution(const std::filesystem::path& path, const StaticSolution& solution,
                     const std::string& method, const std::string& backend,
                     const std::string& title) {
@@ -48,22 +67,7 @@ void write_solution(const std::filesystem::path& path, const StaticSolution& sol
   if (solution.multiplier.size() > 0) {
     put_contact_state(ds, solution.multiplier, solution.tangential, solution.normal_status,
                       solution.friction_status);
-    std::vector<std::int64_t> active, stick, slip;
-    std::vector<double> residual, increment, step_norm;
-    for (const auto& h : solution.history) {
-      active.push_back(h.active);
-      stick.push_back(h.stick);
-      slip.push_back(h.slip);
-      residual.push_back(h.residual);
-      increment.push_back(h.increment);
-      step_norm.push_back(h.step);
-    }
-    ds.put("history_active", std::span<const std::int64_t>(active));
-    ds.put("history_stick", std::span<const std::int64_t>(stick));
-    ds.put("history_slip", std::span<const std::int64_t>(slip));
-    ds.put("history_residual", std::span<const double>(residual));
-    ds.put("history_increment", std::span<const double>(increment));
-    ds.put("history_step_norm", std::span<const double>(step_norm));
+    put_history(ds, solution.history);
   }
   for (const auto& [phase, seconds] : solution.seconds)
     ds.put_scalar("time_" + phase, seconds);

@@ -19,6 +19,10 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
                        const std::vector<NormalStatus>& normal_status,
                        const std::vector<FrictionStatus>& friction_status);
 
+/// The iteration history: history_active, history_stick, history_slip, history_residual,
+/// history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||), one entry per iteration.
+void put_history(Ds& ds, const std::vector<IterationRecord>& history);
+
 void write_solution(const std::filesystem::path& path, const StaticSolution& solution,
                     const std::string& method, const std::string& backend,
                     const std::string& title);
