@@ -107,6 +107,9 @@ TEST(ContIo, InconsistentFilesAreRefused) {
   expect_error_naming(damaged("friction_law", Ints{0, 3, 0}), "friction_law");
   // A compliance law without its slope: the ranges of the card reader hold for the file too.
   expect_error_naming(damaged("law", Ints{1, 2, 1}), "array cn, element 2");
+  // An unused parameter out of range is refused all the same (a signorini element's cn, c3).
+  expect_error_naming(damaged("cn", std::vector<double>{0, -1, 0}), "array cn, element 2");
+  expect_error_naming(damaged("c3", std::vector<double>{0, 0, -5}), "array c3, element 3");
   expect_error_naming(damaged("node", std::vector<std::int64_t>{1, 2}), "length");
   expect_error_naming(damaged("mu", std::vector<double>{0, -1, 0}), "array mu, element 2");
   expect_error_naming(damaged("depth", std::vector<double>{0, 0, NAN}), "array depth, element 3");

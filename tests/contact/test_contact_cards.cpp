@@ -139,6 +139,7 @@ TEST(ContactCards, BadLawParameters) {
   expect_input_error(plane + "law=compliance", "cn", "");
   expect_input_error(plane + "law=compliance cn=1 c3=0", "c3", "> 0");
   expect_input_error(plane + "law=compliance-unilateral cn=1 g=-0.5", "g", ">= 0");
+  expect_input_error(plane + "law=compliance-unilateral cn=1", "g", "depth");
   expect_input_error(plane + "g=1 gap=1", "gap", "once");
   // A field the law does not read.
   expect_input_error(plane + "cn=10", "cn", "not a parameter of law=signorini");

@@ -227,6 +227,13 @@ TEST(ContactKernel, FrictionStatuses) {
             FrictionStatus::stick);
   EXPECT_EQ(friction_status(tresca, contact_kernel(tresca, {-1.0, 1.0, 0.0, 2.0}, 1, 1)),
             FrictionStatus::slip_forward);
+  // A zero threshold bounds nothing: no friction force, whatever the slip's sign.
+  ContactLaw loose = tresca;
+  loose.threshold = 0;
+  EXPECT_EQ(friction_status(loose, contact_kernel(loose, {-1.0, 0.0, 0.0, 0.0}, 1, 1)),
+            FrictionStatus::none);
+  EXPECT_EQ(friction_status(loose, contact_kernel(loose, {-1.0, 1.0, 0.0, 0.0}, 1, 1)),
+            FrictionStatus::none);
   // Frictionless: no status.
   const ContactLaw none = law_of(NormalLaw::signorini, FrictionLaw::none);
   EXPECT_EQ(friction_status(none, contact_kernel(none, {g, 0.5, 2.0, 0.0}, 1, 1)),

@@ -53,6 +53,18 @@ expect contact   '$a FRICTION ref=3 law=tresca threshold=-1'  "bad.dat:" "'thres
 expect contact   '$a FRICTION ref=2 law=coulomb mu=0.2'       "bad.dat:" "'ref'" "no CONTACT card"
 expect contact   '/^CONTACT/d; $a FRICTION ref=3 law=coulomb mu=0.2' "bad.dat:" "'ref'" "CONTACT"
 expect solve     '$a INITIAL u=0,-1 v=1,0'                    "bad.dat:" "'v'" "static"
+expect contact   's/law=signorini gap=0/law=compliance-unilateral cn=10/' "bad.dat:" "'g'" "depth"
+
+# Friction in large deformation is refused on the FRICTION card, before any solve.
+hyper=$work/hyper.dat
+sed -e 's/^MATERIAL .*/MATERIAL law=ciarlet-geymonat c1=0.5 c2=0.005 a=0.35 plane=strain/' \
+  -e '$a FRICTION ref=3 law=coulomb mu=0.2' "$good" > "$hyper"
+status=0
+message=$(drivers/chain.sh "$hyper" -o "$work/hyper" 2>&1) || status=$?
+if [ "$status" -eq 0 ] || ! grep -q "hyper.dat:.*'law'.*large deformation" <<< "$message"; then
+  echo "FAIL: friction in large deformation: exit $status: $message"; failures=$((failures + 1))
+fi
+[ ! -e "$work/hyper/case.b" ] || { echo "FAIL: friction in large deformation wrote case.b"; failures=$((failures + 1)); }
 
 # A truncated and a corrupted DS are refused with the file and array named.
 cp "$work/out/case.tae" "$work/keep.tae"
@@ -71,4 +83,4 @@ after=$(cd "$work/out" && sha256sum case.* | sha256sum)
 [ "$before" = "$after" ] || { echo "FAIL: a failed stage changed a DS file"; failures=$((failures + 1)); }
 
 [ "$failures" -eq 0 ] || exit 1
-echo "bad_input: 23 bad inputs refused with file, line and field; DS files intact"
+echo "bad_input: 25 bad inputs refused with file, line and field; DS files intact"

@@ -52,13 +52,6 @@ std::unique_ptr<Obstacle> obstacle_from_card(const Card& card) {
   return std::make_unique<HalfPlane>(point, normal);
 }
 
-/// g= (the wall depth), or its old spelling gap=; both at once is ambiguous.
-double wall_depth(const Card& card) {
-  if (card.has("g") && card.has("gap"))
-    card.fail("gap", "give the wall depth once: g= (gap= is its old spelling)");
-  return card.has("gap") ? card.real("gap") : card.real("g", 0.0);
-}
-
 /// A field the law does not read is a mistake in the deck (a compliance given to signorini
 /// would be silently ignored otherwise).
 void refuse_unused(const Card& card, const std::string& field, const std::string& law) {
@@ -78,6 +71,9 @@ ContactLaw normal_law_from_card(const Card& card) {
     refuse_unused(card, "cn", name);
     refuse_unused(card, "c3", name);
   }
+  if (law.normal == NormalLaw::compliance_unilateral && !card.has("g") && !card.has("gap"))
+    card.fail("g", "law=compliance-unilateral needs the depth of its compliant layer, the wall "
+                   "at q_n = g");
   if (law.has_wall()) {
     law.depth = wall_depth(card);
   } else {
@@ -111,6 +107,12 @@ void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
 }
 
 } // namespace
+
+double wall_depth(const Card& contact) {
+  if (contact.has("g") && contact.has("gap"))
+    contact.fail("gap", "give the wall depth once: g= (gap= is its old spelling)");
+  return contact.has("gap") ? contact.real("gap") : contact.real("g", 0.0);
+}
 
 std::optional<ContactElements> contact_from_cards(const Datafile& datafile, const Mesh& mesh) {
   const std::vector<const Card*> cards = datafile.all("CONTACT");

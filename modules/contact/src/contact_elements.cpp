@@ -93,7 +93,7 @@ std::vector<int> nodes_along_boundary(const std::vector<BoundaryEdge>& edges) {
 } // namespace
 
 bool ContactElements::has_friction() const {
-  return std::any_of(law.begin(), law.end(), [](const ContactLaw& l) { return l.has_friction(); });
+  return any_friction(law);
 }
 
 double ContactElements::bound(int i) const {

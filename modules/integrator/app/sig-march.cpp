@@ -11,9 +11,9 @@
 // with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
 // integrator/history_io.hpp) and OUTDIR/energy.csv. The contact strategies are those of
 // integrator/contact_strategy.hpp (default signorini); r is the foundation stiffness per unit
-// area, gap the extra gap of the unilateral bound (for ipm: the allowed penetration g). A step
-// whose Newton fails stops the march: the files hold the steps done, HIST converged = 0, a
-// warning is printed and the stage exits 0.
+// area, g (old spelling gap) the depth of the unilateral bound's wall (for ipm: the allowed
+// penetration). A step whose Newton fails stops the march: the files hold the steps done, HIST
+// converged = 0, a warning is printed and the stage exits 0.
 #include "assembly/dirichlet.hpp"
 #include "assembly/system.hpp"
 #include "contact/contact_elements.hpp"

@@ -1,5 +1,6 @@
 #include "integrator/contact_card.hpp"
 
+#include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/log.hpp"
 
@@ -24,9 +25,9 @@ ContactHistoryInfo contact_history_info(const Card& contact) {
     contact.fail("law", "a TIME deck's contact law is its strategy= (signorini, compliance, "
                         "specific-penalty, two-step, ipm): remove law=");
   const char* depth = contact.has("gap") ? "gap" : "g";
-  info.gap = contact.real(depth, 0.0);
-  if (!(info.gap >= 0)) contact.fail(depth, "must be >= 0");
-  if (info.gap > 0 && (info.strategy == "compliance" || info.strategy == "specific-penalty"))
+  info.depth = wall_depth(contact);
+  if (!(info.depth >= 0)) contact.fail(depth, "must be >= 0");
+  if (info.depth > 0 && (info.strategy == "compliance" || info.strategy == "specific-penalty"))
     log_warning(std::string("CONTACT ") + depth + "= sets a unilateral bound, which strategy=" +
                 info.strategy + " does not have: its force acts from the obstacle surface, " +
                 depth + " is ignored");

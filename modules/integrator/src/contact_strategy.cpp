@@ -6,6 +6,7 @@
 #include "solver/condensed_contact.hpp"
 
 #include <numeric>
+#include <utility>
 
 namespace sig {
 
@@ -62,7 +63,8 @@ solve_with_static_method(const NormalStep& step, const ContactBoundary& boundary
     setting.weight[static_cast<Eigen::Index>(e)] = boundary.weight[elements[e]];
   }
   setting.law.assign(elements.size(), ContactLaw{});
-  const ContactNewtonResult c = solve_condensed_contact(problem, setting, method).contact;
+  const ContactNewtonResult c =
+      solve_condensed_contact(std::move(problem), setting, method).contact;
   ContactStepSolution s;
   s.lambda = Eigen::VectorXd::Zero(boundary.size());
   if (active) active->assign(boundary.size(), 0);

@@ -28,7 +28,7 @@ void put_contact(Ds& ds, const MarchHistory& history, const ContactHistoryInfo& 
                  int steps) {
   ds.put_text("strategy", contact.strategy);
   ds.put_scalar("r", contact.r);
-  ds.put_scalar("gap", contact.gap);
+  ds.put_scalar("depth", contact.depth);
   const auto p = static_cast<std::int64_t>(contact.nodes.size());
   std::vector<std::int64_t> node;
   for (int i : contact.nodes)

@@ -3,8 +3,8 @@
 //   (a) the specific penalty (8.32) everywhere: -xi = r p(u_n), no bound;
 //   (b) where (a)'s penetration stays below g, the same law; where it reaches g, the compliance
 //       limited by the unilateral constraint, -xi in d phi_g(u_n) + L g: the penetration is held
-//       at most g (the bound d + g, the CONT gap) and the force is the specific penalty at g plus
-//       a multiplier mu >= 0.
+//       at most g (the bound d + g: the CONT gap d plus the depth g) and the force is the specific
+//       penalty at g plus a multiplier mu >= 0.
 // Phase (b) is one bounded semi-smooth Newton (bounded_newton.hpp) started from (a)'s solution
 // with (a)'s nodes beyond the bound active. The bound is checked at every node, so a node that
 // (a) kept below g but that (b) pushes beyond it joins the active set (the continuation of the

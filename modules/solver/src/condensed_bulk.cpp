@@ -23,10 +23,9 @@ CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_n
   SIG_VERIFY(p_.gap.size() == m &&
                  (p_.tangential_dof.empty() || static_cast<int>(p_.tangential_dof.size()) == m),
              "condensed bulk: one gap (and one tangential dof, if any) per contact node");
-  if (p_.slip_origin.size() == 0) p_.slip_origin = Eigen::VectorXd::Zero(m);
   if (default_normal_stiffness.size() == 0) default_normal_stiffness = Eigen::VectorXd::Zero(m);
-  SIG_VERIFY(p_.slip_origin.size() == m && default_normal_stiffness.size() == m,
-             "condensed bulk: one slip origin and one default stiffness per contact node");
+  SIG_VERIFY(default_normal_stiffness.size() == m,
+             "condensed bulk: one default stiffness per contact node");
   SIG_VERIFY(p_.regularization >= 0, "condensed bulk: negative regularization");
 
   node_of_.assign(n, -1);
@@ -162,7 +161,7 @@ Eigen::VectorXd CondensedBulk::slip() const {
   Eigen::VectorXd q = Eigen::VectorXd::Zero(contacts());
   if (has_tangential())
     for (int p = 0; p < contacts(); ++p)
-      q[p] = w_[p_.tangential_dof[p]] - p_.slip_origin[p];
+      q[p] = w_[p_.tangential_dof[p]];
   return q;
 }
 
@@ -211,7 +210,6 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   }
   if (!factorized_) factorize();
   const int tail = n - start;
-  last_tail_ = tail;
   if (tail > 0 && start != tail_start_) tail_schur(start);
 
   // 2. The step in the new iterate z = w + dw, not in dw: its right side f + (eps + D0) w has no
@@ -314,7 +312,6 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
 
   StepSolution s;
   s.normal_increment.resize(m);
-  s.tangential_increment = Eigen::VectorXd::Zero(m);
   s.normal_force.resize(m);
   s.tangential_force = Eigen::VectorXd::Zero(m);
   const auto force_at = [&](int dof) {
@@ -326,13 +323,13 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
     s.normal_increment[p] = step_[p_.normal_dof[p]];
     s.normal_force[p] = force_at(p_.normal_dof[p]);
     if (has_tangential()) {
-      s.tangential_increment[p] = step_[p_.tangential_dof[p]];
       s.tangential_force[p] = force_at(p_.tangential_dof[p]);
     }
   }
   base_ = w_;
   last_normal_force_ = s.normal_force;
-  // S w along the step, for the residuals of a line search: one product here, then O(n) a trial.
+  // S w along the step, for the residuals of a line search: two products here (S w, S dw), then
+  // O(n) a trial.
   Sw_ = p_.S * w_;
   Sw_base_ = Sw_;
   S_step_ = p_.S * step_;

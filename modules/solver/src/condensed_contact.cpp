@@ -9,8 +9,7 @@ CondensedSolution solve_condensed_contact(CondensedProblem problem, const Contac
   const int m = setting.size();
   Eigen::VectorXd default_stiffness(m);
   for (int p = 0; p < m; ++p)
-    default_stiffness[p] =
-        setting.law[p].has_wall() ? method->inactive_stiffness(setting.weight[p]) : 0.0;
+    default_stiffness[p] = off_wall_stiffness(*method, setting.law[p], setting.weight[p]);
   const bool friction = !problem.tangential_dof.empty();
   CondensedBulk bulk(std::move(problem), default_stiffness, start);
   ContactIterate iterate;

@@ -102,9 +102,7 @@ private:
       c.normal.value = law.depth - q_n;
     } else {
       c.normal.force = w * k.normal;
-      c.normal.stiffness = w * k.d_force(0, kQn);
-      if (method_.has_multipliers() && law.has_wall())
-        c.normal.stiffness += method_.inactive_stiffness(w);
+      c.normal.stiffness = w * k.d_force(0, kQn) + off_wall_stiffness(method_, law, w);
     }
     if (!law.has_friction()) return c;
     if (k.stick && method_.has_multipliers()) {
@@ -161,6 +159,13 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
       record.stick += k.stick ? 1 : 0;
       record.slip += k.slip != 0 && k.bound > 0 ? 1 : 0;
     }
+    // The statuses of the last test, so a failed iteration still reports where it stood.
+    result.normal_status.resize(m_);
+    result.friction_status.resize(m_);
+    for (int p = 0; p < m_; ++p) {
+      result.normal_status[p] = normal_status(tested[p]);
+      result.friction_status[p] = friction_status(s_.law[p], tested[p]);
+    }
 
     // (iii) the linear step; its forces give the multipliers at the full step.
     StepSolution step;
@@ -179,8 +184,8 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
         const ContactLaw& law = s_.law[p];
         if (conditions[p].normal.imposed) // the reaction, less the compliance at the wall
           lambda[p] = step.normal_force[p] - weight(p) * compliance_pressure(law, law.depth);
-        else if (law.has_wall()) // projection's Robin force, 0 for the Neumann condition
-          lambda[p] = method_.inactive_stiffness(weight(p)) * step.normal_increment[p];
+        else // projection's Robin force, 0 for the Neumann condition
+          lambda[p] = off_wall_stiffness(method_, law, weight(p)) * step.normal_increment[p];
         if (law.has_friction()) t[p] = step.tangential_force[p];
       }
 
@@ -198,6 +203,7 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
       trial = point(iterate.lambda + alpha * (lambda - iterate.lambda),
                     iterate.t + alpha * (t - iterate.t));
       const double trial_residual = residual(trial);
+      if (!std::isfinite(trial_residual)) continue; // outside the domain, as an inversion is
       const bool decreases = trial_residual < residual_norm;
       if (accepted == 0 || decreases || (!nonlinear && trial_residual < accepted_residual)) {
         bulk_.keep();
@@ -208,8 +214,9 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
       if (decreases || !search || (!seek_decrease && accepted > 0)) break;
     }
     if (accepted == 0) {
-      result.failure = "every step length down to 2^-" + std::to_string(kMaxHalvings) +
-                       " leaves the bulk's domain (an inverted element)";
+      result.failure =
+          "every step length down to 2^-" + std::to_string(kMaxHalvings) +
+          " leaves the bulk's domain (an inverted element) or gives a residual that is not finite";
       bulk_.move(0.0); // back to the last iterate
       break;
     }
@@ -235,12 +242,6 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
 
     const bool settled = !method_.needs_settled_statuses() || branch == iterate.branch;
     iterate.branch = branch;
-    result.normal_status.resize(m_);
-    result.friction_status.resize(m_);
-    for (int p = 0; p < m_; ++p) {
-      result.normal_status[p] = normal_status(tested[p]);
-      result.friction_status[p] = friction_status(s_.law[p], tested[p]);
-    }
     if (record.increment <= options_.eps && record.residual <= options_.eps && settled &&
         bulk_.settled()) {
       result.converged = true;
@@ -269,7 +270,7 @@ ContactNewtonOptions newton_options(const ContactSolverParameters& parameters, b
 }
 
 bool ContactSetting::has_friction() const {
-  return std::any_of(law.begin(), law.end(), [](const ContactLaw& l) { return l.has_friction(); });
+  return any_friction(law);
 }
 
 ContactNewtonResult solve_contact(ContactBulk& bulk, const ContactSetting& setting,

@@ -188,6 +188,7 @@ Eigen::VectorXd SchurComplement::expand(const Eigen::VectorXd& f, const Eigen::V
     u = mumps_->expand(u_c);
     condensed_load_.resize(0);
   } else {
+    condensed_load_.resize(0); // the solve below overwrites MUMPS's reduced right-hand side
     const Eigen::VectorXd r = interior_part(f) - K_ic_ * u_c;
     const Eigen::VectorXd u_i = interior_solver_->solve(r).col(0);
     for (size_t k = 0; k < interior_.size(); ++k)

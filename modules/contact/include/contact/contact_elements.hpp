@@ -31,6 +31,7 @@
 
 namespace sig {
 
+class Card;
 class Datafile;
 
 struct ContactElements {
@@ -61,7 +62,7 @@ struct ContactElements {
 /// (a node on three or more of them) the order falls back to node numbers.
 /// A node inside the obstacle (gap < 0 beyond roundoff, 1e-9 of the shortest Gamma3 edge) is a
 /// sig::Error; roundoff-negative gaps of nodes lying on the obstacle are set to 0. Every element
-/// gets `law` (sig::Error if law_error finds it inadmissible).
+/// gets `law` (sig::Error if law_problem finds it inadmissible).
 ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle& obstacle,
                                        const ContactLaw& law = {}, double thickness = 1);
 
@@ -81,10 +82,14 @@ inline double gap_at(const Obstacle& obstacle, const Eigen::Vector2d& x) {
 ///   CONTACT ref=3 ... law=compliance-unilateral cn=10 g=0.5
 ///   FRICTION ref=3 law=coulomb mu=0.3          (or law=tresca threshold=2, law=none)
 /// ref must carry edges on the mesh; law defaults to signorini, g to 0 (gap= is its old
-/// spelling); a field the law does not use is an error, as is a FRICTION card whose ref has no
-/// CONTACT card. Thickness 1 (plane strain). Errors are sig::InputError naming the file, line
-/// and field.
+/// spelling; compliance-unilateral must give it); a field the law does not use is an error, as is a
+/// FRICTION card whose ref has no CONTACT card. Thickness 1 (plane strain). Errors are
+/// sig::InputError naming the file, line and field.
 std::optional<ContactElements> contact_from_cards(const Datafile& datafile, const Mesh& mesh);
+
+/// The CONTACT card's wall depth g= (or its old spelling gap=), 0 when absent; both given is an
+/// InputError.
+double wall_depth(const Card& contact);
 
 /// DS kind "CONT": node, lagrange_node (1-based), normal and tangent (m x 2), gap (d_i), weight;
 /// the laws per element: law (normal law id, contact_law.hpp), cn, c3 (0 = no truncation),

@@ -47,9 +47,10 @@ FrictionLaw friction_law_named(const std::string& name) {
 }
 
 NormalLaw normal_law_of_id(long id) {
-  SIG_VERIFY(id >= 1 && id <= 3, "normal law id " << id << " is unknown; known: 1 = signorini, "
-                                                         "2 = compliance, 3 = "
-                                                         "compliance-unilateral");
+  SIG_VERIFY(id >= 1 && id <= 3, "normal law id " << id
+                                                  << " is unknown; known: 1 = signorini, "
+                                                     "2 = compliance, 3 = "
+                                                     "compliance-unilateral");
   return static_cast<NormalLaw>(id);
 }
 
@@ -68,8 +69,10 @@ std::optional<LawProblem> law_problem(const ContactLaw& law) {
   const std::string normal = "law=" + to_string(law.normal);
   if (law.has_compliance() && !(std::isfinite(law.cn) && law.cn > 0))
     return problem("cn", "must be > 0 for ", normal, ", got ", law.cn);
-  if (law.has_compliance() && !(law.c3 > 0))
-    return problem("c3", "must be > 0 (a truncation pressure), got ", law.c3);
+  // An unused cn is 0 and an unused c3 infinite: the ranges hold whatever the normal law, so a
+  // CONT file cannot carry a value the cards would refuse.
+  if (!(std::isfinite(law.cn) && law.cn >= 0)) return problem("cn", "must be >= 0, got ", law.cn);
+  if (!(law.c3 > 0)) return problem("c3", "must be > 0 (a truncation pressure), got ", law.c3);
   if (!(std::isfinite(law.depth) && law.depth >= 0))
     return problem("g", "must be >= 0 (the depth of the wall), got ", law.depth);
   // An unused mu or threshold is 0: the ranges hold whatever the friction law.

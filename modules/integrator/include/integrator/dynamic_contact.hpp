@@ -29,7 +29,7 @@ class TimeScheme;
 struct ContactBoundary {
   std::vector<int> nodes;        ///< 0-based mesh nodes, in CONT element order
   Eigen::SparseMatrix<double> B; ///< p x free dofs: (B u)_i = u_n,i
-  /// The unilateral bound on u_n: d_i + g, the CONT gap and wall depth (signorini, two-step
+  /// The unilateral bound on u_n: d_i + g, the CONT gap plus its depth (signorini, two-step
   /// (a); for ipm g is the allowed penetration).
   Eigen::VectorXd bound;
   /// d_i = distance of node i to the obstacle in the reference configuration (the CONT gap):

@@ -9,8 +9,8 @@
 // a step's Newton failed and the march stopped there: the per-step arrays then end at the last
 // step done and the last state done is kept) and failure (text naming the step, empty otherwise).
 //
-// With contact (a CONTACT card), also: strategy (text, contact_strategy_names); r and gap
-// (scalars: the card's foundation stiffness per unit area and extra gap, 0 if not given);
+// With contact (a CONTACT card), also: strategy (text, contact_strategy_names); r and depth
+// (scalars: the card's foundation stiffness per unit area and wall depth g, 0 if not given);
 // contact_node (1-based mesh nodes of the p contact elements, CONT order); pressure, shape
 // {outputs, p}: lambda / weight at the kept states (0 at the initial state); step_converged
 // {steps + 1}: 1 for step 0 and every step done, 0 for the failed step and those never reached;
@@ -40,7 +40,7 @@ std::string energy_csv(const std::vector<EnergyRecord>& energy);
 struct ContactHistoryInfo {
   std::string strategy;
   double r = 0;
-  double gap = 0;
+  double depth = 0;       ///< g: the wall at penetration g (contact_law.hpp)
   std::vector<int> nodes; ///< 0-based mesh nodes
 };
 

@@ -36,8 +36,7 @@ struct CondensedProblem {
   Eigen::VectorXd f;               ///< condensed load, n
   std::vector<int> normal_dof;     ///< per contact node: its w_n among the n unknowns
   std::vector<int> tangential_dof; ///< per contact node: its w_t, or empty without friction
-  Eigen::VectorXd gap;             ///< d per contact node: q_n = w_n - d
-  Eigen::VectorXd slip_origin;     ///< w_t where the slip is measured from (empty: 0)
+  Eigen::VectorXd gap;             ///< d per contact node: q_n = w_n - d (the slip is w_t)
   double regularization = 0;       ///< eps of the proximal term, >= 0
 };
 
@@ -66,8 +65,6 @@ public:
 
   /// The iterate w (all n unknowns).
   const Eigen::VectorXd& displacement() const { return w_; }
-  /// Unknowns of the last solve's dense tail problem (its size shows the contact zone).
-  int last_tail_size() const { return last_tail_; }
   /// Times the nodes were reordered (and B factorized again) to shorten the tail.
   int reorders() const { return reorders_; }
 
@@ -78,15 +75,16 @@ private:
   std::vector<int> position_;         ///< unknown -> position
   std::vector<int> node_start_;       ///< per contact node: the first position of its unknowns
   std::vector<int> node_of_;          ///< per unknown: its contact node, or -1
-  Eigen::MatrixXd B_;                 ///< the permuted B
-  Eigen::MatrixXd L_; ///< its Cholesky factor in the lower triangle (B's above it: in place)
+  Eigen::MatrixXd B_; ///< the permuted B, whole: its trailing blocks start every tail's H
+  /// B_ factorized in place: the Cholesky factor L in the lower triangle (B's strict upper
+  /// triangle is left above it, unread)
+  Eigen::MatrixXd L_;
   bool factorized_ = false;
   int tail_start_ = -1; ///< position of the cached H
   Eigen::MatrixXd H_;   ///< L22 L22^T for tail_start_
   Eigen::VectorXd w_, base_, step_, kept_;
   Eigen::VectorXd Sw_, Sw_base_, S_step_, kept_Sw_; ///< S w_ and its pieces along the step
   Eigen::VectorXd last_normal_force_;               ///< N of the last solve, per contact node
-  int last_tail_ = 0;
   int reorders_ = 0;
 
   void order_nodes(const std::vector<int>& nodes);

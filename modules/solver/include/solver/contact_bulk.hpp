@@ -38,10 +38,9 @@ struct NodeConditions {
 };
 
 struct StepSolution {
-  Eigen::VectorXd normal_increment;     ///< dw_n per contact node
-  Eigen::VectorXd tangential_increment; ///< dw_t per contact node (0 without tangential dofs)
-  Eigen::VectorXd normal_force;         ///< N after the step, per node
-  Eigen::VectorXd tangential_force;     ///< T after the step, per node
+  Eigen::VectorXd normal_increment; ///< dw_n per contact node
+  Eigen::VectorXd normal_force;     ///< N after the step, per node
+  Eigen::VectorXd tangential_force; ///< T after the step, per node
 };
 
 class ContactBulk {
@@ -73,7 +72,8 @@ public:
   /// inverted element).
   virtual bool move(double alpha) = 0;
   /// A line search's bookkeeping: keep() remembers the present (admissible) iterate, restore()
-  /// returns to the kept one without evaluating it again.
+  /// returns to the kept one without evaluating it again. After keep() the present iterate is
+  /// undefined (a bulk may swap it into the kept slot) until the next move() or restore().
   virtual void keep() = 0;
   virtual void restore() = 0;
 

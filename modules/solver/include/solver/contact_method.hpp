@@ -15,6 +15,8 @@
 //               [choice] Chapter 7 is frictionless; the tangential test uses r_t = 1 / c too
 //   penalty     Remark 3.2: the kernel with lambda = t = 0 and r the foundation stiffness per
 //               unit area: the contact forces are springs, there are no multipliers
+#include "contact/contact_law.hpp"
+
 #include <memory>
 #include <string>
 
@@ -55,6 +57,13 @@ public:
   /// Unknowns beyond the displacements, per contact node (alm: its Lagrange node's multipliers).
   virtual int multiplier_unknowns(bool /*friction*/) const { return 0; }
 };
+
+/// The normal spring of a node of law `law` and weight w while it is off the wall: the method's
+/// inactive stiffness where there is a wall and multipliers, 0 elsewhere (a compliance has no
+/// wall, penalty imposes nothing).
+inline double off_wall_stiffness(const ContactMethod& method, const ContactLaw& law, double w) {
+  return method.has_multipliers() && law.has_wall() ? method.inactive_stiffness(w) : 0.0;
+}
 
 /// The method of `parameters.method`; sig::Error for an unknown name.
 std::unique_ptr<ContactMethod> make_contact_method(const ContactSolverParameters& parameters);

@@ -15,10 +15,11 @@
 // A solve that does not converge is a result: converged = false, failure and the history.
 //
 // Step length: alpha = 1, 1/2, ... 2^-12 of the step (u and the multipliers), the first that lowers
-// ||R||. A nonlinear bulk always searches (a trial may leave its domain) and, if no alpha lowers
-// ||R||, takes the largest admissible one (an active-set change may raise the residual for one
-// step). A linear bulk searches when `line_search` says so, while its relative residual is above
-// 1e3 eps, and then takes the alpha of least ||R||: friction needs it where the tangential rigid
+// ||R||; a trial outside the bulk's domain (an inverted element) or with a residual that is not
+// finite is never taken. A nonlinear bulk always searches and, if no alpha lowers ||R||, takes the
+// largest admissible one (an active-set change may raise the residual for one step). A linear bulk
+// searches when `line_search` says so, while its relative residual is above 1e3 eps, and, if no
+// alpha lowers ||R||, takes the one of least ||R||: friction needs it where the tangential rigid
 // motion of the body is held by friction alone, since a full step that leaves every node slipping
 // holds nothing sideways and drifts by the tangential load over the proximal term of
 // condensed_bulk.hpp, a state the stick tests never leave again. The thesis's frictionless methods

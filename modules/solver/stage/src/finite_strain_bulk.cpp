@@ -149,7 +149,6 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   StepSolution s;
   s.normal_increment.resize(contacts_);
   s.normal_force.resize(contacts_);
-  s.tangential_increment = Eigen::VectorXd::Zero(contacts_);
   s.tangential_force = Eigen::VectorXd::Zero(contacts_);
   for (int p = 0; p < contacts_; ++p) {
     const int normal_dof = 2 * node(p) + 1;

@@ -111,7 +111,8 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
     condensation = std::make_unique<SchurComplement>(K, interface, backend);
   } catch (const Error& e) {
     SIG_VERIFY(false, "the body with its contact nodes held cannot be factorized ("
-                          << e.what() << "): " << unheld);
+                          << e.what() << "); a singular or indefinite matrix here means that "
+                          << unheld);
   }
   SchurComplement& schur = *condensation;
   s.seconds["frames"] = clock.seconds() - schur.seconds_factorize() - schur.seconds_schur();

@@ -21,9 +21,11 @@
 //   coulomb                 (1.35) s = mu N, N the whole normal pressure (compliance + wall)
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace sig {
 
@@ -62,6 +64,12 @@ struct ContactLaw {
   bool has_friction() const { return friction != FrictionLaw::none; }
   bool operator==(const ContactLaw&) const = default;
 };
+
+/// Some law of `laws` has friction (the problem then has tangential unknowns).
+inline bool any_friction(const std::vector<ContactLaw>& laws) {
+  return std::any_of(laws.begin(), laws.end(),
+                     [](const ContactLaw& l) { return l.has_friction(); });
+}
 
 /// A parameter out of its range: the card field that holds it (cn, c3, g, mu, threshold) and
 /// why ("must be > 0 for law=compliance, got -1").

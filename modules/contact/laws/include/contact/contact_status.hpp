@@ -3,8 +3,9 @@
 // ALGORITHMS.md 0.5), read off the kernel's branches (contact_kernel.hpp) at the converged state:
 //   normal      free (no normal force), CN (compliance, 0 < q_n < g), CU (on the wall: the
 //               Signorini contact or the unilateral wall of (1.26))
-//   tangential  S= (stick), S+ / S- (slip towards +t / -t), or none (no friction law, or Coulomb
-//               friction on a node with no normal force, where no friction acts)
+//   tangential  S= (stick), S+ / S- (slip towards +t / -t), or none: no friction law, or a slip
+//               bound s = 0 (Coulomb friction on a node with no normal force, Tresca with a zero
+//               threshold), where no friction force acts
 // The integer codes are the ones DS files store (case.b arrays normal_status, friction_status).
 #include "contact/contact_kernel.hpp"
 
