@@ -37,27 +37,7 @@ EOF
 
 invocation="drivers/friction_hertz.sh${*:+ $*}"
 template=$root/datafiles/friction/hertz_coulomb.dat
-out=out/friction_hertz
-quick=0
-while [ $# -gt 0 ]; do
-  case $1 in
-    --quick) quick=1 ;;
-    -o)
-      [ $# -ge 2 ] || die "-o needs a folder"
-      out=$2
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    *)
-      usage >&2
-      die "unknown argument '$1'"
-      ;;
-  esac
-  shift
-done
+parse_quick_out out/friction_hertz "$@"
 
 require_stages mesh material contact assemble solve post
 [ -r "$template" ] || die "cannot read the template deck $template"

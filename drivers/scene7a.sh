@@ -39,27 +39,7 @@ EOF
 
 invocation="drivers/scene7a.sh${*:+ $*}"
 template=$root/datafiles/scene7a/hertz.dat
-out=out/scene7a
-quick=0
-while [ $# -gt 0 ]; do
-  case $1 in
-    --quick) quick=1 ;;
-    -o)
-      [ $# -ge 2 ] || die "-o needs a folder"
-      out=$2
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    *)
-      usage >&2
-      die "unknown argument '$1'"
-      ;;
-  esac
-  shift
-done
+parse_quick_out out/scene7a "$@"
 
 require_stages mesh material contact assemble solve post
 [ -r "$template" ] || die "cannot read the template deck $template"

@@ -44,27 +44,7 @@ EOF
 invocation="drivers/scene8a.sh${*:+ $*}"
 template=$root/datafiles/scene8a/ball.dat
 gmsh=${GMSH:-gmsh}
-out=out/scene8a
-quick=0
-while [ $# -gt 0 ]; do
-  case $1 in
-    --quick) quick=1 ;;
-    -o)
-      [ $# -ge 2 ] || die "-o needs a folder"
-      out=$2
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    *)
-      usage >&2
-      die "unknown argument '$1'"
-      ;;
-  esac
-  shift
-done
+parse_quick_out out/scene8a "$@"
 
 require_stages mesh material contact assemble march post
 [ -r "$template" ] || die "cannot read the deck $template"

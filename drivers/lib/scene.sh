@@ -23,3 +23,30 @@ require_charts() {
   "$python" -c 'import matplotlib, numpy' 2>/dev/null ||
     die "$python lacks matplotlib or numpy (Debian: python3-matplotlib python3-numpy)"
 }
+
+# parse_quick_out DEFAULT_OUTDIR "$@": a scene driver's options --quick and -o OUTDIR, and -h,
+# --help (the driver's usage); sets quick (0 or 1) and out.
+parse_quick_out() {
+  out=$1
+  shift
+  quick=0
+  while [ $# -gt 0 ]; do
+    case $1 in
+      --quick) quick=1 ;;
+      -o)
+        [ $# -ge 2 ] || die "-o needs a folder"
+        out=$2
+        shift
+        ;;
+      -h | --help)
+        usage
+        exit 0
+        ;;
+      *)
+        usage >&2
+        die "unknown argument '$1'"
+        ;;
+    esac
+    shift
+  done
+}
