@@ -106,13 +106,7 @@ variant() {
 }
 
 {
-  echo "command: $invocation"
-  echo "outdir: $out"
-  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "host: $(uname -n), $(nproc) cores"
-  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
-  echo "SIG_BIN: $bin"
-  echo "template: $template"
+  provenance
   echo "meshes: ${meshes[*]}"
   echo "reference: $reference"
   echo "sweep_n: $sweep_n"

@@ -155,13 +155,7 @@ run() {
 }
 
 {
-  echo "command: $invocation"
-  echo "outdir: $out"
-  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "host: $(uname -n), $(nproc) cores"
-  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
-  echo "SIG_BIN: $bin"
-  echo "template: $template"
+  provenance
   echo "quick: $quick"
   echo "impact_mesh: $impact_mesh"
   echo "sweep_k: ${sweep_k[*]}"

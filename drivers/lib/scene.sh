@@ -50,3 +50,15 @@ parse_quick_out() {
     shift
   done
 }
+
+# provenance: the lines of a scene's command.txt that say how it was made (the driver's
+# $invocation, $out and $template; the date, host, revision and executables).
+provenance() {
+  echo "command: $invocation"
+  echo "outdir: $out"
+  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "host: $(uname -n), $(nproc) cores"
+  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "SIG_BIN: $bin"
+  echo "template: $template"
+}
