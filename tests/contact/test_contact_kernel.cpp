@@ -227,12 +227,12 @@ TEST(ContactKernel, FrictionStatuses) {
             FrictionStatus::stick);
   EXPECT_EQ(friction_status(tresca, contact_kernel(tresca, {-1.0, 1.0, 0.0, 2.0}, 1, 1)),
             FrictionStatus::slip_forward);
-  // A zero threshold bounds nothing: no friction force, whatever the slip's sign.
+  // A zero threshold never sticks: it slips along any slip, and at none it is not S=.
   ContactLaw loose = tresca;
   loose.threshold = 0;
+  EXPECT_EQ(friction_status(loose, contact_kernel(loose, {-1.0, -1.0, 0.0, 0.0}, 1, 1)),
+            FrictionStatus::slip_backward);
   EXPECT_EQ(friction_status(loose, contact_kernel(loose, {-1.0, 0.0, 0.0, 0.0}, 1, 1)),
-            FrictionStatus::none);
-  EXPECT_EQ(friction_status(loose, contact_kernel(loose, {-1.0, 1.0, 0.0, 0.0}, 1, 1)),
             FrictionStatus::none);
   // Frictionless: no status.
   const ContactLaw none = law_of(NormalLaw::signorini, FrictionLaw::none);

@@ -12,10 +12,11 @@ NormalStatus normal_status(const ContactKernel& kernel) {
 FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel) {
   if (!law.has_friction()) return FrictionStatus::none;
   if (kernel.stick) return FrictionStatus::stick;
-  if (kernel.bound <= 0) return FrictionStatus::none; // no friction force can act
+  if (law.friction == FrictionLaw::coulomb && normal_status(kernel) == NormalStatus::free)
+    return FrictionStatus::none; // no normal force, so no friction
   if (kernel.slip > 0) return FrictionStatus::slip_forward;
   if (kernel.slip < 0) return FrictionStatus::slip_backward;
-  return FrictionStatus::none;
+  return FrictionStatus::none; // a zero bound and nothing to slip along
 }
 
 std::string label(NormalStatus status) {

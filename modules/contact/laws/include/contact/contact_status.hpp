@@ -3,9 +3,10 @@
 // ALGORITHMS.md 0.5), read off the kernel's branches (contact_kernel.hpp) at the converged state:
 //   normal      free (no normal force), CN (compliance, 0 < q_n < g), CU (on the wall: the
 //               Signorini contact or the unilateral wall of (1.26))
-//   tangential  S= (stick), S+ / S- (slip towards +t / -t), or none: no friction law, or a slip
-//               bound s = 0 (Coulomb friction on a node with no normal force, Tresca with a zero
-//               threshold), where no friction force acts
+//   tangential  S= (stick, the kernel's stick branch), S+ / S- (slip towards +t / -t: a zero
+//               Tresca threshold slips everywhere), or none: no friction law, Coulomb friction on
+//               a node with no normal force (no friction acts), or a zero bound with nothing to
+//               slip along
 // The integer codes are the ones DS files store (case.b arrays normal_status, friction_status).
 #include "contact/contact_kernel.hpp"
 
