@@ -328,11 +328,12 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   }
   base_ = w_;
   last_normal_force_ = s.normal_force;
-  // S w along the step, for the residuals of a line search: two products here (S w, S dw), then
-  // O(n) a trial.
-  Sw_ = p_.S * w_;
+  // S w along the step, for the residuals of a line search: two symmetric products here (S w
+  // afresh, so that round-off does not build up over the iterations, and S dw), then O(n) a
+  // trial.
+  Sw_.noalias() = p_.S.selfadjointView<Eigen::Lower>() * w_;
   Sw_base_ = Sw_;
-  S_step_ = p_.S * step_;
+  S_step_.noalias() = p_.S.selfadjointView<Eigen::Lower>() * step_;
   return s;
 }
 
