@@ -17,6 +17,19 @@ Eigen::VectorXd ReducedSystem::expand(const Eigen::VectorXd& u_free) const {
   return full;
 }
 
+std::array<int, 2> ReducedSystem::contact_node_dofs(int node) const {
+  std::array<int, 2> dofs{};
+  for (int component = 0; component < 2; ++component) {
+    SIG_VERIFY(node >= 0 && 2 * node + 1 < num_full(),
+               "contact node " << node + 1 << " is not a node of the system");
+    dofs[component] = reduced_index[2 * node + component];
+    SIG_VERIFY(dofs[component] >= 0,
+               "contact node " << node + 1 << " has a Dirichlet condition on component "
+                               << component + 1 << "; Gamma3 and Gamma1 must not share nodes");
+  }
+  return dofs;
+}
+
 Eigen::VectorXd ReducedSystem::restrict(const Eigen::VectorXd& full) const {
   SIG_VERIFY(full.size() == num_full(),
              "restrict: " << full.size() << " values for " << num_full() << " dofs");

@@ -61,8 +61,7 @@ void refuse_unused(const Card& card, const std::string& field, const std::string
 /// The normal law and its parameters from CONTACT.
 ContactLaw normal_law_from_card(const Card& card) {
   ContactLaw law;
-  const std::string name =
-      card.choice("law", {"signorini", "compliance", "compliance-unilateral"}, "signorini");
+  const std::string name = card.choice("law", normal_law_choices, "signorini");
   law.normal = normal_law_named(name);
   if (law.has_compliance()) {
     law.cn = card.real("cn");
@@ -91,7 +90,7 @@ void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
       card->fail("ref", "reference " + std::to_string(friction_ref) +
                             " has no CONTACT card (the CONTACT card is on ref=" +
                             std::to_string(ref) + ")");
-    const std::string name = card->choice("law", {"none", "tresca", "coulomb"});
+    const std::string name = card->choice("law", friction_law_choices);
     law.friction = friction_law_named(name);
     if (law.friction == FrictionLaw::coulomb)
       law.mu = card->real("mu");
@@ -107,6 +106,12 @@ void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
 }
 
 } // namespace
+
+const Card* friction_card_with_law(const Datafile& datafile) {
+  for (const Card* card : datafile.all("FRICTION"))
+    if (card->choice("law", friction_law_choices) != "none") return card;
+  return nullptr;
+}
 
 double wall_depth(const Card& contact) {
   if (contact.has("g") && contact.has("gap"))

@@ -152,34 +152,19 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
   return elements;
 }
 
-namespace {
-
-/// (B u)_i = sign c_i . u_i with the direction c_i of element i.
-Eigen::SparseMatrix<double> nodal_operator(const ContactElements& elements, int ndof,
-                                           const std::vector<Eigen::Vector2d>& direction,
-                                           double sign) {
+Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(2 * elements.size());
   for (int i = 0; i < elements.size(); ++i) {
     const int k = elements.node[i];
     SIG_VERIFY(k >= 0 && 2 * k + 1 < ndof,
-               "contact operator: contact node " << k + 1 << " has no dofs among " << ndof);
-    entries.emplace_back(i, 2 * k, sign * direction[i].x());
-    entries.emplace_back(i, 2 * k + 1, sign * direction[i].y());
+               "normal operator: contact node " << k + 1 << " has no dofs among " << ndof);
+    entries.emplace_back(i, 2 * k, -elements.normal[i].x());
+    entries.emplace_back(i, 2 * k + 1, -elements.normal[i].y());
   }
-  Eigen::SparseMatrix<double> b(elements.size(), ndof);
-  b.setFromTriplets(entries.begin(), entries.end());
-  return b;
-}
-
-} // namespace
-
-Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof) {
-  return nodal_operator(elements, ndof, elements.normal, -1.0);
-}
-
-Eigen::SparseMatrix<double> tangential_operator(const ContactElements& elements, int ndof) {
-  return nodal_operator(elements, ndof, elements.tangent, 1.0);
+  Eigen::SparseMatrix<double> b_n(elements.size(), ndof);
+  b_n.setFromTriplets(entries.begin(), entries.end());
+  return b_n;
 }
 
 } // namespace sig

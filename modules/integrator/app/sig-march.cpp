@@ -51,10 +51,9 @@ int main(int argc, char** argv) {
                     : "cholmod";
     sig::ContactHistoryInfo contact_info;
     sig::ContactStrategyParameters strategy_parameters;
-    if (const sig::Card* friction = datafile.find("FRICTION"))
-      if (friction->choice("law", {"none", "tresca", "coulomb"}) != "none")
-        friction->fail("law", "friction in time marching is not implemented yet: a TIME deck is "
-                              "frictionless (law=none, or no FRICTION card)");
+    if (const sig::Card* friction = sig::friction_card_with_law(datafile))
+      friction->fail("law", "friction in time marching is not implemented yet: a TIME deck is "
+                            "frictionless (law=none, or no FRICTION card)");
     if (contact != nullptr) {
       contact_info = sig::contact_history_info(*contact);
       strategy_parameters = sig::contact_strategy_parameters(*contact, solver_card);

@@ -20,8 +20,7 @@ ContactHistoryInfo contact_history_info(const Card& contact) {
   if (contact.has("r") && !needs_r)
     log_warning("CONTACT r= is not used by strategy=" + info.strategy);
   // The strategies define their own normal forces; the card's law must be the default.
-  if (contact.has("law") &&
-      contact.choice("law", {"signorini", "compliance", "compliance-unilateral"}) != "signorini")
+  if (contact.has("law") && contact.choice("law", normal_law_choices) != "signorini")
     contact.fail("law", "a TIME deck's contact law is its strategy= (signorini, compliance, "
                         "specific-penalty, two-step, ipm): remove law=");
   const char* depth = contact.has("gap") ? "gap" : "g";

@@ -31,14 +31,11 @@ ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& me
     b.bound[i] = elements.bound(i);
   }
   std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < p; ++i)
-    for (int component = 0; component < 2; ++component) {
-      const int dof = reduced.reduced_index[2 * elements.node[i] + component];
-      SIG_VERIFY(dof >= 0, "contact node "
-                               << elements.node[i] + 1 << " has a Dirichlet condition on component "
-                               << component + 1 << "; Gamma3 and Gamma1 must not share nodes");
-      entries.emplace_back(i, dof, -elements.normal[i][component]);
-    }
+  for (int i = 0; i < p; ++i) {
+    const std::array<int, 2> dofs = reduced.contact_node_dofs(elements.node[i]);
+    for (int component = 0; component < 2; ++component)
+      entries.emplace_back(i, dofs[component], -elements.normal[i][component]);
+  }
   b.B.resize(p, reduced.num_free());
   b.B.setFromTriplets(entries.begin(), entries.end());
   return b;

@@ -63,10 +63,9 @@ int main(int argc, char** argv) {
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail(
             "u", "the large-deformation solve starts from the reference configuration");
-      for (const sig::Card* friction : datafile.all("FRICTION"))
-        if (friction->choice("law", {"none", "tresca", "coulomb"}) != "none")
-          friction->fail("law", "friction in large deformation is not implemented (a hyperelastic "
-                                "MATERIAL): the frictional solve is small strain");
+      if (const sig::Card* friction = sig::friction_card_with_law(datafile))
+        friction->fail("law", "friction in large deformation is not implemented (a hyperelastic "
+                              "MATERIAL): the frictional solve is small strain");
       sig::FiniteStrainOptions options;
       options.contact = parameters;
       options.backend = backend;

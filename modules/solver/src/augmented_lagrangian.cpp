@@ -14,15 +14,10 @@ namespace {
 
 class AugmentedLagrangian final : public ContactMethod {
 public:
-  explicit AugmentedLagrangian(double r) : r_(r) {}
+  explicit AugmentedLagrangian(double r) : ContactMethod(r) {}
   std::string name() const override { return "alm"; }
-  double normal_augmentation() const override { return r_; }
-  double tangential_augmentation() const override { return r_; }
   bool needs_settled_statuses() const override { return false; }
   int multiplier_unknowns(bool friction) const override { return friction ? 2 : 1; }
-
-private:
-  double r_;
 };
 
 } // namespace

@@ -52,8 +52,7 @@ private:
       x.lambda = lambda / weight(p);
       x.t = t / weight(p);
     }
-    return contact_kernel(s_.law[p], x, method_.normal_augmentation(),
-                          method_.tangential_augmentation());
+    return contact_kernel(s_.law[p], x, method_.augmentation(), method_.augmentation());
   }
 
   /// The kernels at the bulk's iterate with multipliers (lambda, t).

@@ -22,17 +22,13 @@ namespace {
 
 class IterativeProjection final : public ContactMethod {
 public:
-  explicit IterativeProjection(double c) : c_(c) {}
+  explicit IterativeProjection(double c) : ContactMethod(1.0 / c) {}
   std::string name() const override { return "projection"; }
-  double normal_augmentation() const override { return 1.0 / c_; }
-  double tangential_augmentation() const override { return 1.0 / c_; }
   double tested_multiplier(double lambda, bool was_inactive) const override {
     return was_inactive ? 0.0 : lambda;
   }
-  double inactive_stiffness(double weight) const override { return weight / c_; }
-
-private:
-  double c_;
+  /// The Robin spring w / c = w r.
+  double inactive_stiffness(double weight) const override { return weight * augmentation(); }
 };
 
 } // namespace

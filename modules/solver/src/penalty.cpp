@@ -12,14 +12,9 @@ namespace {
 
 class Penalty final : public ContactMethod {
 public:
-  explicit Penalty(double r) : r_(r) {}
+  explicit Penalty(double r) : ContactMethod(r) {}
   std::string name() const override { return "penalty"; }
-  double normal_augmentation() const override { return r_; }
-  double tangential_augmentation() const override { return r_; }
   bool has_multipliers() const override { return false; }
-
-private:
-  double r_;
 };
 
 } // namespace

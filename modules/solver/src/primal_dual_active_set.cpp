@@ -13,13 +13,8 @@ namespace {
 
 class PrimalDualActiveSet final : public ContactMethod {
 public:
-  explicit PrimalDualActiveSet(double gamma) : gamma_(gamma) {}
+  explicit PrimalDualActiveSet(double gamma) : ContactMethod(gamma) {}
   std::string name() const override { return "pdas"; }
-  double normal_augmentation() const override { return gamma_; }
-  double tangential_augmentation() const override { return gamma_; }
-
-private:
-  double gamma_;
 };
 
 } // namespace

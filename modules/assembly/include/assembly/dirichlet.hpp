@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
 #include <vector>
 
 namespace sig {
@@ -26,6 +27,9 @@ struct ReducedSystem {
   Eigen::VectorXd expand(const Eigen::VectorXd& u_free) const;
   /// The free part of a full vector.
   Eigen::VectorXd restrict(const Eigen::VectorXd& full) const;
+  /// The reduced indices of the two dofs of a contact node (0-based mesh node); sig::Error
+  /// naming the node and the component if one is imposed: Gamma3 and Gamma1 share no node.
+  std::array<int, 2> contact_node_dofs(int node) const;
   /// A_ff of a full matrix (e.g. the mass matrix for dynamics), same storage as K.
   Eigen::SparseMatrix<double> restrict_matrix(const Eigen::SparseMatrix<double>& A) const;
 };

@@ -1,8 +1,9 @@
 #pragma once
 // Node-to-rigid contact elements (thesis Remark 3.1): one Gamma3 node plus one Lagrange node
 // each, the node carrying the normal and (with friction) the tangential multiplier. This is the
-// geometry half of contact (STYLE.md 1): mesh + obstacle + laws in, the operators B_N, B_T, the
-// gaps and the laws out, once, before any solver; solvers see only these and never the mesh.
+// geometry half of contact (STYLE.md 1): mesh + obstacle + laws in, the normals and tangents
+// (the rows of B_N and B_T, which the solvers apply as nodal frames), the gaps and the laws out,
+// once, before any solver; solvers see only these and never the mesh.
 //
 // Per element i (node X_i):
 //   normal n_i = n(proj(X_i)) of the obstacle (pointing to the body's side), tangent
@@ -68,8 +69,6 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
 
 /// B_N (size() x ndof, dof = 2 node + component): (B_N u)_i = u_n,i = -n_i . u_i.
 Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof);
-/// B_T (size() x ndof): (B_T u)_i = u_t,i = t_i . u_i.
-Eigen::SparseMatrix<double> tangential_operator(const ContactElements& elements, int ndof);
 
 /// Gap at a current position x (large deformation: g = d(X_i + u_i)).
 inline double gap_at(const Obstacle& obstacle, const Eigen::Vector2d& x) {
@@ -86,6 +85,10 @@ inline double gap_at(const Obstacle& obstacle, const Eigen::Vector2d& x) {
 /// FRICTION card whose ref has no CONTACT card. Thickness 1 (plane strain). Errors are
 /// sig::InputError naming the file, line and field.
 std::optional<ContactElements> contact_from_cards(const Datafile& datafile, const Mesh& mesh);
+
+/// The FRICTION card with a friction law other than none, or null: the stages that do not model
+/// friction refuse it on its own line.
+const Card* friction_card_with_law(const Datafile& datafile);
 
 /// The CONTACT card's wall depth g= (or its old spelling gap=), 0 when absent; both given is an
 /// InputError.

@@ -40,11 +40,12 @@ inline constexpr const char* contact_method_names = "alm | penalty | pdas | proj
 
 class ContactMethod {
 public:
+  explicit ContactMethod(double augmentation) : augmentation_(augmentation) {}
   virtual ~ContactMethod() = default;
   virtual std::string name() const = 0;
-  /// r_n and r_t of the kernel (pressure per unit length).
-  virtual double normal_augmentation() const = 0;
-  virtual double tangential_augmentation() const = 0;
+  /// r of the kernel, the same for the wall and the friction (r_n = r_t, pressure per unit
+  /// length): each method has one parameter.
+  double augmentation() const { return augmentation_; }
   /// False for penalty: the kernel's forces are the contact forces, nothing is imposed.
   virtual bool has_multipliers() const { return true; }
   /// The normal multiplier the active-set test sees at a node the previous iteration left off
@@ -56,6 +57,9 @@ public:
   virtual bool needs_settled_statuses() const { return true; }
   /// Unknowns beyond the displacements, per contact node (alm: its Lagrange node's multipliers).
   virtual int multiplier_unknowns(bool /*friction*/) const { return 0; }
+
+private:
+  double augmentation_;
 };
 
 /// The normal spring of a node of law `law` and weight w while it is off the wall: the method's

@@ -2,6 +2,8 @@
 // Nodal frames at contact nodes, shared by the small- and large-deformation contact solves: the
 // unknowns of a contact node become (w_t, w_n), its slip and its normal displacement towards the
 // obstacle, u = R w on the node's two dofs and u = w elsewhere (u = Q w, Q orthogonal).
+#include "contact/contact_law.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -14,7 +16,8 @@ namespace sig {
 /// w_t the slip along t, w_n the normal displacement towards the obstacle. R is orthogonal.
 inline Eigen::Matrix2d nodal_frame(const Eigen::Vector2d& n) {
   Eigen::Matrix2d R;
-  R << n.y(), -n.x(), -n.x(), -n.y();
+  R.col(0) = contact_tangent(n);
+  R.col(1) = -n;
   return R;
 }
 

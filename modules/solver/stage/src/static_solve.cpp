@@ -26,17 +26,8 @@ constexpr double kRelativeRegularization = 1e-10;
 std::vector<std::array<int, 2>> contact_dofs(const ReducedSystem& reduced,
                                              const ContactElements& contact) {
   std::vector<std::array<int, 2>> dofs;
-  for (int p = 0; p < contact.size(); ++p) {
-    std::array<int, 2> d{};
-    for (int component = 0; component < 2; ++component) {
-      d[component] = reduced.reduced_index[2 * contact.node[p] + component];
-      SIG_VERIFY(d[component] >= 0, "contact node " << contact.node[p] + 1
-                                                    << " has a Dirichlet condition on component "
-                                                    << component + 1
-                                                    << "; Gamma3 and Gamma1 must not share nodes");
-    }
-    dofs.push_back(d);
-  }
+  for (int p = 0; p < contact.size(); ++p)
+    dofs.push_back(reduced.contact_node_dofs(contact.node[p]));
   return dofs;
 }
 

@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <string>
@@ -40,6 +41,11 @@ enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2 };
 
 inline constexpr const char* normal_law_names = "signorini | compliance | compliance-unilateral";
 inline constexpr const char* friction_law_names = "none | tresca | coulomb";
+/// The same names as a card field's choices (Card::choice).
+inline constexpr std::initializer_list<const char*> normal_law_choices = {"signorini", "compliance",
+                                                                          "compliance-unilateral"};
+inline constexpr std::initializer_list<const char*> friction_law_choices = {"none", "tresca",
+                                                                            "coulomb"};
 
 std::string to_string(NormalLaw law);
 std::string to_string(FrictionLaw law);
