@@ -127,8 +127,8 @@ const std::vector<CardSpec>& card_schema() {
            {"eps", "tolerance of stopping test (iv): relative increment and residual"},
            {"maxit", "maximum number of nonlinear iterations"},
            {"search", "auto | yes | no: line search on the residual of a linear contact solve "
-                      "(auto: with friction, for alm, pdas and projection; the large-deformation "
-                      "solve always searches)"},
+                      "(auto: with friction or a compliance law, for alm, pdas and projection; "
+                      "the large-deformation solve always searches)"},
        }},
       {"LOADSTEPS",
        false,

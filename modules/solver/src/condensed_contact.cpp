@@ -14,8 +14,8 @@ CondensedSolution solve_condensed_contact(CondensedProblem problem, const Contac
   CondensedBulk bulk(std::move(problem), default_stiffness, start);
   ContactIterate iterate;
   CondensedSolution s;
-  s.contact = solve_contact(bulk, setting, *method,
-                            newton_options(parameters, setting.has_friction()), iterate);
+  s.contact =
+      solve_contact(bulk, setting, *method, newton_options(parameters, setting.law), iterate);
   s.w = bulk.displacement();
   s.multiplier_unknowns = m * method->multiplier_unknowns(friction);
   return s;

@@ -255,16 +255,22 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
 
 } // namespace
 
-ContactNewtonOptions newton_options(const ContactSolverParameters& parameters, bool with_friction) {
+ContactNewtonOptions newton_options(const ContactSolverParameters& parameters,
+                                    const std::vector<ContactLaw>& laws) {
   SIG_VERIFY(parameters.search == "auto" || parameters.search == "yes" || parameters.search == "no",
              "line search '" << parameters.search << "' is unknown; known: auto, yes, no");
   ContactNewtonOptions o;
   o.eps = parameters.eps;
   o.max_iterations = parameters.max_iterations;
-  // Penalty's steps are Newton's on piecewise-linear springs, stiff for a large r: a residual
-  // search would creep along them; it takes full steps unless asked.
-  o.line_search = parameters.search == "yes" ||
-                  (parameters.search == "auto" && with_friction && parameters.method != "penalty");
+  // Full steps for frictionless Signorini, as the thesis's tables; friction and the compliance
+  // laws cycle without a search (a compliance kink on every node near the wall). Penalty's steps
+  // are Newton's on piecewise-linear springs, stiff for a large r: a residual search would creep
+  // along them; it takes full steps unless asked.
+  const bool beyond_signorini = std::any_of(laws.begin(), laws.end(), [](const ContactLaw& l) {
+    return l.has_friction() || l.has_compliance();
+  });
+  o.line_search = parameters.search == "yes" || (parameters.search == "auto" && beyond_signorini &&
+                                                 parameters.method != "penalty");
   return o;
 }
 

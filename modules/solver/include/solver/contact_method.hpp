@@ -29,9 +29,9 @@ struct ContactSolverParameters {
   double c = 100;              ///< projection
   double eps = 1e-5;           ///< stopping tolerance of test (iv)
   int max_iterations = 100;
-  /// Line search of a linear contact solve: "auto" (on with friction for alm, pdas and
-  /// projection; off without friction, where the thesis's methods take full steps, and for
-  /// penalty), "yes" or "no" (contact_newton.hpp).
+  /// Line search of a linear contact solve: "auto" (on with friction or a compliance law for
+  /// alm, pdas and projection; off for frictionless Signorini, where the thesis's methods take
+  /// full steps, and for penalty), "yes" or "no" (contact_newton.hpp).
   std::string search = "auto";
 };
 

@@ -22,8 +22,9 @@
 // alpha lowers ||R||, takes the one of least ||R||: friction needs it where the tangential rigid
 // motion of the body is held by friction alone, since a full step that leaves every node slipping
 // holds nothing sideways and drifts by the tangential load over the proximal term of
-// condensed_bulk.hpp, a state the stick tests never leave again. The thesis's frictionless methods
-// take full steps (Tables 7.1, 7.2).
+// condensed_bulk.hpp, a state the stick tests never leave again; the compliance laws need it too,
+// whose kink at the obstacle surface makes full steps cycle between two branches. The thesis's
+// methods take full steps on frictionless Signorini contact (Tables 7.1, 7.2), and so do we.
 #include "contact/contact_law.hpp"
 #include "contact/contact_status.hpp"
 #include "solver/contact_bulk.hpp"
@@ -75,8 +76,9 @@ struct ContactNewtonOptions {
   bool line_search = false; ///< on a linear bulk (a nonlinear one always searches)
 };
 
-/// The options of `parameters`, the line search resolved for a problem `with_friction`.
-ContactNewtonOptions newton_options(const ContactSolverParameters& parameters, bool with_friction);
+/// The options of `parameters`, the line search resolved for a problem of these `laws`.
+ContactNewtonOptions newton_options(const ContactSolverParameters& parameters,
+                                    const std::vector<ContactLaw>& laws);
 
 struct ContactNewtonResult {
   bool converged = false;

@@ -43,8 +43,8 @@ FiniteStrainSolution solve_finite_strain_contact(const FiniteStrainProblem& prob
     const double s = static_cast<double>(k) / options.load_steps;
     bulk.set_load_factor(s);
     const int evaluations = bulk.evaluations();
-    const ContactNewtonResult c =
-        solve_contact(bulk, setting, *method, newton_options(options.contact, false), iterate);
+    const ContactNewtonResult c = solve_contact(
+        bulk, setting, *method, newton_options(options.contact, setting.law), iterate);
     LoadStepResult step;
     step.load_factor = s;
     step.converged = c.converged;
