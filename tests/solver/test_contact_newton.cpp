@@ -378,16 +378,14 @@ TEST(ContactNewton, TheStepIsTheAlartCurnierNewtonStep) {
       Eigen::VectorXd X(n + 2 * m);
       for (int i = 0; i < n + 2 * m; ++i)
         X[i] = 0.3 * uniform(random) + (i >= n && i < n + m ? 0.4 : 0.0);
-      ContactSolverParameters parameters = parameters_for(method);
-      parameters.max_iterations = 1;
-      const std::unique_ptr<ContactMethod> newton = make_contact_method(parameters);
+      const std::unique_ptr<ContactMethod> newton = make_contact_method(parameters_for(method));
       CondensedBulk bulk(fr.problem, {}, X.head(n));
       ContactIterate iterate{X.segment(n, m), X.tail(m), {}};
       const ContactNewtonResult c = solve_contact(bulk, fr.setting, *newton, {1e-12, 1}, iterate);
       ASSERT_EQ(c.iterations(), 1) << c.failure;
       ASSERT_GT(c.history[0].active, 0);
       ASSERT_LT(c.history[0].active, m);
-      const Eigen::VectorXd expected = dense_alart_curnier_step(fr, X, 10.0);
+      const Eigen::VectorXd expected = dense_alart_curnier_step(fr, X, newton->augmentation());
       const double tol = 1e-10 * expected.cwiseAbs().maxCoeff();
       for (int i = 0; i < n; ++i)
         EXPECT_NEAR(bulk.displacement()[i], expected[i], tol) << method << " w " << i;

@@ -93,6 +93,7 @@ TEST(ContactNewtonFailures, ASearchNeverTakesANonFiniteResidual) {
   };
   const ContactNewtonResult r = run(bulk);
   ASSERT_EQ(r.step_length.size(), 1u);
+  ASSERT_EQ(r.history.size(), 1u);
   EXPECT_EQ(r.step_length[0], 0.5) << r.history[0].residual;
   EXPECT_TRUE(std::isfinite(r.history[0].residual));
 }
