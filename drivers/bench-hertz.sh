@@ -95,23 +95,13 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 source "$root/drivers/lib/hertz_deck.sh"
 
-# write_deck PROBLEM DECK [METHOD VALUE]: the problem's template at N, without VTK output
-# (timing only); for the Coulomb deck its rigid start shift h^2 / R, h = pi R / N. METHOD =
-# linear gives the contact-free floor problem, Gamma3 held in both directions (the Coulomb body
-# has no other support).
+# write_deck PROBLEM DECK [METHOD VALUE]: the problem's template at N (hertz_deck: for the
+# Coulomb deck its rigid start shift, and a floor problem held in both directions), without VTK
+# output (timing only).
 write_deck() {
   local problem=$1 deck=$2
   hertz_deck "${template[$problem]}" "$deck" "$n" "$grading" "${@:3}"
   sed -i -E "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/" "$deck"
-  if [ "$problem" = coulomb ]; then
-    local radius
-    radius=$(sed -nE '/^[[:space:]]*MESH[[:space:]]/ s/.*[[:space:]]R=([^[:space:]]+).*/\1/p' "$deck")
-    sed -i -E "/^[[:space:]]*INITIAL[[:space:]]/ s/u=[^[:space:]]+/u=0,-$(rigid_shift "$radius" "$n")/" "$deck"
-    if [ "${3:-}" = linear ]; then
-      sed -i -E -e '/^[[:space:]]*(FRICTION|INITIAL)[[:space:]]/ d' \
-        -e 's/^DIRICHLET ref=3 uy=0$/DIRICHLET ref=3 ux=0 uy=0/' "$deck"
-    fi
-  fi
 }
 
 # The runs: NAME DIR, in the order of one round.
@@ -123,25 +113,23 @@ for problem in "${problems[@]}"; do
   rm -rf "$out/$problem"
   mkdir -p "$base"
   write_deck "$problem" "$base/hertz.dat"
-  for stage in mesh material contact assemble; do
-    run_stage "$stage" "$base/hertz.dat" "$base" || die "cannot build the $problem base case"
-  done
+  build_base "$base/hertz.dat" "$base" "the $problem base case"
   for method in ${methods[$problem]}; do
     dir=$out/$problem/$method
     mkdir -p "$dir"
-    for ds in nopo mili cont tae; do ln -s "../base/case.$ds" "$dir/case.$ds"; done
+    link_ds ../base "$dir" nopo mili cont tae
     write_deck "$problem" "$dir/hertz.dat" "$method" "${value[${problem}_$method]}"
     runs+=("${problem}_$method $dir")
   done
   floor=$out/$problem/floor
   mkdir -p "$floor"
-  for ds in nopo mili; do ln -s "../base/case.$ds" "$floor/case.$ds"; done
+  link_ds ../base "$floor" nopo mili
   write_deck "$problem" "$floor/hertz.dat" linear
   run_stage assemble "$floor/hertz.dat" "$floor" || die "cannot assemble the $problem floor problem"
   for backend in mumps cholmod; do
     dir=$out/$problem/floor_$backend
     mkdir -p "$dir"
-    for ds in nopo mili tae; do ln -s "../floor/case.$ds" "$dir/case.$ds"; done
+    link_ds ../floor "$dir" nopo mili tae
     sed -E "/^[[:space:]]*SOLVER[[:space:]]/ s/linear=[^[:space:]]+/linear=$backend/" \
       "$floor/hertz.dat" >"$dir/hertz.dat"
     grep -qE "linear=$backend" "$dir/hertz.dat" || die "$floor/hertz.dat: no SOLVER linear= to replace"
@@ -199,8 +187,7 @@ import csv, json, statistics, sys
 from pathlib import Path
 
 out, n, thesis_csv = Path(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
-info = dict(l.split(": ", 1) if ": " in l else (l.rstrip(":"), "")
-            for l in (out / "command.txt").read_text().splitlines())
+info = dict(l.split(": ", 1) for l in (out / "command.txt").read_text().splitlines() if ": " in l)
 PROBLEMS = {
     "hertz": ("Frictionless Hertz (scene 7a, `datafiles/scene7a/hertz.dat`)",
               {"pdas": "gamma = 1e2", "projection": "c = 1e2", "alm": "r = 1e2", "penalty": "r = 1e6"},
@@ -275,8 +262,7 @@ for problem in info["problems"].split():
         row = [f"floor ({b}{', taken' if b == backend else ''})", "analyze + factorize + solve", "—",
                f"{floors[b]['phases']:.3f}", "—", f"{floors[b]['wall']:.3f}",
                f"{floors[b]['phases'] / lin['phases']:.2f}", f"{floors[b]['wall'] / lin['wall']:.2f}", "—"]
-        row += ["—", "—"] if problem == "hertz" else []
-        row += (["—"] + (["—"] if getfem_ratio else [])) if getfem else []
+        row += ["—"] * (len(header) - len(row))  # the floor has no ratios of its own
         rows.append(row)
     lines += [f"## {title}", "",
               f"{runs[f'{problem}_pdas'][0]['dofs']} dofs in the pdas runs, "

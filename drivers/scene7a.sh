@@ -78,9 +78,7 @@ base() {
   rm -rf "$dir"
   mkdir -p "$dir"
   write_deck "$dir/hertz.dat" "$n" "$grading"
-  for stage in mesh material contact assemble; do
-    run_stage "$stage" "$dir/hertz.dat" "$dir" || die "cannot build the base case of N = $n"
-  done
+  build_base "$dir/hertz.dat" "$dir" "the base case of N = $n"
 }
 
 # variant FOLDER N GRADING METHOD VALUE: sig-solve and sig-post in FOLDER/N<N>/<method>_<value>/
@@ -90,9 +88,7 @@ variant() {
   local dir=$1/N$n/${method}_$value
   rm -rf "$dir"
   mkdir -p "$dir"
-  for ds in nopo mili cont tae; do
-    ln -s "../base/case.$ds" "$dir/case.$ds"
-  done
+  link_ds ../base "$dir" nopo mili cont tae
   write_deck "$dir/hertz.dat" "$n" "$grading" "$method" "$value"
   run_stage solve "$dir/hertz.dat" "$dir" && run_stage post "$dir/hertz.dat" "$dir" ||
     failed+=("$dir")

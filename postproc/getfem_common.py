@@ -1,6 +1,8 @@
-"""What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py, getfem_friction.py) share:
+"""What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py, getfem_friction.py) share,
+and the deck reader friction_hertz_report.py uses too:
 reading a deck's cards, the version of Debian's python3-getfem, the gmsh half disc, the node
 coordinates of sig-mesh's case.nopo and the nodal weights of the contact nodes."""
+import math
 import subprocess
 
 import numpy as np
@@ -82,8 +84,6 @@ def snap_arc(points, ids, center, R, angle0, segments, step):
     k step), k = 0..segments the nearest arc position, cos and sin set to exactly 0 below 1e-15
     (gmsh places arc nodes to about 1e-9 R). Raises ValueError unless the ids fill the positions
     one each."""
-    import math
-
     if len(ids) != segments + 1:
         raise ValueError(f"{len(ids)} nodes on the arc, expected {segments + 1}")
     period = round(2 * math.pi / step)

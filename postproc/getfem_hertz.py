@@ -25,7 +25,6 @@ import argparse
 import json
 import math
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -33,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from getfem_common import deck_cards, getfem_version
+from getfem_common import deck_cards, getfem_version, gmsh_half_disc, tributary_lengths
 
 try:
     import getfem as gf
@@ -65,26 +64,15 @@ def read_deck(path):
 
 def mesh(workdir, R, n, grading):
     """gmsh half_disc.geo -> msh 2.2 -> gf.Mesh; checks the regions GetFEM imported."""
-    msh = workdir / f"half_disc_N{n}.msh"
-    cmd = ["gmsh", str(GEO), "-2", "-format", "msh22", "-v", "2", "-setnumber", "R", repr(R),
-           "-setnumber", "N", str(n), "-setnumber", "grading", repr(grading), "-o", str(msh)]
-    done = subprocess.run(cmd, capture_output=True, text=True)
-    if done.returncode != 0 or not msh.is_file():
-        fail(f"gmsh failed ({' '.join(cmd)}):\n{done.stdout}{done.stderr}")
+    try:
+        msh = gmsh_half_disc(GEO, workdir, R, n, grading)
+    except RuntimeError as e:
+        fail(str(e))
     m = gf.Mesh("import", "gmsh", str(msh))
     regions = set(int(r) for r in np.atleast_1d(m.regions()))
     if not {TOP, GAMMA3} <= regions:
         fail(f"{msh}: GetFEM imported regions {sorted(regions)}, expected {TOP} and {GAMMA3}")
     return m
-
-
-def tributary_lengths(points):
-    """Half the chords to the neighbours along the arc (points sorted by angle)."""
-    chord = np.linalg.norm(np.diff(points, axis=1), axis=0)
-    w = np.zeros(points.shape[1])
-    w[:-1] += chord / 2
-    w[1:] += chord / 2
-    return w
 
 
 def main():
