@@ -42,7 +42,8 @@ A scene report, in outline:
 """
 import sys
 
-from .charts import MapCell, MapPanel, Point, Series, speed_accuracy_chart, stability_map
+from .charts import (MapCell, MapPanel, Point, Series, pyplot, speed_accuracy_chart,
+                     stability_map)
 from .cells import MISSING, fmt, is_missing, ours_thesis, pct, run_cell, tolerance_text, within
 from .checks import Check, Checks
 from .deck import Deck, read_deck

@@ -100,13 +100,13 @@ def speed_accuracy_chart(path, series, xlabel, ylabel, title="", log=True, figsi
         fill = dict(fillstyle="none") if s.hollow else {}
         handle = None
         if ok:
-            handle, = ax.plot([p.x for p in ok], [p.y for p in ok], s.line or "none", **style,
-                              **fill, label=s.label)
+            handle, = ax.plot([p.x for p in ok], [p.y for p in ok], linestyle=s.line or "none",
+                              **style, **fill, label=s.label)
             labels += [(p.x, p.y, p.text) for p in ok if p.text]
         if nv:
             nv_points = True
             color = handle.get_color() if handle else s.color
-            h, = ax.plot([p.x for p in nv], [top] * len(nv), "none", marker=s.marker,
+            h, = ax.plot([p.x for p in nv], [top] * len(nv), linestyle="none", marker=s.marker,
                          markersize=s.markersize, color=color, fillstyle="none", alpha=s.alpha,
                          label=None if handle else s.label)
             handle = handle or h
@@ -191,7 +191,7 @@ def stability_map(path, panels, value_label="log10(value)", title="", palette=No
         mappable = plt.cm.ScalarMappable(norm=norm, cmap=colormap)
         fig.colorbar(mappable, ax=axes[0].tolist(), label=value_label)
     if title:
-        fig.suptitle(title, fontsize=fontsize + 2)
+        fig.suptitle(title, fontsize=fontsize + 2, y=1.0 + 0.25 / height)
     fig.savefig(path, dpi=dpi, bbox_inches="tight")
     plt.close(fig)
     return Path(path)
