@@ -108,6 +108,9 @@ const std::vector<CardSpec>& card_schema() {
                         "compliance | specific-penalty | two-step | ipm; default signorini"},
            {"r", "foundation stiffness per unit area of compliance, specific-penalty and ipm "
                  "(sig-march), > 0"},
+           {"persistency", "strategy=two-step: midpoint (default; the normal velocity of (3.39) at "
+                           "t_n, choice C15) | increment (q_n - q_{n-1}): what step (b) holds at "
+                           "zero"},
        }},
       {"FRICTION",
        false,

@@ -6,10 +6,18 @@
 
 namespace sig {
 
+namespace {
+
+std::string strategy_of(const Card& contact) {
+  return contact.choice(
+      "strategy", {"signorini", "compliance", "specific-penalty", "two-step", "ipm"}, "signorini");
+}
+
+} // namespace
+
 ContactHistoryInfo contact_history_info(const Card& contact) {
   ContactHistoryInfo info;
-  info.strategy = contact.choice(
-      "strategy", {"signorini", "compliance", "specific-penalty", "two-step", "ipm"}, "signorini");
+  info.strategy = strategy_of(contact);
   const bool needs_r = info.strategy == "compliance" || info.strategy == "specific-penalty" ||
                        info.strategy == "ipm";
   if (needs_r && !contact.has("r"))
@@ -36,10 +44,19 @@ ContactHistoryInfo contact_history_info(const Card& contact) {
 ContactStrategyParameters contact_strategy_parameters(const Card& contact, const Card* solver) {
   ContactStrategyParameters p;
   p.r = contact.real("r", 0.0);
+  if (contact.has("persistency") && strategy_of(contact) != "two-step")
+    contact.fail("persistency", "is a field of strategy=two-step");
+  p.persistency = contact.choice("persistency", {"midpoint", "increment"}, "midpoint") == "midpoint"
+                      ? Persistency::midpoint
+                      : Persistency::increment;
   if (solver != nullptr) {
     const long maxit = solver->integer("maxit", p.max_iterations);
     if (maxit < 1) solver->fail("maxit", "must be >= 1");
     p.max_iterations = static_cast<int>(maxit);
+    p.gamma = solver->real("gamma", p.gamma);
+    if (!(p.gamma > 0)) solver->fail("gamma", "must be > 0");
+    p.eps = solver->real("eps", p.eps);
+    if (!(p.eps > 0 && p.eps < 1)) solver->fail("eps", "must be in (0, 1)");
   }
   return p;
 }

@@ -12,11 +12,12 @@ namespace sig {
 
 std::string energy_csv(const std::vector<EnergyRecord>& energy) {
   std::string csv = std::string(energy_csv_header) + "\n";
-  char row[256];
+  char row[512];
   for (const EnergyRecord& r : energy) {
-    std::snprintf(row, sizeof row, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", r.step, r.time,
-                  r.kinetic, r.elastic, r.total, r.contact_work, r.max_penetration, r.active_nodes,
-                  r.newton_iterations);
+    std::snprintf(row, sizeof row,
+                  "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%.17g,%.17g,%.17g\n", r.step,
+                  r.time, r.kinetic, r.elastic, r.total, r.contact_work, r.max_penetration,
+                  r.active_nodes, r.newton_iterations, r.interface, r.friction_work, r.wall_work);
     csv += row;
   }
   return csv;

@@ -28,7 +28,8 @@ struct ReducedSystem;
 
 /// The header line of energy.csv; the contact columns are 0 without contact.
 inline constexpr const char* energy_csv_header =
-    "step,time,kinetic,elastic,total,contact_work,max_penetration,active_nodes,newton_iterations";
+    "step,time,kinetic,elastic,total,contact_work,max_penetration,active_nodes,newton_iterations,"
+    "interface,friction_work,wall_work";
 
 /// energy.csv (header above, one row per record, 17 significant digits). Without contact the
 /// schemes solve one linear system per step: newton_iterations is 1 on every step but step 0

@@ -25,6 +25,11 @@
 //   tresca                  (1.33) s = threshold, a given traction, on every contact element
 //                           whatever its normal state (the classical Tresca model)
 //   coulomb                 (1.35) s = mu N, N the whole normal pressure (compliance + wall)
+// A time step of sig-march may replace a displacement compliance by its secant over the step
+// (`secant`, the specific penalty of [62], (3.51), (8.32)): N = cn p_spe(previous, q_n), with
+// p_spe of complementarity.hpp and `previous` the penetration at the start of the step, whose
+// work over the step is exactly the change of the compliance's potential cn [q_n]_+^2 / 2. The
+// strategies of the march set it per step; it is never stored in CONT.
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -73,7 +78,9 @@ struct ContactLaw {
   NormalLaw normal = NormalLaw::signorini;
   double cn = 0; ///< compliance slope, pressure per unit penetration (> 0 for compliance laws)
   double c3 = std::numeric_limits<double>::infinity(); ///< truncation pressure (ch. 6), > 0
-  double depth = 0; ///< g >= 0: the wall at q_n = g (signorini, compliance-unilateral)
+  double depth = 0;    ///< g >= 0: the wall at q_n = g (signorini, compliance-unilateral)
+  bool secant = false; ///< compliance, compliance-unilateral (c3 unused): the specific penalty
+  double previous = 0; ///< secant: the penetration at the start of the time step
   FrictionLaw friction = FrictionLaw::none;
   double mu = 0;        ///< coulomb: friction coefficient >= 0
   double threshold = 0; ///< tresca: slip bound, a traction >= 0
