@@ -37,9 +37,13 @@ struct Kinematics {
 Kinematics kinematics(const Mesh& mesh, int t, double thickness, const Eigen::VectorXd& u) {
   const Matrix23 x = triangle_vertices(mesh, t);
   const Matrix23 g = p1_gradients(x);
+  // Displacements relative to the first vertex's: the gradients sum to zero, so this changes
+  // nothing but rounding, and a body far from its reference position (a ring thrown 100 m) keeps
+  // F exact for a translation instead of carrying |u| eps / h of noise into the stress.
   Matrix23 ue;
+  const Eigen::Vector2d u0 = u.segment<2>(2 * mesh.triangles[t][0]);
   for (int a = 0; a < 3; ++a)
-    ue.col(a) = u.segment<2>(2 * mesh.triangles[t][a]);
+    ue.col(a) = u.segment<2>(2 * mesh.triangles[t][a]) - u0;
   Kinematics k;
   k.volume = thickness * p1_area(x);
   k.F = Eigen::Matrix2d::Identity() + ue * g.transpose();

@@ -156,6 +156,9 @@ const std::vector<CardSpec>& card_schema() {
            {"output_every", "keep the state every this many steps (>= 1; default 1)"},
            {"mass", "consistent | lumped | emm (Equivalent Mass Matrix (3.54), needs a CONTACT "
                     "card); default consistent"},
+           {"stress", "hyperelastic bodies: gonzalez (default; Gonzalez's algorithmic stress "
+                      "(3.41), exact energy balance) | midpoint (the midpoint configuration's "
+                      "stress, the contrast)"},
        }},
       {"INITIAL",
        true,
@@ -165,6 +168,9 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"u", "initial displacement: ux,uy (default 0,0)"},
            {"v", "initial velocity: vx,vy (default 0,0)"},
+           {"omega", "initial angular velocity (rad/s, counter-clockwise): adds omega e3 x "
+                     "(X - centre) to the velocity (needs centre=)"},
+           {"centre", "centre of the initial rotation: x,y"},
            {"region", "sub-domain numbers (1-based); default every sub-domain"},
        }},
       {"COMPARE",

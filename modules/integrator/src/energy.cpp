@@ -45,6 +45,8 @@ void add_contact_step(EnergyRecord& record, const EnergyRecord& before, const Ei
   record.wall_work = before.wall_work + normal + (interface - before.interface);
   record.max_penetration = q_after.size() ? std::max(q_after.maxCoeff(), 0.0) : 0.0;
   record.active_nodes = static_cast<int>((N.array() > 0).count());
+  record.normal_force = N.sum();
+  record.tangential_force = T.sum();
 }
 
 } // namespace sig

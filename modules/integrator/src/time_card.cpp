@@ -33,6 +33,7 @@ TimeParameters time_parameters(const Card& time, bool has_contact) {
     time.fail("mass", "mass=emm needs a CONTACT card: the Equivalent Mass Matrix (3.54) removes "
                       "the normal inertia of the contact nodes of Gamma3");
   p.mass = mass_choice_from_string(mass);
+  p.stress = algorithmic_stress_named(time.choice("stress", {"gonzalez", "midpoint"}, "gonzalez"));
   return p;
 }
 

@@ -34,6 +34,10 @@ struct EnergyRecord {
   double interface = 0.0;     ///< energy stored by the compliance of the foundation now
   double friction_work = 0.0; ///< work of the tangential forces since step 0: -sum T slip
   double wall_work = 0.0;     ///< work of the normal forces not stored in the interface
+  /// The contact forces of the last step summed over the nodes, sum N and sum T (the momentum
+  /// they give the body over the step is k times their resultant, ALGORITHMS.md 4.8 check 6).
+  double normal_force = 0.0;
+  double tangential_force = 0.0;
 };
 
 /// The contact nodes' part of a step's record: the forces N, T over the step, the penetrations

@@ -2,12 +2,15 @@
 // The cards of a dynamic case (stage sig-march):
 //
 //   TIME scheme=midpoint|newmark T= k= [output_every=1] [mass=consistent|lumped|emm]
+//        [stress=gonzalez|midpoint]   (hyperelastic bodies: the stress of a time step,
+//                                      material/algorithmic_stress.hpp; default gonzalez)
 //   INITIAL [u=ux,uy] [v=vx,vy] [region=...]   (repeatable; sets only the fields it gives)
 //
 // Every check names the file, the line and the field (sig::InputError), so that a bad deck is
 // refused before anything is factorized.
 #include "assembly/initial.hpp"
 #include "integrator/elastodynamics.hpp"
+#include "material/algorithmic_stress.hpp"
 
 #include <Eigen/Core>
 #include <string>
@@ -25,6 +28,7 @@ struct TimeParameters {
   int steps = 0;                   ///< T / k, a whole number
   int output_every = 1;
   MassChoice mass = MassChoice::consistent;
+  AlgorithmicStress stress = AlgorithmicStress::gonzalez; ///< hyperelastic bodies only
 };
 
 /// The TIME card, checked: k > 0, T > 0, T / k within 1e-9 relative of a whole number of steps,

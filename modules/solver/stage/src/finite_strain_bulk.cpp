@@ -90,9 +90,18 @@ void FiniteStrainBulk::start_time_step(const Eigen::VectorXd& u_prev,
   v_prev_ = v_prev;
   previous_ = previous_strain(*problem_.mesh, *problem_.materials, u_prev);
   slip_origin_ = u_prev;
-  now_.u = u_prev + problem_.time_step * v_prev;
-  SIG_VERIFY(evaluate(now_, true), "the predictor u_prev + k v_prev inverts a triangle: the "
-                                   "time step is too large for the motion");
+  // The predictor u_prev + k v_prev, shortened towards u_prev (always admissible) when a fast
+  // rotation's straight-line extrapolation would invert a triangle.
+  bool admissible = false;
+  for (double theta = 1; !admissible && theta >= 1.0 / 64; theta /= 2) {
+    now_.u = u_prev + theta * problem_.time_step * v_prev;
+    admissible = evaluate(now_, true);
+  }
+  if (!admissible) {
+    now_.u = u_prev;
+    SIG_VERIFY(evaluate(now_, true), "the state at the start of the time step has an inverted "
+                                     "triangle");
+  }
   base_ = now_.u;
 }
 

@@ -63,8 +63,9 @@ public:
   void set_load_factor(double s);
 
   /// Dynamics: the next time step starts from (u_prev, v_prev) (full dofs); the iterate becomes
-  /// the predictor u_prev + k v_prev and the slips are measured from u_prev. sig::Error without
-  /// a mass, or if u_prev has an inverted triangle.
+  /// the predictor u_prev + k v_prev (shortened towards u_prev if it inverts a triangle) and the
+  /// slips are measured from u_prev. sig::Error without a mass, or if u_prev has an inverted
+  /// triangle.
   void start_time_step(const Eigen::VectorXd& u_prev, const Eigen::VectorXd& v_prev);
   /// (2 / k)(u - u_prev) - v_prev at the iterate.
   Eigen::VectorXd velocity() const;
