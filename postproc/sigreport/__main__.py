@@ -8,7 +8,7 @@
       --add-card LINE            append the card LINE
     Edits apply in the order given; OUTPUT may be TEMPLATE. Run with PYTHONPATH=postproc.
   python3 -m sigreport thesis SCENE ITEM [KEY]             print a thesis value (exit 1 if absent)
-  python3 -m sigreport value DECK CARD FIELD               print a field of a deck (exit 1 if absent)
+  python3 -m sigreport value DECK CARD FIELD               print a field of a deck (exit 1: absent)
 
 Errors name the file, line and field, and exit 1.
 """

@@ -60,7 +60,11 @@ TEST(ContIo, RoundTripPlaneAndDisc) {
   nonmonotone.mu = 1.5;
   nonmonotone.bound = FrictionBound::compliance;
   nonmonotone.of = SlipMeasure::slip_rate;
-  for (const ContactLaw& law : {unilateral, truncated, nonmonotone, ContactLaw{}})
+  ContactLaw damped;
+  damped.normal = NormalLaw::damped_unilateral;
+  damped.cn = 10;
+  damped.depth = 0.05;
+  for (const ContactLaw& law : {unilateral, truncated, nonmonotone, damped, ContactLaw{}})
     for (const Obstacle* obstacle :
          {static_cast<const Obstacle*>(&plane), static_cast<const Obstacle*>(&disc)}) {
       const ContactElements written = build_contact_elements(mesh, 3, *obstacle, law, 0.5);
