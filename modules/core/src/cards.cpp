@@ -91,13 +91,18 @@ const std::vector<CardSpec>& card_schema() {
            {"radius", "disc obstacle: radius"},
            {"law", "signorini (1.22) | compliance (1.24): pressure cn [q_n]+, truncated at c3 | "
                    "compliance-unilateral (1.26): compliance while q_n < g, a rigid wall at "
-                   "q_n = g; default signorini"},
-           {"cn", "compliance: pressure per unit penetration (GPa/m in the thesis's units), > 0"},
+                   "q_n = g | damped (1.25): pressure cn [v_n]+ of the normal velocity v_n | "
+                   "damped-unilateral (1.28): damped while v_n < g, the bound v_n <= g beyond "
+                   "(the laws in velocity need TIME scheme=quasistatic); default signorini"},
+           {"cn", "compliance: pressure per unit penetration (GPa/m in the thesis's units), > 0; "
+                  "damped laws: pressure per unit normal velocity (GPa s/m)"},
            {"c3", "compliance: truncation pressure min(cn [q_n]+, c3) of ch. 6, > 0; default "
                   "none"},
            {"g", "depth of the rigid wall beyond the obstacle surface, >= 0, default 0: "
                  "signorini's extra gap, compliance-unilateral's layer, ipm's allowed "
-                 "penetration (sig-march)"},
+                 "penetration (sig-march); damped-unilateral: the bound on the normal velocity"},
+           {"exclude", "boundary references whose nodes get no contact element (e.g. the clamped "
+                       "ends of Gamma3 on Gamma1), as a list"},
            {"gap", "old spelling of g"},
            {"strategy", "dynamic contact strategy of sig-march (a TIME deck only): signorini | "
                         "compliance | specific-penalty | two-step | ipm; default signorini"},
@@ -111,9 +116,19 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference of the CONTACT card"},
            {"law", "none | tresca (1.33): |T| <= threshold on every contact node | coulomb "
-                   "(1.35): |T| <= mu N"},
+                   "(1.35): |T| <= mu N | nonmonotone (1.39): |T| <= mu(r) N, mu(r) = "
+                   "(a - b) exp(-alpha r) + b, r the slip (or slip rate) magnitude, solved by "
+                   "the convexification loop (4.110)-(4.112)"},
            {"mu", "coulomb: friction coefficient, >= 0"},
            {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
+           {"bound", "coulomb, nonmonotone: normal (default): mu times the whole normal "
+                     "pressure N | compliance: mu times the compliance pressure p(min(q_n, g)) "
+                     "only, (4.6)/(5.6): on the wall Tresca's mu p(g)"},
+           {"a", "nonmonotone: mu(0), >= b"},
+           {"b", "nonmonotone: mu at large slip, >= 0"},
+           {"alpha", "nonmonotone: decay of mu per unit slip, >= 0"},
+           {"of", "nonmonotone: slip (default; the tangential displacement from the "
+                  "reference, ch. 4) | slip-rate (the tangential velocity, ch. 6)"},
        }},
       {"SOLVER",
        false,

@@ -55,8 +55,15 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
     k.bound = law.threshold;
     break;
   case FrictionLaw::coulomb:
-    k.bound = law.mu * k.normal;
-    k.bound_slope = law.mu;
+  case FrictionLaw::nonmonotone: // mu frozen for this convex solve (contact_law.hpp)
+    if (law.bound == FrictionBound::normal) {
+      k.bound = law.mu * k.normal;
+      k.bound_slope = law.mu;
+      k.d_bound = law.mu * k.d_force.row(0);
+    } else { // the compliance pressure only: mu p(g), Tresca's, on the wall
+      k.bound = law.mu * k.compliance;
+      k.d_bound(kQn) = law.mu * k.compliance_slope;
+    }
     break;
   }
   if (law.has_friction()) {
@@ -69,7 +76,7 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
     } else {
       k.slip = on ? on->slip : static_cast<int>(d_project_interval_ds(z, k.bound)); // 0: z = s = 0
       k.tangential = k.slip * k.bound;
-      k.d_force.row(1) = k.slip * k.bound_slope * k.d_force.row(0);
+      k.d_force.row(1) = k.slip * k.d_bound;
     }
   }
   k.complementarity[1] = x.t - k.tangential;
