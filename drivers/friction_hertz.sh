@@ -19,7 +19,8 @@
 #                                   node touches and holds nothing sideways: shown failing)
 #   tresca_pdas_1e2 at N = 256:     the Tresca law with threshold 1 GPa instead of Coulomb
 # Every run starts from the rigid shift u = (0, -h^2 / R), h = pi R / N (the INITIAL card).
-# Then postproc/friction_hertz_report.py OUTDIR writes OUTDIR/report.md and its PNGs.
+# Then postproc/friction_hertz_report.py OUTDIR writes OUTDIR/report.md, its PNGs and
+# OUTDIR/scene.json.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
@@ -151,6 +152,7 @@ for n in "${meshes[@]}" "$reference"; do
   echo "friction_hertz.sh: N = $n done ($((SECONDS - t0)) s)"
 done
 echo "friction_hertz.sh: all runs done in $((SECONDS - start)) s"
+record_seconds $start
 
 "$python" "$root/postproc/friction_hertz_report.py" "$out"
 if [ ${#failed[@]} -gt 0 ]; then

@@ -25,7 +25,8 @@
 # finer ring, N = 2 x (largest N) (512 by default, 256 quick, 1024 full), whose Gamma3 nodes
 # include those of every coarser ring (the grid is halved exactly): error of the vertical reaction
 # on AB and of the final pressure at the shared nodes, charted against the solve time.
-# Then postproc/scene7b_report.py OUTDIR writes OUTDIR/report.md and its PNG charts.
+# Then postproc/scene7b_report.py OUTDIR writes OUTDIR/report.md, its PNG charts and
+# OUTDIR/scene.json (the scene index entry; OUTDIR/command.txt says how the runs were made).
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
@@ -42,6 +43,7 @@ Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /us
 EOF
 }
 
+invocation="drivers/scene7b.sh${*:+ $*}"
 out=$root/out/scene7b
 sizes=(128 256)
 while [ $# -gt 0 ]; do
@@ -71,6 +73,13 @@ deck() {
 declare -A field=([pdas]=gamma [projection]=c [alm]=r)
 declare -A values=([pdas]="1 10 1e2 1e3 1e4 1e5 1e6" [projection]="1 10 1e2 1e3 1e4 1e5 1e6" [alm]="1e3")
 rm -rf "$out"
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+{
+  provenance
+  echo "sizes: ${sizes[*]}"
+} >"$out/command.txt"
+start=$SECONDS
 # Runs: per mesh a base, 7 pdas, 7 projection and 1 alm; then the reference.
 progress_begin $((16 * ${#sizes[@]} + 1))
 for n in "${sizes[@]}"; do
@@ -111,4 +120,5 @@ for stage in mesh material contact assemble solve post; do
 done
 echo "reference N=$n_ref pdas gamma=1e4: $(grep -o '[0-9/]* load steps.*' "$reference/solve.log" | sed 's/, solve.*//')"
 progress_step reference
+record_seconds $start
 "$python" "$root/postproc/scene7b_report.py" "$out"

@@ -214,6 +214,7 @@ done
 # 5. Fig 8.2 for ParaView: every state of IPM + EMM across the impact, with the contact pressure.
 keep=yes run "$out/fig82/ipm-emm" deck "$window_plane" ipm-emm 0.08 1e-3
 echo "scene8a.sh: all runs done in $((SECONDS - start)) s"
+record_seconds $start
 
 "$python" "$root/postproc/scene8a_report.py" "$out"
 if [ ${#failed[@]} -gt 0 ]; then

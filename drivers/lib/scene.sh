@@ -3,6 +3,8 @@
 source "$(dirname "${BASH_SOURCE[0]}")/environment.sh"
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bin=${SIG_BIN:-$root/build/bin}
+# The reports read DS files through this build's sig-dump (postproc/sigreport/ds.py).
+export SIG_BIN=$bin
 python=${PYTHON:-/usr/bin/python3}
 
 die() {
@@ -49,6 +51,12 @@ parse_quick_out() {
     esac
     shift
   done
+}
+
+# record_seconds START: append the wall seconds of the runs since START ($SECONDS then) to
+# command.txt, the "seconds" of the scene index entry (out/<scene>/scene.json).
+record_seconds() {
+  echo "seconds: $((SECONDS - $1))" >>"$out/command.txt"
 }
 
 # provenance: the lines of a scene's command.txt that say how it was made (the driver's

@@ -52,7 +52,11 @@ TEST(ContIo, RoundTripPlaneAndDisc) {
   truncated.c3 = 1e8;
   truncated.friction = FrictionLaw::tresca;
   truncated.threshold = 2;
-  for (const ContactLaw& law : {unilateral, truncated, ContactLaw{}})
+  ContactLaw damped;
+  damped.normal = NormalLaw::damped_unilateral;
+  damped.cn = 10;
+  damped.depth = 0.05;
+  for (const ContactLaw& law : {unilateral, truncated, damped, ContactLaw{}})
     for (const Obstacle* obstacle :
          {static_cast<const Obstacle*>(&plane), static_cast<const Obstacle*>(&disc)}) {
       const ContactElements written = build_contact_elements(mesh, 3, *obstacle, law, 0.5);

@@ -135,6 +135,44 @@ TEST(ContactCards, LawsAndFriction) {
                    ->has_friction());
 }
 
+TEST(ContactCards, LawsInVelocity) {
+  const Mesh mesh = test::square_mesh(2);
+  const auto e = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 "
+                           "law=damped-unilateral cn=10 g=0.01\n",
+                           mesh);
+  ASSERT_TRUE(e.has_value());
+  for (const ContactLaw& law : e->law) {
+    EXPECT_EQ(law.normal, NormalLaw::damped_unilateral);
+    EXPECT_EQ(law.cn, 10);
+    EXPECT_EQ(law.depth, 0.01);
+    EXPECT_TRUE(law.in_velocity());
+  }
+  const auto d =
+      from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=damped cn=2\n", mesh);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_EQ(d->law.front().normal, NormalLaw::damped);
+  EXPECT_FALSE(d->law.front().has_wall());
+}
+
+// exclude= drops the nodes of other references (the clamped ends of Gamma3); the others keep
+// their tributary weights.
+TEST(ContactCards, ExcludedNodes) {
+  const Mesh mesh = test::square_mesh(4);
+  const auto all = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1\n", mesh);
+  const auto inner =
+      from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 exclude=1,2\n", mesh);
+  ASSERT_TRUE(all && inner);
+  ASSERT_EQ(all->size(), 5);
+  ASSERT_EQ(inner->size(), 3);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(inner->node[i], all->node[i + 1]);
+    EXPECT_EQ(inner->weight[i], 0.25);
+    EXPECT_EQ(inner->lagrange_node[i], mesh.num_nodes() + i);
+  }
+  expect_input_error("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 exclude=9", "exclude",
+                     "reference 9 carries no mesh node");
+}
+
 TEST(ContactCards, UnknownLaw) {
   expect_input_error("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=tresca", "law",
                      "expected one of signorini|compliance|compliance-unilateral");
@@ -152,6 +190,10 @@ TEST(ContactCards, BadLawParameters) {
   // A field the law does not read.
   expect_input_error(plane + "cn=10", "cn", "not a parameter of law=signorini");
   expect_input_error(plane + "law=compliance cn=10 g=0.5", "g", "not a parameter");
+  expect_input_error(plane + "law=damped-unilateral cn=10", "g", "velocity bound");
+  expect_input_error(plane + "law=damped cn=10 g=0.5", "g", "not a parameter of law=damped");
+  expect_input_error(plane + "law=damped cn=10 c3=5", "c3", "not a parameter of law=damped");
+  expect_input_error(plane + "law=damped", "cn", "missing");
 }
 
 // FRICTION on line 3 of a deck with a CONTACT card on line 2 must fail on `field`.

@@ -88,7 +88,7 @@ ContactLaw law_of(NormalLaw normal, FrictionLaw friction) {
   ContactLaw law;
   law.normal = normal;
   law.cn = 7.5;
-  law.depth = normal == NormalLaw::compliance ? 0.0 : 0.4;
+  law.depth = normal == NormalLaw::compliance || normal == NormalLaw::damped ? 0.0 : 0.4;
   law.friction = friction;
   law.mu = 0.3;
   law.threshold = 2.0;
@@ -168,7 +168,40 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{NormalLaw::compliance, FrictionLaw::coulomb},
                       Case{NormalLaw::compliance_unilateral, FrictionLaw::none},
                       Case{NormalLaw::compliance_unilateral, FrictionLaw::tresca},
-                      Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb}));
+                      Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb},
+                      Case{NormalLaw::damped, FrictionLaw::coulomb},
+                      Case{NormalLaw::damped_unilateral, FrictionLaw::none},
+                      Case{NormalLaw::damped_unilateral, FrictionLaw::coulomb}));
+
+// The laws in velocity are the compliance kernels of the velocity: the same forces, branches and
+// derivatives at the same arguments, and the thesis's own status names.
+TEST(ContactKernel, DampedLawsAreTheComplianceKernels) {
+  for (FrictionLaw friction : {FrictionLaw::none, FrictionLaw::coulomb})
+    for (auto [velocity, displacement] :
+         {std::pair{NormalLaw::damped, NormalLaw::compliance},
+          std::pair{NormalLaw::damped_unilateral, NormalLaw::compliance_unilateral}}) {
+      const ContactLaw v = law_of(velocity, friction), d = law_of(displacement, friction);
+      EXPECT_TRUE(v.in_velocity());
+      EXPECT_FALSE(d.in_velocity());
+      EXPECT_EQ(v.has_wall(), d.has_wall());
+      for (double q_n : {-0.1, 0.0, 0.2, 0.4, 0.5})
+        for (double q_t : {-0.3, 0.0, 0.1}) {
+          const ContactKernel a = contact_kernel(v, {q_n, q_t, 1.5, 0.2}, 10, 10);
+          const ContactKernel b = contact_kernel(d, {q_n, q_t, 1.5, 0.2}, 10, 10);
+          EXPECT_EQ(a.normal, b.normal);
+          EXPECT_EQ(a.tangential, b.tangential);
+          EXPECT_EQ(a.d_force, b.d_force);
+          EXPECT_EQ(a.d_complementarity, b.d_complementarity);
+          EXPECT_EQ(normal_status(a), normal_status(b));
+        }
+    }
+  const ContactLaw damped = law_of(NormalLaw::damped_unilateral, FrictionLaw::none);
+  EXPECT_EQ(label(NormalStatus::compliance, damped), "RNI");
+  EXPECT_EQ(label(NormalStatus::unilateral, damped), "CUV");
+  EXPECT_EQ(label(NormalStatus::free, damped), "free");
+  EXPECT_EQ(label(NormalStatus::compliance, law_of(NormalLaw::compliance, FrictionLaw::none)),
+            "CN");
+}
 
 TEST(ContactKernel, ZerosAreTheSignoriniCoulombStates) {
   const ContactLaw law = law_of(NormalLaw::signorini, FrictionLaw::coulomb);

@@ -54,6 +54,8 @@ expect contact   '$a FRICTION ref=2 law=coulomb mu=0.2'       "bad.dat:" "'ref'"
 expect contact   '/^CONTACT/d; $a FRICTION ref=3 law=coulomb mu=0.2' "bad.dat:" "'ref'" "CONTACT"
 expect solve     '$a INITIAL u=0,-1 v=1,0'                    "bad.dat:" "'v'" "static"
 expect contact   's/law=signorini gap=0/law=compliance-unilateral cn=10/' "bad.dat:" "'g'" "depth"
+# The laws in velocity belong to the quasistatic march (issue 12), not to a static solve.
+expect solve     's/law=signorini gap=0/law=damped cn=10/'    "bad.dat:" "'law'" "velocity"
 
 # Friction in large deformation is refused on the FRICTION card, before any solve.
 hyper=$work/hyper.dat

@@ -94,16 +94,22 @@ const std::vector<CardSpec>& card_schema() {
            {"radius", "disc obstacle: radius"},
            {"law",
             "signorini (1.22) | compliance (1.24): pressure cn [q_n]+, truncated at c3 | "
-            "compliance-unilateral (1.26): compliance while q_n < g, a rigid wall at "
-            "q_n = g",
+            "compliance-unilateral (1.26): compliance while q_n < g, a rigid wall at q_n = g | "
+            "damped (1.25): pressure cn [v_n]+ of the normal velocity v_n | damped-unilateral "
+            "(1.28): damped while v_n < g, the bound v_n <= g beyond (the laws in velocity need "
+            "TIME scheme=quasistatic)",
             "signorini"},
-           {"cn", "compliance: pressure per unit penetration (GPa/m in the thesis's units), > 0"},
+           {"cn", "compliance: pressure per unit penetration (GPa/m in the thesis's units), > 0; "
+                  "damped laws: pressure per unit normal velocity (GPa s/m)"},
            {"c3", "compliance: truncation pressure min(cn [q_n]+, c3) of ch. 6, > 0; default "
                   "none"},
            {"g",
             "depth of the rigid wall beyond the obstacle surface, >= 0: signorini's extra gap, "
-            "compliance-unilateral's layer, ipm's allowed penetration (sig-march)",
+            "compliance-unilateral's layer, ipm's allowed penetration (sig-march); "
+            "damped-unilateral: the bound on the normal velocity",
             "0"},
+           {"exclude", "boundary references whose nodes get no contact element (e.g. the clamped "
+                       "ends of Gamma3 on Gamma1), as a list"},
            {"gap", "old spelling of g"},
            {"strategy",
             "dynamic contact strategy of sig-march (a TIME deck only): signorini | "

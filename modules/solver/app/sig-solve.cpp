@@ -54,6 +54,14 @@ int main(int argc, char** argv) {
                                                 "TIME card); a static deck has no strategy: ") +
                                         "remove it (the static method is SOLVER method=, its "
                                         "stiffness SOLVER r=)");
+    // The laws in velocity (damped, damped-unilateral) are laws of a march in time.
+    if (has_contact && contact_card->has("law")) {
+      const std::string law = contact_card->choice("law", sig::normal_law_choices);
+      if (sig::ContactLaw{sig::normal_law_named(law)}.in_velocity())
+        contact_card->fail("law", "law=" + law +
+                                      " is a contact law in velocity: it needs a march in time "
+                                      "(TIME scheme=quasistatic, sig-march)");
+    }
     const sig::SolverCard card = sig::read_solver_card(datafile);
     for (const sig::Card* initial : datafile.all("INITIAL")) {
       if (initial->has("v"))

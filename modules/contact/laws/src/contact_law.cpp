@@ -15,6 +15,10 @@ std::string to_string(NormalLaw law) {
     return "compliance";
   case NormalLaw::compliance_unilateral:
     return "compliance-unilateral";
+  case NormalLaw::damped:
+    return "damped";
+  case NormalLaw::damped_unilateral:
+    return "damped-unilateral";
   }
   return "?";
 }
@@ -33,7 +37,8 @@ std::string to_string(FrictionLaw law) {
 
 NormalLaw normal_law_named(const std::string& name) {
   for (NormalLaw law :
-       {NormalLaw::signorini, NormalLaw::compliance, NormalLaw::compliance_unilateral})
+       {NormalLaw::signorini, NormalLaw::compliance, NormalLaw::compliance_unilateral,
+        NormalLaw::damped, NormalLaw::damped_unilateral})
     if (to_string(law) == name) return law;
   SIG_VERIFY(false, "normal law '" << name << "' is unknown; known: " << normal_law_names);
   return NormalLaw::signorini;
@@ -47,10 +52,11 @@ FrictionLaw friction_law_named(const std::string& name) {
 }
 
 NormalLaw normal_law_of_id(long id) {
-  SIG_VERIFY(id >= 1 && id <= 3, "normal law id " << id
+  SIG_VERIFY(id >= 1 && id <= 5, "normal law id " << id
                                                   << " is unknown; known: 1 = signorini, "
                                                      "2 = compliance, 3 = "
-                                                     "compliance-unilateral");
+                                                     "compliance-unilateral, 4 = damped, 5 = "
+                                                     "damped-unilateral");
   return static_cast<NormalLaw>(id);
 }
 

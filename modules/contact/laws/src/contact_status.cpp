@@ -31,6 +31,11 @@ std::string label(NormalStatus status) {
   return "?";
 }
 
+std::string label(NormalStatus status, const ContactLaw& law) {
+  if (!law.in_velocity() || status == NormalStatus::free) return label(status);
+  return status == NormalStatus::compliance ? "RNI" : "CUV";
+}
+
 std::string label(FrictionStatus status) {
   switch (status) {
   case FrictionStatus::none:

@@ -14,6 +14,12 @@
 //                           no wall
 //   compliance-unilateral   (1.26) N = p(q_n) while q_n < g, a Signorini wall at q_n = g (g the
 //                           depth of the compliant layer)
+// and the laws in velocity of chapter 5 (quasistatic march in velocity, sig-march
+// scheme=quasistatic): the same kernels with q_n the normal velocity v_n towards the obstacle and
+// q_t the tangential velocity (the slip rate), so that g is a velocity bound:
+//   damped                  (1.25) N = p(v_n) = cn [v_n]+, the damped (instantaneous) response
+//   damped-unilateral       (1.28) N = p(v_n) while v_n < g, the unilateral bound v_n <= g
+//                           beyond (the thesis's statuses RNI and CUV are CN and CU here)
 // and the friction laws, with s the slip bound (|T| <= s, T = s sign(q_t) where q_t != 0):
 //   none                    T = 0
 //   tresca                  (1.33) s = threshold, a given traction, on every contact element
@@ -36,14 +42,21 @@ inline Eigen::Vector2d contact_tangent(const Eigen::Vector2d& n) {
   return {n.y(), -n.x()};
 }
 
-enum class NormalLaw { signorini = 1, compliance = 2, compliance_unilateral = 3 };
+enum class NormalLaw {
+  signorini = 1,
+  compliance = 2,
+  compliance_unilateral = 3,
+  damped = 4,
+  damped_unilateral = 5
+};
 enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2 };
 
-inline constexpr const char* normal_law_names = "signorini | compliance | compliance-unilateral";
+inline constexpr const char* normal_law_names =
+    "signorini | compliance | compliance-unilateral | damped | damped-unilateral";
 inline constexpr const char* friction_law_names = "none | tresca | coulomb";
 /// The same names as a card field's choices (Card::choice).
-inline constexpr std::initializer_list<const char*> normal_law_choices = {"signorini", "compliance",
-                                                                          "compliance-unilateral"};
+inline constexpr std::initializer_list<const char*> normal_law_choices = {
+    "signorini", "compliance", "compliance-unilateral", "damped", "damped-unilateral"};
 inline constexpr std::initializer_list<const char*> friction_law_choices = {"none", "tresca",
                                                                             "coulomb"};
 
@@ -65,11 +78,20 @@ struct ContactLaw {
   double mu = 0;        ///< coulomb: friction coefficient >= 0
   double threshold = 0; ///< tresca: slip bound, a traction >= 0
 
-  bool has_wall() const { return normal != NormalLaw::compliance; }
+  bool has_wall() const { return normal != NormalLaw::compliance && normal != NormalLaw::damped; }
   bool has_compliance() const { return normal != NormalLaw::signorini; }
+  /// A law of the velocity (damped, damped-unilateral): q_n, q_t are velocities, g a velocity.
+  bool in_velocity() const {
+    return normal == NormalLaw::damped || normal == NormalLaw::damped_unilateral;
+  }
   bool has_friction() const { return friction != FrictionLaw::none; }
   bool operator==(const ContactLaw&) const = default;
 };
+
+/// Some law of `laws` is a law in velocity (ContactLaw::in_velocity).
+inline bool any_in_velocity(const std::vector<ContactLaw>& laws) {
+  return std::any_of(laws.begin(), laws.end(), [](const ContactLaw& l) { return l.in_velocity(); });
+}
 
 /// Some law of `laws` has friction (the problem then has tangential unknowns).
 inline bool any_friction(const std::vector<ContactLaw>& laws) {

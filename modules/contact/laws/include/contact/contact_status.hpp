@@ -22,6 +22,9 @@ FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kerne
 
 /// "free", "CN", "CU"; "-", "S=", "S+", "S-" (the thesis's labels).
 std::string label(NormalStatus status);
+/// The same for a node of law `law`: the laws in velocity call CN and CU RNI (instantaneous normal
+/// response, 0 < v_n < g) and CUV (unilateral condition in velocity, v_n = g), as chapter 5.
+std::string label(NormalStatus status, const ContactLaw& law);
 std::string label(FrictionStatus status);
 /// The statuses of their DS codes; sig::Error for a code out of range.
 NormalStatus normal_status_of_code(long code);
