@@ -91,12 +91,11 @@ strategy_fields() {
 write_deck() {
   local deck=$1 msh=$2 plane=$3 method=$4 T=$5 k=$6 every=$7 vtk=$8 fields
   fields=$(strategy_fields "$method" "${9:-}")
-  sed -E -e "s|^MESH .*|MESH file=$msh|" \
-    -e "s|^CONTACT .*|CONTACT ref=3 obstacle=plane point=0,$plane normal=0,1 ${fields%|*}|" \
-    -e "s|^TIME .*|TIME scheme=midpoint T=$T k=$k output_every=$every mass=${fields#*|}|" \
-    -e "s|^TITLE .*|TITLE Scene 8a: elastic ball impact, $method, k = $k|" \
-    -e "s|^OUTPUT .*|OUTPUT vtk=$vtk|" \
-    "$template" >"$deck"
+  deck_variant "$template" "$deck" --replace-card MESH "MESH file=$msh" \
+    --replace-card CONTACT "CONTACT ref=3 obstacle=plane point=0,$plane normal=0,1 ${fields%|*}" \
+    --replace-card TIME "TIME scheme=midpoint T=$T k=$k output_every=$every mass=${fields#*|}" \
+    --replace-card TITLE "TITLE Scene 8a: elastic ball impact, $method, k = $k" \
+    --replace-card OUTPUT "OUTPUT vtk=$vtk"
 }
 
 # base NAME MSH: sig-mesh, sig-material, sig-assemble of the ball on MSH in OUTDIR/NAME/base.
