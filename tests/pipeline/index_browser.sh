@@ -25,7 +25,7 @@ done
 "$python" "$root/postproc/scene_index.py" "$out" || true # scene_fail fails: exit 1
 "$python" "$root/tests/pipeline/headless_check.py" --chromium "$chromium" "$out/index.html" ||
   fail "the index does not load cleanly in $chromium"
-grep -c "<img " "$out/index.html" | grep -qx 4 || fail "expected 4 images in the index"
+[ "$(grep -o "<img " "$out/index.html" | wc -l)" -eq 4 ] || fail "expected 4 images in the index"
 
 # The check itself: a missing image and a console error are reported.
 cp "$out/scene_pass/speed_accuracy.png" "$work/ok.png"
