@@ -61,7 +61,7 @@ void refuse_unused(const Card& card, const std::string& field, const std::string
 /// The normal law and its parameters from CONTACT.
 ContactLaw normal_law_from_card(const Card& card) {
   ContactLaw law;
-  const std::string name = card.choice("law", normal_law_choices, "signorini");
+  const std::string name = card.choice("law", normal_law_choices);
   law.normal = normal_law_named(name);
   if (law.has_compliance())
     law.cn = card.real("cn");
@@ -104,6 +104,20 @@ void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
       law.threshold = card->real("threshold");
     else
       refuse_unused(*card, "threshold", name);
+    if (law.has_coefficient())
+      law.bound = friction_bound_named(card->choice("bound", friction_bound_choices, "normal"));
+    else
+      refuse_unused(*card, "bound", name);
+    if (law.friction == FrictionLaw::nonmonotone) {
+      law.a = card->real("a");
+      law.b = card->real("b");
+      law.alpha = card->real("alpha");
+      law.of = slip_measure_named(card->choice("of", slip_measure_choices, "slip"));
+      law.mu = law.a; // mu(0): the first convex solve starts from no slip (ALGORITHMS.md 1.3)
+    } else {
+      for (const char* field : {"a", "b", "alpha", "of"})
+        refuse_unused(*card, field, name);
+    }
     if (const std::optional<LawProblem> problem = law_problem(law))
       card->fail(problem->field, problem->what);
   }
@@ -120,7 +134,7 @@ const Card* friction_card_with_law(const Datafile& datafile) {
 double wall_depth(const Card& contact) {
   if (contact.has("g") && contact.has("gap"))
     contact.fail("gap", "give the wall depth once: g= (gap= is its old spelling)");
-  return contact.has("gap") ? contact.real("gap") : contact.real("g", 0.0);
+  return contact.has("gap") ? contact.real("gap") : contact.real("g");
 }
 
 std::optional<ContactElements> contact_from_cards(const Datafile& datafile, const Mesh& mesh) {

@@ -46,7 +46,7 @@ ContactStrategyParameters contact_strategy_parameters(const Card& contact, const
   p.r = contact.real("r", 0.0);
   if (contact.has("persistency") && strategy_of(contact) != "two-step")
     contact.fail("persistency", "is a field of strategy=two-step");
-  p.persistency = contact.choice("persistency", {"midpoint", "increment"}, "midpoint") == "midpoint"
+  p.persistency = contact.choice("persistency", {"midpoint", "increment"}) == "midpoint"
                       ? Persistency::midpoint
                       : Persistency::increment;
   if (solver != nullptr) {
