@@ -179,7 +179,7 @@ ImpactRun impact(const std::string& strategy, const ContactLaw& law, int steps =
   ring.with_contact(law);
   ContactStrategyParameters p;
   p.r = 1e9;
-  p.gamma = 1e9;
+  p.gamma = 1e6;
   p.eps = 1e-10;
   const auto s = make_contact_strategy(strategy, p);
   ImpactRun r;

@@ -20,7 +20,7 @@ ContactStepSolution ComplianceStrategy::phases(ContactBulk& bulk, const ContactS
                                                const ContactStepStart&) const {
   ContactStepSolution s;
   ContactIterate iterate;
-  phase(bulk, first, "pdas", iterate, s);
+  phase(bulk, first, iterate, s);
   return s;
 }
 

@@ -45,11 +45,11 @@ ContactStepSolution ContactStrategy::solve(ContactBulk& bulk, const ContactSetti
 }
 
 void ContactStrategy::phase(ContactBulk& bulk, const ContactSetting& setting,
-                            const std::string& method, ContactIterate& iterate,
-                            ContactStepSolution& solution, const std::string& label) const {
+                            ContactIterate& iterate, ContactStepSolution& solution,
+                            const std::string& label) const {
   ContactSolverParameters s;
-  s.method = method;
-  s.r = method == "penalty" ? p_.r : p_.gamma;
+  s.method = "pdas";
+  s.r = p_.gamma;
   s.gamma = p_.gamma;
   s.eps = p_.eps;
   s.max_iterations = p_.max_iterations;

@@ -25,7 +25,7 @@ ContactStepSolution ImprovedPenaltyStrategy::phases(ContactBulk& bulk, const Con
                                                     const ContactStepStart& start) const {
   ContactStepSolution a;
   ContactIterate iterate;
-  phase(bulk, first, "pdas", iterate, a, "phase (a), specific penalty");
+  phase(bulk, first, iterate, a, "phase (a), specific penalty");
   if (!a.converged) return a;
   const Eigen::VectorXd q = bulk.penetration();
   bool beyond = false;
@@ -37,7 +37,7 @@ ContactStepSolution ImprovedPenaltyStrategy::phases(ContactBulk& bulk, const Con
                          first.weight};
   ContactStepSolution s = a;
   s.iterations = 0;
-  phase(bulk, b, "pdas", iterate, s, "phase (b), bounded by g");
+  phase(bulk, b, iterate, s, "phase (b), bounded by g");
   s.iterations += a.iterations;
   return s;
 }

@@ -16,7 +16,7 @@ ContactStepSolution SignoriniStrategy::phases(ContactBulk& bulk, const ContactSe
                                               const ContactStepStart&) const {
   ContactStepSolution s;
   ContactIterate iterate;
-  phase(bulk, first, "pdas", iterate, s);
+  phase(bulk, first, iterate, s);
   return s;
 }
 

@@ -25,7 +25,7 @@ ContactStepSolution TwoStepStrategy::phases(ContactBulk& bulk, const ContactSett
                                             const ContactStepStart& start) const {
   ContactStepSolution a;
   ContactIterate iterate;
-  phase(bulk, first, "pdas", iterate, a, "step (a), Signorini");
+  phase(bulk, first, iterate, a, "step (a), Signorini");
   if (!a.converged) return a;
 
   // (b): persistency on the nodes in contact after (a), none on the others.
@@ -47,7 +47,7 @@ ContactStepSolution TwoStepStrategy::phases(ContactBulk& bulk, const ContactSett
   if (!any) return a;
   ContactStepSolution s = a;
   s.iterations = 0;
-  phase(bulk, b, "pdas", iterate, s, "step (b), persistency");
+  phase(bulk, b, iterate, s, "step (b), persistency");
   s.iterations += a.iterations;
   return s;
 }

@@ -7,9 +7,8 @@
 // of the step ((8.26)-(8.28)):
 //   signorini          the CONT law (Signorini, wall at g), by PDAS
 //   compliance         normal compliance cn = r, no wall (the thesis's "g = 1000"), by PDAS
-//   specific-penalty   the compliance cn = r as its secant over the step (3.51)/(8.32), no wall;
-//                      friction by penalty (the thesis's "gamma_tau = r delta u_tau" on stick,
-//                      ALGORITHMS.md 4.3 (A)): the penalty method with r
+//   specific-penalty   the compliance cn = r as its secant over the step (3.51)/(8.32), no wall,
+//                      by PDAS (its multipliers: the friction's only)
 //   two-step           [13], 3.3.3: (a) the CONT law by PDAS; (b) continuing from (a), on the
 //                      nodes (a) left in contact the persistency condition -- the normal velocity
 //                      at t_n is <= 0 -- and no force on the others
@@ -56,7 +55,11 @@ struct ContactStrategyParameters {
   /// Stiffness per unit area of the foundation (compliance, specific-penalty, ipm): nodal force
   /// r * weight * penetration; > 0 where used.
   double r = 0;
-  double gamma = 100;      ///< PDAS's parameter (wall and friction multipliers), > 0
+  /// PDAS's parameter (wall and friction multipliers), > 0. The solution does not depend on
+  /// it; the friction's semi-smooth Newton does: of the order of a contact node's stiffness in
+  /// the step per unit length converges, far above or below it a slipping node may cycle
+  /// between its two directions (Nv).
+  double gamma = 100;
   int max_iterations = 50; ///< per Newton phase
   double eps = 1e-10;      ///< the driver's test (iv), relative
   Persistency persistency = Persistency::midpoint;
@@ -100,11 +103,10 @@ protected:
   /// The phases, from the first one's laws: the solution of the step.
   virtual ContactStepSolution phases(ContactBulk& bulk, const ContactSetting& first,
                                      const ContactStepStart& start) const = 0;
-  /// One Newton phase of `method` (pdas: gamma; penalty: r) on `bulk` with `setting`,
-  /// continuing from `iterate`; adds to `solution` (forces, statuses, laws, iterations).
-  void phase(ContactBulk& bulk, const ContactSetting& setting, const std::string& method,
-             ContactIterate& iterate, ContactStepSolution& solution,
-             const std::string& label = "") const;
+  /// One Newton phase of PDAS (gamma) on `bulk` with `setting`, continuing from `iterate`; adds
+  /// to `solution` (forces, statuses, laws, iterations).
+  void phase(ContactBulk& bulk, const ContactSetting& setting, ContactIterate& iterate,
+             ContactStepSolution& solution, const std::string& label = "") const;
 
   ContactStrategyParameters p_;
 };
