@@ -144,8 +144,11 @@ const std::vector<CardSpec>& card_schema() {
            {"law", "none | tresca (1.33): |T| <= threshold on every contact node | coulomb "
                    "(1.35): |T| <= mu N | nonmonotone (1.39): |T| <= mu(r) N, mu(r) = "
                    "(a - b) exp(-alpha r) + b, r the slip (or slip rate) magnitude, solved by "
-                   "the convexification loop (4.110)-(4.112)"},
-           {"mu", "coulomb: friction coefficient, >= 0"},
+                   "the convexification loop (4.110)-(4.112) | mu1, mu2 (8.3): |T| <= mu(q_n) N, "
+                   "mu of the penetration q_n over the asperities' depth g of the CONTACT card: "
+                   "mu1 rises from 0 to mu, mu2 falls from 2 mu to mu (sig-march)"},
+           {"mu", "coulomb: friction coefficient, >= 0; mu1, mu2: mu0, the coefficient once the "
+                  "asperities are crushed"},
            {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
            {"bound", "coulomb, nonmonotone: normal (default): mu times the whole normal "
                      "pressure N | compliance: mu times the compliance pressure p(min(q_n, g)) "

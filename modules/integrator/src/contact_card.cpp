@@ -36,8 +36,8 @@ ContactHistoryInfo contact_history_info(const Card& contact) {
   if (!(info.depth >= 0)) contact.fail(depth, "must be >= 0");
   if (info.depth > 0 && (info.strategy == "compliance" || info.strategy == "specific-penalty"))
     log_warning(std::string("CONTACT ") + depth + "= sets a unilateral bound, which strategy=" +
-                info.strategy + " does not have: its force acts from the obstacle surface, " +
-                depth + " is ignored");
+                info.strategy + " does not have: its force acts from the obstacle surface (" +
+                depth + " is only read by a friction law=mu1|mu2)");
   return info;
 }
 

@@ -66,15 +66,20 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
     break;
   case FrictionLaw::coulomb:
   case FrictionLaw::nonmonotone: // mu frozen for this convex solve (contact_law.hpp)
+  case FrictionLaw::mu1:         // mu of the penetration (8.3)
+  case FrictionLaw::mu2: {
+    const double mu = penetration_friction(law, x.q_n), d_mu = d_penetration_friction(law, x.q_n);
     if (law.bound == FrictionBound::normal) {
-      k.bound = law.mu * k.normal;
-      k.bound_slope = law.mu;
-      k.d_bound = law.mu * k.d_force.row(0);
+      k.bound = mu * k.normal;
+      k.bound_slope = mu;
+      k.d_bound = mu * k.d_force.row(0);
+      k.d_bound(kQn) += d_mu * k.normal;
     } else { // the compliance pressure only: mu p(g), Tresca's, on the wall
-      k.bound = law.mu * k.compliance;
-      k.d_bound(kQn) = law.mu * k.compliance_slope;
+      k.bound = mu * k.compliance;
+      k.d_bound(kQn) = mu * k.compliance_slope + d_mu * k.compliance;
     }
     break;
+  }
   }
   if (law.has_friction()) {
     const double z = x.t + r_t * x.q_t;
