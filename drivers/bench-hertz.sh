@@ -101,7 +101,7 @@ source "$root/drivers/lib/hertz_deck.sh"
 write_deck() {
   local problem=$1 deck=$2
   hertz_deck "${template[$problem]}" "$deck" "$n" "$grading" "${@:3}"
-  sed -i -E "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/" "$deck"
+  deck_variant "$deck" "$deck" --set OUTPUT.vtk=no
 }
 
 # The runs: NAME DIR, in the order of one round.
@@ -130,9 +130,7 @@ for problem in "${problems[@]}"; do
     dir=$out/$problem/floor_$backend
     mkdir -p "$dir"
     link_ds ../floor "$dir" nopo mili tae
-    sed -E "/^[[:space:]]*SOLVER[[:space:]]/ s/linear=[^[:space:]]+/linear=$backend/" \
-      "$floor/hertz.dat" >"$dir/hertz.dat"
-    grep -qE "linear=$backend" "$dir/hertz.dat" || die "$floor/hertz.dat: no SOLVER linear= to replace"
+    deck_variant "$floor/hertz.dat" "$dir/hertz.dat" --set "SOLVER.linear=$backend"
     runs+=("${problem}_floor_$backend $dir")
   done
 done
@@ -173,7 +171,7 @@ fi
 {
   echo "command: $invocation"
   echo "outdir: $out"
-  echo "grading: $(sed -nE '/^[[:space:]]*MESH[[:space:]]/ s/.*[[:space:]]grading=([^[:space:]]+).*/\1/p' "$out/hertz/base/hertz.dat")"
+  echo "grading: $(deck_value "$out/hertz/base/hertz.dat" MESH grading)"
   echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"

@@ -101,10 +101,9 @@ def speed_accuracy_chart(path, series, xlabel, ylabel, title="", log=True, figsi
         if nv:
             nv_points = True
             color = handle.get_color() if handle else s.color
-            h, = ax.plot([p.x for p in nv], [top] * len(nv), linestyle="none", marker=s.marker,
-                         markersize=s.markersize, color=color, fillstyle="none", alpha=s.alpha,
-                         label=None if handle else s.label)
-            handle = handle or h
+            ax.plot([p.x for p in nv], [top] * len(nv), linestyle="none", marker=s.marker,
+                    markersize=s.markersize, color=color, fillstyle="none", alpha=s.alpha,
+                    label=None if handle else s.label)
             labels += [(p.x, top, f"{p.text} Nv".strip()) for p in nv]
     if nv_points:
         ax.axhline(top, color="grey", lw=0.5)

@@ -75,7 +75,7 @@ bool MaterialTable::has_mass() const {
 }
 
 SubdomainMaterial material_from_card(const Card& card) {
-  const std::string law = card.choice("law", {"hooke", "svk", "ciarlet-geymonat"}, "hooke");
+  const std::string law = card.choice("law", {"hooke", "svk", "ciarlet-geymonat"});
   SubdomainMaterial material;
   if (law == "ciarlet-geymonat") {
     reject_fields(card, {"E", "nu"}, law);
@@ -89,9 +89,9 @@ SubdomainMaterial material_from_card(const Card& card) {
       material.hyperelastic = std::make_shared<const SaintVenantKirchhoff>(
           material.hooke.E, material.hooke.nu, material.hooke.plane);
   }
-  material.thickness = card.real("thickness", 1.0);
+  material.thickness = card.real("thickness");
   if (!(material.thickness > 0.0)) card.fail("thickness", "thickness must be > 0");
-  material.density = card.real("rho", 0.0);
+  material.density = card.real("rho");
   if (!(material.density >= 0.0)) card.fail("rho", "density must be >= 0");
   return material;
 }
