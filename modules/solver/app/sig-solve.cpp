@@ -37,10 +37,12 @@ int main(int argc, char** argv) {
                  "converge is a result: the stage exits 0 and case.b says converged = 0 (\"Nv\").",
       .reads = {"DATAFILE", "OUTDIR/case.tae (sig-assemble)", "OUTDIR/case.mili (sig-material)",
                 "OUTDIR/case.cont (sig-contact; with a CONTACT card)",
-                "OUTDIR/case.nopo (sig-mesh; large deformation, INITIAL)"},
+                "OUTDIR/case.nopo (sig-mesh; large deformation, INITIAL, the norm of the "
+                "convexification loop)"},
       .writes = {"OUTDIR/case.b (displacement, multipliers, statuses, iteration history, phase "
                  "times; per load step in large deformation)"},
-      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONTACT", "FRICTION", "INITIAL"}};
+      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION",
+                "INITIAL"}};
   return sig::run_stage("solve", [&] {
     // 1. Arguments and the SOLVER card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
