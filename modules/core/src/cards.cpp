@@ -80,6 +80,19 @@ const std::vector<CardSpec>& card_schema() {
            {"region", "sub-domain number"},
            {"f", "force per unit volume: fx,fy"},
        }},
+      {"MOVINGLOAD",
+       true,
+       "a vertical Gaussian traction moving along x1 (the moving mass of ch. 6, (6.91)): "
+       "(0, -F exp(-psi (x1 - x0 - c t)^2)) on the edges of a boundary reference; a static deck "
+       "(no TIME card) takes it at t = 0",
+       {
+           {"ref", "boundary reference number"},
+           {"F", "peak traction (GPa in the thesis's units)"},
+           {"psi", "decay of the Gaussian, > 0, per unit length squared (m^-2; the thesis prints "
+                   "m^-1)"},
+           {"c", "speed of the load's centre along x1 (m/s)"},
+           {"x0", "x1 of the load's centre at t = 0 (default 0)"},
+       }},
       {"CONTACT",
        false,
        "contact of a boundary reference (Gamma3) with a rigid obstacle: node-to-rigid elements "

@@ -30,10 +30,12 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
 }
 
 void put_history(Ds& ds, const std::vector<IterationRecord>& history) {
-  std::vector<std::int64_t> active, stick, slip;
+  std::vector<std::int64_t> active, entered, left, stick, slip;
   std::vector<double> residual, increment, step_norm;
   for (const IterationRecord& h : history) {
     active.push_back(h.active);
+    entered.push_back(h.entered);
+    left.push_back(h.left);
     stick.push_back(h.stick);
     slip.push_back(h.slip);
     residual.push_back(h.residual);
@@ -41,6 +43,8 @@ void put_history(Ds& ds, const std::vector<IterationRecord>& history) {
     step_norm.push_back(h.step);
   }
   ds.put("history_active", std::span<const std::int64_t>(active));
+  ds.put("history_entered", std::span<const std::int64_t>(entered));
+  ds.put("history_left", std::span<const std::int64_t>(left));
   ds.put("history_stick", std::span<const std::int64_t>(stick));
   ds.put("history_slip", std::span<const std::int64_t>(slip));
   ds.put("history_residual", std::span<const double>(residual));

@@ -1,7 +1,8 @@
 #pragma once
 // DS "B", the solution of sig-solve (MODULEF's B: global vectors). Arrays: u (2 dofs per node,
 // interleaved), method, linear (backend), converged, iterations, dofs, failure; for contact
-// cases the contact state (put_contact_state) and history_active, history_stick, history_slip,
+// cases the contact state (put_contact_state) and history_active, history_entered,
+// history_left, history_stick, history_slip,
 // history_residual, history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||); scalars
 // time_<phase> in seconds.
 #include "solver/static_solve.hpp"
@@ -19,7 +20,9 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
                        const std::vector<NormalStatus>& normal_status,
                        const std::vector<FrictionStatus>& friction_status);
 
-/// The iteration history: history_active, history_stick, history_slip, history_residual,
+/// The iteration history: history_active (nodes on the wall), history_entered and history_left
+/// (of them, nodes that came onto it since the previous iteration; nodes that came off it),
+/// history_stick, history_slip, history_residual,
 /// history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||), one entry per iteration.
 void put_history(Ds& ds, const std::vector<IterationRecord>& history);
 
