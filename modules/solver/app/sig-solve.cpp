@@ -70,6 +70,12 @@ int main(int argc, char** argv) {
         initial->fail("u", "a static deck without contact is one linear solve: it has no first "
                            "iterate to start from");
     }
+    // Friction of the slip rate (ch. 6) needs the velocity of a march in time.
+    for (const sig::Card* friction : datafile.all("FRICTION"))
+      if (friction->has("of") && friction->choice("of", sig::slip_measure_choices) == "slip-rate")
+        friction->fail("of", "of=slip-rate makes friction depend on the slip rate: it needs a "
+                             "march in time (TIME scheme=backward-euler, sig-march), a static "
+                             "deck has no velocity");
     if (const sig::Card* friction = sig::friction_card_with_law(datafile))
       if (friction->choice("law", sig::friction_law_choices) == "nonmonotone")
         friction->fail("law", "law=nonmonotone needs the convexification loop, which sig-solve "
