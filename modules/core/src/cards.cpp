@@ -171,6 +171,20 @@ const std::vector<CardSpec>& card_schema() {
             "the large-deformation solve always searches)",
             "auto"},
        }},
+      {"CONVEXIFICATION",
+       false,
+       "the convexification loop (4.110)-(4.112) of FRICTION law=nonmonotone in a static solve "
+       "(sig-solve): mu frozen per node at the previous iterate's slip, each convex problem "
+       "solved by the SOLVER method",
+       {
+           {"eps", "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
+                   "||u(m)||_V and the same for the contact tractions on Gamma3; default 1e-5"},
+           {"maxit", "maximum number of outer iterations (convex solves), >= 1; default 200"},
+           {"relaxation", "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); "
+                          "default 1 (none, as the thesis)"},
+           {"start", "rest (default: u(0) = 0, mu = a) | slipped (mu = b, as after a long "
+                     "slip)"},
+       }},
       {"LOADSTEPS",
        false,
        "load stepping of the large-deformation solve (hyperelastic laws, sig-solve): the "
