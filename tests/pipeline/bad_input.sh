@@ -56,6 +56,9 @@ expect solve     '$a INITIAL u=0,-1 v=1,0'                    "bad.dat:" "'v'" "
 expect contact   's/law=signorini gap=0/law=compliance-unilateral cn=10/' "bad.dat:" "'g'" "depth"
 # The laws in velocity belong to the quasistatic march (issue 12), not to a static solve.
 expect solve     's/law=signorini gap=0/law=damped cn=10/'    "bad.dat:" "'law'" "velocity"
+expect solve     's/^TRACTION ref=2 .*/& ramp=1/'             "bad.dat:" "'ramp'" "no time"
+expect material  's/^MATERIAL .*/MATERIAL law=kelvin-voigt E=150 nu=0.3 eta1=-1/' "bad.dat:" "'eta1'" ">= 0"
+expect material  '$a MEMORY E=1 nu=0.3 beta=1'                 "bad.dat:" "'region'" "kelvin-voigt"
 
 # Friction in large deformation is refused on the FRICTION card, before any solve.
 hyper=$work/hyper.dat

@@ -96,6 +96,8 @@ ReducedSystem reduce(const LinearSystem& system) {
   }
   reduced.K = reduced.restrict_matrix(system.K);
   reduced.f = reduced.restrict(system.f - system.K * u_d);
+  reduced.f_rate = system.f_rate.size() > 0 ? reduced.restrict(system.f_rate)
+                                            : Eigen::VectorXd::Zero(reduced.num_free());
   return reduced;
 }
 

@@ -9,7 +9,9 @@
 
 #include "mesh/topology.hpp"
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include <unordered_map>
 #include <vector>
@@ -85,28 +87,46 @@ Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge) 
   return outward_normal(mesh, EdgeOwners(mesh), edge);
 }
 
-Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
-                               const Datafile& datafile) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+const Card* ramped_load_card(const Datafile& datafile) {
+  for (const char* keyword : {"TRACTION", "PRESSURE", "BODYFORCE"})
+    for (const Card* card : datafile.all(keyword))
+      if (card->has("ramp")) return card;
+  return nullptr;
+}
+
+LoadVectors assemble_loads(const Mesh& mesh, const MaterialTable& table, const Datafile& datafile) {
+  LoadVectors loads{Eigen::VectorXd::Zero(2 * mesh.num_nodes()),
+                    Eigen::VectorXd::Zero(2 * mesh.num_nodes())};
+  // A ramped card adds g / ramp to the rate, a constant one g to f.
+  const auto target = [&](const Card& card) -> std::pair<Eigen::VectorXd&, double> {
+    if (!card.has("ramp")) return {loads.f, 1.0};
+    const double ramp = card.real("ramp");
+    if (!(ramp > 0) || !std::isfinite(ramp))
+      card.fail("ramp", "the time at which the ramped load reaches its value must be > 0");
+    return {loads.f_rate, 1.0 / ramp};
+  };
   const auto traction_cards = datafile.all("TRACTION");
   const auto pressure_cards = datafile.all("PRESSURE");
   if (!traction_cards.empty() || !pressure_cards.empty()) {
     const EdgeOwners owners(mesh);
     for (const Card* card : traction_cards) {
-      const Eigen::Vector2d traction = card_vector(*card, "f");
+      const auto [f, scale] = target(*card);
+      const Eigen::Vector2d traction = scale * card_vector(*card, "f");
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
           add_edge_load(mesh, table, owners, edge, traction, f);
     }
     for (const Card* card : pressure_cards) {
-      const double p = card->real("p");
+      const auto [f, scale] = target(*card);
+      const double p = scale * card->real("p");
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
           add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), f);
     }
   }
   for (const Card* card : datafile.all("BODYFORCE")) {
-    const Eigen::Vector2d force = card_vector(*card, "f");
+    const auto [f, scale] = target(*card);
+    const Eigen::Vector2d force = scale * card_vector(*card, "f");
     const std::vector<int> regions = card_regions(*card, mesh);
     for (int t = 0; t < mesh.num_triangles(); ++t) {
       if (std::find(regions.begin(), regions.end(), mesh.subdomain[t]) == regions.end()) continue;
@@ -116,7 +136,7 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
         f.segment<2>(2 * mesh.triangles[t][i]) += fe.segment<2>(2 * i);
     }
   }
-  return f;
+  return loads;
 }
 
 } // namespace sig

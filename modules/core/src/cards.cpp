@@ -38,15 +38,28 @@ const std::vector<CardSpec>& card_schema() {
        "constitutive law of one sub-domain",
        {
            {"region", "sub-domain number (1-based, as in the mesh file)"},
-           {"law", "hooke | svk | ciarlet-geymonat"},
-           {"E", "Young's modulus (hooke, svk)"},
-           {"nu", "Poisson's ratio, -1 < nu < 0.5 (hooke, svk)"},
+           {"law", "hooke | svk | ciarlet-geymonat | kelvin-voigt (5.1): viscosity eta1, eta2 "
+                   "plus Hooke's E, nu, plus the MEMORY cards' kernel"},
+           {"E", "Young's modulus (hooke, svk, kelvin-voigt)"},
+           {"nu", "Poisson's ratio, -1 < nu < 0.5 (hooke, svk, kelvin-voigt)"},
+           {"eta1", "kelvin-voigt: viscosity coefficient of tr(eps') I (thesis mu1), >= 0"},
+           {"eta2", "kelvin-voigt: viscosity coefficient of eps' (thesis mu2), >= 0"},
            {"c1", "ciarlet-geymonat: coefficient of I1 - 3, > 0"},
            {"c2", "ciarlet-geymonat: coefficient of I2 - 3, >= 0"},
            {"a", "ciarlet-geymonat: coefficient of I3 - 1, >= 0"},
            {"plane", "strain | stress (2D reduction: F33 = 1, or F33 from sigma33 = 0)"},
            {"thickness", "out-of-plane thickness (plane stress); 1 by default"},
            {"rho", "mass density (dynamic problems)"},
+       }},
+      {"MEMORY",
+       true,
+       "one exponential term exp(-beta t) KK of the memory kernel K of a kelvin-voigt law (5.1), "
+       "integrated by the trapezoidal rule (5.60)-(5.61); none: K = 0",
+       {
+           {"region", "sub-domain numbers (law=kelvin-voigt); default every sub-domain"},
+           {"E", "Young's modulus of the isotropic tensor KK, > 0"},
+           {"nu", "Poisson's ratio of KK, -1 < nu < 0.5"},
+           {"beta", "decay rate of exp(-beta t), > 0 (1 / time)"},
        }},
       {"DIRICHLET",
        true,
@@ -62,6 +75,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference number"},
            {"f", "traction vector: fx,fy"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"PRESSURE",
        true,
@@ -69,6 +84,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference number"},
            {"p", "pressure"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"BODYFORCE",
        true,
@@ -76,6 +93,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"region", "sub-domain number"},
            {"f", "force per unit volume: fx,fy"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"CONTACT",
        false,

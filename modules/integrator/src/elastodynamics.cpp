@@ -73,7 +73,12 @@ Elastodynamics reduced_elastodynamics(const ReducedSystem& reduced,
   Elastodynamics problem;
   problem.K = reduced.K;
   problem.M = reduced.restrict_matrix(mass);
-  problem.load = constant_load(reduced.f);
+  if (reduced.f_rate.size() > 0 && (reduced.f_rate.array() != 0).any())
+    problem.load = [f = reduced.f, rate = reduced.f_rate](double t) {
+      return Eigen::VectorXd(f + t * rate);
+    };
+  else
+    problem.load = constant_load(reduced.f);
   return problem;
 }
 

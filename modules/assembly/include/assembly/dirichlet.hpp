@@ -16,6 +16,7 @@ namespace sig {
 struct ReducedSystem {
   Eigen::SparseMatrix<double> K;  ///< K_ff
   Eigen::VectorXd f;              ///< f_f - K_fd u_d
+  Eigen::VectorXd f_rate;         ///< the ramped loads' rate on the free dofs (u_d is constant)
   std::vector<int> free_dofs;     ///< sorted; reduced index -> full dof
   std::vector<int> reduced_index; ///< full dof -> reduced index, -1 for an imposed dof
   std::vector<int> dirichlet_dofs;

@@ -6,10 +6,16 @@
 //   TRACTION  ref=R f=fx,fy   constant traction g on the edges of reference R
 //   PRESSURE  ref=R p=P       normal traction g = -P n, n the outward unit normal (P > 0 pushes)
 //   BODYFORCE [region=S] f=fx,fy   force per unit volume on sub-domains S (default all)
+// Each also takes `ramp=t1` (> 0): the load then grows linearly in time, g(t) = g t / t1 (the
+// thesis's f2 = (0, -10 t) of chapter 5 is `f=0,-10 ramp=1`); without ramp= it is constant. The
+// load vector of a case is therefore f(t) = f + t f_rate, f the constant loads and f_rate the sum
+// of the ramped ones divided by their ramp. Only a march in time (sig-march) has a t; a static
+// deck refuses ramp=.
 #include <Eigen/Core>
 
 namespace sig {
 
+class Card;
 class Datafile;
 struct Mesh;
 struct MaterialTable;
@@ -22,9 +28,18 @@ struct BoundaryEdge;
 /// one-off queries, not for loops over edges.
 Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge);
 
-/// f from the TRACTION, PRESSURE and BODYFORCE cards (size 2 * nodes). References and regions
-/// are checked (assembly/cards.hpp).
-Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
-                               const Datafile& datafile);
+/// f(t) = f + t f_rate (header comment).
+struct LoadVectors {
+  Eigen::VectorXd f;      ///< the constant loads
+  Eigen::VectorXd f_rate; ///< the ramped loads per unit time (zero without ramp=)
+};
+
+/// The loads of the TRACTION, PRESSURE and BODYFORCE cards (size 2 * nodes). References and
+/// regions are checked (assembly/cards.hpp), and ramp= must be > 0.
+LoadVectors assemble_loads(const Mesh& mesh, const MaterialTable& table, const Datafile& datafile);
+
+/// The first load card of `datafile` with a ramp= field, or null: the stages without time refuse
+/// it on its own line.
+const Card* ramped_load_card(const Datafile& datafile);
 
 } // namespace sig

@@ -55,7 +55,8 @@ Eigen::SparseMatrix<double> diagonal_mass(const Eigen::VectorXd& lumped);
 Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice choice,
                                         const Mesh& mesh, const ContactNormals& contact = {});
 
-/// The reduced problem: K_ff, M_ff of the full-size `mass`, constant load reduced.f.
+/// The reduced problem: K_ff, M_ff of the full-size `mass`, load reduced.f + t reduced.f_rate
+/// (the ramped loads of assembly/loads.hpp).
 Elastodynamics reduced_elastodynamics(const ReducedSystem& reduced,
                                       const Eigen::SparseMatrix<double>& mass);
 
