@@ -21,7 +21,7 @@
 # adding N = 64) and on the thesis's uniform mesh (MESH grading=0, OUTDIR/error/N<N>/). Only the
 # uniform mesh refines everywhere with N (the graded one refines Gamma3 but keeps its interior
 # growth law), so only it is an h-refinement in the sense of Fig 7.10.
-# Then postproc/scene7a_report.py OUTDIR writes OUTDIR/report.md and its PNGs.
+# Then postproc/scene7a_report.py OUTDIR writes OUTDIR/report.md, its PNGs and OUTDIR/scene.json.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
@@ -128,6 +128,7 @@ for n in "${error_meshes[@]}"; do
   echo "scene7a.sh: N = $n (error study) done ($((SECONDS - t0)) s)"
 done
 echo "scene7a.sh: all runs done in $((SECONDS - start)) s"
+record_seconds $start
 
 "$python" "$root/postproc/scene7a_report.py" "$out"
 if [ ${#failed[@]} -gt 0 ]; then

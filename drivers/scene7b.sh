@@ -64,10 +64,8 @@ require_charts
 # deck TEMPLATE OUTPUT N METHOD FIELD VALUE VTK: the template with MESH N= and the SOLVER card's
 # method and parameter replaced (any r=, gamma=, c= of the template dropped), OUTPUT vtk=VTK.
 deck() {
-  sed -E -e "/^[[:space:]]*MESH[[:space:]]/ s/N=[0-9]+/N=$3/" \
-    -e "/^[[:space:]]*SOLVER[[:space:]]/ { s/method=[a-z]+/method=$4/; s/ (gamma|c|r)=[^[:space:]]+//g; s/\$/ $5=$6/ }" \
-    -e "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[a-z]+/vtk=$7/" \
-    "$1" >"$2"
+  deck_variant "$1" "$2" --set "MESH.N=$3" --drop SOLVER.gamma --drop SOLVER.c --drop SOLVER.r \
+    --set "SOLVER.method=$4" --set "SOLVER.$5=$6" --set "OUTPUT.vtk=$7"
 }
 
 declare -A field=([pdas]=gamma [projection]=c [alm]=r)

@@ -153,7 +153,8 @@ def iteration_tables(runs, thesis):
             ("Table 7.5: primal-dual active set vs gamma", "pdas", "gamma", "iterations_pdas")):
         table = Table(["N"] + [f"{name} = {p}" for p in PARAMETERS]
                       + (["ALM"] if method == "projection" else []),
-                      caption=f"{title}: total Newton iterations over the load steps, ours (thesis)")
+                      caption=f"{title}: total Newton iterations over the load steps, "
+                      "ours (thesis)")
         for n in runs.sizes:
             row = [str(n)]
             for p in PARAMETERS:

@@ -6,6 +6,7 @@ bin=${SIG_BIN:-$root/build/bin}
 # The reports read DS files through this build's sig-dump (postproc/sigreport/ds.py).
 export SIG_BIN=$bin
 python=${PYTHON:-/usr/bin/python3}
+source "$(dirname "${BASH_SOURCE[0]}")/deck.sh"
 
 die() {
   echo "$(basename "$0"): error: $*" >&2

@@ -42,6 +42,15 @@ A scene report, in outline:
 """
 import sys
 
+__all__ = [
+    "MapCell", "MapPanel", "Point", "Series", "pyplot", "speed_accuracy_chart", "stability_map",
+    "MISSING", "fmt", "is_missing", "ours_thesis", "pct", "run_cell", "tolerance_text", "within",
+    "Check", "Checks", "Deck", "read_deck", "Ds", "read_ds", "ReportError",
+    "EARLIER_STAGE_PHASES", "find_pvd", "read_command", "read_csv_columns", "read_summary",
+    "solve_seconds", "write_scene_json", "Table", "markdown_table", "THESIS_CSV", "ThesisValues",
+    "load_thesis", "main_guard",
+]
+
 from .charts import (MapCell, MapPanel, Point, Series, pyplot, speed_accuracy_chart,
                      stability_map)
 from .cells import MISSING, fmt, is_missing, ours_thesis, pct, run_cell, tolerance_text, within

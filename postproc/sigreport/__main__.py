@@ -8,7 +8,8 @@
       --add-card LINE            append the card LINE
     Edits apply in the order given; OUTPUT may be TEMPLATE. Run with PYTHONPATH=postproc.
   python3 -m sigreport thesis SCENE ITEM [KEY]             print a thesis value (exit 1 if absent)
-  python3 -m sigreport value DECK CARD FIELD               print a field of a deck (exit 1 if absent)
+  python3 -m sigreport value DECK CARD FIELD               print a field of a deck (exit 1: absent)
+  python3 -m sigreport has DECK CARD                       exit 0 if the deck has a CARD card, else 1
 
 Errors name the file, line and field, and exit 1.
 """
@@ -71,6 +72,8 @@ def main(argv):
         if value is None:
             raise ReportError(f"no thesis value {' '.join(args)}")
         print(value)
+    elif command == "has" and len(args) == 2:
+        return 0 if Deck.read(args[0]).has(args[1]) else 1
     elif command == "value" and len(args) == 3:
         value = Deck.read(args[0]).value(args[1], args[2])
         if value is None:

@@ -2,7 +2,7 @@
 values, and tolerance checks. Each function takes `missing`, the text of an absent value (the
 default "—"; a report that always wrote "-" passes missing="-").
 
-    fmt(0.012345)                          # "0.01234"      fmt(None) -> "—"
+    fmt(0.0123449)                         # "0.01234"      fmt(None) -> "—"
     pct(-0.0123)                           # "-1.23 %"
     run_cell(True, 59)                     # "59"
     run_cell(True, 208, sway=True)         # "208 sway"
@@ -10,7 +10,7 @@ default "—"; a report that always wrote "-" passes missing="-").
     ours_thesis("59", "12")                # "59 (12)"      ours_thesis(None, "12") -> "— (12)"
     ours_thesis("1.52", "89", unit="s")    # "1.52 (89 s)"
     within(30, 29, abs=1)                  # True: |30 - 29| <= 1
-    within(14.2, 14.49, rel=0.02)          # True: |14.2 - 14.49| <= 0.02 |14.49|
+    within(14.3, 14.49, rel=0.02)          # True: |14.3 - 14.49| <= 0.02 |14.49|
 """
 import math
 

@@ -5,11 +5,11 @@ Series per method (or method and parameter), each point annotated with what vari
 series ("N=128", "r=1e4", "k=1e-3"). Annotations are de-duplicated: points of several series
 that fall on one spot (exact methods on one mesh share their error) get ONE label where the
 labels would overlap, the series are told apart by the legend; a label that would overlap a
-different one moves below or left of its point. A run that did not converge has no error: give y=None, it is drawn
-hollow on the chart's top edge, on a grey "Nv" line.
+different one moves below or left of its point. A run that did not converge has no error: give
+y=None, it is drawn hollow on the chart's top edge, on a grey "Nv" line.
 
-    series = [Series("PDAS gamma = 1e2", [Point(0.21, 3.1e-3, "N=128"), Point(0.52, 1.2e-3, "N=256")],
-                     marker="o", color="C0"),
+    series = [Series("PDAS gamma = 1e2",
+                     [Point(0.21, 3.1e-3, "N=128"), Point(0.52, 1.2e-3, "N=256")], color="C0"),
               Series("projection c = 1", [Point(0.30, None, "N=128")], marker="s", line="")]
     speed_accuracy_chart(out / "speed_accuracy.png", series, xlabel="sig-solve time (s)",
                          ylabel="relative L2 pressure error", title="Hertz: speed vs accuracy")
@@ -54,32 +54,27 @@ class Series:
         self.hollow, self.alpha, self.markersize = hollow, alpha, markersize
 
 
-def _overlaps(box, boxes):
-    return any(box.overlaps(b) for b in boxes)
-
-
-def _annotate_once(ax, items, fontsize):
-    """Annotate (x, y, text) items without clutter: an item whose label would overlap a label
-    with the same text is not labelled again (label once, the legend tells the series apart); a
-    label that would overlap another text moves below or to the left of its point."""
+def _annotate_once(ax, items, fontsize, gap=3, same_gap=20):
+    """Annotate (x, y, text) items without clutter: an item whose label would come within
+    `same_gap` pixels of a label with the same text is not labelled again (label once, the legend
+    tells the series apart); a label that would come within `gap` pixels of another moves below,
+    to the left or further away from its point, and is left out when no place is free (the
+    report's table has every number)."""
     renderer = ax.figure.canvas.get_renderer()
     placed = []  # (bbox, text)
+    offsets = [(4, 4), (4, -10), (-4, 4), (-4, -10), (4, 16), (4, -22), (-4, 16), (-4, -22)]
     for x, y, text in items:
-        for offset in ((4, 4), (4, -10), (-4, 4), (-4, -10)):
+        for offset in offsets:
             ann = ax.annotate(text, (x, y), textcoords="offset points", xytext=offset,
                               fontsize=fontsize, ha="left" if offset[0] > 0 else "right")
             box = ann.get_window_extent(renderer)
-            if any(box.overlaps(b) and t == text for b, t in placed):
+            if any(t == text and box.padded(same_gap).overlaps(b) for b, t in placed):
                 ann.remove()
                 break
-            if not _overlaps(box, [b for b, _ in placed]):
+            if not any(box.padded(gap).overlaps(b) for b, _ in placed):
                 placed.append((box, text))
                 break
             ann.remove()
-        else:
-            ann = ax.annotate(text, (x, y), textcoords="offset points", xytext=(4, 4),
-                              fontsize=fontsize)
-            placed.append((ann.get_window_extent(renderer), text))
 
 
 def speed_accuracy_chart(path, series, xlabel, ylabel, title="", log=True, figsize=(7, 5),
@@ -106,10 +101,9 @@ def speed_accuracy_chart(path, series, xlabel, ylabel, title="", log=True, figsi
         if nv:
             nv_points = True
             color = handle.get_color() if handle else s.color
-            h, = ax.plot([p.x for p in nv], [top] * len(nv), linestyle="none", marker=s.marker,
-                         markersize=s.markersize, color=color, fillstyle="none", alpha=s.alpha,
-                         label=None if handle else s.label)
-            handle = handle or h
+            ax.plot([p.x for p in nv], [top] * len(nv), linestyle="none", marker=s.marker,
+                    markersize=s.markersize, color=color, fillstyle="none", alpha=s.alpha,
+                    label=None if handle else s.label)
             labels += [(p.x, top, f"{p.text} Nv".strip()) for p in nv]
     if nv_points:
         ax.axhline(top, color="grey", lw=0.5)
@@ -130,7 +124,7 @@ def speed_accuracy_chart(path, series, xlabel, ylabel, title="", log=True, figsi
 
 class MapCell(NamedTuple):
     text: str
-    status: str = "ok"   # ok, Nv, missing, sway, drift, gain, dissipates, chatter ("a+b": a's colour)
+    status: str = "ok"   # ok Nv missing sway drift gain dissipates chatter ("a+b": a's colour)
     value: float = None  # coloured by log10(value) when status is ok or framed
 
 

@@ -34,11 +34,10 @@ Drivers (bash) use the same code through `python3 -m sigreport deck` (see __main
 
 Every error is a ReportError naming the file, the line and the field.
 """
-import os
-import tempfile
 from pathlib import Path
 
 from .errors import ReportError
+from .files import write_text_atomically
 
 FREE_TEXT_CARDS = ("TITLE",)  # cards whose rest of line is free text (their schema has no field)
 
@@ -326,16 +325,7 @@ class Deck:
 
     def write(self, path):
         """Write the deck to `path` through a temporary file renamed into place."""
-        path = Path(path)
-        handle, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
-        try:
-            with os.fdopen(handle, "w") as f:
-                f.write(self.text())
-            os.replace(tmp, path)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
-        return path
+        return write_text_atomically(path, self.text())
 
 
 def read_deck(path):

@@ -21,11 +21,10 @@ that was not run.
                      charts={"speed_accuracy": "speed_vs_accuracy.png"})
 """
 import json
-import os
-import tempfile
 from pathlib import Path
 
 from .errors import ReportError
+from .files import write_text_atomically
 
 # summary.json `times` merges the phases of every stage run in the folder; these belong to
 # stages before sig-solve (BAR.md: a solve time is all of the stage's phases but assembly).
@@ -153,10 +152,5 @@ def write_scene_json(out, scene, title, command, checks=(), key_table=None, char
         if set(check) != {"name", "pass", "detail"} or check["pass"] not in (True, False, None):
             raise ReportError(f"scene.json: a check is {{name, pass: true|false|null, detail}}, "
                               f"got {check}")
-    path = out / "scene.json"
-    handle, tmp = tempfile.mkstemp(dir=out, prefix=".scene.json.")
-    with os.fdopen(handle, "w") as f:
-        json.dump(entry, f, indent=1, ensure_ascii=False)
-        f.write("\n")
-    os.replace(tmp, path)
-    return path
+    return write_text_atomically(out / "scene.json",
+                                 json.dumps(entry, indent=1, ensure_ascii=False) + "\n")

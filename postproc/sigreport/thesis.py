@@ -11,10 +11,10 @@ value is as many `/`-separated parts stands also for one entry per part (`N=128;
 so tables can be transcribed as the thesis prints them.
 
     thesis = load_thesis()                      # postproc/thesis_values.csv
-    thesis.get("7a", "iterations_alm", "N=128") # "7" (text as in the thesis: may be "Nv"); None if absent
+    thesis.get("7a", "iterations_alm", "N=128") # "7" (text as printed: may be "Nv"); None: absent
     thesis.number("7a", "hertz_p0")             # 14.49 (None if absent or not a number)
     thesis.require("7a", "hertz_p0")            # "14.49", or ReportError naming the file and key
-    thesis.row("8a", "penetration_error", "specific penalty")  # ThesisValue(..., unit="m", where="p.229")
+    thesis.row("8a", "penetration_error", "specific penalty")  # ThesisValue(.., "m", "p.229")
     t7a = thesis.scene("7a"); t7a.get("iterations_alm", "N=128")  # the same, one scene
 """
 import csv

@@ -84,7 +84,8 @@ void expect_kink_side(const ContactLaw& law, const NodeVariables& x, double r, i
   }
 }
 
-ContactLaw law_of(NormalLaw normal, FrictionLaw friction) {
+ContactLaw law_of(NormalLaw normal, FrictionLaw friction,
+                  FrictionBound bound = FrictionBound::normal) {
   ContactLaw law;
   law.normal = normal;
   law.cn = 7.5;
@@ -92,18 +93,26 @@ ContactLaw law_of(NormalLaw normal, FrictionLaw friction) {
   law.friction = friction;
   law.mu = 0.3;
   law.threshold = 2.0;
+  if (friction == FrictionLaw::nonmonotone) { // mu frozen at mu(r) of some slip r = 0.2
+    law.a = 0.5;
+    law.b = 0.1;
+    law.alpha = 3.0;
+    law.mu = friction_coefficient(law, 0.2);
+  }
+  if (law.has_coefficient()) law.bound = bound;
   return law;
 }
 
 struct Case {
   NormalLaw normal;
   FrictionLaw friction;
+  FrictionBound bound = FrictionBound::normal;
 };
 
 class EveryLaw : public ::testing::TestWithParam<Case> {};
 
 TEST_P(EveryLaw, DerivativesOnBothSidesOfEveryKink) {
-  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction, GetParam().bound);
   for (double r : kAugmentations)
     for (double delta : kOffsets)
       for (double side : {-1.0, 1.0}) {
@@ -139,7 +148,7 @@ TEST_P(EveryLaw, DerivativesOnBothSidesOfEveryKink) {
 }
 
 TEST_P(EveryLaw, DerivativeAtTheKinkIsTheOneOfItsSide) {
-  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction, GetParam().bound);
   for (double r : kAugmentations) {
     const std::string where = "r " + std::to_string(r) + ", " + describe(law);
     if (law.has_wall()) // the kink belongs to the wall: increasing lambda stays active
@@ -160,18 +169,26 @@ TEST_P(EveryLaw, DerivativeAtTheKinkIsTheOneOfItsSide) {
 
 INSTANTIATE_TEST_SUITE_P(
     Laws, EveryLaw,
-    ::testing::Values(Case{NormalLaw::signorini, FrictionLaw::none},
-                      Case{NormalLaw::signorini, FrictionLaw::tresca},
-                      Case{NormalLaw::signorini, FrictionLaw::coulomb},
-                      Case{NormalLaw::compliance, FrictionLaw::none},
-                      Case{NormalLaw::compliance, FrictionLaw::tresca},
-                      Case{NormalLaw::compliance, FrictionLaw::coulomb},
-                      Case{NormalLaw::compliance_unilateral, FrictionLaw::none},
-                      Case{NormalLaw::compliance_unilateral, FrictionLaw::tresca},
-                      Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb},
-                      Case{NormalLaw::damped, FrictionLaw::coulomb},
-                      Case{NormalLaw::damped_unilateral, FrictionLaw::none},
-                      Case{NormalLaw::damped_unilateral, FrictionLaw::coulomb}));
+    ::testing::Values(
+        Case{NormalLaw::signorini, FrictionLaw::none},
+        Case{NormalLaw::signorini, FrictionLaw::tresca},
+        Case{NormalLaw::signorini, FrictionLaw::coulomb},
+        Case{NormalLaw::compliance, FrictionLaw::none},
+        Case{NormalLaw::compliance, FrictionLaw::tresca},
+        Case{NormalLaw::compliance, FrictionLaw::coulomb},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::none},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::tresca},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb},
+        Case{NormalLaw::signorini, FrictionLaw::nonmonotone},
+        Case{NormalLaw::compliance, FrictionLaw::nonmonotone},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone},
+        // The bound of (4.6)/(5.6): the compliance pressure only.
+        Case{NormalLaw::compliance, FrictionLaw::coulomb, FrictionBound::compliance},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb, FrictionBound::compliance},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone, FrictionBound::compliance},
+        Case{NormalLaw::damped, FrictionLaw::coulomb},
+        Case{NormalLaw::damped_unilateral, FrictionLaw::none},
+        Case{NormalLaw::damped_unilateral, FrictionLaw::coulomb}));
 
 // The laws in velocity are the compliance kernels of the velocity: the same forces, branches and
 // derivatives at the same arguments, and the thesis's own status names.
@@ -276,6 +293,82 @@ TEST(ContactKernel, FrictionStatuses) {
   EXPECT_EQ(label(FrictionStatus::slip_backward), "S-");
   EXPECT_EQ(label(NormalStatus::compliance), "CN");
   EXPECT_THROW(normal_status_of_code(3), Error);
+}
+
+TEST(ContactKernel, ComplianceBoundIsTrescaOnTheWall) {
+  // bound=compliance: s = mu p(min(q_n, g)). On the wall the reaction does not enter it, so the
+  // node is a Tresca node of threshold mu p(g) (l.5767), whatever the wall's multiplier.
+  const ContactLaw law =
+      law_of(NormalLaw::compliance_unilateral, FrictionLaw::coulomb, FrictionBound::compliance);
+  ContactLaw tresca = law;
+  tresca.friction = FrictionLaw::tresca;
+  tresca.threshold = law.mu * law.cn * law.depth;
+  for (double lambda : {0.5, 3.0, 30.0})
+    for (double q_t : {-0.2, 0.0, 1e-3, 0.2}) {
+      const NodeVariables x{law.depth, q_t, lambda, 0.1};
+      const ContactKernel k = contact_kernel(law, x, 10, 10);
+      const ContactKernel t = contact_kernel(tresca, x, 10, 10);
+      ASSERT_TRUE(k.wall_active);
+      EXPECT_DOUBLE_EQ(k.bound, tresca.threshold);
+      EXPECT_DOUBLE_EQ(k.tangential, t.tangential);
+      EXPECT_EQ(k.bound_slope, 0.0); // a linear step couples nothing to the reaction
+      EXPECT_EQ(k.d_force, t.d_force);
+      EXPECT_EQ(friction_status(law, k), friction_status(tresca, t));
+    }
+  // Between the surface and the wall it follows the compliance: mu cn q_n, as Coulomb there.
+  ContactLaw coulomb = law;
+  coulomb.bound = FrictionBound::normal;
+  const NodeVariables between{0.2, 0.05, 0.0, 0.0};
+  EXPECT_DOUBLE_EQ(contact_kernel(law, between, 10, 10).bound, law.mu * law.cn * 0.2);
+  EXPECT_DOUBLE_EQ(contact_kernel(law, between, 10, 10).tangential,
+                   contact_kernel(coulomb, between, 10, 10).tangential);
+  // On the wall bound=normal adds the reaction: a larger bound.
+  EXPECT_GT(contact_kernel(coulomb, {law.depth, 0.0, 3.0, 0.0}, 10, 10).bound,
+            contact_kernel(law, {law.depth, 0.0, 3.0, 0.0}, 10, 10).bound);
+}
+
+TEST(ContactKernel, NonmonotoneWithEqualCoefficientsIsCoulomb) {
+  // a = b: mu(r) = a for every slip, whatever alpha; the kernel is Coulomb's with mu = a.
+  for (FrictionBound bound : {FrictionBound::normal, FrictionBound::compliance}) {
+    ContactLaw nonmonotone =
+        law_of(NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone, bound);
+    nonmonotone.a = nonmonotone.b = 0.7;
+    ContactLaw coulomb = law_of(NormalLaw::compliance_unilateral, FrictionLaw::coulomb, bound);
+    coulomb.mu = 0.7;
+    for (double r : {0.0, 1e-3, 0.5, 50.0}) {
+      EXPECT_EQ(friction_coefficient(nonmonotone, r), 0.7);
+      EXPECT_EQ(d_friction_coefficient(nonmonotone, r), 0.0);
+    }
+    nonmonotone.mu = friction_coefficient(nonmonotone, 0.3);
+    for (const NodeVariables& x :
+         {NodeVariables{0.1, 0.02, 0.0, 0.3}, NodeVariables{0.4, -0.1, 2.0, -0.5},
+          NodeVariables{-0.2, 0.1, 0.0, 0.0}}) {
+      const ContactKernel n = contact_kernel(nonmonotone, x, 10, 10);
+      const ContactKernel c = contact_kernel(coulomb, x, 10, 10);
+      EXPECT_EQ(outputs(n), outputs(c));
+      EXPECT_EQ(derivatives(n), derivatives(c));
+      EXPECT_EQ(friction_status(nonmonotone, n), friction_status(coulomb, c));
+    }
+  }
+}
+
+TEST(ContactKernel, NonmonotoneCoefficientAndItsSlope) {
+  // (1.39): mu(0) = a, mu -> b, and the slope against central differences.
+  ContactLaw law = law_of(NormalLaw::compliance, FrictionLaw::nonmonotone);
+  EXPECT_DOUBLE_EQ(friction_coefficient(law, 0.0), law.a);
+  EXPECT_NEAR(friction_coefficient(law, 1e3), law.b, 1e-15);
+  for (double r : {0.0, 1e-3, 0.1, 1.0, 5.0}) {
+    const double h = 1e-6;
+    const double fd =
+        (friction_coefficient(law, r + h) - friction_coefficient(law, std::max(r - h, 0.0))) /
+        (r + h - std::max(r - h, 0.0));
+    EXPECT_NEAR(d_friction_coefficient(law, r), fd, 1e-6 * (1 + std::abs(fd))) << r;
+    EXPECT_LE(friction_coefficient(law, r), law.a);
+    EXPECT_GE(friction_coefficient(law, r), law.b);
+  }
+  // Other laws: coulomb's mu, 0 without a coefficient.
+  EXPECT_EQ(friction_coefficient(law_of(NormalLaw::compliance, FrictionLaw::coulomb), 2.0), 0.3);
+  EXPECT_EQ(friction_coefficient(law_of(NormalLaw::compliance, FrictionLaw::tresca), 2.0), 0.0);
 }
 
 } // namespace

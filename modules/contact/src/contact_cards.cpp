@@ -104,6 +104,20 @@ void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
       law.threshold = card->real("threshold");
     else
       refuse_unused(*card, "threshold", name);
+    if (law.has_coefficient())
+      law.bound = friction_bound_named(card->choice("bound", friction_bound_choices, "normal"));
+    else
+      refuse_unused(*card, "bound", name);
+    if (law.friction == FrictionLaw::nonmonotone) {
+      law.a = card->real("a");
+      law.b = card->real("b");
+      law.alpha = card->real("alpha");
+      law.of = slip_measure_named(card->choice("of", slip_measure_choices, "slip"));
+      law.mu = law.a; // mu(0): the first convex solve starts from no slip (ALGORITHMS.md 1.3)
+    } else {
+      for (const char* field : {"a", "b", "alpha", "of"})
+        refuse_unused(*card, field, name);
+    }
     if (const std::optional<LawProblem> problem = law_problem(law))
       card->fail(problem->field, problem->what);
   }

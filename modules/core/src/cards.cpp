@@ -135,9 +135,19 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference of the CONTACT card"},
            {"law", "none | tresca (1.33): |T| <= threshold on every contact node | coulomb "
-                   "(1.35): |T| <= mu N"},
+                   "(1.35): |T| <= mu N | nonmonotone (1.39): |T| <= mu(r) N, mu(r) = "
+                   "(a - b) exp(-alpha r) + b, r the slip (or slip rate) magnitude, solved by "
+                   "the convexification loop (4.110)-(4.112)"},
            {"mu", "coulomb: friction coefficient, >= 0"},
            {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
+           {"bound", "coulomb, nonmonotone: normal (default): mu times the whole normal "
+                     "pressure N | compliance: mu times the compliance pressure p(min(q_n, g)) "
+                     "only, (4.6)/(5.6): on the wall Tresca's mu p(g)"},
+           {"a", "nonmonotone: mu(0), >= b"},
+           {"b", "nonmonotone: mu at large slip, >= 0"},
+           {"alpha", "nonmonotone: decay of mu per unit slip, >= 0"},
+           {"of", "nonmonotone: slip (default; the tangential displacement from the "
+                  "reference, ch. 4) | slip-rate (the tangential velocity, ch. 6)"},
        }},
       {"SOLVER",
        false,

@@ -62,6 +62,10 @@ int main(int argc, char** argv) {
         initial->fail("u", "a static deck without contact is one linear solve: it has no first "
                            "iterate to start from");
     }
+    if (const sig::Card* friction = sig::friction_card_with_law(datafile))
+      if (friction->choice("law", sig::friction_law_choices) == "nonmonotone")
+        friction->fail("law", "law=nonmonotone needs the convexification loop, which sig-solve "
+                              "does not run yet");
     const std::string& backend = card.backend;
     const sig::ContactSolverParameters& parameters = card.parameters;
     const std::string& method = parameters.method;

@@ -110,15 +110,14 @@ private:
     } else if (k.stick) {
       c.tangential.force = w * k.tangential;
       c.tangential.stiffness = w * k.d_force(1, kQt);
-    } else if (law.friction == FrictionLaw::coulomb && c.normal.imposed) {
+    } else if (k.bound_slope != 0 && c.normal.imposed) {
       c.tangential.coupling = k.slip * k.bound_slope; // T = sigma mu N, N the wall's reaction
-    } else if (law.friction == FrictionLaw::coulomb) {
-      // T = sigma mu N with N the kernel's normal force law, not the projection's Robin term
-      // (a relaxation of the inactive nodes, not a contact force).
-      c.tangential.force = w * k.slip * k.bound_slope * k.normal;
-      c.tangential.cross = w * k.slip * k.bound_slope * k.d_force(0, kQn);
     } else {
+      // T = sigma s with s the kernel's bound law: a threshold, mu p(q_n) (bound=compliance), or
+      // mu N with N the kernel's normal force law, not the projection's Robin term (a
+      // relaxation of the inactive nodes, not a contact force).
       c.tangential.force = w * k.slip * k.bound;
+      c.tangential.cross = w * k.slip * k.d_bound(kQn);
     }
     return c;
   }

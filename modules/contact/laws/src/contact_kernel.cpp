@@ -52,8 +52,15 @@ ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, doub
     k.bound = law.threshold;
     break;
   case FrictionLaw::coulomb:
-    k.bound = law.mu * k.normal;
-    k.bound_slope = law.mu;
+  case FrictionLaw::nonmonotone: // mu frozen for this convex solve (contact_law.hpp)
+    if (law.bound == FrictionBound::normal) {
+      k.bound = law.mu * k.normal;
+      k.bound_slope = law.mu;
+      k.d_bound = law.mu * k.d_force.row(0);
+    } else { // the compliance pressure only: mu p(g), Tresca's, on the wall
+      k.bound = law.mu * k.compliance;
+      k.d_bound(kQn) = law.mu * k.compliance_slope;
+    }
     break;
   }
   if (law.has_friction()) {
@@ -65,7 +72,7 @@ ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, doub
       k.d_force(1, kT) = 1.0;
     } else {
       k.slip = static_cast<int>(d_project_interval_ds(z, k.bound)); // 0 for z = s = 0
-      k.d_force.row(1) = k.slip * k.bound_slope * k.d_force.row(0);
+      k.d_force.row(1) = k.slip * k.d_bound;
     }
   }
   k.complementarity[1] = x.t - k.tangential;

@@ -12,7 +12,7 @@ NormalStatus normal_status(const ContactKernel& kernel) {
 FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel) {
   if (!law.has_friction()) return FrictionStatus::none;
   if (kernel.stick) return FrictionStatus::stick;
-  if (law.friction == FrictionLaw::coulomb && normal_status(kernel) == NormalStatus::free)
+  if (law.has_coefficient() && normal_status(kernel) == NormalStatus::free)
     return FrictionStatus::none; // no normal force, so no friction
   if (kernel.slip > 0) return FrictionStatus::slip_forward;
   if (kernel.slip < 0) return FrictionStatus::slip_backward;

@@ -9,7 +9,8 @@
 //   P = p(q_n)                                  compliance, clipped at the wall: p(min(q_n, g))
 //   Lambda = [lambda + r_n (q_n - g)]_+         wall (laws with a wall; else 0)
 //   N = P + Lambda                              normal pressure on the body
-//   s = threshold | mu N | 0                    slip bound (tresca | coulomb | none)
+//   s = threshold | mu N | mu P | 0             slip bound (tresca | coulomb or nonmonotone
+//                                               with bound=normal | bound=compliance | none)
 //   T = proj_[-s, s](t + r_t q_t)               tangential pressure (0 without friction)
 //   C_n = lambda - Lambda,  C_t = t - T         the Alart-Curnier functions, -r times the rows
 //                                               R of (3.19): zero exactly where the laws hold
@@ -48,7 +49,11 @@ struct ContactKernel {
   bool stick = false;          ///< s > 0 and |t + r_t q_t| <= s
   int slip = 0;                ///< sigma on the slip branch (-1, 0, 1); 0 when sticking
   double compliance_slope = 0; ///< kappa = dP/dq_n
-  double bound_slope = 0;      ///< ds/dN (mu for coulomb, 0 otherwise)
+  /// ds/dN: mu where the bound is mu N (bound=normal), 0 where it does not follow N (tresca,
+  /// bound=compliance); a linear step couples T to the wall's reaction through it
+  double bound_slope = 0;
+  /// Generalized derivative of s in (q_n, q_t, lambda, t)
+  Eigen::Matrix<double, 1, 4> d_bound = Eigen::Matrix<double, 1, 4>::Zero();
 
   /// Generalized derivatives of (N, T) and of (C_n, C_t) in (q_n, q_t, lambda, t).
   Eigen::Matrix<double, 2, 4> d_force = Eigen::Matrix<double, 2, 4>::Zero();

@@ -25,6 +25,16 @@
 //   tresca                  (1.33) s = threshold, a given traction, on every contact element
 //                           whatever its normal state (the classical Tresca model)
 //   coulomb                 (1.35) s = mu N, N the whole normal pressure (compliance + wall)
+//   nonmonotone             (1.39) s = mu(r) N with mu(r) = (a - b) exp(-alpha r) + b, a >= b,
+//                           r the magnitude of the slip (of=slip, ch. 4) or of the slip rate
+//                           (of=slip-rate, ch. 6). Non-convex: one convex solve is Coulomb with
+//                           the coefficient `mu` frozen per node, which the convexification loop
+//                           (solver module) sets from the previous iterate's slip
+// The source of a Coulomb-type bound (coulomb, nonmonotone), `bound`:
+//   normal                  s = mu N, N the whole normal pressure: classical Coulomb (1.35)
+//   compliance              s = mu p(min(q_n, g)), the compliance (or damper) pressure only, as
+//                           (4.6) and (5.6): the wall's reaction never enters the bound, so on the
+//                           wall it is Tresca's mu p(g) (l.5767)
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -49,25 +59,36 @@ enum class NormalLaw {
   damped = 4,
   damped_unilateral = 5
 };
-enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2 };
+enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2, nonmonotone = 3 };
+enum class FrictionBound { normal = 0, compliance = 1 };
+enum class SlipMeasure { slip = 0, slip_rate = 1 };
 
 inline constexpr const char* normal_law_names =
     "signorini | compliance | compliance-unilateral | damped | damped-unilateral";
-inline constexpr const char* friction_law_names = "none | tresca | coulomb";
+inline constexpr const char* friction_law_names = "none | tresca | coulomb | nonmonotone";
 /// The same names as a card field's choices (Card::choice).
 inline constexpr std::initializer_list<const char*> normal_law_choices = {
     "signorini", "compliance", "compliance-unilateral", "damped", "damped-unilateral"};
-inline constexpr std::initializer_list<const char*> friction_law_choices = {"none", "tresca",
-                                                                            "coulomb"};
+inline constexpr std::initializer_list<const char*> friction_law_choices = {
+    "none", "tresca", "coulomb", "nonmonotone"};
+inline constexpr std::initializer_list<const char*> friction_bound_choices = {"normal",
+                                                                              "compliance"};
+inline constexpr std::initializer_list<const char*> slip_measure_choices = {"slip", "slip-rate"};
 
 std::string to_string(NormalLaw law);
 std::string to_string(FrictionLaw law);
+std::string to_string(FrictionBound bound);
+std::string to_string(SlipMeasure measure);
 /// The laws of their card names; sig::Error listing the names for anything else.
 NormalLaw normal_law_named(const std::string& name);
 FrictionLaw friction_law_named(const std::string& name);
+FrictionBound friction_bound_named(const std::string& name);
+SlipMeasure slip_measure_named(const std::string& name);
 /// The laws of their CONT ids (the enum values); sig::Error for an unknown id.
 NormalLaw normal_law_of_id(long id);
 FrictionLaw friction_law_of_id(long id);
+FrictionBound friction_bound_of_id(long id);
+SlipMeasure slip_measure_of_id(long id);
 
 struct ContactLaw {
   NormalLaw normal = NormalLaw::signorini;
@@ -75,8 +96,15 @@ struct ContactLaw {
   double c3 = std::numeric_limits<double>::infinity(); ///< truncation pressure (ch. 6), > 0
   double depth = 0; ///< g >= 0: the wall at q_n = g (signorini, compliance-unilateral)
   FrictionLaw friction = FrictionLaw::none;
-  double mu = 0;        ///< coulomb: friction coefficient >= 0
-  double threshold = 0; ///< tresca: slip bound, a traction >= 0
+  /// coulomb: the friction coefficient >= 0; nonmonotone: the coefficient of the present convex
+  /// solve, frozen per node (mu(0) = a until the convexification loop sets it)
+  double mu = 0;
+  double threshold = 0;                        ///< tresca: slip bound, a traction >= 0
+  FrictionBound bound = FrictionBound::normal; ///< coulomb, nonmonotone: what mu multiplies
+  double a = 0;                                ///< nonmonotone: mu(0), >= b
+  double b = 0;                                ///< nonmonotone: mu at large slip, >= 0
+  double alpha = 0;                   ///< nonmonotone: decay per unit slip (or slip rate), >= 0
+  SlipMeasure of = SlipMeasure::slip; ///< nonmonotone: what r measures
 
   bool has_wall() const { return normal != NormalLaw::compliance && normal != NormalLaw::damped; }
   bool has_compliance() const { return normal != NormalLaw::signorini; }
@@ -85,8 +113,18 @@ struct ContactLaw {
     return normal == NormalLaw::damped || normal == NormalLaw::damped_unilateral;
   }
   bool has_friction() const { return friction != FrictionLaw::none; }
+  /// The bound is a coefficient times a pressure (coulomb, nonmonotone), not a given traction.
+  bool has_coefficient() const {
+    return friction == FrictionLaw::coulomb || friction == FrictionLaw::nonmonotone;
+  }
   bool operator==(const ContactLaw&) const = default;
 };
+
+/// The coefficient of friction at slip magnitude r >= 0: mu for coulomb, (1.39)
+/// (a - b) exp(-alpha r) + b for nonmonotone, 0 for the other laws.
+double friction_coefficient(const ContactLaw& law, double r);
+/// d/dr of friction_coefficient: -alpha (a - b) exp(-alpha r) for nonmonotone, else 0.
+double d_friction_coefficient(const ContactLaw& law, double r);
 
 /// Some law of `laws` is a law in velocity (ContactLaw::in_velocity).
 inline bool any_in_velocity(const std::vector<ContactLaw>& laws) {
@@ -99,7 +137,8 @@ inline bool any_friction(const std::vector<ContactLaw>& laws) {
                      [](const ContactLaw& l) { return l.has_friction(); });
 }
 
-/// A parameter out of its range: the card field that holds it (cn, c3, g, mu, threshold) and
+/// A parameter out of its range: the card field that holds it (cn, c3, g, mu, threshold, a, b,
+/// alpha, bound) and
 /// why ("must be > 0 for law=compliance, got -1").
 struct LawProblem {
   std::string field;

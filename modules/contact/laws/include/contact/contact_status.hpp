@@ -4,9 +4,9 @@
 //   normal      free (no normal force), CN (compliance, 0 < q_n < g), CU (on the wall: the
 //               Signorini contact or the unilateral wall of (1.26))
 //   tangential  S= (stick, the kernel's stick branch), S+ / S- (slip towards +t / -t: a zero
-//               Tresca threshold slips everywhere), or none: no friction law, Coulomb friction on
-//               a node with no normal force (no friction acts), or a zero bound with nothing to
-//               slip along
+//               Tresca threshold slips everywhere), or none: no friction law, Coulomb-type friction
+//               (coulomb, nonmonotone) on a node with no normal force (no friction acts), or a zero
+//               bound with nothing to slip along
 // The integer codes are the ones DS files store (case.b arrays normal_status, friction_status).
 #include "contact/contact_kernel.hpp"
 
