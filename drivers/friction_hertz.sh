@@ -79,6 +79,7 @@ base() {
   mkdir -p "$dir"
   write_deck "$dir/hertz.dat" "$n"
   build_base "$dir/hertz.dat" "$dir" "the base case of N = $n"
+  progress_step "${dir#"$out"/}"
 }
 
 # variant N NAME METHOD VALUE [EDIT...]: sig-solve and sig-post in OUTDIR/N<N>/NAME/ on the base
@@ -96,6 +97,7 @@ variant() {
   fi
   run_stage solve "$dir/hertz.dat" "$dir" && run_stage post "$dir/hertz.dat" "$dir" ||
     failed+=("$dir")
+  progress_step "${dir#"$out"/}"
 }
 
 {
@@ -107,6 +109,15 @@ variant() {
 cp "$template" "$out/hertz.template.dat"
 
 rm -rf "$out"/N[0-9]*
+# Runs: per mesh a base and the 4 methods, the reference's base and pdas, and at N = sweep_n
+# each swept value with and without the search, the run from zero and Tresca.
+runs=$((5 * ${#meshes[@]} + 2 + 2))
+for method in "${!sweep[@]}"; do
+  for value in ${sweep[$method]}; do
+    runs=$((runs + 2))
+  done
+done
+progress_begin $runs
 start=$SECONDS
 for n in "${meshes[@]}" "$reference"; do
   t0=$SECONDS

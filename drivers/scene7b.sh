@@ -78,6 +78,8 @@ out=$(cd "$out" && pwd)
   echo "sizes: ${sizes[*]}"
 } >"$out/command.txt"
 start=$SECONDS
+# Runs: per mesh a base, 7 pdas, 7 projection and 1 alm; then the reference.
+progress_begin $((16 * ${#sizes[@]} + 1))
 for n in "${sizes[@]}"; do
   base=$out/N$n/base
   mkdir -p "$base"
@@ -86,6 +88,7 @@ for n in "${sizes[@]}"; do
     "$bin/sig-$stage" "$base/ring.dat" -o "$base" >"$base/$stage.log" 2>&1 ||
       die "sig-$stage failed at N = $n (see $base/$stage.log)"
   done
+  progress_step "N$n/base"
   for method in pdas alm projection; do
     for value in ${values[$method]}; do
       if [ "$method" = alm ]; then dir=$out/N$n/alm; else dir=$out/N$n/${method}_$value; fi
@@ -99,6 +102,7 @@ for n in "${sizes[@]}"; do
       "$bin/sig-post" "$dir/ring.dat" -o "$dir" >"$dir/post.log" 2>&1 ||
         die "sig-post failed for N = $n $method $value (see $dir/post.log)"
       echo "N=$n $method ${field[$method]}=$value: $(grep -o '[0-9/]* load steps.*' "$dir/solve.log" | sed 's/, solve.*//')"
+      progress_step "${dir#"$out"/}"
     done
   done
 done
@@ -113,5 +117,6 @@ for stage in mesh material contact assemble solve post; do
     die "sig-$stage failed for the reference N = $n_ref (see $reference/$stage.log)"
 done
 echo "reference N=$n_ref pdas gamma=1e4: $(grep -o '[0-9/]* load steps.*' "$reference/solve.log" | sed 's/, solve.*//')"
+progress_step reference
 record_seconds $start
 "$python" "$root/postproc/scene7b_report.py" "$out"

@@ -106,6 +106,7 @@ base() {
   for stage in mesh material assemble; do
     run_stage "$stage" "$dir/ball.dat" "$dir" || die "cannot build the base case of mesh $1"
   done
+  progress_step "$1/base"
 }
 
 # run_stage STAGE DECK DIR: one stage, its output in DIR/<stage>.log and shown on failure.
@@ -151,6 +152,7 @@ run() {
   run_stage post "$dir/ball.dat" "$dir" || failed+=("$dir")
   echo "scene8a.sh: ${dir#"$out"/}: $(cat "$dir/wall.txt") s," \
     "$(grep -m1 -o "[0-9]*/[0-9]* steps.*" "$dir/march.log" || true)"
+  progress_step "${dir#"$out"/}"
 }
 
 {
@@ -174,6 +176,10 @@ if [ "$impact_mesh" = thesis ]; then
     >"$msh_dir/thesis.log" 2>&1 || die "gmsh failed (see $msh_dir/thesis.log)"
 fi
 
+# Runs: the bases, every method at the impact, Fig 8.5 (4 gaps + 1), the sweep, Fig 8.2.
+runs=$((${#methods[@]} + ${#fig85_gaps[@]} + 1 + ${#sweep_k[@]} * ${#methods[@]} + 1 + 1))
+[ "$impact_mesh" = thesis ] && runs=$((runs + 1))
+progress_begin $runs
 start=$SECONDS
 base deck "$msh_dir/deck.msh"
 [ "$impact_mesh" = thesis ] && base thesis "$msh_dir/thesis.msh"

@@ -61,7 +61,7 @@ void refuse_unused(const Card& card, const std::string& field, const std::string
 /// The normal law and its parameters from CONTACT.
 ContactLaw normal_law_from_card(const Card& card) {
   ContactLaw law;
-  const std::string name = card.choice("law", normal_law_choices, "signorini");
+  const std::string name = card.choice("law", normal_law_choices);
   law.normal = normal_law_named(name);
   if (law.has_compliance())
     law.cn = card.real("cn");
@@ -134,7 +134,7 @@ const Card* friction_card_with_law(const Datafile& datafile) {
 double wall_depth(const Card& contact) {
   if (contact.has("g") && contact.has("gap"))
     contact.fail("gap", "give the wall depth once: g= (gap= is its old spelling)");
-  return contact.has("gap") ? contact.real("gap") : contact.real("g", 0.0);
+  return contact.has("gap") ? contact.real("gap") : contact.real("g");
 }
 
 std::optional<ContactElements> contact_from_cards(const Datafile& datafile, const Mesh& mesh) {

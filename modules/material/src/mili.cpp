@@ -137,8 +137,7 @@ std::vector<std::pair<int, MemoryTerm>> MaterialTable::memory_terms() const {
 }
 
 SubdomainMaterial material_from_card(const Card& card) {
-  const std::string law =
-      card.choice("law", {"hooke", "svk", "ciarlet-geymonat", "kelvin-voigt"}, "hooke");
+  const std::string law = card.choice("law", {"hooke", "svk", "ciarlet-geymonat", "kelvin-voigt"});
   SubdomainMaterial material;
   if (law != "kelvin-voigt") reject_fields(card, {"eta1", "eta2"}, law);
   if (law == "ciarlet-geymonat") {
@@ -154,9 +153,9 @@ SubdomainMaterial material_from_card(const Card& card) {
           material.hooke.E, material.hooke.nu, material.hooke.plane);
     if (law == "kelvin-voigt") material.kelvin_voigt = KelvinVoigt{viscosity_from_card(card), {}};
   }
-  material.thickness = card.real("thickness", 1.0);
+  material.thickness = card.real("thickness");
   if (!(material.thickness > 0.0)) card.fail("thickness", "thickness must be > 0");
-  material.density = card.real("rho", 0.0);
+  material.density = card.real("rho");
   if (!(material.density >= 0.0)) card.fail("rho", "density must be >= 0");
   return material;
 }

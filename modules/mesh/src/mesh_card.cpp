@@ -52,20 +52,18 @@ int even_count(const Card& card, const std::string& name, int multiple) {
 }
 
 double grading(const Card& card) {
-  const double value = card.real("grading", 0.0);
+  const double value = card.real("grading");
   if (!(value >= 0) || !std::isfinite(value)) card.fail("grading", "must be >= 0");
   return value;
 }
 
 Eigen::Vector2d center(const Card& card) {
-  if (!card.has("center")) return {0, 0};
   const std::vector<double> c = card.reals("center");
   if (c.size() != 2) card.fail("center", "expects two coordinates, e.g. center=0,10");
   return {c[0], c[1]};
 }
 
 std::array<int, 4> refs(const Card& card) {
-  if (!card.has("refs")) return {3, 4, 2, 1};
   const std::vector<long> r = card.integers("refs");
   if (r.size() != 4 || *std::min_element(r.begin(), r.end()) < 1)
     card.fail("refs", "expects four references >= 1: bottom, right, top, left");

@@ -30,9 +30,22 @@
 #include <optional>
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-solve",
+      .purpose = "Static solve: linear elasticity, or contact with the SOLVER card's method (alm, "
+                 "penalty, pdas, projection) and the laws of case.cont; in large deformation (a "
+                 "hyperelastic MATERIAL) Newton in LOADSTEPS steps. A method that does not "
+                 "converge is a result: the stage exits 0 and case.b says converged = 0 (\"Nv\").",
+      .reads = {"DATAFILE", "OUTDIR/case.tae (sig-assemble)", "OUTDIR/case.mili (sig-material)",
+                "OUTDIR/case.cont (sig-contact; with a CONTACT card)",
+                "OUTDIR/case.nopo (sig-mesh; large deformation, INITIAL)"},
+      .writes = {"OUTDIR/case.b (displacement, multipliers, statuses, iteration history, phase "
+                 "times; per load step in large deformation)"},
+      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONTACT", "FRICTION", "INITIAL", "TRACTION",
+                "PRESSURE", "BODYFORCE"}};
   return sig::run_stage("solve", [&] {
     // 1. Arguments and the SOLVER card.
-    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "solve");
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Card* contact_card = datafile.find("CONTACT");
     const bool has_contact = contact_card != nullptr;
