@@ -26,8 +26,7 @@ Viscosity viscosity_from_card(const Card& card) {
 
 MemoryTerm memory_term_from_card(const Card& card, PlaneMode plane) {
   MemoryTerm term;
-  term.modulus = hooke_from_card(card);
-  term.modulus.plane = plane;
+  term.modulus = hooke_from_card(card, plane);
   term.beta = card.real("beta");
   if (!(term.beta > 0) || !std::isfinite(term.beta))
     card.fail("beta", "the decay rate of exp(-beta t) must be > 0");
