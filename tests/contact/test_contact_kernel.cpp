@@ -167,6 +167,65 @@ TEST_P(EveryLaw, DerivativeAtTheKinkIsTheOneOfItsSide) {
   }
 }
 
+/// Points on every branch of every law: off, on and beyond the wall; inside and beyond the slip
+/// bound on either side (q_n away from the compliance's kinks, which a held branch keeps).
+std::vector<NodeVariables> points_of_every_branch() {
+  std::vector<NodeVariables> points;
+  for (double q_n : {-0.3, 0.1, 0.25, 0.9})
+    for (double lambda : {-2.0, 0.0, 0.7, 3.0})
+      for (double q_t : {-0.5, 0.0, 0.02, 0.6})
+        for (double t : {-1.5, 0.1, 2.0})
+          points.push_back({q_n, q_t, lambda, t});
+  return points;
+}
+
+TEST_P(EveryLaw, OnItsOwnBranchTheHeldKernelIsTheKernel) {
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  for (double r : kAugmentations)
+    for (const NodeVariables& x : points_of_every_branch()) {
+      const ContactKernel k = contact_kernel(law, x, r, r);
+      const ContactKernel held = contact_kernel(law, x, r, r, branch_of(k));
+      EXPECT_EQ(outputs(held), outputs(k)) << describe(law) << " r " << r << " q_n " << x.q_n;
+      EXPECT_EQ(derivatives(held), derivatives(k)) << describe(law) << " r " << r;
+      EXPECT_EQ(branch_of(held), branch_of(k));
+    }
+}
+
+TEST_P(EveryLaw, AHeldBranchIsItsPieceContinuedAcrossTheKinks) {
+  // Held, the kernel is the branch's affine piece (in q_n, once the compliance is away from its
+  // kinks) wherever x is: central differences over steps that cross the wall and friction kinks
+  // equal the piece's derivatives, and the wall's multiplier goes negative where held.
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  std::vector<KernelBranch> branches;
+  for (bool wall : {false, true}) {
+    branches.push_back({wall, true, 0});
+    for (int slip : {-1, 1})
+      branches.push_back({wall, false, slip});
+  }
+  const double r = 10, h = 0.05;
+  for (const KernelBranch& on : branches)
+    for (const NodeVariables& x : points_of_every_branch()) {
+      const ContactKernel k = contact_kernel(law, x, r, r, on);
+      EXPECT_EQ(k.wall_active, on.wall && law.has_wall());
+      if (law.has_friction()) {
+        EXPECT_EQ(branch_of(k).stick, on.stick);
+      }
+      for (int j = 0; j < 4; ++j) {
+        const Eigen::Vector4d fd = (outputs(contact_kernel(law, with(x, j, h), r, r, on)) -
+                                    outputs(contact_kernel(law, with(x, j, -h), r, r, on))) /
+                                   (2 * h);
+        for (int i = 0; i < 4; ++i)
+          EXPECT_NEAR(derivatives(k)(i, j), fd[i], 1e-9 * (1 + r))
+              << describe(law) << " wall " << on.wall << " stick " << on.stick << " slip "
+              << on.slip << " output " << i << " variable " << j;
+      }
+    }
+  if (!law.has_wall()) return;
+  const NodeVariables tension{law.depth, 0.0, -1.0, 0.0};
+  EXPECT_EQ(contact_kernel(law, tension, r, r).wall, 0.0);
+  EXPECT_EQ(contact_kernel(law, tension, r, r, {true, false, 0}).wall, -1.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Laws, EveryLaw,
     ::testing::Values(

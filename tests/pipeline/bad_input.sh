@@ -59,6 +59,9 @@ nm='s/law=signorini gap=0/law=compliance-unilateral cn=10 g=0.5/; $a FRICTION re
 expect contact   "$nm a=2 b=0.02 alpha=-1"                     "bad.dat:" "'alpha'" ">= 0"
 expect contact   "$nm a=1 b=2 alpha=1"                         "bad.dat:" "'b'" "<= a"
 expect contact   "$nm b=0.02 alpha=1"                          "bad.dat:" "'a'" "missing"
+expect solve     "$nm a=1 b=0.5 alpha=1 of=slip-rate"          "bad.dat:" "'of'" "slip rate"
+expect solve     "$nm a=1 b=0.5 alpha=1\nCONVEXIFICATION relaxation=2" "bad.dat:" "'relaxation'" "(0, 1]"
+expect solve     '$a CONVEXIFICATION eps=1e-5'                 "bad.dat:" "CONVEXIFICATION" "nonmonotone"
 # The laws in velocity belong to the quasistatic march (issue 12), not to a static solve.
 expect solve     's/law=signorini gap=0/law=damped cn=10/'    "bad.dat:" "'law'" "velocity"
 expect solve     's/^TRACTION ref=2 .*/& ramp=1/'             "bad.dat:" "'ramp'" "no time"

@@ -2,18 +2,19 @@
 
 #include "assembly/cards.hpp"
 #include "assembly/p1.hpp"
+#include "assembly/time_loads.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
-
 #include "mesh/topology.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <utility>
-
+#include <sstream>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace sig {
@@ -81,6 +82,28 @@ void add_edge_load(const Mesh& mesh, const MaterialTable& table, const EdgeOwner
   f.segment<2>(2 * edge.b) += fe.tail<2>();
 }
 
+// The MOVINGLOAD card, its quadrature laid out on the edges of its references.
+MovingLoad moving_load(const Card& card, const Mesh& mesh, const MaterialTable& table,
+                       const EdgeOwners& owners) {
+  MovingLoad load;
+  load.F = card.real("F");
+  load.psi = card.real("psi");
+  load.c = card.real("c");
+  load.x0 = card.real("x0", 0.0);
+  if (!(load.psi > 0)) {
+    std::ostringstream what;
+    what << "must be > 0 (the Gaussian's decay, per unit length squared: m^-2 in the thesis's "
+            "units), got "
+         << load.psi;
+    card.fail("psi", what.str());
+  }
+  for (int ref : card_references(card, mesh, RefSupport::edges))
+    for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
+      load.add_edge(edge.a, edge.b, mesh.nodes[edge.a], mesh.nodes[edge.b],
+                    table.of(mesh.subdomain[owners.of(edge.a, edge.b).first]).thickness);
+  return load;
+}
+
 } // namespace
 
 Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge) {
@@ -94,38 +117,45 @@ const Card* ramped_load_card(const Datafile& datafile) {
   return nullptr;
 }
 
-LoadVectors assemble_loads(const Mesh& mesh, const MaterialTable& table, const Datafile& datafile) {
-  LoadVectors loads{Eigen::VectorXd::Zero(2 * mesh.num_nodes()),
-                    Eigen::VectorXd::Zero(2 * mesh.num_nodes())};
-  // A ramped card adds g / ramp to the rate, a constant one g to f.
+Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
+                               const Datafile& datafile, TimeLoads* time_loads) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  Eigen::VectorXd rate = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  // A ramped card adds g / ramp to the rate (nothing at t = 0), a constant one g to f.
   const auto target = [&](const Card& card) -> std::pair<Eigen::VectorXd&, double> {
-    if (!card.has("ramp")) return {loads.f, 1.0};
+    if (!card.has("ramp")) return {f, 1.0};
     const double ramp = card.real("ramp");
     if (!(ramp > 0) || !std::isfinite(ramp))
       card.fail("ramp", "the time at which the ramped load reaches its value must be > 0");
-    return {loads.f_rate, 1.0 / ramp};
+    return {rate, 1.0 / ramp};
   };
   const auto traction_cards = datafile.all("TRACTION");
   const auto pressure_cards = datafile.all("PRESSURE");
-  if (!traction_cards.empty() || !pressure_cards.empty()) {
+  const auto moving_cards = datafile.all("MOVINGLOAD");
+  if (!traction_cards.empty() || !pressure_cards.empty() || !moving_cards.empty()) {
     const EdgeOwners owners(mesh);
     for (const Card* card : traction_cards) {
-      const auto [f, scale] = target(*card);
+      const auto [into, scale] = target(*card);
       const Eigen::Vector2d traction = scale * card_vector(*card, "f");
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
-          add_edge_load(mesh, table, owners, edge, traction, f);
+          add_edge_load(mesh, table, owners, edge, traction, into);
     }
     for (const Card* card : pressure_cards) {
-      const auto [f, scale] = target(*card);
+      const auto [into, scale] = target(*card);
       const double p = scale * card->real("p");
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
-          add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), f);
+          add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), into);
+    }
+    for (const Card* card : moving_cards) {
+      MovingLoad load = moving_load(*card, mesh, table, owners);
+      load.add(0.0, f);
+      if (time_loads != nullptr) time_loads->moving.push_back(std::move(load));
     }
   }
   for (const Card* card : datafile.all("BODYFORCE")) {
-    const auto [f, scale] = target(*card);
+    const auto [into, scale] = target(*card);
     const Eigen::Vector2d force = scale * card_vector(*card, "f");
     const std::vector<int> regions = card_regions(*card, mesh);
     for (int t = 0; t < mesh.num_triangles(); ++t) {
@@ -133,10 +163,11 @@ LoadVectors assemble_loads(const Mesh& mesh, const MaterialTable& table, const D
       const Vector6d fe = p1_body_load(p1_area(triangle_vertices(mesh, t)), force,
                                        table.of(mesh.subdomain[t]).thickness);
       for (int i = 0; i < 3; ++i)
-        f.segment<2>(2 * mesh.triangles[t][i]) += fe.segment<2>(2 * i);
+        into.segment<2>(2 * mesh.triangles[t][i]) += fe.segment<2>(2 * i);
     }
   }
-  return loads;
+  if (time_loads != nullptr && (rate.array() != 0).any()) time_loads->rate = std::move(rate);
+  return f;
 }
 
 } // namespace sig

@@ -119,6 +119,11 @@ void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vecto
   }
 }
 
+Eigen::VectorXd LinearSystem::load_at(double t) const {
+  if (time_loads.empty()) return f;
+  return f + time_loads.change(t, num_dofs());
+}
+
 LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
                              const Datafile& datafile) {
   const Stopwatch clock;
@@ -131,9 +136,7 @@ LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
     system.V = assemble_viscosity(mesh, table, pattern);
     system.memory = assemble_memory(mesh, table, pattern);
   }
-  LoadVectors loads = assemble_loads(mesh, table, datafile);
-  system.f = std::move(loads.f);
-  system.f_rate = std::move(loads.f_rate);
+  system.f = assemble_loads(mesh, table, datafile, &system.time_loads);
   dirichlet_from_cards(mesh, datafile, system.dirichlet_dofs, system.dirichlet_values);
   system.assemble_seconds = clock.seconds();
   return system;

@@ -101,6 +101,19 @@ const std::vector<CardSpec>& card_schema() {
            {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
                     "constant"},
        }},
+      {"MOVINGLOAD",
+       true,
+       "a vertical Gaussian traction moving along x1 (the moving mass of ch. 6, (6.91)): "
+       "(0, -F exp(-psi (x1 - x0 - c t)^2)) on the edges of a boundary reference; a static deck "
+       "(no TIME card) takes it at t = 0",
+       {
+           {"ref", "boundary reference number"},
+           {"F", "peak traction (GPa in the thesis's units)"},
+           {"psi", "decay of the Gaussian, > 0, per unit length squared (m^-2; the thesis prints "
+                   "m^-1)"},
+           {"c", "speed of the load's centre along x1 (m/s)"},
+           {"x0", "x1 of the load's centre at t = 0 (default 0)"},
+       }},
       {"CONTACT",
        false,
        "contact of a boundary reference (Gamma3) with a rigid obstacle: node-to-rigid elements "
@@ -178,6 +191,20 @@ const std::vector<CardSpec>& card_schema() {
             "(auto: with friction or a compliance law, for alm, pdas and projection; "
             "the large-deformation solve always searches)",
             "auto"},
+       }},
+      {"CONVEXIFICATION",
+       false,
+       "the convexification loop (4.110)-(4.112) of FRICTION law=nonmonotone in a static solve "
+       "(sig-solve): mu frozen per node at the previous iterate's slip, each convex problem "
+       "solved by the SOLVER method",
+       {
+           {"eps", "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
+                   "||u(m)||_V and the same for the contact tractions on Gamma3; default 1e-5"},
+           {"maxit", "maximum number of outer iterations (convex solves), >= 1; default 200"},
+           {"relaxation", "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); "
+                          "default 1 (none, as the thesis)"},
+           {"start", "rest (default: u(0) = 0, mu = a) | slipped (mu = b, as after a long "
+                     "slip)"},
        }},
       {"LOADSTEPS",
        false,

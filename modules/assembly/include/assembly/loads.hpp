@@ -6,11 +6,12 @@
 //   TRACTION  ref=R f=fx,fy   constant traction g on the edges of reference R
 //   PRESSURE  ref=R p=P       normal traction g = -P n, n the outward unit normal (P > 0 pushes)
 //   BODYFORCE [region=S] f=fx,fy   force per unit volume on sub-domains S (default all)
-// Each also takes `ramp=t1` (> 0): the load then grows linearly in time, g(t) = g t / t1 (the
-// thesis's f2 = (0, -10 t) of chapter 5 is `f=0,-10 ramp=1`); without ramp= it is constant. The
-// load vector of a case is therefore f(t) = f + t f_rate, f the constant loads and f_rate the sum
-// of the ramped ones divided by their ramp. Only a march in time (sig-march) has a t; a static
-// deck refuses ramp=.
+//   MOVINGLOAD ref=R F= psi= c= [x0=]   a load that moves (assembly/time_loads.hpp): in the
+//                             load vector at t = 0, its change in time apart
+// Each of TRACTION, PRESSURE and BODYFORCE also takes `ramp=t1` (> 0): the load then grows
+// linearly in time, g(t) = g t / t1 (the thesis's f2 = (0, -10 t) of chapter 5 is
+// `f=0,-10 ramp=1`), zero at t = 0, its rate g / t1 in TimeLoads::rate; without ramp= it is
+// constant. Only a march in time (sig-march) has a t: a static deck refuses ramp=.
 #include <Eigen/Core>
 
 namespace sig {
@@ -20,6 +21,7 @@ class Datafile;
 struct Mesh;
 struct MaterialTable;
 struct BoundaryEdge;
+struct TimeLoads;
 
 /// Outward unit normal of a boundary edge: pointing away from the triangle that owns it (so an
 /// edge stored in either direction gets the same normal); for an edge shared by two triangles
@@ -28,15 +30,11 @@ struct BoundaryEdge;
 /// one-off queries, not for loops over edges.
 Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge);
 
-/// f(t) = f + t f_rate (header comment).
-struct LoadVectors {
-  Eigen::VectorXd f;      ///< the constant loads
-  Eigen::VectorXd f_rate; ///< the ramped loads per unit time (zero without ramp=)
-};
-
-/// The loads of the TRACTION, PRESSURE and BODYFORCE cards (size 2 * nodes). References and
-/// regions are checked (assembly/cards.hpp), and ramp= must be > 0.
-LoadVectors assemble_loads(const Mesh& mesh, const MaterialTable& table, const Datafile& datafile);
+/// f at t = 0 from the TRACTION, PRESSURE, BODYFORCE and MOVINGLOAD cards (size 2 * nodes);
+/// the change of the time-dependent ones (moving, ramped) in `*time_loads` when it is given.
+/// References and regions are checked (assembly/cards.hpp), MOVINGLOAD's psi > 0 and ramp > 0.
+Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
+                               const Datafile& datafile, TimeLoads* time_loads = nullptr);
 
 /// The first load card of `datafile` with a ramp= field, or null: the stages without time refuse
 /// it on its own line.

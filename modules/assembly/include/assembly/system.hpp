@@ -7,6 +7,7 @@
 //                                   of reference R (edges and vertices); a dof named by several
 //                                   cards takes the value of the last one
 #include "assembly/pattern.hpp"
+#include "assembly/time_loads.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -31,8 +32,8 @@ struct LinearSystem {
   Eigen::SparseMatrix<double> K; ///< stiffness (for a Kelvin-Voigt law: of its elastic part B)
   Eigen::SparseMatrix<double> M; ///< consistent mass; 0 x 0 if every density is 0
   Eigen::VectorXd M_lumped;      ///< row sums of the consistent mass (zeros without density)
-  Eigen::VectorXd f;             ///< loads: the constant ones (assembly/loads.hpp)
-  Eigen::VectorXd f_rate;        ///< the ramped loads per unit time: f(t) = f + t f_rate
+  Eigen::VectorXd f;             ///< loads at t = 0
+  TimeLoads time_loads;          ///< their change in time (empty: constant loads)
   /// The viscosity's "stiffness" K_A (A of kelvin_voigt.hpp, on strain rates); 0 x 0 without a
   /// kelvin-voigt law. Same pattern as K.
   Eigen::SparseMatrix<double> V;
@@ -42,8 +43,8 @@ struct LinearSystem {
   double assemble_seconds = 0.0; ///< wall time of assemble_system
 
   int num_dofs() const { return static_cast<int>(f.size()); }
-  /// Some load has ramp= (f_rate not zero).
-  bool has_ramp() const { return f_rate.size() > 0 && (f_rate.array() != 0).any(); }
+  /// The loads at time t: f + time_loads.change(t).
+  Eigen::VectorXd load_at(double t) const;
 };
 
 /// Stiffness sum over triangles of p1_stiffness with the law and thickness of their sub-domain.
@@ -66,15 +67,18 @@ Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& tabl
 void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vector<int>& dofs,
                           Eigen::VectorXd& values);
 
-/// Everything from the mesh, the MILI table and the DIRICHLET, TRACTION, PRESSURE and
-/// BODYFORCE cards.
+/// Everything from the mesh, the MILI table and the DIRICHLET, TRACTION, PRESSURE, BODYFORCE
+/// and MOVINGLOAD cards.
 LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
                              const Datafile& datafile);
 
 /// DS "TAE": ndof; K_rowptr, K_col (1-based CSR of the full symmetric matrix), K_val; M_val
 /// (same pattern, only if M is not empty); M_lumped; f; dirichlet_dof (1-based);
-/// dirichlet_value; time_assemble (seconds); and only where they are not empty: f_rate (ndof),
-/// V_val (same pattern), memory_beta (terms) and memory_val {terms, nnz} (same pattern).
+/// dirichlet_value; time_assemble (seconds); with moving loads: moving_load (F, psi, c, x0 per
+/// load), moving_points (points per load), moving_node (nodes a, b per point, 1-based),
+/// moving_x1 and moving_weight (weight_a, weight_b per point) (assembly/time_loads.hpp); with
+/// ramped loads: f_rate (ndof); with a kelvin-voigt law: V_val (same pattern), memory_beta
+/// (terms) and memory_val {terms, nnz} (same pattern).
 void write_tae(const std::filesystem::path& path, const LinearSystem& system,
                const std::string& title);
 LinearSystem read_tae(const std::filesystem::path& path);

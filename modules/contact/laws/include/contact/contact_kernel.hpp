@@ -60,6 +60,14 @@ struct ContactKernel {
   Eigen::Matrix<double, 2, 4> d_complementarity = Eigen::Matrix<double, 2, 4>::Zero();
 };
 
+/// A branch of the kernel: the piece its positive part and its projection select.
+struct KernelBranch {
+  bool wall = false;  ///< chi = 1
+  bool stick = false; ///< the projection's inside
+  int slip = 0;       ///< sigma on its outside
+  bool operator==(const KernelBranch&) const = default;
+};
+
 /// The compliance pressure P(q_n) of a law (0 for signorini) and its slope, with the kinks
 /// [q_n]_+ at 0 on the compliance side, the wall q_n = g and the truncation c3 on the flat side.
 double compliance_pressure(const ContactLaw& law, double q_n);
@@ -67,5 +75,19 @@ double d_compliance_pressure(const ContactLaw& law, double q_n);
 
 /// The kernel at x (header comment).
 ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t);
+
+/// The branch the kernel k is on.
+inline KernelBranch branch_of(const ContactKernel& k) {
+  return {k.wall_active, k.stick, k.slip};
+}
+
+/// The kernel's smooth piece `on` at x: the formulas above with chi, stick and sigma given
+/// instead of read off x, i.e. Lambda = chi (lambda + r_n (q_n - g)) and T = t + r_t q_t
+/// (stick) or sigma s (slip), even where x lies on another branch. It equals the kernel
+/// wherever x lies on `on`; along a Newton step that changes branches it is the function the
+/// step linearized (contact_newton.hpp measures its line search on it). The compliance P, a
+/// function of q_n alone, is not held.
+ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t,
+                             const KernelBranch& on);
 
 } // namespace sig
