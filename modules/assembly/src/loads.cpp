@@ -89,7 +89,7 @@ MovingLoad moving_load(const Card& card, const Mesh& mesh, const MaterialTable& 
   load.F = card.real("F");
   load.psi = card.real("psi");
   load.c = card.real("c");
-  load.x0 = card.real("x0", 0.0);
+  load.x0 = card.real("x0");
   if (!(load.psi > 0)) {
     std::ostringstream what;
     what << "must be > 0 (the Gaussian's decay, per unit length squared: m^-2 in the thesis's "

@@ -112,7 +112,7 @@ const std::vector<CardSpec>& card_schema() {
            {"psi", "decay of the Gaussian, > 0, per unit length squared (m^-2; the thesis prints "
                    "m^-1)"},
            {"c", "speed of the load's centre along x1 (m/s)"},
-           {"x0", "x1 of the load's centre at t = 0 (default 0)"},
+           {"x0", "x1 of the load's centre at t = 0", "0"},
        }},
       {"CONTACT",
        false,
@@ -131,7 +131,8 @@ const std::vector<CardSpec>& card_schema() {
             "compliance-unilateral (1.26): compliance while q_n < g, a rigid wall at q_n = g | "
             "damped (1.25): pressure cn [v_n]+ of the normal velocity v_n | damped-unilateral "
             "(1.28): damped while v_n < g, the bound v_n <= g beyond (the laws in velocity need "
-            "TIME scheme=quasistatic)",
+            "TIME scheme=quasistatic) | compliance-bilateral: pressure cn q_n on both sides, "
+            "springs that also pull (a frictionless test law, no truncation)",
             "signorini"},
            {"cn", "compliance: pressure per unit penetration (GPa/m in the thesis's units), > 0; "
                   "damped laws: pressure per unit normal velocity (GPa s/m)"},
