@@ -45,15 +45,30 @@ const std::vector<CardSpec>& card_schema() {
        "constitutive law of one sub-domain",
        {
            {"region", "sub-domain number (1-based, as in the mesh file)"},
-           {"law", "hooke | svk | ciarlet-geymonat", "hooke"},
-           {"E", "Young's modulus (hooke, svk)"},
-           {"nu", "Poisson's ratio, -1 < nu < 0.5 (hooke, svk)"},
+           {"law",
+            "hooke | svk | ciarlet-geymonat | kelvin-voigt (5.1): viscosity eta1, eta2 plus "
+            "Hooke's E, nu, plus the MEMORY cards' kernel",
+            "hooke"},
+           {"E", "Young's modulus (hooke, svk, kelvin-voigt)"},
+           {"nu", "Poisson's ratio, -1 < nu < 0.5 (hooke, svk, kelvin-voigt)"},
+           {"eta1", "kelvin-voigt: viscosity coefficient of tr(eps') I (thesis mu1), >= 0", "0"},
+           {"eta2", "kelvin-voigt: viscosity coefficient of eps' (thesis mu2), >= 0", "0"},
            {"c1", "ciarlet-geymonat: coefficient of I1 - 3, > 0"},
            {"c2", "ciarlet-geymonat: coefficient of I2 - 3, >= 0"},
            {"a", "ciarlet-geymonat: coefficient of I3 - 1, >= 0"},
            {"plane", "strain | stress (2D reduction: F33 = 1, or F33 from sigma33 = 0)", "strain"},
            {"thickness", "out-of-plane thickness, > 0", "1"},
            {"rho", "mass density, >= 0 (dynamic problems need rho > 0)", "0"},
+       }},
+      {"MEMORY",
+       true,
+       "one exponential term exp(-beta t) KK of the memory kernel K of a kelvin-voigt law (5.1), "
+       "integrated by the trapezoidal rule (5.60)-(5.61); none: K = 0",
+       {
+           {"region", "sub-domain numbers (law=kelvin-voigt); default every sub-domain"},
+           {"E", "Young's modulus of the isotropic tensor KK, > 0"},
+           {"nu", "Poisson's ratio of KK, -1 < nu < 0.5"},
+           {"beta", "decay rate of exp(-beta t), > 0 (1 / time)"},
        }},
       {"DIRICHLET",
        true,
@@ -69,6 +84,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference number"},
            {"f", "traction vector: fx,fy"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"PRESSURE",
        true,
@@ -76,6 +93,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference number"},
            {"p", "pressure"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"BODYFORCE",
        true,
@@ -83,6 +102,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"region", "sub-domain number"},
            {"f", "force per unit volume: fx,fy"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"MOVINGLOAD",
        true,
