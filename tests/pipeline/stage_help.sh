@@ -55,7 +55,7 @@ echo "stage_help: ${#stages[@]} executables: ${stages[*]}"
 # 2. Every card a stage looked up is in its --help (a card heading "KEYWORD:" or
 #    "KEYWORD (repeatable):").
 trace=$work/trace.txt
-for deck in datafiles/cantilever.dat datafiles/dynamics/free_disc.dat; do
+for deck in datafiles/cantilever.dat tests/pipeline/data/vibrating_block.dat; do
   SIG_CARD_TRACE=$trace SIG_BIN=$bin bash "$root/drivers/chain.sh" "$root/$deck" \
     -o "$work/$(basename "$deck" .dat)" >"$work/chain.log" 2>&1 || {
     cat "$work/chain.log"

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
                  "matrices, load vectors and Dirichlet dofs of the case.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)", "OUTDIR/case.mili (sig-material)"},
       .writes = {"OUTDIR/case.tae (dof numbering, K, M, loads, Dirichlet dofs and values)"},
-      .cards = {"TITLE", "DIRICHLET", "TRACTION", "PRESSURE", "BODYFORCE"}};
+      .cards = {"TITLE", "DIRICHLET", "TRACTION", "PRESSURE", "BODYFORCE", "MOVINGLOAD"}};
   return sig::run_stage("sig-assemble", [&] {
     // 1. Command line and inputs.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);

@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
       .reads = {"DATAFILE", "OUTDIR/case.nopo, case.mili, case.tae, case.cont (as sig-solve)"},
       .writes = {"OUTDIR/bench.json (solve seconds of each run and their median, floor, analysis, "
                  "assembly, iterations, reactions)"},
-      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONTACT", "FRICTION"},
+      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION"},
       .usage = "DATAFILE [-o OUTDIR] [--repeat K]",
       .options = {{"--repeat K", "timed runs of the solve and of the floor (default 3)"}}};
   return sig::run_stage("bench-finite-strain", [&] {

@@ -31,6 +31,22 @@ SolverCard read_solver_card(const Datafile& datafile) {
     if (solver.has(positive) && solver.real(positive) <= 0)
       solver.fail(positive, "must be positive");
 
+  if (const Card* loop = datafile.find("CONVEXIFICATION")) {
+    const Card* friction = datafile.find("FRICTION");
+    if (friction == nullptr || friction->choice("law", friction_law_choices) != "nonmonotone")
+      loop->fail("", "the convexification loop belongs to FRICTION law=nonmonotone, which this "
+                     "deck does not have");
+    ConvexificationOptions& o = result.convexification;
+    o.eps = loop->real("eps", o.eps);
+    if (!(o.eps > 0)) loop->fail("eps", "must be positive");
+    o.max_iterations = static_cast<int>(loop->integer("maxit", o.max_iterations));
+    if (o.max_iterations < 1) loop->fail("maxit", "must be at least 1");
+    o.relaxation = loop->real("relaxation", o.relaxation);
+    if (!(o.relaxation > 0 && o.relaxation <= 1)) loop->fail("relaxation", "must be in (0, 1]");
+    o.start = loop->choice("start", {"rest", "slipped"}, "rest") == "rest"
+                  ? ConvexificationStart::rest
+                  : ConvexificationStart::slipped;
+  }
   if (const Card* steps = datafile.find("LOADSTEPS")) {
     result.load_steps = static_cast<int>(steps->integer("n"));
     if (result.load_steps < 1) steps->fail("n", "must be at least 1");

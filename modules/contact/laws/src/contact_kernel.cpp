@@ -17,18 +17,21 @@ double clipped(const ContactLaw& law, double q_n) {
 
 double compliance_pressure(const ContactLaw& law, double q_n) {
   if (!law.has_compliance()) return 0.0;
+  if (law.normal == NormalLaw::compliance_bilateral) return law.cn * q_n;
   if (law.secant) return law.cn * specific_penalty(law.previous, clipped(law, q_n));
   return truncated_normal_compliance(clipped(law, q_n), law.cn, law.c3);
 }
 
 double d_compliance_pressure(const ContactLaw& law, double q_n) {
   if (!law.has_compliance() || (law.has_wall() && q_n >= law.depth)) return 0.0;
+  if (law.normal == NormalLaw::compliance_bilateral) return law.cn;
   if (law.secant) return law.cn * d_specific_penalty(law.previous, q_n);
   return d_truncated_normal_compliance(q_n, law.cn, law.c3);
 }
 
 double compliance_energy(const ContactLaw& law, double q_n) {
   if (!law.has_compliance() || law.in_velocity()) return 0.0;
+  if (law.normal == NormalLaw::compliance_bilateral) return 0.5 * law.cn * q_n * q_n;
   const double q = positive_part(clipped(law, q_n));
   if (law.secant || law.cn * q <= law.c3) return 0.5 * law.cn * q * q;
   const double knee = law.c3 / law.cn; // the truncation: P = c3 beyond it

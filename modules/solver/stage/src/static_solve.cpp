@@ -1,6 +1,7 @@
 #include "solver/static_solve.hpp"
 
 #include "assembly/dirichlet.hpp"
+#include "assembly/strain.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/condensed_contact.hpp"
@@ -56,7 +57,8 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 
 StaticSolution solve_static_contact(const LinearSystem& system, const ContactElements& contact,
                                     const ContactSolverParameters& parameters,
-                                    const std::string& backend, const Eigen::VectorXd& start) {
+                                    const std::string& backend, const Eigen::VectorXd& start,
+                                    const StaticConvexification& loop) {
   ReducedSystem reduced = reduce(system);
   const std::vector<std::array<int, 2>> dofs = contact_dofs(reduced, contact);
   const int m = contact.size();
@@ -131,15 +133,36 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
     for (std::size_t k = 0; k < interface.size(); ++k)
       w_start[static_cast<Eigen::Index>(k)] = w[interface[k]];
   }
+  // The reduced displacement (in frames) of condensed unknowns w, one interior solve, kept for
+  // the last w: the convexification loop's last norm of V and the result share it.
+  Eigen::VectorXd expanded_w, expanded_u;
+  const auto expand = [&](const Eigen::VectorXd& w) -> const Eigen::VectorXd& {
+    if (expanded_w.size() != w.size() || expanded_w != w) {
+      expanded_u = schur.expand(f, w);
+      expanded_w = w;
+    }
+    return expanded_u;
+  };
+  // The whole body's displacement (frames undone, Dirichlet values in), for the norm of V.
+  const auto whole_body = [&](const Eigen::VectorXd& w) {
+    Eigen::VectorXd u = expand(w);
+    frames.from_frames(u, contact.normal);
+    return reduced.expand(u);
+  };
+  CondensedConvexification convexification{loop.options, whole_body, {}};
+  if (loop.mesh != nullptr)
+    convexification.norm = [&](const Eigen::VectorXd& u) { return strain_norm(*loop.mesh, u); };
   const CondensedSolution condensed = solve_condensed_contact(
-      std::move(problem), {contact.law, contact.weight}, parameters, w_start);
+      std::move(problem), {contact.law, contact.weight}, parameters, w_start, convexification);
   const ContactNewtonResult& c = condensed.contact;
   if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);
+  if (condensed.convexification && !condensed.convexification->converged)
+    log_warning("the convexification loop did not converge: " + condensed.convexification->failure);
 
   // 4. Back to the whole body, and its equilibrium checked there: an unheld rigid motion that
   //    the factorization did not see as singular (its pivot a round-off) leaves a meaningless
   //    drift.
-  Eigen::VectorXd u = schur.expand(f, condensed.w);
+  Eigen::VectorXd u = expand(condensed.w);
   Eigen::VectorXd r = K * u - f;
   for (int p = 0; p < m; ++p) {
     r[dofs[p][1]] += c.normal_force[p];
@@ -155,10 +178,16 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   s.friction_status = c.friction_status;
   s.converged = c.converged;
   s.failure = c.failure;
-  SIG_VERIFY(!s.converged || imbalance <= std::max(1e3 * parameters.eps, 1e-6),
+  s.history = c.history;
+  if (condensed.convexification) {
+    s.convexification = condensed.convexification;
+    s.converged = s.convexification->converged;
+    s.failure = s.convexification->failure;
+    s.history = s.convexification->inner_history;
+  }
+  SIG_VERIFY(!c.converged || imbalance <= std::max(1e3 * parameters.eps, 1e-6),
              "the converged contact solve leaves the body out of equilibrium (relative residual "
                  << imbalance << "): " << unheld);
-  s.history = c.history;
   // As the thesis counts them: every displacement dof, plus the Lagrange nodes for ALM.
   s.unknowns = system.num_dofs() + condensed.multiplier_unknowns;
   return s;

@@ -4,7 +4,8 @@
 // cases the contact state (put_contact_state) and history_active, history_entered,
 // history_left, history_stick, history_slip,
 // history_residual, history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||); scalars
-// time_<phase> in seconds.
+// time_<phase> in seconds. With a convexification loop (put_convexification): outer_* arrays.
+// `iterations` counts every Newton iteration (of every convex solve).
 #include "solver/static_solve.hpp"
 
 #include <filesystem>
@@ -25,6 +26,13 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
 /// history_stick, history_slip, history_residual,
 /// history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||), one entry per iteration.
 void put_history(Ds& ds, const std::vector<IterationRecord>& history);
+
+/// The convexification loop: outer_converged, outer_iterations, outer_cycle (period of a status
+/// cycle, 0 if none), outer_failure; per convex solve outer_inner_iterations,
+/// outer_u_change, outer_xi_change, outer_mu_change, outer_status_changes,
+/// outer_wall, outer_compliance, outer_stick, outer_slip; per contact element
+/// friction_coefficient (the mu of the last convex solve).
+void put_convexification(Ds& ds, const ConvexificationResult& loop);
 
 void write_solution(const std::filesystem::path& path, const StaticSolution& solution,
                     const std::string& method, const std::string& backend,
