@@ -45,7 +45,7 @@ struct ThrownBlock {
   }
   Elastodynamics problem(MassChoice mass) const {
     return reduced_elastodynamics(reduced,
-                                  mass_matrix(system, mass, mesh, contact_normals(elements)));
+                                  mass_matrix(system, mass, mesh, elements.node));
   }
   DynamicState thrown() const {
     Eigen::VectorXd v = Eigen::VectorXd::Zero(system.num_dofs());

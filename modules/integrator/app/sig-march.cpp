@@ -110,9 +110,8 @@ int main(int argc, char** argv) {
     // 4. The contact elements of case.cont and the mass (EMM included).
     std::optional<sig::ContactElements> elements;
     if (contact != nullptr) elements = sig::read_cont(args.ds_path("cont"));
-    const sig::ContactNormals normals =
-        elements ? sig::contact_normals(*elements) : sig::ContactNormals{};
-    const Eigen::SparseMatrix<double> mass = sig::mass_matrix(system, time.mass, mesh, normals);
+    const Eigen::SparseMatrix<double> mass =
+        sig::mass_matrix(system, time.mass, mesh, elements ? elements->node : std::vector<int>{});
     if (elements) contact_info.nodes = elements->node;
     std::unique_ptr<sig::ContactStrategy> strategy;
     if (elements) strategy = sig::make_contact_strategy(contact_info.strategy, strategy_parameters);

@@ -38,10 +38,6 @@ ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& me
   return b;
 }
 
-ContactNormals contact_normals(const ContactElements& elements) {
-  return {elements.node, elements.normal};
-}
-
 CondensedContact condense_contact(const TimeScheme& scheme, const ContactBoundary& boundary) {
   CondensedContact c;
   const Eigen::MatrixXd Bt = Eigen::MatrixXd(boundary.B.transpose());

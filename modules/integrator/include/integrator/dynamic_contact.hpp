@@ -23,7 +23,6 @@
 namespace sig {
 
 struct ContactElements;
-struct ContactNormals;
 struct Mesh;
 struct ReducedSystem;
 class TimeScheme;
@@ -47,9 +46,6 @@ struct ContactBoundary {
 /// them; sig::Error if a contact node has a Dirichlet dof or is not a node of the mesh.
 ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& mesh,
                                  const ReducedSystem& reduced);
-
-/// The contact nodes and normals the Equivalent Mass Matrix needs (integrator/emm.hpp).
-ContactNormals contact_normals(const ContactElements& elements);
 
 /// Z and A of the header comment, for the step operator of `scheme`.
 struct CondensedContact {
