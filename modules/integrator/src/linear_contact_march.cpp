@@ -1,6 +1,8 @@
 // The march in velocity on a linear bulk (linear_contact_march.hpp).
 #include "integrator/linear_contact_march.hpp"
 
+#include "assembly/dirichlet.hpp"
+#include "contact/contact_elements.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/condensed_bulk.hpp"
@@ -10,6 +12,15 @@
 #include <sstream>
 
 namespace sig {
+
+VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced) {
+  VelocityContact c;
+  for (int p = 0; p < elements.size(); ++p)
+    c.dofs.push_back(reduced.contact_node_dofs(elements.node[p]));
+  c.normal = elements.normal;
+  c.setting = {elements.law, elements.weight};
+  return c;
+}
 
 Eigen::VectorXd VelocityScheme::normal_origin(int, const VelocityContact& contact) const {
   return Eigen::VectorXd::Zero(contact.size());

@@ -49,16 +49,6 @@ void refuse_other_models(const Datafile& datafile) {
                          "w_0 is 0 (ALGORITHMS.md C8); give u= only");
 }
 
-/// The contact nodes of case.cont on the free dofs of `reduced`.
-VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced) {
-  VelocityContact c;
-  for (int p = 0; p < elements.size(); ++p)
-    c.dofs.push_back(reduced.contact_node_dofs(elements.node[p]));
-  c.normal = elements.normal;
-  c.setting = {elements.law, elements.weight};
-  return c;
-}
-
 } // namespace
 
 void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,

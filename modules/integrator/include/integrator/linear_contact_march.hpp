@@ -59,6 +59,13 @@ struct VelocityContact {
   int size() const { return static_cast<int>(dofs.size()); }
 };
 
+struct ContactElements;
+struct ReducedSystem;
+
+/// The contact elements of a CONT on the free dofs of `reduced`; sig::Error naming the node if
+/// one of them has a Dirichlet component.
+VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced);
+
 /// A one-step scheme in velocity on a linear bulk (header: the extension point).
 class VelocityScheme {
 public:
