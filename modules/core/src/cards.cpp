@@ -36,6 +36,10 @@ const std::vector<CardSpec>& card_schema() {
            {"grading",
             "growth of the mesh size per unit distance from the contact boundary (0: uniform)",
             "0"},
+           {"arcs",
+            "disc: uniform (N/4 segments on every quarter) | graded (N/4 on the bottom quarter, "
+            "the others sized by the grading: fine only near contact)",
+            "uniform"},
            {"gamma1_above",
             "vertices with y above this value get the Gamma1 (Dirichlet) reference"},
            {"gamma3_below", "vertices with y below this value get the Gamma3 (contact) reference"},
@@ -169,14 +173,18 @@ const std::vector<CardSpec>& card_schema() {
                    "the convexification loop (4.110)-(4.112)"},
            {"mu", "coulomb: friction coefficient, >= 0"},
            {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
-           {"bound", "coulomb, nonmonotone: normal (default): mu times the whole normal "
-                     "pressure N | compliance: mu times the compliance pressure p(min(q_n, g)) "
-                     "only, (4.6)/(5.6): on the wall Tresca's mu p(g)"},
+           {"bound",
+            "coulomb, nonmonotone: normal: mu times the whole normal pressure N | compliance: "
+            "mu times the compliance pressure p(min(q_n, g)) only, (4.6)/(5.6): on the wall "
+            "Tresca's mu p(g)",
+            "normal"},
            {"a", "nonmonotone: mu(0), >= b"},
            {"b", "nonmonotone: mu at large slip, >= 0"},
            {"alpha", "nonmonotone: decay of mu per unit slip, >= 0"},
-           {"of", "nonmonotone: slip (default; the tangential displacement from the "
-                  "reference, ch. 4) | slip-rate (the tangential velocity, ch. 6)"},
+           {"of",
+            "nonmonotone: slip (the tangential displacement from the reference, ch. 4) | "
+            "slip-rate (the tangential velocity, ch. 6)",
+            "slip"},
        }},
       {"SOLVER",
        false,
@@ -203,13 +211,16 @@ const std::vector<CardSpec>& card_schema() {
        "(sig-solve): mu frozen per node at the previous iterate's slip, each convex problem "
        "solved by the SOLVER method",
        {
-           {"eps", "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
-                   "||u(m)||_V and the same for the contact tractions on Gamma3; default 1e-5"},
-           {"maxit", "maximum number of outer iterations (convex solves), >= 1; default 200"},
-           {"relaxation", "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); "
-                          "default 1 (none, as the thesis)"},
-           {"start", "rest (default: u(0) = 0, mu = a) | slipped (mu = b, as after a long "
-                     "slip)"},
+           {"eps",
+            "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
+            "||u(m)||_V and the same for the contact tractions on Gamma3, > 0",
+            "1e-5"},
+           {"maxit", "maximum number of outer iterations (convex solves), >= 1", "200"},
+           {"relaxation",
+            "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); 1: none, as "
+            "the thesis",
+            "1"},
+           {"start", "rest (u(0) = 0, mu = a) | slipped (mu = b, as after a long slip)", "rest"},
        }},
       {"LOADSTEPS",
        false,
