@@ -80,43 +80,42 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   };
   // The whole body's displacement (Dirichlet values in), for the norm of V.
   const auto whole_body = [&](const Eigen::VectorXd& w) { return reduced.expand(expand(w)); };
-};
-CondensedConvexification convexification{loop.options, whole_body, {}};
-if (loop.mesh != nullptr)
-  convexification.norm = [&](const Eigen::VectorXd& u) { return strain_norm(*loop.mesh, u); };
-const CondensedSolution condensed = solve_condensed_contact(
-    std::move(problem), {contact.law, contact.weight}, parameters, w_start, convexification);
-const ContactNewtonResult& c = condensed.contact;
-if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);
-if (condensed.convexification && !condensed.convexification->converged)
-  log_warning("the convexification loop did not converge: " + condensed.convexification->failure);
+  CondensedConvexification convexification{loop.options, whole_body, {}};
+  if (loop.mesh != nullptr)
+    convexification.norm = [&](const Eigen::VectorXd& u) { return strain_norm(*loop.mesh, u); };
+  const CondensedSolution condensed = solve_condensed_contact(
+      std::move(problem), {contact.law, contact.weight}, parameters, w_start, convexification);
+  const ContactNewtonResult& c = condensed.contact;
+  if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);
+  if (condensed.convexification && !condensed.convexification->converged)
+    log_warning("the convexification loop did not converge: " + condensed.convexification->failure);
 
-// 3. Back to the whole body, and its equilibrium checked there: an unheld rigid motion that
-//    the factorization did not see as singular (its pivot a round-off) leaves a meaningless
-//    drift.
-const Eigen::VectorXd u = expand(condensed.w);
-const double imbalance = condensation.relative_residual(u, c.normal_force, c.tangential_force);
-s.u = reduced.expand(u);
-s.seconds["solve"] = solve_clock.seconds();
-s.multiplier = c.normal_force;
-s.tangential = c.tangential_force;
-s.normal_status = c.normal_status;
-s.friction_status = c.friction_status;
-s.converged = c.converged;
-s.failure = c.failure;
-s.history = c.history;
-if (condensed.convexification) {
-  s.convexification = condensed.convexification;
-  s.converged = s.convexification->converged;
-  s.failure = s.convexification->failure;
-  s.history = s.convexification->inner_history;
-}
-SIG_VERIFY(!c.converged || imbalance <= std::max(1e3 * parameters.eps, 1e-6),
-           "the converged contact solve leaves the body out of equilibrium (relative residual "
-               << imbalance << "): " << kUnheldRigidMotion);
-// As the thesis counts them: every displacement dof, plus the Lagrange nodes for ALM.
-s.unknowns = system.num_dofs() + condensed.multiplier_unknowns;
-return s;
+  // 3. Back to the whole body, and its equilibrium checked there: an unheld rigid motion that
+  //    the factorization did not see as singular (its pivot a round-off) leaves a meaningless
+  //    drift.
+  const Eigen::VectorXd u = expand(condensed.w);
+  const double imbalance = condensation.relative_residual(u, c.normal_force, c.tangential_force);
+  s.u = reduced.expand(u);
+  s.seconds["solve"] = solve_clock.seconds();
+  s.multiplier = c.normal_force;
+  s.tangential = c.tangential_force;
+  s.normal_status = c.normal_status;
+  s.friction_status = c.friction_status;
+  s.converged = c.converged;
+  s.failure = c.failure;
+  s.history = c.history;
+  if (condensed.convexification) {
+    s.convexification = condensed.convexification;
+    s.converged = s.convexification->converged;
+    s.failure = s.convexification->failure;
+    s.history = s.convexification->inner_history;
+  }
+  SIG_VERIFY(!c.converged || imbalance <= std::max(1e3 * parameters.eps, 1e-6),
+             "the converged contact solve leaves the body out of equilibrium (relative residual "
+                 << imbalance << "): " << kUnheldRigidMotion);
+  // As the thesis counts them: every displacement dof, plus the Lagrange nodes for ALM.
+  s.unknowns = system.num_dofs() + condensed.multiplier_unknowns;
+  return s;
 }
 
 } // namespace sig
