@@ -116,6 +116,31 @@ TEST(Disc, QuartersAndArea) {
   EXPECT_NEAR(area(mesh), N * 0.5 * R * R * std::sin(2 * std::numbers::pi / N), 1e-10);
 }
 
+TEST(Disc, GradedArcsAreFineOnlyNearTheBottom) {
+  if (!testing::have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  // Scene 4: 128 uniform segments on Gamma3 (the bottom quarter), the rest coarsening away.
+  const Eigen::Vector2d c(10, 10);
+  const double R = 10;
+  const int N = 512;
+  const Mesh uniform = disc(c, R, N, 0.1), graded = disc(c, R, N, 0.1, true);
+  EXPECT_EQ(graded.edges_with_ref(3).size(), static_cast<std::size_t>(N / 4));
+  for (const auto& e : graded.edges_with_ref(3)) // uniform chords of 2 pi / N
+    EXPECT_NEAR((graded.nodes[e.a] - graded.nodes[e.b]).norm(),
+                2 * R * std::sin(std::numbers::pi / N), 1e-12);
+  for (int ref : {1, 2, 4}) {
+    EXPECT_LT(graded.edges_with_ref(ref).size(), static_cast<std::size_t>(N / 8)) << ref;
+    for (int i : graded.nodes_with_ref(ref))
+      EXPECT_NEAR((graded.nodes[i] - c).norm(), R, 1e-12) << ref;
+  }
+  // The top quarter, farthest from Gamma3, is the coarsest.
+  EXPECT_LT(graded.edges_with_ref(2).size(), graded.edges_with_ref(1).size());
+  EXPECT_EQ(graded.edges_with_ref(1).size(), graded.edges_with_ref(4).size());
+  EXPECT_LT(graded.num_triangles(), uniform.num_triangles());
+  EXPECT_GE(find_node(graded, {10, 0}), 0) << "lowest node must touch x2 = 0";
+  expect_domain_on_the_left(graded);
+  EXPECT_NEAR(area(graded), std::numbers::pi * R * R, 2 * std::numbers::pi * R * R / 64);
+}
+
 TEST(Ring, ThesisCountsAtN128) {
   const Mesh mesh = ring({0, 10}, 9, 10, 128);
   EXPECT_EQ(mesh.num_nodes(), 896); // 1792 dofs
@@ -222,6 +247,46 @@ TEST(Rectangle, CountsReferencesAndArea) {
   EXPECT_EQ(sq.num_nodes(), 25);
   EXPECT_EQ(sq.edges_with_ref(1).size(), 12u);
   EXPECT_EQ(sq.references(), (std::vector<int>{1, 2}));
+}
+
+// The thesis's scene 5 mesh (ALGORITHMS.md 0.2): 64 x 12 union-jack cells on (0,5) x (0,1) have
+// 3072 triangles and 1613 nodes, i.e. 3226 displacement dofs plus 2 x 64 multipliers = 3354.
+TEST(Rectangle, UnionJackIsTheThesisScene5Mesh) {
+  const Mesh mesh = rectangle(5, 1, 64, 12, {3, 4, 2, 1}, CellPattern::union_jack);
+  EXPECT_EQ(mesh.num_triangles(), 3072);
+  EXPECT_EQ(mesh.num_nodes(), 1613);
+  EXPECT_EQ(2 * mesh.num_nodes() + 2 * 64, 3354);
+  EXPECT_EQ(mesh.edges_with_ref(3).size(), 64u);
+  EXPECT_EQ(mesh.nodes_with_ref(3).size(), 65u);
+  EXPECT_NEAR(area(mesh), 5.0, 1e-12);
+  expect_domain_on_the_left(mesh);
+  // Every centre has four triangles, every inner corner eight.
+  const int centre = 65 * 13 + 5 * 64 + 7, corner = 3 * 65 + 4;
+  EXPECT_EQ(mesh.nodes[centre], Eigen::Vector2d(5.0 * 7.5 / 64, 5.5 / 12));
+  int at_centre = 0, at_corner = 0;
+  for (const auto& t : mesh.triangles) {
+    at_centre += std::count(t.begin(), t.end(), centre);
+    at_corner += std::count(t.begin(), t.end(), corner);
+  }
+  EXPECT_EQ(at_centre, 4);
+  EXPECT_EQ(at_corner, 8);
+}
+
+// Halving the cells of a union-jack mesh nests the meshes: every coarse node is a fine node and
+// every coarse edge's midpoint is a fine node, so coarse P1 fields prolongate exactly.
+TEST(Rectangle, UnionJackRefinementIsNested) {
+  const Mesh coarse = rectangle(5, 1, 8, 2, {3, 4, 2, 1}, CellPattern::union_jack);
+  const Mesh fine = rectangle(5, 1, 16, 4, {3, 4, 2, 1}, CellPattern::union_jack);
+  const auto is_fine_node = [&](const Eigen::Vector2d& x) {
+    for (const Eigen::Vector2d& y : fine.nodes)
+      if ((x - y).norm() < 1e-12) return true;
+    return false;
+  };
+  for (const Eigen::Vector2d& x : coarse.nodes)
+    EXPECT_TRUE(is_fine_node(x));
+  for (const auto& t : coarse.triangles)
+    for (int j = 0; j < 3; ++j)
+      EXPECT_TRUE(is_fine_node(0.5 * (coarse.nodes[t[j]] + coarse.nodes[t[(j + 1) % 3]])));
 }
 
 } // namespace

@@ -19,7 +19,10 @@ Mesh half_disc(double R, int N, double grading = 0);
 /// Disc of centre `center` and radius R in four quarter arcs of N/4 segments (N multiple of
 /// 4): left quarter (x1 <= cx - R/sqrt2) ref 1, top ref 2, bottom ref 3 (contact side), right
 /// ref 4. Size law as half_disc with h = 2 pi R / N, d measured from the bottom quarter.
-Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading = 0);
+/// `graded_arcs`: only the bottom quarter has N/4 uniform segments, the size law sets the
+/// others' (a mesh fine only near the contact side, scene 4).
+Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading = 0,
+          bool graded_arcs = false);
 
 struct RingOptions {
   int layers = 0;                     ///< nodes through the thickness; 0 = default_ring_layers(N)
@@ -38,10 +41,18 @@ int default_ring_layers(int N);
 Mesh ring(const Eigen::Vector2d& center, double r_in, double r_out, int N,
           const RingOptions& options = {});
 
-/// Structured [0, lx] x [0, ly], nx x ny cells, each cut along a diagonal that alternates
-/// from cell to cell. refs = {bottom, right, top, left}; the corners get the vertex_ref of the
-/// bottom or top side.
-Mesh rectangle(double lx, double ly, int nx, int ny, std::array<int, 4> refs = {3, 4, 2, 1});
+/// How a rectangle's cells are cut: `alternating`, two triangles along a diagonal that alternates
+/// from cell to cell; `union_jack`, four triangles around a node at the cell's centre (the
+/// thesis's scene 5 mesh, ALGORITHMS.md 0.2: 64 x 12 cells, 3072 triangles). A union-jack mesh
+/// refined by halving nx and ny is nested in the coarse one (each coarse edge is a union of fine
+/// edges), so coarse P1 fields prolongate onto it exactly.
+enum class CellPattern { alternating, union_jack };
+
+/// Structured [0, lx] x [0, ly], nx x ny cells cut by `pattern`. refs = {bottom, right, top,
+/// left}; the corners get the vertex_ref of the bottom or top side. Nodes: the (nx + 1)(ny + 1)
+/// corners row by row from the bottom, then (union jack) the nx ny centres row by row.
+Mesh rectangle(double lx, double ly, int nx, int ny, std::array<int, 4> refs = {3, 4, 2, 1},
+               CellPattern pattern = CellPattern::alternating);
 /// rectangle(l, l, n, n, refs).
 Mesh square(double l, int n, std::array<int, 4> refs = {3, 4, 2, 1});
 
