@@ -1,7 +1,13 @@
 #include "core/stage.hpp"
 
+#include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/provenance.hpp"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <exception>
 #include <iostream>
@@ -40,19 +46,32 @@ StageArgs parse_stage_args(int argc, char** argv, const std::string& stage) {
   std::error_code error;
   std::filesystem::create_directories(args.outdir, error);
   SIG_VERIFY(!error, args.outdir.string() << ": cannot create output folder: " << error.message());
+  // What a killed stage left: its temporaries would otherwise pile up in OUTDIR forever.
+  for (const std::string& name : remove_stale_temporaries(args.outdir))
+    log_info("removed " + (args.outdir / name).string() + ", left by a stage that was killed");
+  open_case(args.outdir);
   return args;
 }
 
 int run_stage(const std::string& stage, const std::function<void()>& body) {
+  int status = 1;
+  close_case();
   try {
     body();
-    return 0;
+    // What the stage printed is a result too (sig-dump > file): a failed write is an error.
+    std::cout.flush();
+    errno = 0;
+    SIG_VERIFY(std::cout.good() && std::fflush(stdout) == 0 && !std::ferror(stdout),
+               "cannot write to the standard output"
+                   << (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()));
+    status = 0;
   } catch (const std::exception& e) {
     std::cerr << program_name(stage) << ": error: " << e.what() << std::endl;
   } catch (...) {
     std::cerr << program_name(stage) << ": error: unknown exception" << std::endl;
   }
-  return 1;
+  close_case();
+  return status;
 }
 
 std::string ds_date() {

@@ -1,4 +1,6 @@
+#include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/provenance.hpp"
 #include "fortran_records.hpp"
 #include "mesh/nopo.hpp"
 #include "nop5_walk.hpp"
@@ -139,6 +141,17 @@ NopoFile read_nopo_file(const std::filesystem::path& path) {
   SIG_VERIFY(text_of_words(arrays.raw(), int_bytes, 28, 1) == "NOPO",
              file << ": NOP0 word 29 is '" << text_of_words(arrays.raw(), int_bytes, 28, 1)
                   << "', not 'NOPO'");
+  // Integrity, before the words are trusted: the fingerprint sig-mesh wrote (mesh/nopo.hpp).
+  result.fingerprint = nopo_fingerprint(records);
+  const std::string& creator = result.text.creator;
+  if (creator.size() == 24 && creator.starts_with("sig-") &&
+      creator.find_first_not_of("0123456789abcdef", 8) == std::string::npos)
+    SIG_VERIFY(creator.substr(8) == fingerprint_text(result.fingerprint),
+               file << ": the mesh (NOP2, NOP4, NOP5) does not match the fingerprint "
+                    << creator.substr(8) << " written with it (NOP0 creator; now "
+                    << fingerprint_text(result.fingerprint)
+                    << "): the file was changed or damaged after " << creator.substr(0, 8)
+                    << " wrote it; rerun sig-mesh");
   if (l1 > 0) {
     arrays.ints("NOP1", l1);
     arrays.skip_records(nop0[31], "the NTACM arrays"); // unverified layout (MODULEF.md 7)
@@ -168,6 +181,8 @@ NopoFile read_nopo_file(const std::filesystem::path& path) {
   // 4. Elements and references.
   result.mesh = walk_nop5(nop5, result.nop2, std::move(nop4), file);
   check_mesh(result.mesh, file);
+
+  note_case_input("NOPO", path, result.fingerprint, {}); // a stage's case.nopo: an input
   return result;
 }
 
