@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
     const sig::TimeParameters time =
         sig::time_parameters(datafile.require("TIME"), contact != nullptr);
     const sig::Card* solver_card = datafile.find("SOLVER");
+    sig::warn_unused_solver_fields(solver_card);
     const std::string backend =
         solver_card ? solver_card->choice("linear", {"cholmod", "umfpack", "mumps"}, "cholmod")
                     : "cholmod";

@@ -31,4 +31,8 @@ struct TimeParameters {
 /// output_every >= 1, mass=emm only when the deck has a CONTACT card (`has_contact`).
 TimeParameters time_parameters(const Card& time, bool has_contact);
 
+/// The SOLVER fields a TIME deck uses (linear=, maxit=); a warning names each other field given
+/// (method=, gamma= ... belong to sig-solve): a parameter silently ignored is a trap.
+void warn_unused_solver_fields(const Card* solver);
+
 } // namespace sig
