@@ -14,6 +14,7 @@
 // is a result: the stage exits 0 and the DS records converged = 0 with the iteration history ("Nv"
 // in the tables).
 #include "assembly/initial.hpp"
+#include "assembly/rigid_motion.hpp"
 #include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
@@ -94,6 +95,8 @@ int main(int argc, char** argv) {
     // 4. Solve, from the INITIAL displacement (the first iterate of the contact Newton).
     sig::StaticSolution solution;
     if (method == "linear") {
+      sig::verify_rigid_motions_held(sig::read_nopo(args.ds_path("nopo")), system.dirichlet_dofs,
+                                     datafile.path);
       solution = sig::solve_linear_elasticity(system, backend);
     } else {
       const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));
