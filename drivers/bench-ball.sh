@@ -56,11 +56,11 @@ T=$("$python" -c "print($steps * 1e-3)")
 # deck OUTPUT CONTACT_FIELDS MASS: ball.dat on the thesis mesh, 2 kept states, no VTK. An empty
 # CONTACT_FIELDS drops the CONTACT card: the contact-free reference.
 deck() {
-  local contact_line="CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 $2"
-  [ -n "$2" ] || contact_line=""
-  sed -E -e "s|^MESH .*|MESH file=$out/base/thesis.msh|" -e "s|^CONTACT .*|$contact_line|" \
-    -e "s|^TIME .*|TIME scheme=midpoint T=$T k=1e-3 output_every=$steps mass=$3|" \
-    -e "s|^OUTPUT .*|OUTPUT vtk=no|" "$template" >"$1"
+  local contact=(--replace-card CONTACT "CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 $2")
+  [ -n "$2" ] || contact=(--drop-card CONTACT)
+  deck_variant "$template" "$1" --replace-card MESH "MESH file=$out/base/thesis.msh" "${contact[@]}" \
+    --replace-card TIME "TIME scheme=midpoint T=$T k=1e-3 output_every=$steps mass=$3" \
+    --replace-card OUTPUT "OUTPUT vtk=no"
 }
 
 deck "$out/base/ball.dat" "" consistent

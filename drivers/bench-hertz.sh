@@ -15,7 +15,7 @@
 # wall time of the sig-solve process; the floor, one analyze + factorization + solve of the
 # stiffness matrix of the same mesh by MUMPS and by CHOLMOD, the faster taken (the deck without
 # its contact cards, Gamma3 held by DIRICHLET so that the matrix is nonsingular, `SOLVER
-# method=linear`); the thesis's CPU seconds (Table 7.3, postproc/thesis_values_7a.csv) where it
+# method=linear`); the thesis's CPU seconds (Table 7.3, postproc/thesis_values.csv) where it
 # has this N; GetFEM 5.4 when /usr/bin/python3 can import getfem (postproc/getfem_hertz.py,
 # postproc/getfem_friction.py: the same mesh and tolerance, median of 3 timed solves).
 # The runs go round robin (run k of every method before run k + 1), so that load bursts on the
@@ -101,7 +101,7 @@ source "$root/drivers/lib/hertz_deck.sh"
 write_deck() {
   local problem=$1 deck=$2
   hertz_deck "${template[$problem]}" "$deck" "$n" "$grading" "${@:3}"
-  sed -i -E "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/" "$deck"
+  deck_variant "$deck" "$deck" --set OUTPUT.vtk=no
 }
 
 # The runs: NAME DIR, in the order of one round.
@@ -130,9 +130,7 @@ for problem in "${problems[@]}"; do
     dir=$out/$problem/floor_$backend
     mkdir -p "$dir"
     link_ds ../floor "$dir" nopo mili tae
-    sed -E "/^[[:space:]]*SOLVER[[:space:]]/ s/linear=[^[:space:]]+/linear=$backend/" \
-      "$floor/hertz.dat" >"$dir/hertz.dat"
-    grep -qE "linear=$backend" "$dir/hertz.dat" || die "$floor/hertz.dat: no SOLVER linear= to replace"
+    deck_variant "$floor/hertz.dat" "$dir/hertz.dat" --set "SOLVER.linear=$backend"
     runs+=("${problem}_floor_$backend $dir")
   done
 done
@@ -173,7 +171,7 @@ fi
 {
   echo "command: $invocation"
   echo "outdir: $out"
-  echo "grading: $(sed -nE '/^[[:space:]]*MESH[[:space:]]/ s/.*[[:space:]]grading=([^[:space:]]+).*/\1/p' "$out/hertz/base/hertz.dat")"
+  echo "grading: $(deck_value "$out/hertz/base/hertz.dat" MESH grading)"
   echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
@@ -182,11 +180,13 @@ fi
   echo "getfem_coulomb: ${getfem_json[coulomb]:-}"
 } >"$out/command.txt"
 
-"$python" - "$out" "$n" "$root/postproc/thesis_values_7a.csv" <<'EOF'
+"$python" - "$out" "$n" "$root/postproc" <<'EOF'
 import csv, json, statistics, sys
 from pathlib import Path
 
-out, n, thesis_csv = Path(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+out, n = Path(sys.argv[1]), int(sys.argv[2])
+sys.path.insert(0, sys.argv[3])
+from sigreport import load_thesis
 info = dict(l.split(": ", 1) for l in (out / "command.txt").read_text().splitlines() if ": " in l)
 PROBLEMS = {
     "hertz": ("Frictionless Hertz (scene 7a, `datafiles/scene7a/hertz.dat`)",
@@ -209,11 +209,9 @@ with open(out / "times.tsv") as f:
             "names": [p for p in t if p != "assemble"],
             "solve": float(t.get("solve", 0.0)),
             "iterations": s["iterations"], "converged": s["converged"], "dofs": s["dofs"]})
-thesis = {}
-with open(thesis_csv) as f:
-    for row in csv.reader(line for line in f if not line.startswith("#")):
-        if len(row) >= 4 and row[0] == "7a" and row[1].startswith("cpu_") and row[2] == f"N={n}":
-            thesis[row[1][4:]] = float(row[3])
+t7a = load_thesis().scene("7a")
+thesis = {m: t7a.number(f"cpu_{m}", f"N={n}") for m in ("pdas", "projection", "alm", "penalty")}
+thesis = {m: v for m, v in thesis.items() if v is not None}
 med = {name: {k: statistics.median(r[k] for r in rs) for k in ("wall", "phases", "solve")}
        for name, rs in runs.items()}
 

@@ -78,10 +78,8 @@ declare -A value=([pdas]=1e3 [alm]=1e3 [projection]=1e4)
 # deck OUTPUT METHOD FIELD VALUE: the template at N, the SOLVER card's method and parameter
 # replaced (any r=, gamma=, c= of the template dropped), no VTK output (timing only).
 deck() {
-  sed -E -e "/^[[:space:]]*MESH[[:space:]]/ s/N=[0-9]+/N=$n/" \
-    -e "/^[[:space:]]*SOLVER[[:space:]]/ { s/method=[a-z]+/method=$2/; s/ (gamma|c|r)=[^[:space:]]+//g; s/\$/ $3=$4/ }" \
-    -e "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[a-z]+/vtk=no/" \
-    "$template" >"$1"
+  deck_variant "$template" "$1" --set "MESH.N=$n" --drop SOLVER.gamma --drop SOLVER.c \
+    --drop SOLVER.r --set "SOLVER.method=$2" --set "SOLVER.$3=$4" --set OUTPUT.vtk=no
 }
 
 mkdir -p "$out"

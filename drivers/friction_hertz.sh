@@ -19,7 +19,8 @@
 #                                   node touches and holds nothing sideways: shown failing)
 #   tresca_pdas_1e2 at N = 256:     the Tresca law with threshold 1 GPa instead of Coulomb
 # Every run starts from the rigid shift u = (0, -h^2 / R), h = pi R / N (the INITIAL card).
-# Then postproc/friction_hertz_report.py OUTDIR writes OUTDIR/report.md and its PNGs.
+# Then postproc/friction_hertz_report.py OUTDIR writes OUTDIR/report.md, its PNGs and
+# OUTDIR/scene.json.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
@@ -59,15 +60,14 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 source "$root/drivers/lib/hertz_deck.sh"
 
-grep -qiE '^[[:space:]]*INITIAL[[:space:]](.*[[:space:]])?u=' "$template" ||
-  die "$template: no INITIAL u= card (the rigid start shift)"
+deck_value "$template" INITIAL u >/dev/null || die "$template: no INITIAL u= card (the rigid start shift)"
 
 # write_deck DECK N [METHOD VALUE [EDIT...]]: the template for mesh N with its rigid shift, the
-# method and parameter (hertz_deck), and further sed edits.
+# method and parameter (hertz_deck), and further deck edits (deck_variant's --set, --drop, ...).
 write_deck() {
   local deck=$1 n=$2 method=${3:-} value=${4:-}
   hertz_deck "$template" "$deck" "$n" "" "$method" "$value"
-  [ $# -le 4 ] || sed -i -E "${@:5}" "$deck"
+  [ $# -le 4 ] || deck_variant "$deck" "$deck" "${@:5}"
 }
 
 failed=()
@@ -79,6 +79,7 @@ base() {
   mkdir -p "$dir"
   write_deck "$dir/hertz.dat" "$n"
   build_base "$dir/hertz.dat" "$dir" "the base case of N = $n"
+  progress_step "${dir#"$out"/}"
 }
 
 # variant N NAME METHOD VALUE [EDIT...]: sig-solve and sig-post in OUTDIR/N<N>/NAME/ on the base
@@ -96,6 +97,7 @@ variant() {
   fi
   run_stage solve "$dir/hertz.dat" "$dir" && run_stage post "$dir/hertz.dat" "$dir" ||
     failed+=("$dir")
+  progress_step "${dir#"$out"/}"
 }
 
 {
@@ -107,6 +109,15 @@ variant() {
 cp "$template" "$out/hertz.template.dat"
 
 rm -rf "$out"/N[0-9]*
+# Runs: per mesh a base and the 4 methods, the reference's base and pdas, and at N = sweep_n
+# each swept value with and without the search, the run from zero and Tresca.
+runs=$((5 * ${#meshes[@]} + 2 + 2))
+for method in "${!sweep[@]}"; do
+  for value in ${sweep[$method]}; do
+    runs=$((runs + 2))
+  done
+done
+progress_begin $runs
 start=$SECONDS
 for n in "${meshes[@]}" "$reference"; do
   t0=$SECONDS
@@ -125,21 +136,20 @@ for n in "${meshes[@]}" "$reference"; do
       same_as_auto=search
       [ "$method" != penalty ] || same_as_auto=full
       for value in ${sweep[$method]}; do
-        variant "$n" "${method}_${value}_search" "$method" "$value" \
-          -e "/^[[:space:]]*SOLVER[[:space:]]/ s/\$/ search=yes/"
-        variant "$n" "${method}_${value}_full" "$method" "$value" \
-          -e "/^[[:space:]]*SOLVER[[:space:]]/ s/\$/ search=no/"
+        variant "$n" "${method}_${value}_search" "$method" "$value" --set SOLVER.search=yes
+        variant "$n" "${method}_${value}_full" "$method" "$value" --set SOLVER.search=no
         [ "$value" = "${default[$method]}" ] ||
           ln -s "${method}_${value}_$same_as_auto" "$out/N$n/${method}_$value"
       done
     done
-    variant "$n" pdas_1e2_from_zero pdas 1e2 -e "/^[[:space:]]*INITIAL[[:space:]]/ d"
-    variant "$n" tresca_pdas_1e2 pdas 1e2 \
-      -e "/^[[:space:]]*FRICTION[[:space:]]/ s/law=coulomb mu=[^[:space:]]+/law=tresca threshold=1/"
+    variant "$n" pdas_1e2_from_zero pdas 1e2 --drop-card INITIAL
+    variant "$n" tresca_pdas_1e2 pdas 1e2 --set FRICTION.law=tresca --drop FRICTION.mu \
+      --set FRICTION.threshold=1
   fi
   echo "friction_hertz.sh: N = $n done ($((SECONDS - t0)) s)"
 done
 echo "friction_hertz.sh: all runs done in $((SECONDS - start)) s"
+record_seconds $start
 
 "$python" "$root/postproc/friction_hertz_report.py" "$out"
 if [ ${#failed[@]} -gt 0 ]; then

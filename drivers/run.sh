@@ -1,9 +1,21 @@
 #!/usr/bin/env bash
-# drivers/run.sh: install what is missing, build, run the default scene (Hertz contact, scene 7a,
-# quick variant) and say where its report and ParaView files are.
+# drivers/run.sh [--all]: install what is missing, build, run the default scene (Hertz contact,
+# scene 7a, quick variant) and say where its report and ParaView files are.
+# --all: every scene's quick variant instead (drivers/scenes.sh) and the index of them all,
+# out/index.html and out/index.md.
 set -euo pipefail
+case ${1:-} in
+  "" | --all) ;;
+  *)
+    echo "usage: drivers/run.sh [--all]" >&2
+    exit 2
+    ;;
+esac
 source "$(dirname "$0")/setup.sh"
 cd "$SIG_ROOT"
+if [ "${1:-}" = --all ]; then
+  exec "$SIG_ROOT/drivers/scenes.sh" -o "$SIG_ROOT/out"
+fi
 "$SIG_ROOT/drivers/scene7a.sh" --quick
 echo
 echo "Report:          $SIG_ROOT/out/scene7a/report.md"

@@ -21,7 +21,7 @@
 # adding N = 64) and on the thesis's uniform mesh (MESH grading=0, OUTDIR/error/N<N>/). Only the
 # uniform mesh refines everywhere with N (the graded one refines Gamma3 but keeps its interior
 # growth law), so only it is an h-refinement in the sense of Fig 7.10.
-# Then postproc/scene7a_report.py OUTDIR writes OUTDIR/report.md and its PNGs.
+# Then postproc/scene7a_report.py OUTDIR writes OUTDIR/report.md, its PNGs and OUTDIR/scene.json.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
@@ -79,6 +79,7 @@ base() {
   mkdir -p "$dir"
   write_deck "$dir/hertz.dat" "$n" "$grading"
   build_base "$dir/hertz.dat" "$dir" "the base case of N = $n"
+  progress_step "${dir#"$out"/}"
 }
 
 # variant FOLDER N GRADING METHOD VALUE: sig-solve and sig-post in FOLDER/N<N>/<method>_<value>/
@@ -92,6 +93,7 @@ variant() {
   write_deck "$dir/hertz.dat" "$n" "$grading" "$method" "$value"
   run_stage solve "$dir/hertz.dat" "$dir" && run_stage post "$dir/hertz.dat" "$dir" ||
     failed+=("$dir")
+  progress_step "${dir#"$out"/}"
 }
 
 {
@@ -102,6 +104,13 @@ variant() {
 cp "$template" "$out/hertz.template.dat"
 
 rm -rf "$out"/N[0-9]* "$out/error"
+# Runs: per mesh a base and 20 variants; per mesh of the error study a uniform base and variant,
+# and the graded pair where the sweep lacks that mesh.
+runs=$((21 * ${#meshes[@]} + 2 * ${#error_meshes[@]}))
+for n in "${error_meshes[@]}"; do
+  [[ " ${meshes[*]} " == *" $n "* ]] || runs=$((runs + 2))
+done
+progress_begin $runs
 start=$SECONDS
 for n in "${meshes[@]}"; do
   t0=$SECONDS
@@ -128,6 +137,7 @@ for n in "${error_meshes[@]}"; do
   echo "scene7a.sh: N = $n (error study) done ($((SECONDS - t0)) s)"
 done
 echo "scene7a.sh: all runs done in $((SECONDS - start)) s"
+record_seconds $start
 
 "$python" "$root/postproc/scene7a_report.py" "$out"
 if [ ${#failed[@]} -gt 0 ]; then

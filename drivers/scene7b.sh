@@ -25,7 +25,8 @@
 # finer ring, N = 2 x (largest N) (512 by default, 256 quick, 1024 full), whose Gamma3 nodes
 # include those of every coarser ring (the grid is halved exactly): error of the vertical reaction
 # on AB and of the final pressure at the shared nodes, charted against the solve time.
-# Then postproc/scene7b_report.py OUTDIR writes OUTDIR/report.md and its PNG charts.
+# Then postproc/scene7b_report.py OUTDIR writes OUTDIR/report.md, its PNG charts and
+# OUTDIR/scene.json (the scene index entry; OUTDIR/command.txt says how the runs were made).
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
@@ -42,6 +43,7 @@ Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /us
 EOF
 }
 
+invocation="drivers/scene7b.sh${*:+ $*}"
 out=$root/out/scene7b
 sizes=(128 256)
 while [ $# -gt 0 ]; do
@@ -62,15 +64,22 @@ require_charts
 # deck TEMPLATE OUTPUT N METHOD FIELD VALUE VTK: the template with MESH N= and the SOLVER card's
 # method and parameter replaced (any r=, gamma=, c= of the template dropped), OUTPUT vtk=VTK.
 deck() {
-  sed -E -e "/^[[:space:]]*MESH[[:space:]]/ s/N=[0-9]+/N=$3/" \
-    -e "/^[[:space:]]*SOLVER[[:space:]]/ { s/method=[a-z]+/method=$4/; s/ (gamma|c|r)=[^[:space:]]+//g; s/\$/ $5=$6/ }" \
-    -e "/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[a-z]+/vtk=$7/" \
-    "$1" >"$2"
+  deck_variant "$1" "$2" --set "MESH.N=$3" --drop SOLVER.gamma --drop SOLVER.c --drop SOLVER.r \
+    --set "SOLVER.method=$4" --set "SOLVER.$5=$6" --set "OUTPUT.vtk=$7"
 }
 
 declare -A field=([pdas]=gamma [projection]=c [alm]=r)
 declare -A values=([pdas]="1 10 1e2 1e3 1e4 1e5 1e6" [projection]="1 10 1e2 1e3 1e4 1e5 1e6" [alm]="1e3")
 rm -rf "$out"
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+{
+  provenance
+  echo "sizes: ${sizes[*]}"
+} >"$out/command.txt"
+start=$SECONDS
+# Runs: per mesh a base, 7 pdas, 7 projection and 1 alm; then the reference.
+progress_begin $((16 * ${#sizes[@]} + 1))
 for n in "${sizes[@]}"; do
   base=$out/N$n/base
   mkdir -p "$base"
@@ -79,6 +88,7 @@ for n in "${sizes[@]}"; do
     "$bin/sig-$stage" "$base/ring.dat" -o "$base" >"$base/$stage.log" 2>&1 ||
       die "sig-$stage failed at N = $n (see $base/$stage.log)"
   done
+  progress_step "N$n/base"
   for method in pdas alm projection; do
     for value in ${values[$method]}; do
       if [ "$method" = alm ]; then dir=$out/N$n/alm; else dir=$out/N$n/${method}_$value; fi
@@ -92,6 +102,7 @@ for n in "${sizes[@]}"; do
       "$bin/sig-post" "$dir/ring.dat" -o "$dir" >"$dir/post.log" 2>&1 ||
         die "sig-post failed for N = $n $method $value (see $dir/post.log)"
       echo "N=$n $method ${field[$method]}=$value: $(grep -o '[0-9/]* load steps.*' "$dir/solve.log" | sed 's/, solve.*//')"
+      progress_step "${dir#"$out"/}"
     done
   done
 done
@@ -106,4 +117,6 @@ for stage in mesh material contact assemble solve post; do
     die "sig-$stage failed for the reference N = $n_ref (see $reference/$stage.log)"
 done
 echo "reference N=$n_ref pdas gamma=1e4: $(grep -o '[0-9/]* load steps.*' "$reference/solve.log" | sed 's/, solve.*//')"
+progress_step reference
+record_seconds $start
 "$python" "$root/postproc/scene7b_report.py" "$out"

@@ -91,12 +91,11 @@ strategy_fields() {
 write_deck() {
   local deck=$1 msh=$2 plane=$3 method=$4 T=$5 k=$6 every=$7 vtk=$8 fields
   fields=$(strategy_fields "$method" "${9:-}")
-  sed -E -e "s|^MESH .*|MESH file=$msh|" \
-    -e "s|^CONTACT .*|CONTACT ref=3 obstacle=plane point=0,$plane normal=0,1 ${fields%|*}|" \
-    -e "s|^TIME .*|TIME scheme=midpoint T=$T k=$k output_every=$every mass=${fields#*|}|" \
-    -e "s|^TITLE .*|TITLE Scene 8a: elastic ball impact, $method, k = $k|" \
-    -e "s|^OUTPUT .*|OUTPUT vtk=$vtk|" \
-    "$template" >"$deck"
+  deck_variant "$template" "$deck" --replace-card MESH "MESH file=$msh" \
+    --replace-card CONTACT "CONTACT ref=3 obstacle=plane point=0,$plane normal=0,1 ${fields%|*}" \
+    --replace-card TIME "TIME scheme=midpoint T=$T k=$k output_every=$every mass=${fields#*|}" \
+    --replace-card TITLE "TITLE Scene 8a: elastic ball impact, $method, k = $k" \
+    --replace-card OUTPUT "OUTPUT vtk=$vtk"
 }
 
 # base NAME MSH: sig-mesh, sig-material, sig-assemble of the ball on MSH in OUTDIR/NAME/base.
@@ -107,6 +106,7 @@ base() {
   for stage in mesh material assemble; do
     run_stage "$stage" "$dir/ball.dat" "$dir" || die "cannot build the base case of mesh $1"
   done
+  progress_step "$1/base"
 }
 
 # run_stage STAGE DECK DIR: one stage, its output in DIR/<stage>.log and shown on failure.
@@ -152,6 +152,7 @@ run() {
   run_stage post "$dir/ball.dat" "$dir" || failed+=("$dir")
   echo "scene8a.sh: ${dir#"$out"/}: $(cat "$dir/wall.txt") s," \
     "$(grep -m1 -o "[0-9]*/[0-9]* steps.*" "$dir/march.log" || true)"
+  progress_step "${dir#"$out"/}"
 }
 
 {
@@ -175,6 +176,10 @@ if [ "$impact_mesh" = thesis ]; then
     >"$msh_dir/thesis.log" 2>&1 || die "gmsh failed (see $msh_dir/thesis.log)"
 fi
 
+# Runs: the bases, every method at the impact, Fig 8.5 (4 gaps + 1), the sweep, Fig 8.2.
+runs=$((${#methods[@]} + ${#fig85_gaps[@]} + 1 + ${#sweep_k[@]} * ${#methods[@]} + 1 + 1))
+[ "$impact_mesh" = thesis ] && runs=$((runs + 1))
+progress_begin $runs
 start=$SECONDS
 base deck "$msh_dir/deck.msh"
 [ "$impact_mesh" = thesis ] && base thesis "$msh_dir/thesis.msh"
@@ -208,6 +213,7 @@ done
 # 5. Fig 8.2 for ParaView: every state of IPM + EMM across the impact, with the contact pressure.
 keep=yes run "$out/fig82/ipm-emm" deck "$window_plane" ipm-emm 0.08 1e-3
 echo "scene8a.sh: all runs done in $((SECONDS - start)) s"
+record_seconds $start
 
 "$python" "$root/postproc/scene8a_report.py" "$out"
 if [ ${#failed[@]} -gt 0 ]; then

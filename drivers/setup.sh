@@ -9,11 +9,12 @@ SIG_BUILD=${SIG_BUILD:-$SIG_ROOT/build}
 SIG_BIN=$SIG_BUILD/bin
 export SIG_ROOT SIG_BUILD SIG_BIN
 
-# Build and run dependencies; FreeFem++, ParaView (with xvfb) and GetFEM serve tests and
-# comparisons that skip when absent, but we install them so a fresh machine runs everything.
+# Build and run dependencies; FreeFem++, ParaView (with xvfb), GetFEM, meshio and Chromium (the
+# scene index in a browser) serve tests and comparisons that skip when absent, but we install
+# them so a fresh machine runs everything.
 packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libmumps-seq-dev libmetis-dev
   libopenblas-dev libvtk9-dev libgtest-dev gmsh python3 python3-numpy python3-matplotlib
-  freefem++ paraview xvfb python3-getfem)
+  python3-pytest freefem++ paraview xvfb python3-getfem python3-meshio chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -4,23 +4,23 @@
     postproc/friction_hertz_report.py OUTDIR
 
 OUTDIR is what drivers/friction_hertz.sh wrote: command.txt, N<N>/<run>/ with hertz.dat (the
-run's deck), summary.json and contact.csv (sig-post). Writes OUTDIR/report.md and its PNGs. Every
-number is read from those files or computed here from the deck's data: the Hertz pressure (7.38)
-and Cattaneo and Mindlin's stick zone c = b sqrt(1 - Q / (mu P)).
+run's deck), summary.json and contact.csv (sig-post). Writes OUTDIR/report.md, its PNGs and
+OUTDIR/scene.json (the scene index entry). Every number is read from those files or computed here
+from the deck's data: the Hertz pressure (7.38) and Cattaneo and Mindlin's stick zone
+c = b sqrt(1 - Q / (mu P)). Built on the report library postproc/sigreport.
 """
 import argparse
 import csv
-import json
 import math
-import sys
 from pathlib import Path
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
-import numpy as np  # noqa: E402
-from getfem_common import deck_cards  # noqa: E402  (the deck reader the postproc scripts share)
+from sigreport import (Checks, Deck, Point, ReportError, Series, Table, fmt, main_guard, pyplot,
+                       read_command, read_summary, run_cell, solve_seconds, speed_accuracy_chart,
+                       write_scene_json)
+
+plt = pyplot()
 
 METHODS = ("pdas", "alm", "projection", "penalty")
 # The runs that stand for each method (drivers/friction_hertz.sh): parameters that converge on a
@@ -30,29 +30,18 @@ PARAMETER = {"pdas": "gamma", "alm": "r", "projection": "c", "penalty": "r"}
 LABEL = {"pdas": "PDAS", "alm": "ALM", "projection": "projection", "penalty": "penalty"}
 COLOR = {"pdas": "C0", "alm": "C2", "projection": "C1", "penalty": "C3"}
 MARKER = {"pdas": "o", "alm": "^", "projection": "s", "penalty": "D"}
-EARLIER_STAGE_PHASES = ("assemble",)
 # Checks: forces of the exact methods agree to this share of their maximum (issue 10's GetFEM
 # tolerance), the equilibrium and the Coulomb cone hold to AGREE of the loads.
 AGREE = 1e-6
 CONE = 1e-6
 
 
-def fail(message):
-    sys.exit(f"friction_hertz_report.py: error: {message}")
-
-
 # ---------------------------------------------------------------------------------------------
 # Reading the files
 
 
-def read_command(out):
-    path = out / "command.txt"
-    if not path.is_file():
-        fail(f"{path} is missing: run drivers/friction_hertz.sh first")
-    info = dict(line.split(": ", 1) for line in path.read_text().splitlines() if ": " in line)
-    for key in ("command", "meshes", "reference", "sweep_n"):
-        if key not in info:
-            fail(f"{path}: no '{key}:' line")
+def read_scene_command(out):
+    info = read_command(out, required=("command", "meshes", "reference", "sweep_n"))
     info["meshes"] = [int(n) for n in info["meshes"].split()]
     info["reference"] = int(info["reference"])
     info["sweep_n"] = int(info["sweep_n"])
@@ -62,18 +51,14 @@ def read_command(out):
 class Data:
     """The deck's loads and material, the Hertz pressure and Cattaneo and Mindlin's traction."""
 
-    def __init__(self, deck):
-        cards = deck_cards(deck)
-        try:
-            self.R = float(cards["MESH"]["r"])
-            self.q, minus_p = (float(v) for v in cards["TRACTION"]["f"].split(","))
-            self.p = -minus_p
-            self.E = float(cards["MATERIAL"]["e"])
-            self.nu = float(cards["MATERIAL"]["nu"])
-            self.mu = float(cards["FRICTION"]["mu"])
-        except (KeyError, ValueError) as e:
-            fail(f"{deck}: cannot read R, f, E, nu, mu from the MESH, TRACTION, MATERIAL, FRICTION "
-                 f"cards ({e})")
+    def __init__(self, path):
+        deck = Deck.read(path)
+        self.R = deck.number("MESH", "R")
+        self.q, minus_p = deck.numbers("TRACTION", "f")
+        self.p = -minus_p
+        self.E = deck.number("MATERIAL", "E")
+        self.nu = deck.number("MATERIAL", "nu")
+        self.mu = deck.number("FRICTION", "mu")
         self.P, self.Q = 2 * self.R * self.p, 2 * self.R * self.q  # per unit thickness
         self.b = 2 * math.sqrt(2 * self.R**2 * self.p * (1 - self.nu**2) / (self.E * math.pi))
         self.p0 = 4 * self.R * self.p / (math.pi * self.b)
@@ -95,7 +80,7 @@ def read_contact(path):
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     if not rows:
-        fail(f"{path} has no rows")
+        raise ReportError(f"{path} has no rows")
     columns = ("x1", "multiplier", "pressure", "tangential_multiplier", "tangential_pressure",
                "slip")
     try:
@@ -103,7 +88,7 @@ def read_contact(path):
         c["normal_status"] = np.array([r["normal_status"] for r in rows])
         c["friction_status"] = np.array([r["friction_status"] for r in rows])
     except (KeyError, ValueError) as e:
-        fail(f"{path}: {e}")
+        raise ReportError(f"{path}: {e}")
     return c
 
 
@@ -113,11 +98,10 @@ def collect_runs(out, meshes):
         for d in sorted((out / f"N{n}").glob("*")):
             if d.name == "base" or not (d / "summary.json").is_file():
                 continue
-            s = json.loads((d / "summary.json").read_text())
+            s = read_summary(d, required=("converged", "iterations", "times"))
             run = {"n": n, "name": d.name, "dir": d, "summary": s, "converged": s["converged"],
                    "iterations": s["iterations"], "contact": read_contact(d / "contact.csv"),
-                   "seconds": sum(float(v) for k, v in s["times"].items()
-                                  if k not in EARLIER_STAGE_PHASES)}
+                   "seconds": solve_seconds(s)}
             method, _, value = d.name.partition("_")
             run["method"], run["value"] = method, value
             runs[(n, d.name)] = run
@@ -166,17 +150,12 @@ def shared_error(run, reference):
     return en, et
 
 
-def fmt(x, digits=4):
-    return "—" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{x:.{digits}g}"
-
-
 def table(header, rows):
-    return ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)] + [
-        "| " + " | ".join(str(v) for v in row) + " |" for row in rows]
+    return Table(header, rows).lines()
 
 
 def iterations_cell(run):
-    return str(run["iterations"]) if run["converged"] else f"Nv ({run['iterations']})"
+    return run_cell(run["converged"], run["iterations"], detail=run["iterations"])
 
 
 # ---------------------------------------------------------------------------------------------
@@ -239,7 +218,7 @@ def section_zones(runs, data, info, out):
         f"## Stick and slip zones against Cattaneo and Mindlin (PDAS, N = {n})", "",
         f"![tractions](tractions_N{n}.png)", "",
     ]
-    lines += table(["quantity", "ours", "analytic", "ours / analytic"], [
+    zones_table = Table(["quantity", "ours", "analytic", "ours / analytic"], [
         ["contact half-width a (nodes)", fmt(a), f"b = {fmt(data.b)}", fmt(a / data.b, 3)],
         ["contact centre", fmt(centre), "0", "—"],
         ["stick half-width (nodes)", fmt(stick_half), f"c = {fmt(data.c)}",
@@ -249,7 +228,8 @@ def section_zones(runs, data, info, out):
         ["stick zone centre", fmt(stick_centre), "0", "—"],
         ["max pressure", fmt(np.max(c["pressure"])), f"p0 = {fmt(data.p0)}",
          fmt(np.max(c["pressure"]) / data.p0, 3)],
-    ])
+    ], caption=f"Stick and slip zones against Cattaneo and Mindlin (PDAS, N = {n})")
+    lines += zones_table.lines()
     lines += [
         "",
         "How far the half disc can follow Cattaneo and Mindlin: their result is for two elastic "
@@ -291,15 +271,15 @@ def section_zones(runs, data, info, out):
     fig.tight_layout()
     fig.savefig(out / f"tractions_N{n}.png", dpi=120)
     plt.close(fig)
-    return lines
+    return lines, zones_table
 
 
-def section_agreement(runs, data, info):
+def section_agreement(runs, data, info, checks):
     lines = ["## The methods agree, and the laws hold", "",
-             f"Forces of each method against PDAS on the same mesh (max difference / max force), "
-             f"statuses compared node by node; the equilibrium of the loads (sum N = P, sum T = Q) "
-             f"and the Coulomb cone (|T| <= mu N, |T| = mu N and T along the slip on slipping "
-             f"nodes, no slip on sticking ones), relative to P.", ""]
+             "Forces of each method against PDAS on the same mesh (max difference / max force), "
+             "statuses compared node by node; the equilibrium of the loads (sum N = P, sum T = Q) "
+             "and the Coulomb cone (|T| <= mu N, |T| = mu N and T along the slip on slipping "
+             "nodes, no slip on sticking ones), relative to P.", ""]
     rows, ok = [], True
     for n in info["meshes"]:
         ref = runs.get((n, "pdas_1e2"))
@@ -327,6 +307,13 @@ def section_agreement(runs, data, info):
                 dn = dt = math.nan
                 same = None
                 verdict = "Nv"
+            what = ("agrees with PDAS; equilibrium and the Coulomb cone hold" if exact else
+                    "equilibrium and the Coulomb cone hold")
+            checks.add(f"N = {n}, {LABEL[method]}: {what}", None if verdict == "Nv" else good,
+                       detail=f"forces vs PDAS {fmt(dn, 2)} / {fmt(dt, 2)}, statuses equal "
+                              f"{same}, sum N - P {fmt(ch['normal'], 2)}, sum T - Q "
+                              f"{fmt(ch['tangential'], 2)}, max |T| - mu N {fmt(ch['cone'], 2)}"
+                       if verdict != "Nv" else "Nv")
             rows.append([n, LABEL[method], fmt(dn, 2), fmt(dt, 2), "—" if same is None else same,
                          fmt(ch["normal"], 2), fmt(ch["tangential"], 2), fmt(ch["cone"], 2),
                          fmt(ch["sliding"], 2), ch["wrong_way"], fmt(ch["stuck_slip"], 2), verdict])
@@ -381,7 +368,7 @@ def section_tresca(runs, info):
     if not run:
         return []
     c = run["contact"]
-    threshold = float(deck_cards(run["dir"] / "hertz.dat")["FRICTION"]["threshold"])
+    threshold = Deck.read(run["dir"] / "hertz.dat").number("FRICTION", "threshold")
     slipping = (c["friction_status"] == "S+") | (c["friction_status"] == "S-")
     bound = np.max(np.abs(np.abs(c["tangential_pressure"][slipping]) - threshold)) if slipping.any() else 0
     counts = run["summary"]["friction_status_counts"]
@@ -400,8 +387,8 @@ def section_speed_accuracy(runs, info, out):
              f"Gamma3 nodes shared with the reference (PDAS, N = {info['reference']}); Nv on the "
              f"top edge.", "", "![speed vs accuracy](speed_accuracy.png)", ""]
     rows = []
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    top = 1.0
+    series = {m: Series(LABEL[m], [], color=COLOR[m], marker=MARKER[m], line="", hollow=False,
+                        markersize=6) for m in METHODS}
     for run in sorted(runs.values(), key=lambda r: (r["n"], r["name"])):
         if run["n"] == info["reference"] or run["name"] in ("pdas_1e2_from_zero", "tresca_pdas_1e2") \
                 or run["name"].endswith(("_full", "_search")):
@@ -409,21 +396,15 @@ def section_speed_accuracy(runs, info, out):
         en, et = shared_error(run, ref) if (ref and run["converged"]) else (math.nan, math.nan)
         rows.append([run["n"], LABEL[run["method"]], f"{PARAMETER[run['method']]} = {run['value']}",
                      iterations_cell(run), f"{run['seconds']:.3f}", fmt(en, 3), fmt(et, 3)])
-        y = et if run["converged"] else top
-        ax.loglog(run["seconds"], y, MARKER[run["method"]], color=COLOR[run["method"]],
-                  mfc="none" if not run["converged"] else COLOR[run["method"]])
-        ax.annotate(f"{run['n']}", (run["seconds"], y), fontsize=6, xytext=(3, 3),
-                    textcoords="offset points")
-    for method in METHODS:
-        ax.plot([], [], MARKER[method], color=COLOR[method], label=LABEL[method])
-    ax.axhline(top, color="grey", lw=0.5)
-    ax.text(ax.get_xlim()[0], top, " Nv", va="bottom", fontsize=7, color="grey")
-    ax.set_xlabel("sig-solve time, s")
-    ax.set_ylabel("tangential traction error vs reference")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out / "speed_accuracy.png", dpi=120)
-    plt.close(fig)
+        label = (f"N={run['n']}" if run["value"] == DEFAULT[run["method"]] else
+                 f"{PARAMETER[run['method']]}={run['value']}")
+        series[run["method"]].points.append(
+            Point(run["seconds"], et if run["converged"] else None, label))
+    speed_accuracy_chart(out / "speed_accuracy.png", [s for s in series.values() if s.points],
+                         xlabel="sig-solve time, s",
+                         ylabel="tangential traction error vs reference",
+                         title="Frictional Hertz: speed against accuracy", figsize=(6.5, 4.5),
+                         legend_fontsize=7, label_fontsize=6)
     lines += table(["N", "method", "parameter", "iterations", "time s", "pressure error",
                     "tangential error"], rows)
     return lines + [""]
@@ -433,15 +414,21 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out", type=Path)
     out = parser.parse_args().out.resolve()
-    info = read_command(out)
+    info = read_scene_command(out)
     data = Data(out / "hertz.template.dat")
     runs = collect_runs(out, info["meshes"] + [info["reference"]])
     for key in [(n, "pdas_1e2") for n in info["meshes"] + [info["reference"]]]:
         if key not in runs:
-            fail(f"no run {key[1]} at N = {key[0]} in {out}")
-    agreement, ok = section_agreement(runs, data, info)
-    passed = ok and all(runs[(n, "pdas_1e2")]["converged"] for n in info["meshes"])
-    lines = ["# Frictional Hertz: a half disc held by Coulomb friction (issue 10)", "",
+            raise ReportError(f"no run {key[1]} at N = {key[0]} in {out}")
+    checks = Checks()
+    pdas_converged = all(runs[(n, "pdas_1e2")]["converged"] for n in info["meshes"])
+    checks.add("PDAS gamma = 1e2 converges on every mesh", pdas_converged,
+               detail=", ".join(f"N = {n}: {iterations_cell(runs[(n, 'pdas_1e2')])}"
+                                for n in info["meshes"]))
+    agreement, ok = section_agreement(runs, data, info, checks)
+    passed = ok and pdas_converged
+    title = "Frictional Hertz: a half disc held by Coulomb friction (issue 10)"
+    lines = [f"# {title}", "",
              f"Produced by `{info['command']}` on {info.get('date', '?')} ({info.get('host', '?')}, "
              f"revision {info.get('revision', '?')}); this report by "
              f"`postproc/friction_hertz_report.py {out}`. Deck: `datafiles/friction/hertz_coulomb.dat` "
@@ -450,15 +437,20 @@ def main():
              f"mesh; the exact methods agree to {AGREE:g}; equilibrium and the cone hold).", ""]
     lines += section_model(data)
     lines += section_runs(runs, info)
-    lines += section_zones(runs, data, info, out)
+    zones, key_table = section_zones(runs, data, info, out)
+    lines += zones
     lines += agreement
     lines += section_speed_accuracy(runs, info, out)
     lines += section_stability(runs, info)
     lines += section_tresca(runs, info)
     (out / "report.md").write_text("\n".join(lines) + "\n")
+    n = info["meshes"][-1]
+    write_scene_json(out, "friction_hertz", title, info, checks, key_table=key_table,
+                     charts={"speed_accuracy": "speed_accuracy.png",
+                             "tractions": f"tractions_N{n}.png"})
     print(f"{out / 'report.md'}: checks {'PASS' if passed else 'FAIL'}")
     return 0 if passed else 1
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main_guard(main)

@@ -1,21 +1,21 @@
-"""What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py, getfem_friction.py) share,
-and the deck reader friction_hertz_report.py uses too:
-reading a deck's cards, the version of Debian's python3-getfem, the gmsh half disc, the node
-coordinates of sig-mesh's case.nopo and the nodal weights of the contact nodes."""
+"""What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py, getfem_friction.py) share:
+a deck's cards (through the report library's deck reader), the version of Debian's
+python3-getfem, the gmsh half disc, the node coordinates of sig-mesh's case.nopo and the nodal
+weights of the contact nodes."""
 import math
 import subprocess
 
 import numpy as np
 
+from sigreport import Deck
+
 
 def deck_cards(path):
-    """{KEYWORD: {field: value}} of a datafile (first card of each keyword; names lower-case)."""
+    """{KEYWORD: {field: value}} of a datafile (sigreport.Deck; the first card of each keyword;
+    names and values lower case, as the stages read their choices case-insensitively)."""
     cards = {}
-    for line in path.read_text().splitlines():
-        words = line.split("#", 1)[0].split()
-        if words:
-            cards.setdefault(words[0].upper(),
-                             dict(w.lower().split("=", 1) for w in words[1:] if "=" in w))
+    for card in Deck.read(path).cards():
+        cards.setdefault(card.keyword, {k: v.lower() for k, v in card.fields.items()})
     return cards
 
 

@@ -5,27 +5,25 @@
 
 OUTDIR is what drivers/scene7a.sh wrote: command.txt (the meshes it ran), N<N>/<method>_<value>/
 with hertz.dat (the run's deck), summary.json and contact.csv (both from sig-post). Writes
-OUTDIR/report.md, OUTDIR/accuracy.csv and the PNGs the report shows. The thesis's values come
-from postproc/thesis_values_7a.csv (a copy of the scene 7a rows of
-../shared/reference/thesis_values.csv). Nothing is typed in by hand: every number in the report
-is read from those files or computed from them here (the Hertz profile (7.38) from the deck's
-R, f, E, nu).
+OUTDIR/report.md, OUTDIR/accuracy.csv, OUTDIR/scene.json (the scene index entry) and the PNGs
+the report shows. The thesis's values come from the scene 7a rows of postproc/thesis_values.csv.
+Nothing is typed in by hand: every number in the report is read from those files or computed from
+them here (the Hertz profile (7.38) from the deck's R, f, E, nu), with the report library
+postproc/sigreport (decks, thesis values, cells, checks, the speed-accuracy chart, scene.json).
 """
 import argparse
 import csv
-import json
 import math
-import sys
 from pathlib import Path
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
-import numpy as np  # noqa: E402
+from sigreport import (Checks, Deck, Point, ReportError, Series, Table, fmt, load_thesis,
+                       main_guard, markdown_table, ours_thesis, pct, pyplot, read_command,
+                       read_summary, run_cell, solve_seconds, speed_accuracy_chart,
+                       write_scene_json)
 
-HERE = Path(__file__).resolve().parent
-THESIS_CSV = HERE / "thesis_values_7a.csv"
+plt = pyplot()
 
 METHODS = ("pdas", "projection", "alm", "penalty")
 PARAMETER = {"pdas": "gamma", "projection": "c", "alm": "r", "penalty": "r"}
@@ -40,81 +38,37 @@ THESIS_RUN = {"pdas": "1e4", "projection": "1e4", "alm": "1e2"}
 LABEL = {"pdas": "PDAS", "projection": "projection", "alm": "ALM", "penalty": "penalty"}
 COLOR = {"pdas": "C0", "projection": "C1", "alm": "C2", "penalty": "C3"}
 MARKER = {"pdas": "o", "projection": "s", "alm": "^", "penalty": "D"}  # exact methods overlap
-# summary.json `times` merges the phases of every stage; these are not sig-solve's.
-EARLIER_STAGE_PHASES = ("assemble",)
 CHECK_N = (128, 256)  # meshes where Tables 7.1/7.2 are checked within +-1
 CHECK_MIN_PARAMETER = 100.0
 CHECK_PMAX = 0.02       # pmax within 2 % of p0 at N = 256
 CHECK_NODES = 1         # contact nodes at N = 256 within +-1 of the thesis's 29
 CHECK_SLOPE = (0.8, 1.2)
-
-
-def fail(message):
-    sys.exit(f"scene7a_report.py: error: {message}")
+# The thesis's contact nodes at iterations 1/3/5/8 (Figs 7.8/7.9): (item, key) of the CSV.
+NODES_BY_ITERATION = ("contact_nodes_by_iteration", "N=256;iterations 1/3/5/8")
 
 
 # ---------------------------------------------------------------------------------------------
 # Reading the files
 
 
-def read_command(out):
-    """command.txt of scene7a.sh: key: value lines (command, meshes, error_meshes, ...)."""
-    path = out / "command.txt"
-    if not path.is_file():
-        fail(f"{path} is missing: run drivers/scene7a.sh first")
-    info = {}
-    for line in path.read_text().splitlines():
-        key, _, value = line.partition(":")
-        info[key.strip()] = value.strip()
-    for key in ("command", "meshes", "error_meshes"):
-        if key not in info:
-            fail(f"{path}: no '{key}:' line")
+def read_scene_command(out):
+    """command.txt of scene7a.sh (command, meshes, error_meshes, ...), the mesh lists as ints."""
+    info = read_command(out, required=("command", "meshes", "error_meshes"))
     info["meshes"] = [int(n) for n in info["meshes"].split()]
     info["error_meshes"] = [int(n) for n in info["error_meshes"].split()]
     return info
-
-
-def read_deck(path):
-    """Cards of a datafile: keyword (upper case) -> {field (lower case): text}, first card only."""
-    cards = {}
-    for line in path.read_text().splitlines():
-        line = line.split("#", 1)[0].split()
-        if not line:
-            continue
-        fields = {}
-        for token in line[1:]:
-            name, eq, value = token.partition("=")
-            if eq:
-                fields[name.lower()] = value
-        cards.setdefault(line[0].upper(), fields)
-    return cards
-
-
-def read_thesis():
-    """(item, key) -> value text, from thesis_values_7a.csv."""
-    values = {}
-    with open(THESIS_CSV, newline="") as f:
-        for row in csv.reader(line for line in f if not line.startswith("#")):
-            if len(row) >= 4 and row[0] == "7a":
-                values[(row[1], row[2])] = row[3]
-    if not values:
-        fail(f"{THESIS_CSV} holds no scene 7a rows")
-    return values
 
 
 class Hertz:
     """The plane-strain Hertz contact (thesis (7.38)) for the deck's R, f, E, nu."""
 
     def __init__(self, deck_path):
-        cards = read_deck(deck_path)
-        try:
-            self.R = float(cards["MESH"]["r"])
-            self.f = math.hypot(*[float(v) for v in cards["TRACTION"]["f"].split(",")])
-            self.E = float(cards["MATERIAL"]["e"])
-            self.nu = float(cards["MATERIAL"]["nu"])
-            self.grading = float(cards["MESH"].get("grading", "0"))
-        except (KeyError, ValueError) as e:
-            fail(f"{deck_path}: cannot read R, f, E, nu from the MESH, TRACTION, MATERIAL cards ({e})")
+        deck = Deck.read(deck_path)
+        self.R = deck.number("MESH", "R")
+        self.f = math.hypot(*deck.numbers("TRACTION", "f"))
+        self.E = deck.number("MATERIAL", "E")
+        self.nu = deck.number("MATERIAL", "nu")
+        self.grading = deck.number("MESH", "grading", 0)
         self.b = 2 * math.sqrt(2 * self.R**2 * self.f * (1 - self.nu**2) / (self.E * math.pi))
         self.p0 = 4 * self.R * self.f / (math.pi * self.b)
 
@@ -136,15 +90,15 @@ def read_contact(path):
         # The frictionless columns come first; the friction columns after them are not read here.
         expected = ["node", "x1", "x2", "u1", "u2", "gap", "multiplier", "pressure", "status"]
         if reader.fieldnames[:len(expected)] != expected:
-            fail(f"{path}: header {reader.fieldnames}, expected it to start with {expected}")
+            raise ReportError(f"{path}: header {reader.fieldnames}, expected it to start with {expected}")
         rows = list(reader)
     if not rows:
-        fail(f"{path}: no rows")
+        raise ReportError(f"{path}: no rows")
     table = {k: np.array([float(r[k]) for r in rows]) for k in expected[:-1]}
     status = [r["status"] for r in rows]
     unknown = set(status) - {"contact", "free"}
     if unknown:
-        fail(f"{path}: status {sorted(unknown)} is neither 'contact' nor 'free'")
+        raise ReportError(f"{path}: status {sorted(unknown)} is neither 'contact' nor 'free'")
     table["contact"] = np.array([s == "contact" for s in status])
     return table
 
@@ -167,14 +121,12 @@ class Run:
 
     def __init__(self, folder, n, method, value):
         self.folder, self.n, self.method, self.value = folder, n, method, value
-        self.summary = json.loads((folder / "summary.json").read_text())
+        self.summary = read_summary(folder, required=(
+            "method", "converged", "iterations", "dofs", "multipliers", "contact_nodes",
+            "residual_history", "active_history", "times"))
         self.contact = read_contact(folder / "contact.csv")
-        for key in ("method", "converged", "iterations", "dofs", "multipliers", "contact_nodes",
-                    "residual_history", "active_history", "times"):
-            if key not in self.summary:
-                fail(f"{folder / 'summary.json'}: no key '{key}'")
         if self.summary["method"] != method:
-            fail(f"{folder / 'summary.json'}: method {self.summary['method']}, folder says {method}")
+            raise ReportError(f"{folder / 'summary.json'}: method {self.summary['method']}, folder says {method}")
 
     @property
     def converged(self):
@@ -183,17 +135,14 @@ class Run:
     def time(self, phases=None):
         """Seconds of the given phases; by default all of sig-solve's (factorize, schur,
         frames, solve, ...: every phase but those of earlier stages)."""
-        times = self.summary["times"]
-        if phases is None:
-            phases = [p for p in times if p not in EARLIER_STAGE_PHASES]
-        return sum(float(times.get(p, 0.0)) for p in phases)
+        return solve_seconds(self.summary, phases)
 
     def accuracy(self, hertz):
         """The Hertz errors sig-post computed (summary.json "hertz", COMPARE analytic=hertz), plus
         the half-width error in boundary segments."""
         a = self.summary.get("hertz")
         if not isinstance(a, dict):
-            fail(f"{self.folder / 'summary.json'}: no 'hertz' object (the deck needs COMPARE "
+            raise ReportError(f"{self.folder / 'summary.json'}: no 'hertz' object (the deck needs COMPARE "
                  "analytic=hertz)")
         try:
             h = hertz.segment(self.n)
@@ -206,7 +155,7 @@ class Run:
                 "h": h,
             }
         except (KeyError, TypeError, ValueError) as e:
-            fail(f"{self.folder / 'summary.json'}: 'hertz' lacks {e}")
+            raise ReportError(f"{self.folder / 'summary.json'}: 'hertz' lacks {e}")
 
 
 def collect_runs(out, meshes):
@@ -232,28 +181,11 @@ def collect_runs(out, meshes):
 # Formatting
 
 
-def fmt(x, digits=4):
-    return "—" if x is None else f"{x:.{digits}g}"
-
-
-def pct(x):
-    return "—" if x is None else f"{100 * x:+.2f} %"
-
-
 def iterations_cell(run):
     if run is None:
         return "—"
-    return str(run.summary["iterations"]) if run.converged else "Nv"
+    return run_cell(run.converged, run.summary["iterations"])
 
-
-def table(header, rows):
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
-    return "\n".join(lines)
-
-
-def verdict(ok):
-    return "PASS" if ok else "FAIL"
 
 
 # ---------------------------------------------------------------------------------------------
@@ -261,29 +193,30 @@ def verdict(ok):
 
 
 def section_tables_71_72(runs, thesis, meshes):
-    thesis_meshes = sorted({int(k.split(";")[0][2:]) for (i, k) in thesis if i == "iterations_alm"})
-    rows_71, rows_72 = [], []
+    """The section's text, and Table 7.1 (the scene index's key table)."""
+    thesis_meshes = sorted({int(k[2:]) for k in thesis.keys("iterations_alm")})
+    t71 = Table(["N"] + [f"c = {c}" for c in SWEEP] + ["ALM"],
+                caption="Table 7.1: iterations of the iterative projection vs c, and of the "
+                "augmented Lagrangian (r = 1e2), ours (thesis)")
+    t72 = Table(["N"] + [f"gamma = {g}" for g in SWEEP] + ["ALM"])
     for n in sorted(set(meshes) | set(thesis_meshes)):
-        alm = f"{iterations_cell(runs.get((n, 'alm', '1e2')))} ({thesis.get(('iterations_alm', f'N={n}'), '—')})"
-        row = [n]
-        for c in SWEEP:
-            t = thesis.get(("iterations_projection", f"N={n};c={c}"), "—")
-            row.append(f"{iterations_cell(runs.get((n, 'projection', c)))} ({t})")
-        rows_71.append(row + [alm])
-        row = [n]
-        t = thesis.get(("iterations_pdas", f"N={n};gamma=any of 1..1e4"), "—")
-        for g in SWEEP:
-            row.append(f"{iterations_cell(runs.get((n, 'pdas', g)))} ({t})")
-        rows_72.append(row + [alm])
+        alm = ours_thesis(iterations_cell(runs.get((n, "alm", "1e2"))),
+                          thesis.get("iterations_alm", f"N={n}"))
+        t71.add(n, *[ours_thesis(iterations_cell(runs.get((n, "projection", c))),
+                                 thesis.get("iterations_projection", f"N={n};c={c}"))
+                     for c in SWEEP], alm)
+        t = thesis.get("iterations_pdas", f"N={n};gamma=any of 1..1e4")
+        t72.add(n, *[ours_thesis(iterations_cell(runs.get((n, "pdas", g))), t) for g in SWEEP],
+                alm)
     text = ["## Tables 7.1 and 7.2: iterations, ours (thesis)", ""]
     text.append("Each cell: our iteration count (the thesis's). `Nv`: not converged (summary.json "
                 "`converged` false). `—`: not run (the quick variant skips N = 512). Source: "
                 "`N<N>/<method>_<value>/summary.json` key `iterations`; thesis: "
-                "`postproc/thesis_values_7a.csv`.")
+                "`postproc/thesis_values.csv`.")
     text += ["", "**Table 7.1** — iterative projection vs c, and the augmented Lagrangian (r = 1e2):", ""]
-    text.append(table(["N"] + [f"c = {c}" for c in SWEEP] + ["ALM"], rows_71))
+    text.append(t71.markdown())
     text += ["", "**Table 7.2** — primal-dual active set vs gamma, and the augmented Lagrangian (r = 1e2):", ""]
-    text.append(table(["N"] + [f"gamma = {g}" for g in SWEEP] + ["ALM"], rows_72))
+    text.append(t72.markdown())
     rows = []
     for n in meshes:
         row = [n]
@@ -291,7 +224,7 @@ def section_tables_71_72(runs, thesis, meshes):
             row.append(iterations_cell(runs.get((n, "alm", r))))
         rows.append(row)
     text += ["", "The augmented Lagrangian's own sweep (the thesis gives no r):", ""]
-    text.append(table(["N"] + [f"r = {r}" for r in SWEEP], rows))
+    text.append(markdown_table(["N"] + [f"r = {r}" for r in SWEEP], rows))
     rows = []
     for n in meshes:
         row = [n]
@@ -299,22 +232,20 @@ def section_tables_71_72(runs, thesis, meshes):
             row.append(iterations_cell(runs.get((n, "penalty", r))))
         rows.append(row)
     text += ["", "Penalty (Remark 3.2; not in the thesis's tables), iterations vs r:", ""]
-    text.append(table(["N"] + [f"r = {r}" for r in PENALTY_SWEEP], rows))
-    return "\n".join(text)
+    text.append(markdown_table(["N"] + [f"r = {r}" for r in PENALTY_SWEEP], rows))
+    return "\n".join(text), t71
 
 
 def section_table_73(runs, thesis, meshes):
     rows = []
-    thesis_meshes = sorted({int(k[2:]) for (i, k) in thesis if i == "cpu_pdas"})
+    thesis_meshes = sorted({int(k[2:]) for k in thesis.keys("cpu_pdas")})
     for n in sorted(set(meshes) | set(thesis_meshes)):
         row = [n]
         for method in ("projection", "pdas", "alm"):
             run = runs.get((n, method, THESIS_RUN[method]))
-            t = thesis.get((f"cpu_{method}", f"N={n}"), "—")
-            if run is None:
-                row.append(f"— ({t})")
-            else:
-                row.append(f"{run.time():.3f} / {run.time(('solve',)):.3f} ({t})")
+            t = thesis.get(f"cpu_{method}", f"N={n}")
+            row.append(ours_thesis(None if run is None else
+                                   f"{run.time():.3f} / {run.time(('solve',)):.3f}", t))
         rows.append(row)
     text = ["## Table 7.3: CPU seconds, ours (thesis)", ""]
     text.append("Each cell: our sig-solve seconds (the sum of its phases in `times`: factorize, "
@@ -324,7 +255,7 @@ def section_table_73(runs, thesis, meshes):
                 "`N<N>/<method>_<value>/summary.json` key `times`. Our times exclude meshing and "
                 "assembly (earlier stages); the thesis ran on the hardware of its day, so the "
                 "ratio, not the gap, is what compares.")
-    text += ["", table(["N", "projection c = 1e4", "PDAS gamma = 1e4", "ALM r = 1e2"], rows)]
+    text += ["", markdown_table(["N", "projection c = 1e4", "PDAS gamma = 1e4", "ALM r = 1e2"], rows)]
     return "\n".join(text)
 
 
@@ -335,15 +266,15 @@ def section_dofs(runs, thesis, meshes, hertz):
         rows.append([
             n,
             act.summary["dofs"] if act else "—",
-            thesis.get(("dofs_active_set", f"N={n}"), "—"),
+            thesis.get("dofs_active_set", f"N={n}", "—"),
             alm.summary["dofs"] if alm else "—",
-            thesis.get(("dofs_alm", f"N={n}"), "—"),
+            thesis.get("dofs_alm", f"N={n}", "—"),
             alm.summary["multipliers"] if alm else "—",
             act.summary.get("nodes", "—") if act else "—",
             act.summary.get("triangles", "—") if act else "—",
         ])
     text = ["## Degrees of freedom, ours (thesis)", ""]
-    text.append(table(["N", "active set (PDAS)", "thesis", "ALM", "thesis", "ALM multipliers",
+    text.append(markdown_table(["N", "active set (PDAS)", "thesis", "ALM", "thesis", "ALM multipliers",
                        "nodes", "triangles"], rows))
     text += ["", f"Source: `summary.json` keys `dofs`, `multipliers`, `nodes`, `triangles` of "
              f"`pdas_1e2` and `alm_1e2`. The thesis's ALM system is larger by N + 1 (its Lagrange "
@@ -359,11 +290,8 @@ def section_dofs(runs, thesis, meshes, hertz):
 
 def section_active_history(runs, thesis, out):
     n = 256
-    key = ("contact_nodes_by_iteration", "N=256;iterations 1/3/5/8")
-    if key not in thesis:
-        fail(f"{THESIS_CSV}: no row {key}")
     its = [1, 3, 5, 8]
-    counts = [int(v) for v in thesis[key].split("/")]
+    counts = [int(v) for v in thesis.require(*NODES_BY_ITERATION).split("/")]
     thesis_at = dict(zip(its, counts))
     series = [("pdas", "1e4"), ("projection", "1e4"), ("alm", "1e2"), ("alm", "1e4")]
     present = [(m, v, runs[(n, m, v)]) for m, v in series if (n, m, v) in runs]
@@ -385,7 +313,7 @@ def section_active_history(runs, thesis, out):
                 "1e4. Our first iterate, like the thesis's, has the semi-coercive tangent of a "
                 "single contact node; sig-solve makes it solvable with a proximal term that "
                 "vanishes at convergence (modules/solver/src/static_solve.cpp).")
-    text += ["", table(header, rows)]
+    text += ["", markdown_table(header, rows)]
     fig, ax = plt.subplots(figsize=(6, 4))
     for m, v, r in present:
         h = r.summary["active_history"]
@@ -477,7 +405,7 @@ def section_accuracy(runs, uniform_runs, hertz, out):
              "by a small amount that no mesh refinement removes. GetFEM on the same geometry shows "
              "a plateau of about -0.74 % in p_max at N = 512 (../shared/PEERS.md), so an error "
              "that stops falling near that level is the model, not the discretisation."]
-    text += ["", table(header, rows)]
+    text += ["", markdown_table(header, rows)]
     return "\n".join(text)
 
 
@@ -587,7 +515,7 @@ def section_error_vs_h(runs, uniform_runs, hertz, out, error_meshes):
         if not rows:
             continue
         text += ["", f"**{name}**", ""]
-        text.append(table(["N", "h", "L2 vs Hertz", "p_max vs p0", f"L2 vs N = {rows[-1][0]}",
+        text.append(markdown_table(["N", "h", "L2 vs Hertz", "p_max vs p0", f"L2 vs N = {rows[-1][0]}",
                            f"energy norm vs N = {rows[-1][0]}"],
                           [[n, f"{h:.5f}", f"{e:.4e}", pct(pm), "—" if ref is None else f"{ref:.4e}",
                             "—" if en is None else f"{en:.4e}"]
@@ -597,8 +525,7 @@ def section_error_vs_h(runs, uniform_runs, hertz, out, error_meshes):
 
 
 def section_speed_accuracy(runs, uniform_runs, hertz, out, meshes):
-    fig, ax = plt.subplots(figsize=(7, 5))
-    rows = []
+    series, rows = [], []
     for m in METHODS:
         pts = [(n, runs[(n, m, DEFAULT[m])]) for n in meshes if (n, m, DEFAULT[m]) in runs]
         pts = [(n, r) for n, r in pts if r.converged]
@@ -606,19 +533,20 @@ def section_speed_accuracy(runs, uniform_runs, hertz, out, meshes):
             continue
         t = [r.time() for _, r in pts]
         e = [r.accuracy(hertz)["l2"] for _, r in pts]
-        ax.loglog(t, e, "-", marker=MARKER[m], color=COLOR[m], fillstyle="none", markersize=8,
-                  label=f"{LABEL[m]} {PARAMETER[m]} = {DEFAULT[m]}")
+        series.append(Series(f"{LABEL[m]} {PARAMETER[m]} = {DEFAULT[m]}",
+                             [Point(ti, ei, f"N={n}") for (n, _), ti, ei in zip(pts, t, e)],
+                             color=COLOR[m], marker=MARKER[m], markersize=8))
         for (n, _), ti, ei in zip(pts, t, e):
-            ax.annotate(f"N={n}", (ti, ei), textcoords="offset points", xytext=(4, 4), fontsize=7)
             rows.append([LABEL[m], f"{PARAMETER[m]} = {DEFAULT[m]}", n, f"{ti:.3f}", f"{ei:.3e}"])
     pts = [(n, r) for (n, m, v), r in sorted(uniform_runs.items()) if m == "pdas" and v == "1e2"]
     if pts:
         t = [r.time() for _, r in pts]
         e = [r.accuracy(hertz)["l2"] for _, r in pts]
-        ax.loglog(t, e, ":", marker=MARKER["pdas"], color="C4",
-                  label="PDAS gamma = 1e2, uniform mesh (error study)")
+        series.append(Series("PDAS gamma = 1e2, uniform mesh (error study)",
+                             [Point(ti, ei, f"N={n}") for (n, _), ti, ei in zip(pts, t, e)],
+                             color="C4", marker=MARKER["pdas"], line=":", hollow=False,
+                             markersize=6))
         for (n, r), ti, ei in zip(pts, t, e):
-            ax.annotate(f"N={n}", (ti, ei), textcoords="offset points", xytext=(4, 4), fontsize=7)
             rows.append(["PDAS, uniform mesh", "gamma = 1e2", n, f"{ti:.3f}", f"{ei:.3e}"])
     n_top = max(meshes)
     sweep = [(v, runs[(n_top, "penalty", v)]) for v in PENALTY_SWEEP if (n_top, "penalty", v) in runs]
@@ -626,20 +554,16 @@ def section_speed_accuracy(runs, uniform_runs, hertz, out, meshes):
     if sweep:
         t = [r.time() for _, r in sweep]
         e = [r.accuracy(hertz)["l2"] for _, r in sweep]
-        ax.loglog(t, e, "v--", color=COLOR["penalty"], alpha=0.6,
-                  label=f"penalty, r = {sweep[0][0]} ... {sweep[-1][0]}, N = {n_top}")
+        series.append(Series(f"penalty, r = {sweep[0][0]} ... {sweep[-1][0]}, N = {n_top}",
+                             [Point(ti, ei, f"r={v}") for (v, _), ti, ei in zip(sweep, t, e)],
+                             color=COLOR["penalty"], marker="v", line="--", hollow=False,
+                             alpha=0.6, markersize=6))
         for (v, _), ti, ei in zip(sweep, t, e):
-            ax.annotate(f"r={v}", (ti, ei), textcoords="offset points", xytext=(4, -10), fontsize=7)
             rows.append(["penalty sweep", f"r = {v}", n_top, f"{ti:.3f}", f"{ei:.3e}"])
-    ax.set_xlabel("sig-solve time: sum of its phases (s)")
-    ax.set_ylabel("relative L2 pressure error vs Hertz")
-    ax.set_title("Hertz half disc: speed vs accuracy")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
     png = out / "speed_vs_accuracy.png"
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
+    speed_accuracy_chart(png, series, xlabel="sig-solve time: sum of its phases (s)",
+                         ylabel="relative L2 pressure error vs Hertz",
+                         title="Hertz half disc: speed vs accuracy")
     text = ["## Speed vs accuracy", ""]
     text.append("x: the sum of sig-solve's phases in `summary.json` `times` (factorize, schur, "
                 "frames, solve; not `assemble`); y: the L2 "
@@ -647,13 +571,14 @@ def section_speed_accuracy(runs, uniform_runs, hertz, out, meshes):
                 "graded meshes of the sweep (its default parameter), penalty's r sweep on the "
                 "finest of them, and PDAS on the uniform meshes of the error study (more dofs, "
                 "smaller error). Non-converged runs are left out.")
-    text += ["", table(["method", "parameter", "N", "seconds", "L2 error"], rows)]
+    text += ["", markdown_table(["method", "parameter", "N", "seconds", "L2 error"], rows)]
     text += ["", f"![speed vs accuracy]({png.name})"]
     return "\n".join(text)
 
 
 def section_checks(runs, thesis, hertz, slope):
-    rows = []
+    """Issue 3's targets as Checks, and the section's text."""
+    checks = Checks()
     for n in CHECK_N:
         for method, item, values in (("projection", "iterations_projection", SWEEP),
                                      ("pdas", "iterations_pdas", SWEEP), ("alm", "iterations_alm", ("1e2",))):
@@ -662,59 +587,60 @@ def section_checks(runs, thesis, hertz, slope):
                     continue
                 key = f"N={n}" if method == "alm" else (
                     f"N={n};c={v}" if method == "projection" else f"N={n};gamma=any of 1..1e4")
-                expected = thesis.get((item, key))
+                expected = thesis.get(item, key)
                 run = runs.get((n, method, v))
+                name = f"iterations N = {n}, {LABEL[method]} {PARAMETER[method]} = {v}"
+                ours = None if run is None else iterations_cell(run)
                 if expected is None or run is None:
-                    rows.append([f"iterations N = {n}, {LABEL[method]} {PARAMETER[method]} = {v}",
-                                 "—" if run is None else iterations_cell(run), expected or "—",
-                                 "+-1", "not run"])
+                    checks.add(name, None, ours=ours, target=expected, tolerance="+-1")
                     continue
                 ok = run.converged and abs(run.summary["iterations"] - int(expected)) <= 1
-                rows.append([f"iterations N = {n}, {LABEL[method]} {PARAMETER[method]} = {v}",
-                             iterations_cell(run), expected, "+-1", verdict(ok)])
+                checks.add(name, ok, ours=ours, target=expected, tolerance="+-1")
     n = 256
-    key = ("contact_nodes_by_iteration", "N=256;iterations 1/3/5/8")
-    thesis_at = dict(zip((1, 3, 5, 8), (int(v) for v in thesis[key].split("/"))))
+    expected = thesis.require(*NODES_BY_ITERATION)
+    thesis_at = dict(zip((1, 3, 5, 8), (int(v) for v in expected.split("/"))))
     for m, v in (("pdas", "1e4"), ("projection", "1e4"), ("alm", "1e2")):
         run = runs.get((n, m, v))
         name = f"active set at iterations 1/3/5/8, N = 256, {LABEL[m]} {PARAMETER[m]} = {v}"
         if run is None:
-            rows.append([name, "—", "—", "equal", "not run"])
+            checks.add(name, None, tolerance="equal")
             continue
         hist = run.summary["active_history"]
         ours = [int(hist[k - 1]) if k <= len(hist) else None for k in thesis_at]
         ours_text = "/".join("—" if x is None else str(x) for x in ours)
-        rows.append([name, ours_text, thesis[key], "equal", verdict(ours == list(thesis_at.values()))])
+        checks.add(name, ours == list(thesis_at.values()), ours=ours_text, target=expected,
+                   tolerance="equal")
     h = hertz.segment(n)
-    nodes_expected = int(thesis[("contact_nodes_by_iteration", "N=256;iterations 1/3/5/8")].split("/")[-1])
+    nodes_expected = int(expected.split("/")[-1])
     for m in METHODS:
         run = runs.get((n, m, DEFAULT[m]))
         name = f"{LABEL[m]} {PARAMETER[m]} = {DEFAULT[m]}"
         if run is None:
-            rows.append([f"N = 256 {name}", "—", "—", "—", "not run"])
+            checks.add(f"N = 256 {name}", None)
             continue
         a = run.accuracy(hertz)
-        rows.append([f"contact nodes, N = 256, {name}", run.summary["contact_nodes"], nodes_expected,
-                     f"+-{CHECK_NODES}", verdict(abs(run.summary["contact_nodes"] - nodes_expected)
-                                                 <= CHECK_NODES)])
-        rows.append([f"p_max, N = 256, {name}", f"{a['p_max']:.4f} ({pct(a['p_max_rel'])})",
-                     f"{hertz.p0:.4f}", f"{100 * CHECK_PMAX:g} %",
-                     verdict(abs(a["p_max_rel"]) <= CHECK_PMAX)])
-        rows.append([f"half-width, N = 256, {name}", f"{a['half_width']:.4f}", f"{hertz.b:.4f}",
-                     f"h = {h:.4f}", verdict(abs(a["half_width"] - hertz.b) <= h)])
+        checks.add(f"contact nodes, N = 256, {name}",
+                   abs(run.summary["contact_nodes"] - nodes_expected) <= CHECK_NODES,
+                   ours=run.summary["contact_nodes"], target=nodes_expected,
+                   tolerance=f"+-{CHECK_NODES}")
+        checks.add(f"p_max, N = 256, {name}", abs(a["p_max_rel"]) <= CHECK_PMAX,
+                   ours=f"{a['p_max']:.4f} ({pct(a['p_max_rel'])})", target=f"{hertz.p0:.4f}",
+                   tolerance=f"{100 * CHECK_PMAX:g} %")
+        checks.add(f"half-width, N = 256, {name}", abs(a["half_width"] - hertz.b) <= h,
+                   ours=f"{a['half_width']:.4f}", target=f"{hertz.b:.4f}", tolerance=f"h = {h:.4f}")
     # Fig 7.10's measure is the displacement error in the norm of V; the pressure slopes are
     # shown in the error section as information (they are not monotone, see there).
     value = slope[2]
-    rows.append(["error slope vs h, PDAS gamma = 1e2, uniform meshes, energy norm against the "
-                 "finest run (Fig 7.10)", fmt(value, 3), "1", f"{CHECK_SLOPE[0]}..{CHECK_SLOPE[1]}",
-                 "not run" if value is None else verdict(CHECK_SLOPE[0] <= value <= CHECK_SLOPE[1])])
-    passed = sum(r[-1] == "PASS" for r in rows)
-    failed = sum(r[-1] == "FAIL" for r in rows)
+    checks.add("error slope vs h, PDAS gamma = 1e2, uniform meshes, energy norm against the "
+               "finest run (Fig 7.10)",
+               None if value is None else CHECK_SLOPE[0] <= value <= CHECK_SLOPE[1],
+               ours=fmt(value, 3), target="1", tolerance=f"{CHECK_SLOPE[0]}..{CHECK_SLOPE[1]}")
     text = ["## Checks", ""]
-    text.append(f"Issue 3's targets, computed from the files above: **{passed} PASS, {failed} FAIL**"
-                f" ({len(rows) - passed - failed} not run). A FAIL is reported, not tuned away.")
-    text += ["", table(["check", "ours", "target", "tolerance", "result"], rows)]
-    return "\n".join(text), passed, failed
+    text.append(f"Issue 3's targets, computed from the files above: **{checks.passed} PASS, "
+                f"{checks.failed} FAIL** ({checks.not_run} not run). A FAIL is reported, not "
+                f"tuned away.")
+    text += ["", checks.table().markdown()]
+    return "\n".join(text), checks
 
 
 def main():
@@ -723,24 +649,24 @@ def main():
     args = parser.parse_args()
     out = args.outdir.resolve()
     if not out.is_dir():
-        fail(f"{out} is not a folder")
-    info = read_command(out)
-    thesis = read_thesis()
+        raise ReportError(f"{out} is not a folder")
+    info = read_scene_command(out)
+    thesis = load_thesis().scene("7a")
     meshes = sorted(set(info["meshes"]))
     all_meshes = sorted(set(info["meshes"]) | set(info["error_meshes"]))
     runs, missing = collect_runs(out, all_meshes)
     uniform_runs, missing_uniform = collect_runs(out / "error", sorted(info["error_meshes"]))
     missing += missing_uniform
     if not runs:
-        fail(f"no run with summary.json and contact.csv under {out}/N*/")
+        raise ReportError(f"no run with summary.json and contact.csv under {out}/N*/")
     sweep_runs = {k: r for k, r in runs.items() if k[0] in meshes}
     hertz = Hertz(next(iter(runs.values())).folder / "hertz.dat")
     for item, value in (("hertz_half_width_b", hertz.b), ("hertz_p0", hertz.p0)):
-        stated = float(thesis[(item, "")])
+        stated = float(thesis.require(item))
         if abs(value - stated) > 0.01 * stated:
-            fail(f"the deck's Hertz {item} = {value:.4g} is not the thesis's {stated}")
+            raise ReportError(f"the deck's Hertz {item} = {value:.4g} is not the thesis's {stated}")
 
-    t71 = section_tables_71_72(sweep_runs, thesis, meshes)
+    t71, key_table = section_tables_71_72(sweep_runs, thesis, meshes)
     t73 = section_table_73(sweep_runs, thesis, meshes)
     dofs = section_dofs(sweep_runs, thesis, meshes, hertz)
     active, _ = section_active_history(sweep_runs, thesis, out)
@@ -748,16 +674,18 @@ def main():
     accuracy = section_accuracy(runs, uniform_runs, hertz, out)
     error, slope = section_error_vs_h(runs, uniform_runs, hertz, out, sorted(info["error_meshes"]))
     speed = section_speed_accuracy(sweep_runs, uniform_runs, hertz, out, meshes)
-    checks, passed, failed = section_checks(sweep_runs, thesis, hertz, slope)
+    checks_text, checks = section_checks(sweep_runs, thesis, hertz, slope)
+    passed, failed = checks.passed, checks.failed
 
-    head = ["# Scene 7a: Hertz half disc on a rigid foundation (thesis ch. 7.4.1)", ""]
+    title = "Scene 7a: Hertz half disc on a rigid foundation (thesis ch. 7.4.1)"
+    head = [f"# {title}", ""]
     head.append(f"Produced by `{info['command']}` on {info.get('date', '?')} "
                 f"({info.get('host', '?')}, revision {info.get('revision', '?')}, executables "
                 f"{info.get('SIG_BIN', '?')}); this report by `postproc/scene7a_report.py {args.outdir}`. "
                 f"Meshes N = {', '.join(map(str, meshes))} (error study: "
                 f"{', '.join(map(str, sorted(info['error_meshes'])))}). Template deck: "
                 f"`datafiles/scene7a/hertz.dat` (copy: `hertz.template.dat`); each run's deck is "
-                f"`N<N>/<method>_<value>/hertz.dat`. Thesis values: `postproc/thesis_values_7a.csv`.")
+                f"`N<N>/<method>_<value>/hertz.dat`. Thesis values: `postproc/thesis_values.csv`.")
     head += ["", f"Half disc R = {hertz.R:g}, traction f = {hertz.f:g}, E = {hertz.E:g}, nu = "
              f"{hertz.nu:g}, plane strain; Hertz: b = {hertz.b:.4f}, p0 = {hertz.p0:.4f}. "
              f"Checks: {passed} PASS, {failed} FAIL (last section)."]
@@ -765,10 +693,14 @@ def main():
         head += ["", "**Missing results** (a stage failed or the run was not made; see the "
                  "folder's *.log): " + ", ".join(f"`{m}`" for m in missing)]
     report = "\n\n".join(["\n".join(head), t71, t73, dofs, active, pressure, error, speed,
-                          accuracy, checks]) + "\n"
+                          accuracy, checks_text]) + "\n"
     (out / "report.md").write_text(report)
+    charts = {"speed_accuracy": "speed_vs_accuracy.png", "error_vs_h": "error_vs_h.png",
+              "pressure": "pressure_N256.png", "active_history": "active_history_N256.png"}
+    write_scene_json(out, "7a", title, info, checks, key_table=key_table,
+                     charts={k: v for k, v in charts.items() if (out / v).is_file()})
     print(f"{out / 'report.md'}: {len(runs)} runs, checks {passed} PASS, {failed} FAIL")
 
 
 if __name__ == "__main__":
-    main()
+    main_guard(main)

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Scene 7b report (hyperelastic ring, thesis ch. 7.4.2): reads every run under OUT
-(OUT/N<n>/<method>[_<value>]/case.b, + contact.csv of sig-post, written by drivers/scene7b.sh)
+(OUT/N<n>/<method>[_<value>]/case.b through sig-dump, + contact.csv of sig-post, written by
+drivers/scene7b.sh)
 and writes OUT/report.md with its charts:
 
 - Tables 7.4 / 7.5 ("ours (thesis)"; our count is the total of Newton iterations over the load
@@ -18,51 +19,27 @@ and writes OUT/report.md with its charts:
   ~0 relative to Ry times the radius means the ring swayed off the symmetric branch: "sway",
   also in the tables and the map), time, and the deviation of its final pressure from PDAS's.
 
-Usage: scene7b_report.py OUT. The module also offers read_ds(path[, shapes]) -> {name: value}
-for the DS container (core/ds.hpp layout), pressure_deviation(p, reference) and
-accuracy(ds, reference), used by tests/pipeline/scene7b_small.sh.
+Usage: scene7b_report.py OUT. Also writes OUT/scene.json (the scene index entry). Built on the
+report library postproc/sigreport (DS files through sig-dump, thesis values, cells, charts,
+checks); the module also offers pressure_deviation(p, reference) and accuracy(ds, reference),
+used by tests/pipeline/scene7b_small.sh.
 """
 import csv
 import functools
 import math
-import struct
 import sys
 from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
+from sigreport import (Checks, Deck, MapCell, MapPanel, Point, ReportError, Series, Table,
+                       load_thesis, main_guard, markdown_table, ours_thesis, pyplot, read_command,
+                       read_ds, run_cell, speed_accuracy_chart, stability_map, write_scene_json)
+
 PARAMETERS = ["1", "10", "1e2", "1e3", "1e4", "1e5", "1e6"]
 FIGURE_VALUE = "1e4"  # c = gamma of Figs 7.14-7.16 and Table 7.6
 TOLERANCE = 0.01      # "the three methods reach the same final state": pressures within 1 %
 R_OUT = 10.0          # outer radius: the lever arm that makes the reaction moment relative
 SWAY = 1e-6           # |M| / (|Ry| R_OUT) above this: the state left the symmetric branch
-
-
-def read_ds(path, shapes=None):
-    """Arrays of a DS file as {name: list | str}; format of modules/core/include/core/ds.hpp.
-    Arrays are flat (row-major); pass a dict as `shapes` to receive {name: [dims]}."""
-    data = Path(path).read_bytes()
-    if data[:8] != b"SIGDS\0\0\0" or data[-4:] != b"ENDS":
-        raise SystemExit(f"{path}: not a whole DS file")
-    _version, count = struct.unpack_from("<II", data, 8)
-    pos = 16 + 128 + 4
-    arrays = {}
-    for _ in range(count):
-        name = data[pos:pos + 24].split(b"\0", 1)[0].decode()
-        kind, rank = struct.unpack_from("<II", data, pos + 24)
-        if shapes is not None:
-            shapes[name] = list(struct.unpack_from(f"<{rank}q", data, pos + 32))
-        pos += 32 + 8 * rank
-        (size,) = struct.unpack_from("<Q", data, pos)
-        pos += 8
-        payload = data[pos:pos + size]
-        pos += size + 4
-        if kind == 1:
-            arrays[name] = list(struct.unpack(f"<{size // 8}q", payload))
-        elif kind == 2:
-            arrays[name] = list(struct.unpack(f"<{size // 8}d", payload))
-        else:
-            arrays[name] = payload.decode()
-    return arrays
+MISSING = "-"         # this report's text for a value or run that is absent
 
 
 def scalar(ds, name):
@@ -84,21 +61,6 @@ def pressure_deviation(p, reference):
     return max(abs(x - y) for x, y in zip(p, reference)) / scale
 
 
-def thesis_values():
-    """(item, key) -> value text."""
-    values = {}
-    with open(HERE / "thesis_values_7b.csv") as f:
-        for row in csv.reader(line for line in f if not line.startswith("#")):
-            scene, item, key, value = row[:4]
-            if "/" in key:  # "N=128;gamma=10/1e2/..." or "N=128/256/512": one entry each
-                head, _, tail = key.rpartition("=")
-                for k, v in zip(tail.split("/"), value.split("/")):
-                    values[(item, f"{head}={k}")] = v
-            else:
-                values[(item, key)] = value
-    return values
-
-
 def parameter_key(value):
     """1000.0 -> '1e3' as the thesis tables write it; 1 -> '1', 10 -> '10'."""
     v = float(value)
@@ -108,7 +70,8 @@ def parameter_key(value):
 
 
 class Runs:
-    """The runs under OUT: (N, method, parameter key or '') -> case.b arrays (+ 'dir')."""
+    """The runs under OUT: (N, method, parameter key or '') -> case.b (a sigreport Ds; its
+    folder is ds.path.parent)."""
 
     def __init__(self, out):
         self.runs = {}
@@ -116,7 +79,6 @@ class Runs:
             n = int(b.parent.parent.name[1:])
             method, _, value = b.parent.name.partition("_")
             ds = read_ds(b)
-            ds["dir"] = b.parent
             self.runs[(n, method, parameter_key(value) if value else "")] = ds
         self.sizes = sorted({k[0] for k in self.runs})
 
@@ -147,17 +109,16 @@ def swayed(ds):
 
 def iterations_cell(ds, with_time=False):
     if ds is None:
-        return "-"
-    if scalar(ds, "converged"):
-        text = str(scalar(ds, "iterations")) + (" sway" if swayed(ds) else "")
-    else:
-        text = f"Nv (step {len(ds['step_iterations'])})"
+        return MISSING
+    converged = bool(scalar(ds, "converged"))
+    text = run_cell(converged, scalar(ds, "iterations"), sway=swayed(ds),
+                    detail=f"step {len(ds['step_iterations'])}")
     return text + (f", {scalar(ds, 'time_solve'):.2f} s" if with_time else "")
 
 
 def current_abscissa(ds):
     """x1 + u1 of the contact nodes at the final state (contact.csv of sig-post), or None."""
-    path = ds["dir"] / "contact.csv"
+    path = ds.path.parent / "contact.csv"
     if not path.exists():
         return None
     with open(path) as f:
@@ -185,53 +146,57 @@ def what_it_models():
 
 
 def iteration_tables(runs, thesis):
-    lines = []
+    """The lines of Tables 7.4 and 7.5, and Table 7.4 (the scene index's key table)."""
+    lines, tables = [], []
     for title, method, name, item in (
             ("Table 7.4: iterative projection vs c", "projection", "c", "iterations_projection"),
             ("Table 7.5: primal-dual active set vs gamma", "pdas", "gamma", "iterations_pdas")):
-        lines += [f"## {title}", "",
-                  "| N | " + " | ".join(f"{name} = {p}" for p in PARAMETERS)
-                  + (" | ALM |" if method == "projection" else " |"),
-                  "|---" * (len(PARAMETERS) + 1 + (method == "projection")) + "|"]
+        table = Table(["N"] + [f"{name} = {p}" for p in PARAMETERS]
+                      + (["ALM"] if method == "projection" else []),
+                      caption=f"{title}: total Newton iterations over the load steps, "
+                      "ours (thesis)")
         for n in runs.sizes:
             row = [str(n)]
             for p in PARAMETERS:
-                ref = thesis.get((item, f"N={n};{name}={p}"), "-")
-                row.append(f"{iterations_cell(runs.get(n, method, p))} ({ref})")
+                row.append(ours_thesis(iterations_cell(runs.get(n, method, p)),
+                                       thesis.get(item, f"N={n};{name}={p}"), missing=MISSING))
             if method == "projection":
-                ref = thesis.get(("iterations_alm", f"N={n}"), "-")
-                row.append(f"{iterations_cell(runs.get(n, 'alm'))} ({ref})")
-            lines.append("| " + " | ".join(row) + " |")
-        lines.append("")
-    return lines
+                row.append(ours_thesis(iterations_cell(runs.get(n, "alm")),
+                                       thesis.get("iterations_alm", f"N={n}"), missing=MISSING))
+            table.add(*row)
+        lines += [f"## {title}", "", table.markdown(), ""]
+        tables.append(table)
+    return lines, tables[0]
 
 
 def time_table(runs, thesis):
     lines = [f"## Table 7.6: solve time at c = gamma = {FIGURE_VALUE}", "",
              "Ours: wall seconds of sig-solve's nonlinear solve (case.b time_solve; this machine, "
-             "one core) with the Newton iterations beside it; thesis: CPU seconds.", "",
-             "| N | projection | PDAS | ALM |", "|---|---|---|---|"]
+             "one core) with the Newton iterations beside it; thesis: CPU seconds.", ""]
+    rows = []
     for n in runs.sizes:
         row = [str(n)]
         for method, p in (("projection", FIGURE_VALUE), ("pdas", FIGURE_VALUE), ("alm", "")):
-            ref = thesis.get((f"cpu_{method}", f"N={n}"), "-")
-            row.append(f"{iterations_cell(runs.get(n, method, p), True)} ({ref} s)")
-        lines.append("| " + " | ".join(row) + " |")
-    return lines + [""]
+            row.append(ours_thesis(iterations_cell(runs.get(n, method, p), True),
+                                   thesis.get(f"cpu_{method}", f"N={n}"), unit="s",
+                                   missing=MISSING))
+        rows.append(row)
+    return lines + [markdown_table(["N", "projection", "PDAS", "ALM"], rows), ""]
 
 
 def dof_table(runs, thesis):
-    lines = ["## Unknowns", "", "| N | active set / projection | ALM |", "|---|---|---|"]
+    rows = []
     for n in runs.sizes:
         row = [str(n)]
         for method, p, item in (("pdas", FIGURE_VALUE, "dofs_active_set"), ("alm", "", "dofs_alm")):
             ds = runs.get(n, method, p)
-            row.append(f"{scalar(ds, 'dofs') if ds else '-'} ({thesis.get((item, f'N={n}'), '?')})")
-        lines.append("| " + " | ".join(row) + " |")
-    return lines + [""]
+            row.append(ours_thesis(scalar(ds, "dofs") if ds else None,
+                                   thesis.get(item, f"N={n}", "?"), missing=MISSING))
+        rows.append(row)
+    return ["## Unknowns", "", markdown_table(["N", "active set / projection", "ALM"], rows), ""]
 
 
-def pressure_section(runs, plt, out):
+def pressure_section(runs, plt, out, checks):
     lines = ["## Fig 7.13: contact pressure on Gamma3 at the final load step", "",
              "Nominal pressure (nodal contact force / reference tributary length) against the "
              "current abscissa x1 + u1 of each Gamma3 node, after load step 14. Check: the three "
@@ -246,15 +211,20 @@ def pressure_section(runs, plt, out):
             p = final_pressure(ds)
             if not scalar(ds, "converged") or p is None:
                 lines.append(f"- N = {n}, {label}: not compared (Nv)")
+                if ds is not reference:
+                    checks.add(f"Fig 7.13: N = {n}, {label}: final pressure within 1 % of PDAS's",
+                               None, detail="not compared (Nv)")
                 continue
             x = current_abscissa(ds) or list(range(len(p)))
             ax.plot(x, p, style, marker=".", markersize=3, label=label)
             if p_ref is None or ds is reference:
                 continue
             d = pressure_deviation(p, p_ref)
-            verdict = "PASS" if d <= TOLERANCE else "FAIL"
-            lines.append(f"- {verdict}: N = {n}, {label} vs PDAS: max pressure difference "
-                         f"{100 * d:.2g} % of the maximum {max(p_ref):.4g} (tolerance 1 %)")
+            detail = (f"max pressure difference {100 * d:.2g} % of the maximum {max(p_ref):.4g} "
+                      f"(tolerance 1 %)")
+            check = checks.add(f"Fig 7.13: N = {n}, {label}: final pressure within 1 % of PDAS's",
+                               d <= TOLERANCE, detail=detail)
+            lines.append(f"- {check.result}: N = {n}, {label} vs PDAS: {detail}")
         ax.set_title(f"N = {n}")
         ax.set_xlabel("x1 + u1 (current abscissa)")
         ax.set_ylabel("contact pressure (MPa)")
@@ -304,8 +274,7 @@ def ek_section(runs, plt, out):
     return lines + [""]
 
 
-def stability_section(runs, plt, out, maxit):
-    import numpy as np
+def stability_section(runs, out, maxit):
     lines = ["## Stability map: method x parameter x N", "",
              "Total Newton iterations over the 14 load steps, and the solve time of the run; "
              f"Nv (step k) = load step k did not converge within maxit = {maxit} iterations, the "
@@ -326,43 +295,27 @@ def stability_section(runs, plt, out, maxit):
             + " |")
     lines.append("")
 
-    fig, axes = plt.subplots(1, 2, figsize=(12, 1.4 + 0.8 * len(runs.sizes)), squeeze=False)
-    top = max((scalar(d, "iterations") for d in runs.runs.values() if scalar(d, "converged")),
-              default=10)
-    cmap = plt.get_cmap("viridis").copy()
-    cmap.set_bad("lightgrey")  # Nv and missing runs
-    for ax, (method, name) in zip(axes[0], (("projection", "c"), ("pdas", "gamma"))):
-        grid, text = [], []
+    panels = []
+    for method, name, values in (("projection", "c", PARAMETERS), ("pdas", "gamma", PARAMETERS),
+                                 ("alm", "r", ["1e3"])):
+        cells = []
         for n in runs.sizes:
-            row, labels = [], []
-            for p in PARAMETERS:
+            row = []
+            for p in values:
                 ds = runs.get(n, method, p)
-                converged = ds is not None and scalar(ds, "converged")
-                row.append(math.log10(scalar(ds, "iterations")) if converged else float("nan"))
-                labels.append(str(scalar(ds, "iterations")) + ("\nsway" if swayed(ds) else "")
-                              if converged else "-" if ds is None else "Nv")
-            grid.append(row)
-            text.append(labels)
-        image = ax.imshow(np.ma.masked_invalid(np.array(grid)), cmap=cmap, vmin=1,
-                          vmax=math.log10(top), aspect="auto")
-        for i, labels in enumerate(text):
-            for j, label in enumerate(labels):
-                light = math.isnan(grid[i][j]) or grid[i][j] > 1 + 0.6 * (math.log10(top) - 1)
-                ax.text(j, i, label, ha="center", va="center", fontsize=8,
-                        color="black" if light else "white")
-        ax.set_xticks(range(len(PARAMETERS)), PARAMETERS)
-        ax.set_xlabel(name)
-        ax.set_yticks(range(len(runs.sizes)), [f"N = {n}" for n in runs.sizes])
-        ax.set_title(f"{method}: total iterations, grey = Nv", fontsize=10)
-        for i, row in enumerate(text):  # a swayed run: its cell framed in red
-            for j, label in enumerate(row):
-                if label.endswith("sway"):
-                    ax.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False,
-                                               edgecolor="red", linewidth=2))
-    fig.subplots_adjust(wspace=0.3)
-    fig.colorbar(image, ax=axes[0].tolist(), label="log10(total iterations)")
-    fig.savefig(out / "stability_map.png", dpi=110, bbox_inches="tight")
-    plt.close(fig)
+                if ds is None:
+                    row.append(MapCell(MISSING, "missing"))
+                elif not scalar(ds, "converged"):
+                    row.append(MapCell("Nv", "Nv"))
+                else:
+                    its = scalar(ds, "iterations")
+                    row.append(MapCell(str(its) + ("\nsway" if swayed(ds) else ""),
+                                       "sway" if swayed(ds) else "ok", its))
+            cells.append(row)
+        panels.append(MapPanel(f"{method}: total iterations", [f"N = {n}" for n in runs.sizes],
+                               values, cells, xlabel=name))
+    stability_map(out / "stability_map.png", panels, value_label="log10(total iterations)",
+                  title="Ring: Newton iterations over the 14 load steps (red Nv, framed: sway)")
     return lines
 
 
@@ -408,7 +361,7 @@ def _pressures_at(path):
 def contact_pressures(ds):
     """{(x1, x2) of the reference node, rounded: final pressure} from contact.csv (read once per
     file: the reference's serves every run)."""
-    return _pressures_at(ds["dir"] / "contact.csv")
+    return _pressures_at(ds.path.parent / "contact.csv")
 
 
 def accuracy(ds, reference):
@@ -421,14 +374,14 @@ def accuracy(ds, reference):
     p, p_ref = contact_pressures(ds), contact_pressures(reference)
     shared = [x for x in p if x in p_ref]
     if len(shared) < len(p):
-        raise SystemExit(f"scene7b_report: {ds['dir']}: {len(p) - len(shared)} Gamma3 nodes are "
-                         f"not nodes of the reference ring {reference['dir']}")
+        raise ReportError(f"{ds.path.parent}: {len(p) - len(shared)} Gamma3 nodes are not "
+                          f"nodes of the reference ring {reference.path.parent}")
     scale = max(p_ref.values())
     return abs(ry - ry_ref) / abs(ry_ref), max(abs(p[x] - p_ref[x]) for x in shared) / scale
 
 
-def speed_accuracy_section(runs, reference, plt, out):
-    n_ref = deck_value(reference["dir"] / "ring.dat", "N")
+def speed_accuracy_section(runs, reference, out):
+    n_ref = Deck.read(reference.path.parent / "ring.dat").value("MESH", "N")
     lines = ["## Speed against accuracy", "",
              f"Every run is a point: its solve time against its error, measured against the "
              f"reference run PDAS gamma = {FIGURE_VALUE} on the next finer ring "
@@ -440,101 +393,86 @@ def speed_accuracy_section(runs, reference, plt, out):
              f"error: it is drawn on the top edge as Nv. The error is the mesh's (at a given N "
              f"every converged method gives the same state within the tolerance, but for a run "
              f"marked sway, which found another equilibrium); the methods differ in time.", "",
-             "![speed against accuracy](speed_accuracy.png)", "",
-             "| N | run | solve s | reaction error | pressure error |", "|---|---|---|---|---|"]
-    fig, ax = plt.subplots(figsize=(7.5, 5))
+             "![speed against accuracy](speed_accuracy.png)", ""]
     marker = {"pdas": "o", "projection": "s", "alm": "^"}
     colors = dict(zip(runs.sizes, ("tab:blue", "tab:orange", "tab:green", "tab:red")))
     order = sorted(runs.runs.items(), key=lambda kv: (kv[0][0], kv[0][1], float(kv[0][2] or 0)))
-    errors = {key: accuracy(ds, reference) for key, ds in order}
-    top = 3 * max((a[0] for a in errors.values() if a), default=1.0)
-    labelled = set()
+    series, rows = {}, []
     for (n, method, value), ds in order:
-        a = errors[(n, method, value)]
+        a = accuracy(ds, reference)
         t = scalar(ds, "time_solve")
         run = method + (f" {value}" if value else "")
-        ax.scatter([t], [a[0] if a else top], marker=marker[method], color=colors[n],
-                   facecolors=colors[n] if a else "none", s=40)
-        if (method, n) not in labelled:  # a filled legend entry, whatever the first point was
-            ax.scatter([], [], marker=marker[method], color=colors[n], label=f"{method}, N = {n}")
-            labelled.add((method, n))
-        if not a or swayed(ds):
-            ax.annotate("Nv" if not a else "sway", (t, a[0] if a else top),
-                        textcoords="offset points", xytext=(3, 3), fontsize=7)
+        if (n, method) not in series:
+            series[(n, method)] = Series(f"{method}, N = {n}", [], color=colors[n],
+                                         marker=marker[method], line="", hollow=False,
+                                         markersize=6)
+        series[(n, method)].points.append(Point(t, a[0] if a else None,
+                                                "sway" if swayed(ds) else ""))
         run += " (sway)" if swayed(ds) else ""
-        lines.append(f"| {n} | {run} | {t:.2f} | " + (f"{a[0]:.2e} | {a[1]:.2e} |" if a
-                                                       else "Nv | Nv |"))
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("solve time (s)")
-    ax.set_ylabel("error of the vertical reaction vs the reference ring")
-    ax.set_title("Ring: speed against accuracy (hollow on top = Nv)")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7, ncol=2)
-    fig.tight_layout()
-    fig.savefig(out / "speed_accuracy.png", dpi=110)
-    plt.close(fig)
-    return lines + [""]
+        rows.append([n, run, f"{t:.2f}", f"{a[0]:.2e}" if a else "Nv",
+                     f"{a[1]:.2e}" if a else "Nv"])
+    speed_accuracy_chart(out / "speed_accuracy.png", list(series.values()),
+                         xlabel="solve time (s)",
+                         ylabel="error of the vertical reaction vs the reference ring",
+                         title="Ring: speed against accuracy", figsize=(7.5, 5), dpi=110,
+                         legend_fontsize=7)
+    return lines + [markdown_table(["N", "run", "solve s", "reaction error", "pressure error"],
+                                   rows), ""]
 
 
-def deck_value(deck, name):
-    """The value of the first `name=` word of a deck, or None."""
-    for word in deck.read_text().split():
-        if word.startswith(name + "="):
-            return word[len(name) + 1:]
-    return None
-
-
-def deck_field(runs, name):
-    """The value of `name=` in the decks of the runs ('?' if none has it)."""
+def deck_field(runs, card, field):
+    """A field of the runs' decks ('?' if none has it)."""
     for ds in runs.runs.values():
-        deck = ds["dir"] / "ring.dat"
-        if deck.exists() and (value := deck_value(deck, name)) is not None:
+        deck = ds.path.parent / "ring.dat"
+        if deck.exists() and (value := Deck.read(deck).value(card, field)) is not None:
             return value
     return "?"
 
 
 def main():
     if len(sys.argv) != 2:
-        raise SystemExit("usage: scene7b_report.py OUT")
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+        raise ReportError("usage: scene7b_report.py OUT")
+    plt = pyplot()
     out = Path(sys.argv[1])
+    info = read_command(out, required=("command",))
     runs = Runs(out)
     if not runs.runs:
-        raise SystemExit(f"scene7b_report: no N*/*/case.b under {out}")
-    thesis = thesis_values()
-    maxit = deck_field(runs, "maxit")
+        raise ReportError(f"no N*/*/case.b under {out}")
+    thesis = load_thesis().scene("7b")
+    checks = Checks()
+    maxit = deck_field(runs, "SOLVER", "maxit")
     reference_b = out / "reference" / "case.b"
     reference = read_ds(reference_b) if reference_b.exists() else None
-    if reference:
-        reference["dir"] = reference_b.parent
-    lines = ["# Scene 7b: hyperelastic ring pressed on a rigid foundation", "",
+    title = "Scene 7b: hyperelastic ring pressed on a rigid foundation"
+    lines = [f"# {title}", "",
              "Cells are ours (thesis). Our count is the total of Newton iterations over the 14 "
              "load steps; 'Nv' = not converged (the load step that failed). Deck: "
              "datafiles/scene7b/ring.dat (plane strain, 14 load steps to u = (0,-14) on AB, "
-             f"eps = 1e-5, maxit = {maxit} per load step, linear solver {deck_field(runs, 'linear')}). "
-             f"The deformed ring of the "
+             f"eps = 1e-5, maxit = {maxit} per load step, linear solver "
+             f"{deck_field(runs, 'SOLVER', 'linear')}). The deformed ring of the "
              f"figure runs is in N<n>/<run>/ring.pvd, one state per load step (ParaView).", ""]
     lines += what_it_models()
-    lines += iteration_tables(runs, thesis)
+    table_lines, key_table = iteration_tables(runs, thesis)
+    lines += table_lines
     lines += time_table(runs, thesis)
     lines += dof_table(runs, thesis)
-    lines += pressure_section(runs, plt, out)
+    lines += pressure_section(runs, plt, out, checks)
     lines += ek_section(runs, plt, out)
-    lines += stability_section(runs, plt, out, maxit)
+    lines += stability_section(runs, out, maxit)
+    charts = {"stability": "stability_map.png", "fig7_13": "fig7_13_pressure.png",
+              "fig7_14_16": "fig7_14_16_ek.png"}
     if reference and scalar(reference, "converged"):
-        lines += speed_accuracy_section(runs, reference, plt, out)
+        lines += speed_accuracy_section(runs, reference, out)
+        charts["speed_accuracy"] = "speed_accuracy.png"
     else:
         lines += ["## Speed against accuracy", "",
                   "No converged reference run in reference/ (drivers/scene7b.sh makes it): no "
                   "errors to chart.", ""]
     lines += run_table(runs)
     (out / "report.md").write_text("\n".join(lines))
+    write_scene_json(out, "7b", title, info, checks, key_table=key_table, charts=charts)
     print(f"scene7b_report: wrote {out / 'report.md'} ({len(runs.runs)} runs)")
 
 
 if __name__ == "__main__":
-    main()
+    main_guard(main)

@@ -7,26 +7,21 @@ OUTDIR is what drivers/scene8a.sh wrote: command.txt, impact.txt (mesh, foundati
 k of the impact runs), and one folder per run (impact/<method>, fig85/<run>,
 sweep/<method>_k<k>) holding ball.dat (its deck), method.txt, energy.csv and case.hist (sig-march),
 march.log and wall.txt (the stage's wall-clock seconds). Writes OUTDIR/report.md, OUTDIR/
-methods.csv, OUTDIR/sweep.csv and the PNGs the report shows. The thesis's values come from
-postproc/thesis_values_8a.csv when it exists, else from the 8a rows of
-../shared/reference/thesis_values.csv. Every number in the report is read from those files or
-computed from them here.
+methods.csv, OUTDIR/sweep.csv, OUTDIR/scene.json (the scene index entry) and the PNGs the report
+shows. The thesis's values come from the 8a rows of postproc/thesis_values.csv. Every number in
+the report is read from those files or computed from them here (with the report library
+postproc/sigreport: decks, case.hist through sig-dump, thesis values, checks, charts).
 """
 import argparse
 import csv
 import math
-import struct
-import sys
 from pathlib import Path
 
-import matplotlib
+from sigreport import (Checks, Deck, MapCell, MapPanel, Point, Series, Table, load_thesis,
+                       main_guard, markdown_table, pyplot, read_command, read_ds,
+                       speed_accuracy_chart, stability_map, write_scene_json)
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
-
-HERE = Path(__file__).resolve().parent
-THESIS_CSVS = (HERE / "thesis_values_8a.csv",
-               HERE.parent.parent / "shared" / "reference" / "thesis_values.csv")
+plt = pyplot()
 
 METHODS = ("signorini", "compliance", "specific-penalty", "emm", "two-step", "ipm", "ipm-emm")
 CLASSICAL = ("signorini", "compliance", "specific-penalty", "emm", "two-step")  # Fig 8.3
@@ -53,58 +48,17 @@ R_READING = 3.0        # the r = 1e12 Pa/m reading: penetration within a factor 
 GAIN = 0.1             # stability: E_end > E0 (1 + 0.1 %) is an energy gain
 
 
-def fail(message):
-    sys.exit(f"scene8a_report.py: error: {message}")
-
-
 # ---------------------------------------------------------------------------------------------
 # Reading the files
 
 
-def read_keyvalues(path):
-    info = {}
-    for line in path.read_text().splitlines():
-        key, _, value = line.partition(":")
-        info[key.strip()] = value.strip()
-    return info
-
-
-def read_deck(path):
-    """Cards of a datafile: keyword (upper case) -> {field (lower case): text}."""
-    cards = {}
-    for line in path.read_text().splitlines():
-        line = line.split("#", 1)[0].split()
-        if not line:
-            continue
-        fields = {}
-        for item in line[1:]:
-            key, _, value = item.partition("=")
-            fields[key.lower()] = value
-        cards.setdefault(line[0].upper(), fields)
-    return cards
-
-
-def read_ds_small(path):
-    """The integer, real and text arrays of a DS file (core/ds.hpp layout) holding at most 64
-    values; the big state arrays are skipped."""
-    data = path.read_bytes()
-    if data[:5] != b"SIGDS":
-        fail(f"{path}: not a DS file")
-    count = struct.unpack_from("<I", data, 12)[0]
-    pos, arrays = 16 + 128 + 4, {}
-    for _ in range(count):
-        name = data[pos:pos + 24].split(b"\0")[0].decode()
-        kind, rank = struct.unpack_from("<II", data, pos + 24)
-        size = struct.unpack_from("<Q", data, pos + 32 + 8 * rank)[0]
-        start = pos + 40 + 8 * rank
-        payload = data[start:start + size]
-        if kind == 3:
-            arrays[name] = payload.split(b"\0")[0].decode(errors="replace")
-        elif size <= 64 * 8:
-            values = struct.unpack("<%d%s" % (size // 8, "q" if kind == 1 else "d"), payload)
-            arrays[name] = values[0] if len(values) == 1 else list(values)
-        pos = start + size + 4
-    return arrays
+def hist_scalars(path):
+    """converged, failure and time_march of a case.hist (sig-dump), one value each; {} when the
+    march wrote no case.hist."""
+    if not path.is_file():
+        return {}
+    ds = read_ds(path, arrays=["converged", "failure", "time_march"])
+    return {name: v if isinstance(v, str) else v[0] for name, v in ds.values.items()}
 
 
 def read_run(folder):
@@ -116,16 +70,16 @@ def read_run(folder):
         rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
     if not rows:
         return None
-    deck = read_deck(folder / "ball.dat")
-    hist = read_ds_small(folder / "case.hist") if (folder / "case.hist").is_file() else {}
+    deck = Deck.read(folder / "ball.dat")
+    hist = hist_scalars(folder / "case.hist")
     wall = folder / "wall.txt"
     run = {
         "folder": folder,
         "method": (folder / "method.txt").read_text().strip(),
         "rows": rows,
-        "k": float(deck["TIME"]["k"]),
-        "T": float(deck["TIME"]["t"]),
-        "gap": float(deck["CONTACT"].get("gap", "nan")),
+        "k": deck.number("TIME", "k"),
+        "T": deck.number("TIME", "T"),
+        "gap": deck.number("CONTACT", "gap", math.nan),
         "radius": 10.0,
         "wall": float(wall.read_text()) if wall.is_file() else math.nan,
         "hist": hist,
@@ -178,21 +132,6 @@ def mesh_nodes(out, mesh):
     return next((words[i - 1] for i, w in enumerate(words) if w.startswith("nodes")), "?")
 
 
-def read_thesis():
-    for path in THESIS_CSVS:
-        if path.is_file():
-            values = {}
-            for line in path.read_text().splitlines():
-                if line.startswith("#") or not line.strip():
-                    continue
-                row = line.split(",")
-                if row[0] == "8a":
-                    values[(row[1], row[2])] = (row[3], row[4], row[5])
-            if values:
-                return values, path
-    return {}, None
-
-
 # ---------------------------------------------------------------------------------------------
 # Charts
 
@@ -228,25 +167,23 @@ def impact_window(runs):
 
 
 def speed_chart(out, sweep):
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    """Each strategy a series, each k a point: wall time per simulated second against the energy
+    change across the impact; a march that stopped (Nv) on the top edge."""
+    series = []
     for method in METHODS:
-        pts = [(max(abs(r["change"]), 1e-6), r["wall"] / r["T"], r["k"]) for r in sweep
-               if r["method"] == method and r["converged"] and not math.isnan(r["wall"])]
-        if not pts:
-            continue
-        pts.sort(key=lambda p: -p[2])
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker=MARKER[method],
-                  label=LABEL[method])
-        for x, y, k in pts:
-            ax.annotate(f"{k:g}", (x, y), fontsize=6, xytext=(2, 2), textcoords="offset points")
-    ax.set_xlabel("|energy change across the impact| / E0 (%); below 1e-6 drawn at 1e-6")
-    ax.set_ylabel("wall time per simulated second (s)")
-    ax.set_title("Speed against accuracy (labels: time step k)")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out / "speed_accuracy.png", dpi=110)
-    plt.close(fig)
+        runs = sorted((r for r in sweep if r["method"] == method and not math.isnan(r["wall"])),
+                      key=lambda r: -r["k"])
+        if runs:
+            series.append(Series(LABEL[method], [
+                Point(r["wall"] / r["T"], max(abs(r["change"]), 1e-6) if r["converged"] else None,
+                      f"{r['k']:g}") for r in runs], marker=MARKER[method], hollow=False,
+                markersize=5))
+    speed_chart_path = out / "speed_accuracy.png"
+    speed_accuracy_chart(speed_chart_path, series, xlabel="wall time per simulated second (s)",
+                         ylabel="|energy change| / E0 across the impact (%)",
+                         title="Speed against accuracy (labels: k; changes below 1e-6 % at 1e-6)",
+                         figsize=(7.5, 4.5),
+                         dpi=110, legend_fontsize=7, label_fontsize=6)
 
 
 def stability_status(run):
@@ -264,24 +201,18 @@ def stability_status(run):
 
 
 def stability_chart(out, sweep, ks):
-    colors = {"ok": "#8fd18f", "gain": "#f0b050", "dissipates": "#9ec5e8", "chatter": "#e8e070",
-              "Nv": "#e07070", "missing": "#dddddd"}
-    fig, ax = plt.subplots(figsize=(1.6 + 1.3 * len(ks), 0.5 + 0.5 * len(METHODS)))
-    for i, method in enumerate(METHODS):
-        for j, k in enumerate(ks):
+    cells = []
+    for method in METHODS:
+        row = []
+        for k in ks:
             run = next((r for r in sweep if r["method"] == method and r["k"] == k), None)
             status = stability_status(run) if run else "missing"
             text = status if status in ("Nv", "missing") else f"{run['change']:+.2f}%\n{status}"
-            ax.add_patch(plt.Rectangle((j, i), 1, 1, color=colors[status.split("+")[0]]))
-            ax.text(j + 0.5, i + 0.5, text, ha="center", va="center", fontsize=7)
-    ax.set_xlim(0, len(ks))
-    ax.set_ylim(len(METHODS), 0)
-    ax.set_xticks([j + 0.5 for j in range(len(ks))], [f"k = {k:g}" for k in ks], fontsize=7)
-    ax.set_yticks([i + 0.5 for i in range(len(METHODS))], METHODS, fontsize=7)
-    ax.set_title("Stability: energy change and behaviour per strategy and k", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out / "stability.png", dpi=110)
-    plt.close(fig)
+            row.append(MapCell(text, status))
+        cells.append(row)
+    panel = MapPanel("Stability: energy change and behaviour per strategy and k", list(METHODS),
+                     [f"k = {k:g}" for k in ks], cells)
+    stability_map(out / "stability.png", [panel], fontsize=7)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -293,11 +224,12 @@ def fmt(x, spec=".3g"):
 
 
 def checks(runs, thesis):
-    """(requirement, measured, PASS/FAIL) rows of the issue's "must show"."""
-    out = []
+    """The issue's "must show" as Checks (name: the requirement, ours: what was measured); a
+    missing run is a FAIL (the driver makes every one)."""
+    out = Checks()
 
     def row(text, measured, ok):
-        out.append((text, measured, "PASS" if ok else "FAIL"))
+        out.add(text, bool(ok), ours=measured)
 
     for name in ("two-step", "specific-penalty"):
         run = runs.get(name)
@@ -328,7 +260,7 @@ def checks(runs, thesis):
         f"{fmt(100 * (1 - emm['change'] / signorini['change']), '.0f')} % of the loss removed"
         if emm and signorini and signorini["change"] else "no run", ok)
     run = runs.get("specific-penalty")
-    reference = float(thesis.get(("penetration_error", "specific penalty"), ("0.0034",))[0])
+    reference = float(thesis.get("penetration_error", "specific penalty", "0.0034"))
     ok = (run is not None and reference / R_READING <= run["penetration"] <= reference * R_READING)
     row(f"r = 1e12 Pa/m reading: specific penalty's penetration within a factor {R_READING:g} of "
         f"the thesis's {reference:g} m", f"{fmt(run['penetration'])} m" if run else "no run", ok)
@@ -337,47 +269,45 @@ def checks(runs, thesis):
 
 def thesis_beside(name, run, thesis):
     if name == "specific-penalty":
-        v = thesis.get(("penetration_error", "specific penalty"))
-        return f"penetration {v[0]} {v[1]} ({v[2]})" if v else ""
+        v = thesis.row("penetration_error", "specific penalty")
+        return f"penetration {v.value} {v.unit} ({v.where})" if v else ""
     if name == "two-step":
-        v = thesis.get(("penetration_error", "two-step [13]"))
-        return f"penetration {v[0]} {v[1]} ({v[2]})" if v else ""
+        v = thesis.row("penetration_error", "two-step [13]")
+        return f"penetration {v.value} {v.unit} ({v.where})" if v else ""
     if name == "ipm-emm":
-        v = thesis.get(("ipm_emm", "dissipation/penetration"))
+        v = thesis.row("ipm_emm", "dissipation/penetration")
         if v:
-            d, p = v[0].split("/")
-            return f"dissipation {d} %, penetration {p} % of R ({v[2]})"
+            d, p = v.value.split("/")
+            return f"dissipation {d} %, penetration {p} % of R ({v.where})"
     return {"signorini": "dissipates (Fig 8.3)", "compliance": "dissipates (Fig 8.3)",
             "emm": "reduces the dissipation, not to zero (Fig 8.3)",
             "ipm": "conserves better, fluctuates (Fig 8.4)"}.get(name, "")
 
 
-def method_table(runs, names, thesis, with_thesis=True):
-    head = ("| method | dE across impact (%) | max abs(E - E0) (%) | max penetration (m) | "
-            "(% of R) | max active | Newton its | steps | wall (s) | thesis |")
-    lines = [head, "|" + "---|" * 10]
+def method_table(runs, names, thesis, with_thesis=True, caption=""):
+    table = Table(["method", "dE across impact (%)", "max abs(E - E0) (%)", "max penetration (m)",
+                   "(% of R)", "max active", "Newton its", "steps", "wall (s)", "thesis"],
+                  caption=caption)
     for name in names:
         run = runs.get(name)
         if run is None:
-            lines.append(f"| {name} | no run | | | | | | | | |")
+            table.add(name, "no run", *[""] * 8)
             continue
         status = "" if run["converged"] else " **Nv**"
-        lines.append(
-            f"| {LABEL.get(name, name)}{status} | {run['change']:+.4f} | {run['excursion']:.4f} | "
-            f"{run['penetration']:.3g} | {100 * run['penetration'] / run['radius']:.3g} | "
-            f"{run['max_active']} | {run['newton']} | {run['steps']} | {fmt(run['wall'])} | "
-            f"{thesis_beside(name, run, thesis) if with_thesis else ''} |")
-    return lines
+        table.add(f"{LABEL.get(name, name)}{status}", f"{run['change']:+.4f}",
+                  f"{run['excursion']:.4f}", f"{run['penetration']:.3g}",
+                  f"{100 * run['penetration'] / run['radius']:.3g}", run["max_active"],
+                  run["newton"], run["steps"], fmt(run["wall"]),
+                  thesis_beside(name, run, thesis) if with_thesis else "")
+    return table
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("outdir", type=Path)
     out = parser.parse_args().outdir
-    if not (out / "command.txt").is_file():
-        fail(f"{out / 'command.txt'} is missing: run drivers/scene8a.sh first")
-    info = read_keyvalues(out / "command.txt")
-    thesis, thesis_path = read_thesis()
+    info = read_command(out)
+    thesis = load_thesis().scene("8a")
 
     impact = {m: r for m in METHODS if (r := read_run(out / "impact" / m))}
     fig85 = {}
@@ -400,9 +330,11 @@ def main():
         LABEL[n] = f"IPM + EMM, g = {float(n[1:]):g} m"
     energy_chart(out, fig85, names85 + ["specific-penalty-emm"],
                  "Fig 8.5: IPM + EMM against the allowed penetration g", "fig8_5.png", window)
+    charts = {"fig8_3": "fig8_3.png", "fig8_4": "fig8_4.png", "fig8_5": "fig8_5.png"}
     if sweep:
         speed_chart(out, sweep)
         stability_chart(out, sweep, ks)
+        charts.update(speed_accuracy="speed_accuracy.png", stability="stability.png")
 
     with (out / "methods.csv").open("w") as f:
         f.write("method,energy_change_percent,max_excursion_percent,max_penetration,"
@@ -422,8 +354,9 @@ def main():
     impact_info = (out / "impact.txt").read_text().split() if (out / "impact.txt").is_file() \
         else ["?", "?", "?", "?"]
     any_run = next(iter(impact.values()), None)
+    title = "Scene 8a: elastic ball impact (thesis ch. 8.5, Figs 8.3-8.5)"
     md = [
-        "# Scene 8a: elastic ball impact (thesis ch. 8.5, Figs 8.3-8.5)",
+        f"# {title}",
         "",
         f"Command: `{info.get('command', '?')}` ({info.get('date', '?')}, "
         f"{info.get('host', '?')}, revision {info.get('revision', '?')}); then "
@@ -466,9 +399,11 @@ def main():
         "(3.53), which E does not count; hence their dips during contact.",
         "",
     ]
-    md += method_table(impact, METHODS, thesis)
+    key_table = method_table(impact, METHODS, thesis, caption="Energy across the impact per "
+                             "strategy, ours with the thesis's statements beside")
+    md += key_table.lines()
     md += ["", "Fig 8.5 runs (IPM + EMM against g, and the specific penalty with EMM):", ""]
-    md += method_table(fig85, names85 + ["specific-penalty-emm"], thesis, with_thesis=False)
+    md += method_table(fig85, names85 + ["specific-penalty-emm"], thesis, with_thesis=False).lines()
     md += ["", "The thesis (p.230): with g = 0.001 IPM + EMM gives the result of the specific "
            "penalty with EMM, every node staying in compliance without reaching g. Ours:", ""]
     reference = fig85.get("specific-penalty-emm")
@@ -479,11 +414,11 @@ def main():
                 f"{abs(run['change'] - reference['change']):.3g} %" if reference else "")
         md.append(f"- g = {run['gap']:g} m: the bound is {'reached' if reached else 'not reached'}"
                   f" (max penetration {run['penetration']:.3g} m){same}.")
-    md += ["", "## Checks (issue 5, \"what it must show\")", "",
-           "| requirement | measured | result |", "|---|---|---|"]
-    md += [f"| {a} | {b} | {c} |" for a, b, c in checks(impact, thesis)]
-    md += ["", f"Thesis values from `{thesis_path}`." if thesis_path else
-           "Thesis values: no thesis_values file found.", ""]
+    found = checks(impact, thesis)
+    md += ["", "## Checks (issue 5, \"what it must show\")", ""]
+    md += found.table(("name", "ours", "result"),
+                      header=("requirement", "measured", "result")).lines()
+    md += ["", "Thesis values from `postproc/thesis_values.csv`.", ""]
     if sweep:
         md += ["## Speed against accuracy and stability over the time step", "",
                "The window: the foundation 0.5 m below the ball (impact at t = 0.05 s), T = "
@@ -497,8 +432,8 @@ def main():
                "again (contact episodes > 1) or the active count went up and down more than "
                "once; ok otherwise. The issue asks k = 1e-2 ... 1e-4; the coarser k = 1e-1 and "
                "3e-2 are there to find where the strategies fail.", "",
-               "| method | " + " | ".join(f"k = {k:g}" for k in ks) + " |",
-               "|---|" + "---|" * len(ks)]
+               ]
+        rows = []
         for method in METHODS:
             cells = []
             for k in ks:
@@ -512,15 +447,16 @@ def main():
                     f"{run['episodes']} ep., {run['reversals']} rev., "
                     f"{fmt(run['wall'] / run['T'], '.3g')} s/s: **{status}**"
                     + (f" ({run['failure']})" if status == "Nv" and run["failure"] else ""))
-            md.append(f"| {method} | " + " | ".join(cells) + " |")
-        md.append("")
+            rows.append([method] + cells)
+        md += [markdown_table(["method"] + [f"k = {k:g}" for k in ks], rows), ""]
     md += ["Files: `methods.csv`, `sweep.csv`; per run `energy.csv` (every step) and `case.hist`. "
            "Fig 8.2 (positions and contact forces before, during and after the impact) is for "
            "ParaView: `fig82/ipm-emm/ball.pvd` holds every step of IPM + EMM across the impact "
            "(point data displacement, velocity, contact_pressure; *Warp By Vector*).", ""]
     (out / "report.md").write_text("\n".join(md))
+    write_scene_json(out, "8a", title, info, found, key_table=key_table, charts=charts)
     print(out / "report.md")
 
 
 if __name__ == "__main__":
-    main()
+    main_guard(main)

@@ -2,3 +2,8 @@
 # spin-wait, and on a shared 2-core machine they slowed the N = 512 floor solve of
 # bench-hertz.sh from 0.20 s to 0.45-0.64 s (measured under load, 3 runs each).
 export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1}
+# An installed tree (cmake --install: drivers in share/signorini/, stages in bin/) says where its
+# stages are; in the source tree they are in build/bin (or $SIG_BIN).
+if [ -f "$(dirname "${BASH_SOURCE[0]}")/installed.sh" ]; then
+  source "$(dirname "${BASH_SOURCE[0]}")/installed.sh"
+fi

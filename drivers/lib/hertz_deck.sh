@@ -1,6 +1,7 @@
 # Sourced by scene7a.sh, friction_hertz.sh and bench-hertz.sh: variants of the Hertz deck and
 # one-stage runs.
 # Needs $bin (stage executables) and a die() function from the caller.
+source "$(dirname "${BASH_SOURCE[0]}")/deck.sh"
 
 # The parameter a method's value sets on the SOLVER card.
 parameter_of() {
@@ -17,58 +18,30 @@ parameter_of() {
 # INITIAL u= card (the frictional Hertz deck) gets the rigid start shift of mesh N. METHOD =
 # linear gives the contact-free floor problem of the benchmark: Gamma3 held (DIRICHLET ref=3
 # uy=0, and ux=0 where the template has friction, the body's only sideways support), no
-# FRICTION or INITIAL card, one linear solve. The result is checked, so a template whose cards
-# moved fails loudly here.
+# FRICTION or INITIAL card, one linear solve. Written by deck_variant (lib/deck.sh): a template
+# whose cards moved fails loudly there.
 hertz_deck() {
-  local template=$1 deck=$2 n=$3 grading=$4 method=${5:-} value=${6:-} name=
-  local edits=(-e "/^[[:space:]]*MESH[[:space:]]/ s/([[:space:]])N=[^[:space:]]+/\1N=$n/")
-  [ -z "$grading" ] || edits+=(-e "/^[[:space:]]*MESH[[:space:]]/ s/([[:space:]])grading=[^[:space:]]+/\1grading=$grading/")
-  local initial=0 held=uy=0
-  grep -qiE '^[[:space:]]*INITIAL[[:space:]](.*[[:space:]])?u=' "$template" && initial=1
-  grep -qiE '^[[:space:]]*FRICTION[[:space:]]' "$template" && held="ux=0 uy=0"
+  local template=$1 deck=$2 n=$3 grading=$4 method=${5:-} value=${6:-}
+  local edits=(--set "MESH.N=$n")
+  [ -z "$grading" ] || edits+=(--set "MESH.grading=$grading")
   if [ "$method" = linear ]; then
+    local held=uy=0
+    if deck_has "$template" FRICTION; then held="ux=0 uy=0"; fi
     # The COMPARE card (Hertz) needs contact: the floor problem has none.
-    edits+=(-e "/^[[:space:]]*(COMPARE|FRICTION|INITIAL)[[:space:]]/ d"
-      -e "/^[[:space:]]*CONTACT[[:space:]]/ c\\
-DIRICHLET ref=3 $held"
-      -e "/^[[:space:]]*SOLVER[[:space:]]/ {
-        s/[[:space:]](r|gamma|c|eps|maxit)=[^[:space:]]+//g
-        s/([[:space:]])method=[^[:space:]]+/\1method=linear/
-      }")
+    edits+=(--drop-card COMPARE --drop-card FRICTION --drop-card INITIAL
+      --replace-card CONTACT "DIRICHLET ref=3 $held"
+      --drop SOLVER.r --drop SOLVER.gamma --drop SOLVER.c --drop SOLVER.eps --drop SOLVER.maxit
+      --set SOLVER.method=linear)
   elif [ -n "$method" ]; then
-    name=$(parameter_of "$method")
-    edits+=(-e "/^[[:space:]]*SOLVER[[:space:]]/ {
-      s/[[:space:]](r|gamma|c)=[^[:space:]]+//g
-      s/([[:space:]])method=[^[:space:]]+/\1method=$method $name=$value/
-    }")
+    edits+=(--drop SOLVER.r --drop SOLVER.gamma --drop SOLVER.c --set "SOLVER.method=$method"
+      --set "SOLVER.$(parameter_of "$method")=$value")
   fi
-  local shift=
-  if [ $initial -eq 1 ] && [ "$method" != linear ]; then
+  if [ "$method" != linear ] && deck_value "$template" INITIAL u >/dev/null; then
     local radius
-    radius=$(sed -nE '/^[[:space:]]*MESH[[:space:]]/ s/.*[[:space:]]R=([^[:space:]]+).*/\1/p' "$template")
-    [ -n "$radius" ] || die "$template: no R= on the MESH card for the rigid start shift"
-    shift=$(rigid_shift "$radius" "$n")
-    edits+=(-e "/^[[:space:]]*INITIAL[[:space:]]/ s/([[:space:]])u=[^[:space:]]+/\1u=0,-$shift/")
+    radius=$(deck_value "$template" MESH R) || die "$template: no R= on the MESH card for the rigid start shift"
+    edits+=(--set "INITIAL.u=0,-$(rigid_shift "$radius" "$n")")
   fi
-  sed -E "${edits[@]}" "$template" >"$deck"
-  grep -qE "^[[:space:]]*MESH[[:space:]].*[[:space:]]N=$n([[:space:]]|$)" "$deck" ||
-    die "$template: no MESH card with N= to replace"
-  if [ -n "$grading" ]; then
-    grep -qE "^[[:space:]]*MESH[[:space:]].*[[:space:]]grading=$grading([[:space:]]|$)" "$deck" ||
-      die "$template: no MESH card with grading= to replace"
-  fi
-  if [ -n "$shift" ]; then
-    grep -qE "^[[:space:]]*INITIAL[[:space:]](.*[[:space:]])?u=0,-$shift([[:space:]]|$)" "$deck" ||
-      die "$template: no INITIAL u= to set the rigid shift on"
-  fi
-  if [ "$method" = linear ]; then
-    ! grep -qiE '^[[:space:]]*(CONTACT|FRICTION|INITIAL)' "$deck" &&
-      grep -qE "^DIRICHLET ref=3 $held$" "$deck" && grep -qE 'method=linear' "$deck" ||
-      die "$template: cannot turn the deck into the linear floor problem"
-  elif [ -n "$method" ]; then
-    grep -qE "^[[:space:]]*SOLVER[[:space:]].*method=$method $name=$value([[:space:]]|$)" "$deck" ||
-      die "$template: no SOLVER card with method= to replace"
-  fi
+  deck_variant "$template" "$deck" "${edits[@]}"
 }
 
 # rigid_shift R N: h^2 / R, h = pi R / N, the rigid start shift that puts the three lowest nodes

@@ -3,7 +3,10 @@
 source "$(dirname "${BASH_SOURCE[0]}")/environment.sh"
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bin=${SIG_BIN:-$root/build/bin}
+# The reports read DS files through this build's sig-dump (postproc/sigreport/ds.py).
+export SIG_BIN=$bin
 python=${PYTHON:-/usr/bin/python3}
+source "$(dirname "${BASH_SOURCE[0]}")/deck.sh"
 
 die() {
   echo "$(basename "$0"): error: $*" >&2
@@ -51,6 +54,12 @@ parse_quick_out() {
   done
 }
 
+# record_seconds START: append the wall seconds of the runs since START ($SECONDS then) to
+# command.txt, the "seconds" of the scene index entry (out/<scene>/scene.json).
+record_seconds() {
+  echo "seconds: $((SECONDS - $1))" >>"$out/command.txt"
+}
+
 # provenance: the lines of a scene's command.txt that say how it was made (the driver's
 # $invocation, $out and $template; the date, host, revision and executables).
 provenance() {
@@ -61,4 +70,37 @@ provenance() {
   echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
   echo "SIG_BIN: $bin"
   echo "template: $template"
+}
+
+# Progress of a long driver: `progress_begin N` before its N runs (a run: any unit of work of
+# roughly even cost, e.g. sig-solve + sig-post of one variant), `progress_step WHAT` after each.
+# Prints "[k/N] WHAT: 1m02s elapsed, about 3m10s left", the rest estimated from the mean time
+# per run so far; a driver that does more runs than it announced shows "[k/k]".
+progress_begin() {
+  progress_total=$1
+  progress_done=0
+  progress_start=${EPOCHREALTIME/./}
+}
+
+# progress_seconds MICROSECONDS: "42s", "3m05s" or "1h02m".
+progress_seconds() {
+  local s=$(($1 / 1000000))
+  if [ $s -lt 10 ]; then
+    printf '%d.%ds\n' $s $(($1 / 100000 % 10))
+  elif [ $s -lt 60 ]; then
+    echo "${s}s"
+  elif [ $s -lt 3600 ]; then
+    printf '%dm%02ds\n' $((s / 60)) $((s % 60))
+  else
+    printf '%dh%02dm\n' $((s / 3600)) $((s % 3600 / 60))
+  fi
+}
+
+progress_step() {
+  progress_done=$((progress_done + 1))
+  [ "$progress_done" -le "$progress_total" ] || progress_total=$progress_done
+  local elapsed=$((${EPOCHREALTIME/./} - progress_start))
+  local left=$((elapsed / progress_done * (progress_total - progress_done)))
+  echo "[$progress_done/$progress_total] $*: $(progress_seconds "$elapsed") elapsed, about" \
+    "$(progress_seconds "$left") left"
 }

@@ -53,7 +53,19 @@ TEST(ContIo, RoundTripPlaneAndDisc) {
   truncated.c3 = 1e8;
   truncated.friction = FrictionLaw::tresca;
   truncated.threshold = 2;
-  for (const ContactLaw& law : {unilateral, truncated, ContactLaw{}})
+  ContactLaw nonmonotone = unilateral;
+  nonmonotone.friction = FrictionLaw::nonmonotone;
+  nonmonotone.a = 2;
+  nonmonotone.b = 0.02;
+  nonmonotone.alpha = 100;
+  nonmonotone.mu = 1.5;
+  nonmonotone.bound = FrictionBound::compliance;
+  nonmonotone.of = SlipMeasure::slip_rate;
+  ContactLaw damped;
+  damped.normal = NormalLaw::damped_unilateral;
+  damped.cn = 10;
+  damped.depth = 0.05;
+  for (const ContactLaw& law : {unilateral, truncated, nonmonotone, damped, ContactLaw{}})
     for (const Obstacle* obstacle :
          {static_cast<const Obstacle*>(&plane), static_cast<const Obstacle*>(&disc)}) {
       const ContactElements written = build_contact_elements(mesh, 3, *obstacle, law, 0.5);
@@ -108,7 +120,13 @@ TEST(ContIo, InconsistentFilesAreRefused) {
   expect_error_naming(damaged("lagrange_node", Ints{10, 12, 11}), "lagrange_node");
   expect_error_naming(damaged("node", Ints{1, 2, 10}), "node");
   expect_error_naming(damaged("law", Ints{1, 7, 1}), "law");
-  expect_error_naming(damaged("friction_law", Ints{0, 3, 0}), "friction_law");
+  expect_error_naming(damaged("friction_law", Ints{0, 4, 0}), "friction_law");
+  expect_error_naming(damaged("friction_bound", Ints{0, 2, 0}), "friction_bound");
+  expect_error_naming(damaged("friction_of", Ints{0, 0, -1}), "friction_of");
+  expect_error_naming(damaged("friction_alpha", std::vector<double>{0, -1, 0}),
+                      "array friction_alpha, element 2");
+  expect_error_naming(damaged("friction_b", std::vector<double>{0, 1, 0}),
+                      "array friction_b, element 2"); // b = 1 > a = 0
   // A compliance law without its slope: the ranges of the card reader hold for the file too.
   expect_error_naming(damaged("law", Ints{1, 2, 1}), "array cn, element 2");
   // An unused parameter out of range is refused all the same (a signorini element's cn, c3).

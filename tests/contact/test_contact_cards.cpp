@@ -135,6 +135,44 @@ TEST(ContactCards, LawsAndFriction) {
                    ->has_friction());
 }
 
+TEST(ContactCards, LawsInVelocity) {
+  const Mesh mesh = test::square_mesh(2);
+  const auto e = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 "
+                           "law=damped-unilateral cn=10 g=0.01\n",
+                           mesh);
+  ASSERT_TRUE(e.has_value());
+  for (const ContactLaw& law : e->law) {
+    EXPECT_EQ(law.normal, NormalLaw::damped_unilateral);
+    EXPECT_EQ(law.cn, 10);
+    EXPECT_EQ(law.depth, 0.01);
+    EXPECT_TRUE(law.in_velocity());
+  }
+  const auto d =
+      from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=damped cn=2\n", mesh);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_EQ(d->law.front().normal, NormalLaw::damped);
+  EXPECT_FALSE(d->law.front().has_wall());
+}
+
+// exclude= drops the nodes of other references (the clamped ends of Gamma3); the others keep
+// their tributary weights.
+TEST(ContactCards, ExcludedNodes) {
+  const Mesh mesh = test::square_mesh(4);
+  const auto all = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1\n", mesh);
+  const auto inner =
+      from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 exclude=1,2\n", mesh);
+  ASSERT_TRUE(all && inner);
+  ASSERT_EQ(all->size(), 5);
+  ASSERT_EQ(inner->size(), 3);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(inner->node[i], all->node[i + 1]);
+    EXPECT_EQ(inner->weight[i], 0.25);
+    EXPECT_EQ(inner->lagrange_node[i], mesh.num_nodes() + i);
+  }
+  expect_input_error("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 exclude=9", "exclude",
+                     "reference 9 carries no mesh node");
+}
+
 TEST(ContactCards, UnknownLaw) {
   expect_input_error("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=tresca", "law",
                      "expected one of signorini|compliance|compliance-unilateral");
@@ -152,6 +190,10 @@ TEST(ContactCards, BadLawParameters) {
   // A field the law does not read.
   expect_input_error(plane + "cn=10", "cn", "not a parameter of law=signorini");
   expect_input_error(plane + "law=compliance cn=10 g=0.5", "g", "not a parameter");
+  expect_input_error(plane + "law=damped-unilateral cn=10", "g", "velocity bound");
+  expect_input_error(plane + "law=damped cn=10 g=0.5", "g", "not a parameter of law=damped");
+  expect_input_error(plane + "law=damped cn=10 c3=5", "c3", "not a parameter of law=damped");
+  expect_input_error(plane + "law=damped", "cn", "missing");
 }
 
 // FRICTION on line 3 of a deck with a CONTACT card on line 2 must fail on `field`.
@@ -168,9 +210,67 @@ TEST(ContactCards, BadFriction) {
   expect_friction_error("FRICTION ref=3 law=coulomb mu=0.2 threshold=1", "threshold",
                         "not a parameter of law=coulomb");
   expect_friction_error("FRICTION ref=2 law=coulomb mu=0.2", "ref", "has no CONTACT card");
-  expect_friction_error("FRICTION ref=3 law=viscous", "law", "expected one of none|tresca|coulomb");
+  expect_friction_error("FRICTION ref=3 law=viscous", "law",
+                        "expected one of none|tresca|coulomb|nonmonotone");
   // Friction without any CONTACT card.
   expect_deck_error("FRICTION ref=3 law=coulomb mu=0.2", 2, "ref", "needs a CONTACT card");
+}
+
+TEST(ContactCards, NonmonotoneFrictionAndItsBound) {
+  const Mesh mesh = test::square_mesh(2);
+  const auto e = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 "
+                           "law=compliance-unilateral cn=10 g=0.5\n"
+                           "FRICTION ref=3 law=nonmonotone a=2 b=0.02 alpha=1 bound=compliance\n",
+                           mesh);
+  ASSERT_TRUE(e.has_value());
+  for (const ContactLaw& law : e->law) {
+    EXPECT_EQ(law.friction, FrictionLaw::nonmonotone);
+    EXPECT_EQ(law.a, 2);
+    EXPECT_EQ(law.b, 0.02);
+    EXPECT_EQ(law.alpha, 1);
+    EXPECT_EQ(law.of, SlipMeasure::slip); // the default
+    EXPECT_EQ(law.bound, FrictionBound::compliance);
+    EXPECT_EQ(law.mu, 2); // mu(0) = a: the first convex solve starts from no slip
+  }
+  // Coulomb's bound defaults to the whole normal pressure (1.35), and of=slip-rate is read.
+  const auto c = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1\n"
+                           "FRICTION ref=3 law=coulomb mu=0.4\n",
+                           mesh);
+  EXPECT_EQ(c->law.front().bound, FrictionBound::normal);
+  const auto r = from_text("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=compliance "
+                           "cn=10\nFRICTION ref=3 law=nonmonotone a=1 b=0.5 alpha=2000 "
+                           "of=slip-rate bound=normal\n",
+                           mesh);
+  EXPECT_EQ(r->law.front().of, SlipMeasure::slip_rate);
+  EXPECT_EQ(r->law.front().bound, FrictionBound::normal);
+}
+
+TEST(ContactCards, BadNonmonotoneFriction) {
+  const std::string compliance = "CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 "
+                                 "law=compliance-unilateral cn=10 g=0.5\n";
+  const auto expect_error = [&](const std::string& friction, const std::string& field,
+                                const std::string& detail) {
+    expect_deck_error(compliance + friction, 3, field, detail);
+  };
+  expect_error("FRICTION ref=3 law=nonmonotone a=2 b=0.02 alpha=-1", "alpha", ">= 0");
+  expect_error("FRICTION ref=3 law=nonmonotone a=1 b=2 alpha=1", "b", "must be <= a");
+  expect_error("FRICTION ref=3 law=nonmonotone b=0.5 alpha=1", "a", "missing");
+  expect_error("FRICTION ref=3 law=nonmonotone a=1 alpha=1", "b", "missing");
+  expect_error("FRICTION ref=3 law=nonmonotone a=1 b=0.5", "alpha", "missing");
+  expect_error("FRICTION ref=3 law=nonmonotone a=-1 b=0 alpha=1", "a", ">= 0");
+  expect_error("FRICTION ref=3 law=nonmonotone a=1 b=0.5 alpha=1 mu=0.3", "mu",
+               "not a parameter of law=nonmonotone");
+  expect_error("FRICTION ref=3 law=nonmonotone a=1 b=0.5 alpha=1 of=speed", "of",
+               "expected one of slip|slip-rate");
+  expect_error("FRICTION ref=3 law=nonmonotone a=1 b=0.5 alpha=1 bound=wall", "bound",
+               "expected one of normal|compliance");
+  // The parameters of (1.39) and the bound belong to their laws.
+  expect_error("FRICTION ref=3 law=coulomb mu=0.3 a=1", "a", "not a parameter of law=coulomb");
+  expect_error("FRICTION ref=3 law=tresca threshold=1 bound=compliance", "bound",
+               "not a parameter of law=tresca");
+  // Signorini has no compliance pressure to bound the slip by.
+  expect_friction_error("FRICTION ref=3 law=coulomb mu=0.3 bound=compliance", "bound",
+                        "no compliance pressure");
 }
 
 TEST(ContactCards, OtherMistakes) {

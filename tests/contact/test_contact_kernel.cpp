@@ -84,26 +84,35 @@ void expect_kink_side(const ContactLaw& law, const NodeVariables& x, double r, i
   }
 }
 
-ContactLaw law_of(NormalLaw normal, FrictionLaw friction) {
+ContactLaw law_of(NormalLaw normal, FrictionLaw friction,
+                  FrictionBound bound = FrictionBound::normal) {
   ContactLaw law;
   law.normal = normal;
   law.cn = 7.5;
-  law.depth = normal == NormalLaw::compliance ? 0.0 : 0.4;
+  law.depth = normal == NormalLaw::compliance || normal == NormalLaw::damped ? 0.0 : 0.4;
   law.friction = friction;
   law.mu = 0.3;
   law.threshold = 2.0;
+  if (friction == FrictionLaw::nonmonotone) { // mu frozen at mu(r) of some slip r = 0.2
+    law.a = 0.5;
+    law.b = 0.1;
+    law.alpha = 3.0;
+    law.mu = friction_coefficient(law, 0.2);
+  }
+  if (law.has_coefficient()) law.bound = bound;
   return law;
 }
 
 struct Case {
   NormalLaw normal;
   FrictionLaw friction;
+  FrictionBound bound = FrictionBound::normal;
 };
 
 class EveryLaw : public ::testing::TestWithParam<Case> {};
 
 TEST_P(EveryLaw, DerivativesOnBothSidesOfEveryKink) {
-  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction, GetParam().bound);
   for (double r : kAugmentations)
     for (double delta : kOffsets)
       for (double side : {-1.0, 1.0}) {
@@ -139,7 +148,7 @@ TEST_P(EveryLaw, DerivativesOnBothSidesOfEveryKink) {
 }
 
 TEST_P(EveryLaw, DerivativeAtTheKinkIsTheOneOfItsSide) {
-  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction, GetParam().bound);
   for (double r : kAugmentations) {
     const std::string where = "r " + std::to_string(r) + ", " + describe(law);
     if (law.has_wall()) // the kink belongs to the wall: increasing lambda stays active
@@ -158,17 +167,117 @@ TEST_P(EveryLaw, DerivativeAtTheKinkIsTheOneOfItsSide) {
   }
 }
 
+/// Points on every branch of every law: off, on and beyond the wall; inside and beyond the slip
+/// bound on either side (q_n away from the compliance's kinks, which a held branch keeps).
+std::vector<NodeVariables> points_of_every_branch() {
+  std::vector<NodeVariables> points;
+  for (double q_n : {-0.3, 0.1, 0.25, 0.9})
+    for (double lambda : {-2.0, 0.0, 0.7, 3.0})
+      for (double q_t : {-0.5, 0.0, 0.02, 0.6})
+        for (double t : {-1.5, 0.1, 2.0})
+          points.push_back({q_n, q_t, lambda, t});
+  return points;
+}
+
+TEST_P(EveryLaw, OnItsOwnBranchTheHeldKernelIsTheKernel) {
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  for (double r : kAugmentations)
+    for (const NodeVariables& x : points_of_every_branch()) {
+      const ContactKernel k = contact_kernel(law, x, r, r);
+      const ContactKernel held = contact_kernel(law, x, r, r, branch_of(k));
+      EXPECT_EQ(outputs(held), outputs(k)) << describe(law) << " r " << r << " q_n " << x.q_n;
+      EXPECT_EQ(derivatives(held), derivatives(k)) << describe(law) << " r " << r;
+      EXPECT_EQ(branch_of(held), branch_of(k));
+    }
+}
+
+TEST_P(EveryLaw, AHeldBranchIsItsPieceContinuedAcrossTheKinks) {
+  // Held, the kernel is the branch's affine piece (in q_n, once the compliance is away from its
+  // kinks) wherever x is: central differences over steps that cross the wall and friction kinks
+  // equal the piece's derivatives, and the wall's multiplier goes negative where held.
+  const ContactLaw law = law_of(GetParam().normal, GetParam().friction);
+  std::vector<KernelBranch> branches;
+  for (bool wall : {false, true}) {
+    branches.push_back({wall, true, 0});
+    for (int slip : {-1, 1})
+      branches.push_back({wall, false, slip});
+  }
+  const double r = 10, h = 0.05;
+  for (const KernelBranch& on : branches)
+    for (const NodeVariables& x : points_of_every_branch()) {
+      const ContactKernel k = contact_kernel(law, x, r, r, on);
+      EXPECT_EQ(k.wall_active, on.wall && law.has_wall());
+      if (law.has_friction()) {
+        EXPECT_EQ(branch_of(k).stick, on.stick);
+      }
+      for (int j = 0; j < 4; ++j) {
+        const Eigen::Vector4d fd = (outputs(contact_kernel(law, with(x, j, h), r, r, on)) -
+                                    outputs(contact_kernel(law, with(x, j, -h), r, r, on))) /
+                                   (2 * h);
+        for (int i = 0; i < 4; ++i)
+          EXPECT_NEAR(derivatives(k)(i, j), fd[i], 1e-9 * (1 + r))
+              << describe(law) << " wall " << on.wall << " stick " << on.stick << " slip "
+              << on.slip << " output " << i << " variable " << j;
+      }
+    }
+  if (!law.has_wall()) return;
+  const NodeVariables tension{law.depth, 0.0, -1.0, 0.0};
+  EXPECT_EQ(contact_kernel(law, tension, r, r).wall, 0.0);
+  EXPECT_EQ(contact_kernel(law, tension, r, r, {true, false, 0}).wall, -1.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Laws, EveryLaw,
-    ::testing::Values(Case{NormalLaw::signorini, FrictionLaw::none},
-                      Case{NormalLaw::signorini, FrictionLaw::tresca},
-                      Case{NormalLaw::signorini, FrictionLaw::coulomb},
-                      Case{NormalLaw::compliance, FrictionLaw::none},
-                      Case{NormalLaw::compliance, FrictionLaw::tresca},
-                      Case{NormalLaw::compliance, FrictionLaw::coulomb},
-                      Case{NormalLaw::compliance_unilateral, FrictionLaw::none},
-                      Case{NormalLaw::compliance_unilateral, FrictionLaw::tresca},
-                      Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb}));
+    ::testing::Values(
+        Case{NormalLaw::signorini, FrictionLaw::none},
+        Case{NormalLaw::signorini, FrictionLaw::tresca},
+        Case{NormalLaw::signorini, FrictionLaw::coulomb},
+        Case{NormalLaw::compliance, FrictionLaw::none},
+        Case{NormalLaw::compliance, FrictionLaw::tresca},
+        Case{NormalLaw::compliance, FrictionLaw::coulomb},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::none},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::tresca},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb},
+        Case{NormalLaw::signorini, FrictionLaw::nonmonotone},
+        Case{NormalLaw::compliance, FrictionLaw::nonmonotone},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone},
+        // The bound of (4.6)/(5.6): the compliance pressure only.
+        Case{NormalLaw::compliance, FrictionLaw::coulomb, FrictionBound::compliance},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb, FrictionBound::compliance},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone, FrictionBound::compliance},
+        Case{NormalLaw::damped, FrictionLaw::coulomb},
+        Case{NormalLaw::damped_unilateral, FrictionLaw::none},
+        Case{NormalLaw::damped_unilateral, FrictionLaw::coulomb}));
+
+// The laws in velocity are the compliance kernels of the velocity: the same forces, branches and
+// derivatives at the same arguments, and the thesis's own status names.
+TEST(ContactKernel, DampedLawsAreTheComplianceKernels) {
+  for (FrictionLaw friction : {FrictionLaw::none, FrictionLaw::coulomb})
+    for (auto [velocity, displacement] :
+         {std::pair{NormalLaw::damped, NormalLaw::compliance},
+          std::pair{NormalLaw::damped_unilateral, NormalLaw::compliance_unilateral}}) {
+      const ContactLaw v = law_of(velocity, friction), d = law_of(displacement, friction);
+      EXPECT_TRUE(v.in_velocity());
+      EXPECT_FALSE(d.in_velocity());
+      EXPECT_EQ(v.has_wall(), d.has_wall());
+      for (double q_n : {-0.1, 0.0, 0.2, 0.4, 0.5})
+        for (double q_t : {-0.3, 0.0, 0.1}) {
+          const ContactKernel a = contact_kernel(v, {q_n, q_t, 1.5, 0.2}, 10, 10);
+          const ContactKernel b = contact_kernel(d, {q_n, q_t, 1.5, 0.2}, 10, 10);
+          EXPECT_EQ(a.normal, b.normal);
+          EXPECT_EQ(a.tangential, b.tangential);
+          EXPECT_EQ(a.d_force, b.d_force);
+          EXPECT_EQ(a.d_complementarity, b.d_complementarity);
+          EXPECT_EQ(normal_status(a), normal_status(b));
+        }
+    }
+  const ContactLaw damped = law_of(NormalLaw::damped_unilateral, FrictionLaw::none);
+  EXPECT_EQ(label(NormalStatus::compliance, damped), "RNI");
+  EXPECT_EQ(label(NormalStatus::unilateral, damped), "CUV");
+  EXPECT_EQ(label(NormalStatus::free, damped), "free");
+  EXPECT_EQ(label(NormalStatus::compliance, law_of(NormalLaw::compliance, FrictionLaw::none)),
+            "CN");
+}
 
 TEST(ContactKernel, ZerosAreTheSignoriniCoulombStates) {
   const ContactLaw law = law_of(NormalLaw::signorini, FrictionLaw::coulomb);
@@ -243,6 +352,82 @@ TEST(ContactKernel, FrictionStatuses) {
   EXPECT_EQ(label(FrictionStatus::slip_backward), "S-");
   EXPECT_EQ(label(NormalStatus::compliance), "CN");
   EXPECT_THROW(normal_status_of_code(3), Error);
+}
+
+TEST(ContactKernel, ComplianceBoundIsTrescaOnTheWall) {
+  // bound=compliance: s = mu p(min(q_n, g)). On the wall the reaction does not enter it, so the
+  // node is a Tresca node of threshold mu p(g) (l.5767), whatever the wall's multiplier.
+  const ContactLaw law =
+      law_of(NormalLaw::compliance_unilateral, FrictionLaw::coulomb, FrictionBound::compliance);
+  ContactLaw tresca = law;
+  tresca.friction = FrictionLaw::tresca;
+  tresca.threshold = law.mu * law.cn * law.depth;
+  for (double lambda : {0.5, 3.0, 30.0})
+    for (double q_t : {-0.2, 0.0, 1e-3, 0.2}) {
+      const NodeVariables x{law.depth, q_t, lambda, 0.1};
+      const ContactKernel k = contact_kernel(law, x, 10, 10);
+      const ContactKernel t = contact_kernel(tresca, x, 10, 10);
+      ASSERT_TRUE(k.wall_active);
+      EXPECT_DOUBLE_EQ(k.bound, tresca.threshold);
+      EXPECT_DOUBLE_EQ(k.tangential, t.tangential);
+      EXPECT_EQ(k.bound_slope, 0.0); // a linear step couples nothing to the reaction
+      EXPECT_EQ(k.d_force, t.d_force);
+      EXPECT_EQ(friction_status(law, k), friction_status(tresca, t));
+    }
+  // Between the surface and the wall it follows the compliance: mu cn q_n, as Coulomb there.
+  ContactLaw coulomb = law;
+  coulomb.bound = FrictionBound::normal;
+  const NodeVariables between{0.2, 0.05, 0.0, 0.0};
+  EXPECT_DOUBLE_EQ(contact_kernel(law, between, 10, 10).bound, law.mu * law.cn * 0.2);
+  EXPECT_DOUBLE_EQ(contact_kernel(law, between, 10, 10).tangential,
+                   contact_kernel(coulomb, between, 10, 10).tangential);
+  // On the wall bound=normal adds the reaction: a larger bound.
+  EXPECT_GT(contact_kernel(coulomb, {law.depth, 0.0, 3.0, 0.0}, 10, 10).bound,
+            contact_kernel(law, {law.depth, 0.0, 3.0, 0.0}, 10, 10).bound);
+}
+
+TEST(ContactKernel, NonmonotoneWithEqualCoefficientsIsCoulomb) {
+  // a = b: mu(r) = a for every slip, whatever alpha; the kernel is Coulomb's with mu = a.
+  for (FrictionBound bound : {FrictionBound::normal, FrictionBound::compliance}) {
+    ContactLaw nonmonotone =
+        law_of(NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone, bound);
+    nonmonotone.a = nonmonotone.b = 0.7;
+    ContactLaw coulomb = law_of(NormalLaw::compliance_unilateral, FrictionLaw::coulomb, bound);
+    coulomb.mu = 0.7;
+    for (double r : {0.0, 1e-3, 0.5, 50.0}) {
+      EXPECT_EQ(friction_coefficient(nonmonotone, r), 0.7);
+      EXPECT_EQ(d_friction_coefficient(nonmonotone, r), 0.0);
+    }
+    nonmonotone.mu = friction_coefficient(nonmonotone, 0.3);
+    for (const NodeVariables& x :
+         {NodeVariables{0.1, 0.02, 0.0, 0.3}, NodeVariables{0.4, -0.1, 2.0, -0.5},
+          NodeVariables{-0.2, 0.1, 0.0, 0.0}}) {
+      const ContactKernel n = contact_kernel(nonmonotone, x, 10, 10);
+      const ContactKernel c = contact_kernel(coulomb, x, 10, 10);
+      EXPECT_EQ(outputs(n), outputs(c));
+      EXPECT_EQ(derivatives(n), derivatives(c));
+      EXPECT_EQ(friction_status(nonmonotone, n), friction_status(coulomb, c));
+    }
+  }
+}
+
+TEST(ContactKernel, NonmonotoneCoefficientAndItsSlope) {
+  // (1.39): mu(0) = a, mu -> b, and the slope against central differences.
+  ContactLaw law = law_of(NormalLaw::compliance, FrictionLaw::nonmonotone);
+  EXPECT_DOUBLE_EQ(friction_coefficient(law, 0.0), law.a);
+  EXPECT_NEAR(friction_coefficient(law, 1e3), law.b, 1e-15);
+  for (double r : {0.0, 1e-3, 0.1, 1.0, 5.0}) {
+    const double h = 1e-6;
+    const double fd =
+        (friction_coefficient(law, r + h) - friction_coefficient(law, std::max(r - h, 0.0))) /
+        (r + h - std::max(r - h, 0.0));
+    EXPECT_NEAR(d_friction_coefficient(law, r), fd, 1e-6 * (1 + std::abs(fd))) << r;
+    EXPECT_LE(friction_coefficient(law, r), law.a);
+    EXPECT_GE(friction_coefficient(law, r), law.b);
+  }
+  // Other laws: coulomb's mu, 0 without a coefficient.
+  EXPECT_EQ(friction_coefficient(law_of(NormalLaw::compliance, FrictionLaw::coulomb), 2.0), 0.3);
+  EXPECT_EQ(friction_coefficient(law_of(NormalLaw::compliance, FrictionLaw::tresca), 2.0), 0.0);
 }
 
 } // namespace

@@ -18,7 +18,7 @@ StageArgs parse(std::vector<std::string> words) {
   std::vector<char*> argv;
   for (auto& w : words)
     argv.push_back(w.data());
-  return parse_stage_args(static_cast<int>(argv.size()), argv.data(), "mesh");
+  return parse_stage_args(static_cast<int>(argv.size()), argv.data(), {.name = "mesh"});
 }
 
 TEST(Stage, ExplicitOutputFolderIsCreated) {
@@ -57,7 +57,8 @@ TEST(Stage, BadCommandLinesGiveTheUsage) {
       parse(words);
       ADD_FAILURE() << words.size();
     } catch (const Error& e) {
-      EXPECT_STREQ(e.what(), "usage: sig-mesh DATAFILE [-o OUTDIR]");
+      EXPECT_STREQ(e.what(), "usage: sig-mesh DATAFILE [-o OUTDIR] (--help: what it reads, "
+                             "writes and the cards it uses)");
     }
   }
 }
@@ -106,6 +107,8 @@ TEST(Log, LinesArePrefixedAndProgressIsQuietOffATerminal) {
   EXPECT_EQ(err.find('\r'), std::string::npos) << err;
   EXPECT_NE(err.find("[sig] march 4/4 (100%)"), std::string::npos) << err;
   EXPECT_NE(err.find("energy 1.5\n"), std::string::npos) << err;
+  EXPECT_NE(err.find(" steps/s"), std::string::npos) << err; // the rate, never "left" when done
+  EXPECT_EQ(err.find(" left"), std::string::npos) << err;
 }
 
 } // namespace

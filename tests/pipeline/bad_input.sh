@@ -54,6 +54,16 @@ expect contact   '$a FRICTION ref=2 law=coulomb mu=0.2'       "bad.dat:" "'ref'"
 expect contact   '/^CONTACT/d; $a FRICTION ref=3 law=coulomb mu=0.2' "bad.dat:" "'ref'" "CONTACT"
 expect solve     '$a INITIAL u=0,-1 v=1,0'                    "bad.dat:" "'v'" "static"
 expect contact   's/law=signorini gap=0/law=compliance-unilateral cn=10/' "bad.dat:" "'g'" "depth"
+# The nonmonotone law (1.39) of scene 4: alpha >= 0, b <= a, a given.
+nm='s/law=signorini gap=0/law=compliance-unilateral cn=10 g=0.5/; $a FRICTION ref=3 law=nonmonotone'
+expect contact   "$nm a=2 b=0.02 alpha=-1"                     "bad.dat:" "'alpha'" ">= 0"
+expect contact   "$nm a=1 b=2 alpha=1"                         "bad.dat:" "'b'" "<= a"
+expect contact   "$nm b=0.02 alpha=1"                          "bad.dat:" "'a'" "missing"
+expect solve     "$nm a=1 b=0.5 alpha=1 of=slip-rate"          "bad.dat:" "'of'" "slip rate"
+expect solve     "$nm a=1 b=0.5 alpha=1\nCONVEXIFICATION relaxation=2" "bad.dat:" "'relaxation'" "(0, 1]"
+expect solve     '$a CONVEXIFICATION eps=1e-5'                 "bad.dat:" "CONVEXIFICATION" "nonmonotone"
+# The laws in velocity belong to the quasistatic march (issue 12), not to a static solve.
+expect solve     's/law=signorini gap=0/law=damped cn=10/'    "bad.dat:" "'law'" "velocity"
 
 # Friction in large deformation is refused on the FRICTION card, before any solve.
 hyper=$work/hyper.dat

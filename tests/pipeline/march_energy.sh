@@ -55,29 +55,19 @@ drivers/chain.sh "$deck" -o "$work/free" > "$work/free.log" 2>&1 ||
   { cat "$work/free.log"; exit 1; }
 [ -s "$work/free/case.hist" ] || { echo "FAIL: no case.hist"; failures=$((failures + 1)); }
 check_energy "$work/free/energy.csv" "$e0" 0 1e-12 "free disc, midpoint"
-# The kept states (case.hist, DS layout of core/ds.hpp) are the translation u = v0 t, v = v0,
-# and sig-post lists one .vtu per state with its time in free_disc.pvd.
-python3 - "$work/free" <<'PY' || failures=$((failures + 1))
-import re, struct, sys
+# The kept states (case.hist, read through sig-dump as the reports read it) are the translation
+# u = v0 t, v = v0, and sig-post lists one .vtu per state with its time in free_disc.pvd.
+PYTHONDONTWRITEBYTECODE=1 PYTHONPATH=postproc python3 - "$work/free" <<'PY' || failures=$((failures + 1))
+import re, sys
+from sigreport import read_ds
 folder = sys.argv[1]
-data = open(folder + "/case.hist", "rb").read()
-assert data[:5] == b"SIGDS", "case.hist: bad magic"
-count = struct.unpack_from("<I", data, 12)[0]
-pos, arrays = 16 + 128 + 4, {}
-for _ in range(count):
-    name = data[pos:pos + 24].split(b"\0")[0].decode()
-    kind, rank = struct.unpack_from("<II", data, pos + 24)
-    shape = struct.unpack_from("<%dq" % rank, data, pos + 32)
-    size = struct.unpack_from("<Q", data, pos + 32 + 8 * rank)[0]
-    payload = data[pos + 40 + 8 * rank:pos + 40 + 8 * rank + size]
-    arrays[name] = (shape, struct.unpack("<%dd" % (size // 8), payload) if kind == 2 else None)
-    pos += 40 + 8 * rank + size + 4
-(outputs, ndof), u = arrays["u"]
-times = arrays["output_time"][1]
+hist = read_ds(folder + "/case.hist", arrays=["u", "v", "output_time"])
+outputs, ndof = hist.shape("u")
+u, v, times = hist["u"], hist["v"], hist["output_time"]
 error = 0.0
 for s, t in enumerate(times):
     for i in range(0, ndof, 2):
-        state = u[s * ndof + i:s * ndof + i + 2] + arrays["v"][1][s * ndof + i:s * ndof + i + 2]
+        state = u[s * ndof + i:s * ndof + i + 2] + v[s * ndof + i:s * ndof + i + 2]
         error = max(error, max(abs(a - b) for a, b in zip(state, (0.0, -10.0 * t, 0.0, -10.0))))
 pvd = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(folder + "/free_disc.pvd").read())
 print(f"case.hist: {outputs} states of {ndof} dofs at t = {times[0]:g} .. {times[-1]:g}, "

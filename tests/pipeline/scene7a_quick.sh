@@ -43,7 +43,7 @@ for method in pdas projection alm penalty; do
   dir=$work/$method
   mkdir -p "$dir"
   hertz_deck "$template" "$dir/hertz.dat" 64 "" "$method" "${value[$method]}"
-  sed -i -E '/^[[:space:]]*OUTPUT[[:space:]]/ s/vtk=[^[:space:]]+/vtk=no/' "$dir/hertz.dat"
+  deck_variant "$dir/hertz.dat" "$dir/hertz.dat" --set OUTPUT.vtk=no
   for stage in mesh material contact assemble solve post; do
     run_stage "$stage" "$dir/hertz.dat" "$dir" || die "sig-$stage failed for $method"
   done

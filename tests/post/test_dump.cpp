@@ -3,12 +3,14 @@
 #include "post/dump.hpp"
 
 #include "core/ds.hpp"
+#include "core/error.hpp"
 #include "post_test_mesh.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <unistd.h>
 
 namespace sig {
@@ -42,6 +44,26 @@ TEST(Dump, DsFileIsRecognisedByItsMagic) {
   EXPECT_NE(json.find("{\"name\":\"K_val\",\"type\":\"float64\",\"shape\":[2,5]}"),
             std::string::npos);
   EXPECT_NE(json.find("{\"name\":\"method\",\"type\":\"text\""), std::string::npos);
+}
+
+// The report scripts read DS files only through these values (postproc/sigreport/ds.py): every
+// number must read back as the same double, integers as integers.
+TEST(Dump, JsonValuesOfEveryOrTheNamedArrays) {
+  Ds ds = sample_ds();
+  ds.put("u", std::vector<double>{0.1, -2.0 / 3.0, std::numeric_limits<double>::quiet_NaN()});
+  const std::string all = dump_ds_json(ds, {.all = true, .names = {}}).dump(-1);
+  EXPECT_NE(all.find("{\"name\":\"ndof\",\"type\":\"int64\",\"shape\":[1],\"values\":[10]}"),
+            std::string::npos);
+  EXPECT_NE(all.find("\"shape\":[2,5],\"values\":[4,-1,2.5,0.001,7,8,9,10,11,12]}"),
+            std::string::npos);
+  EXPECT_NE(all.find("\"values\":\"alm\""), std::string::npos);
+  EXPECT_NE(all.find("\"values\":[0.1,-0.6666666666666666,null]"), std::string::npos);
+
+  const std::string some = dump_ds_json(ds, {.all = false, .names = {"method"}}).dump(-1);
+  EXPECT_NE(some.find("\"values\":\"alm\""), std::string::npos);
+  EXPECT_EQ(some.find("\"values\":["), std::string::npos);
+  EXPECT_EQ(dump_ds_json(ds).dump(-1).find("values"), std::string::npos);
+  EXPECT_THROW(dump_ds_json(ds, {.all = false, .names = {"lambda"}}), Error);
 }
 
 TEST(Dump, TextShowsHeaderShapesAndFirstValues) {

@@ -367,8 +367,19 @@ Eigen::VectorXd dense_alart_curnier_step(const Frictional& fr, const Eigen::Vect
   return X - J.fullPivLu().solve(R);
 }
 
+/// Compliance with a wall at g and Coulomb friction bounded by the compliance pressure only
+/// (bound=compliance, (4.6)): Tresca's mu p(g) on the wall.
+ContactLaw compliance_bounded(double mu) {
+  ContactLaw law = coulomb(mu);
+  law.normal = NormalLaw::compliance_unilateral;
+  law.cn = 5;
+  law.depth = 0.1;
+  law.bound = FrictionBound::compliance;
+  return law;
+}
+
 TEST(ContactNewton, TheStepIsTheAlartCurnierNewtonStep) {
-  for (const ContactLaw& law : {coulomb(0.3), tresca(0.4)})
+  for (const ContactLaw& law : {coulomb(0.3), tresca(0.4), compliance_bounded(0.3)})
     for (const char* method : {"alm", "pdas"}) {
       const Frictional fr = frictional_problem(law);
       const int m = fr.setting.size(), n = static_cast<int>(fr.problem.f.size());
@@ -385,6 +396,15 @@ TEST(ContactNewton, TheStepIsTheAlartCurnierNewtonStep) {
       ASSERT_EQ(c.iterations(), 1) << c.failure;
       ASSERT_GT(c.history[0].active, 0);
       ASSERT_LT(c.history[0].active, m);
+      if (law.bound == FrictionBound::compliance) { // slips on the wall and off it, both
+        int wall_slip = 0, slip = 0;
+        for (const NodeBranch& b : iterate.branch) {
+          wall_slip += b.wall && b.slip != 0;
+          slip += !b.wall && b.slip != 0;
+        }
+        ASSERT_GT(wall_slip, 0) << method;
+        ASSERT_GT(slip, 0) << method;
+      }
       const Eigen::VectorXd expected = dense_alart_curnier_step(fr, X, newton->augmentation());
       const double tol = 1e-10 * expected.cwiseAbs().maxCoeff();
       for (int i = 0; i < n; ++i)

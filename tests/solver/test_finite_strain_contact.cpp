@@ -83,6 +83,34 @@ struct PressedBlock {
   }
 };
 
+/// A ring r_in <= |x - (0, R)| <= R on the foundation x2 <= 0 (sig::ring, N nodes around), the
+/// outer nodes with x2 >= 0.99 (2R) (AB, ref 1) moved by (0, -press), Gamma3 the outer edges
+/// below x2 = R (1 + sqrt(2) / 2).
+struct PressedRing {
+  sig::Mesh mesh;
+  sig::MaterialTable table;
+  sig::HalfPlane foundation{Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(0.0, 1.0)};
+  sig::ContactElements contact;
+  FiniteStrainProblem problem;
+
+  PressedRing(double r_in, double R, int N, double press)
+      : mesh(sig::ring({0.0, R}, r_in, R, N)), table(hyperelastic_material(mesh)),
+        contact(sig::build_contact_elements(mesh, 3, foundation)) {
+    problem.mesh = &mesh;
+    problem.materials = &table;
+    problem.contact = &contact;
+    problem.obstacle = &foundation;
+    const std::vector<int> top = mesh.nodes_with_ref(1);
+    problem.dirichlet_values = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(top.size()));
+    for (std::size_t k = 0; k < top.size(); ++k) {
+      problem.dirichlet_dofs.push_back(2 * top[k]);
+      problem.dirichlet_dofs.push_back(2 * top[k] + 1);
+      problem.dirichlet_values[2 * static_cast<Eigen::Index>(k) + 1] = -press;
+    }
+  }
+  PressedRing(const PressedRing&) = delete; // problem points into the members
+};
+
 /// Contact elements whose normal status is not free.
 int in_contact(const std::vector<sig::NormalStatus>& status) {
   return static_cast<int>(std::count_if(status.begin(), status.end(), [](sig::NormalStatus s) {
@@ -344,23 +372,8 @@ TEST(FiniteStrainContact, ProjectionStallsForSmallCOnAThinRing) {
   // Tables 7.4, 7.5, small c). Where K is indefinite (a thicker ring, radii 0.7 and 1, whose
   // symmetric state with a sliding bottom is a saddle) it diverges instead. PDAS, a Newton
   // method, and the projection with a large c reach the same state.
-  const sig::Mesh mesh = sig::ring({0.0, 1.0}, 0.9, 1.0, 64);
-  const sig::MaterialTable table = hyperelastic_material(mesh);
-  const auto plane =
-      std::make_shared<const sig::HalfPlane>(Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(0.0, 1.0));
-  const sig::ContactElements contact = sig::build_contact_elements(mesh, 3, *plane);
-  FiniteStrainProblem problem;
-  problem.mesh = &mesh;
-  problem.materials = &table;
-  problem.contact = &contact;
-  problem.obstacle = plane.get();
-  const std::vector<int> top = mesh.nodes_with_ref(1);
-  problem.dirichlet_values = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(top.size()));
-  for (std::size_t k = 0; k < top.size(); ++k) {
-    problem.dirichlet_dofs.push_back(2 * top[k]);
-    problem.dirichlet_dofs.push_back(2 * top[k] + 1);
-    problem.dirichlet_values[2 * static_cast<Eigen::Index>(k) + 1] = -0.2;
-  }
+  const PressedRing ring(0.9, 1.0, 64, 0.2);
+  const FiniteStrainProblem& problem = ring.problem;
   const sig::FiniteStrainSolution pdas =
       sig::solve_finite_strain_contact(problem, options_for("pdas", 2, 1e-8));
   ASSERT_TRUE(pdas.converged()) << pdas.steps.back().failure;
@@ -382,6 +395,39 @@ TEST(FiniteStrainContact, ProjectionStallsForSmallCOnAThinRing) {
   EXPECT_LE(
       (converged.steps.back().multiplier - pdas.steps.back().multiplier).lpNorm<Eigen::Infinity>(),
       1e-6 * pdas.steps.back().multiplier.lpNorm<Eigen::Infinity>());
+}
+
+TEST(FiniteStrainContact, PdasInOneLoadStepDoesNotDependOnGamma) {
+  // Scene 7b's ring at N = 64 crushed by 14 of its 20 mm in one load step (thesis Table 7.5:
+  // "the values of gamma have practically no influence"). The semi-smooth Newton imposes
+  // conditions that do not depend on gamma, only the active sets do: the same active set at
+  // every iteration for every gamma, and ALM, the same test with r = gamma, the same too. Before
+  // the line search held the branches of the test (contact_newton.hpp), gamma weighed the
+  // penetration of inactive nodes in its merit: 10, 12, 12, 11 iterations for gamma = 10, 1e2,
+  // 1e4, 1e6.
+  const PressedRing ring(9, 10, 64, 14);
+  std::vector<int> reference;
+  for (double gamma : {10.0, 1e2, 1e4, 1e6}) {
+    FiniteStrainOptions o = options_for("pdas", 1, 1e-5);
+    o.contact.gamma = gamma;
+    const sig::FiniteStrainSolution s = sig::solve_finite_strain_contact(ring.problem, o);
+    ASSERT_TRUE(s.converged()) << "gamma " << gamma << ": " << s.steps.back().failure;
+    const std::vector<sig::IterationRecord>& h = s.steps.back().history;
+    std::vector<int> active;
+    int previous = 0;
+    for (const sig::IterationRecord& record : h) {
+      active.push_back(record.active);
+      EXPECT_EQ(record.active - previous, record.entered - record.left) << "gamma " << gamma;
+      previous = record.active;
+    }
+    if (reference.empty()) reference = active;
+    EXPECT_EQ(active, reference) << "gamma " << gamma;
+  }
+  FiniteStrainOptions o = options_for("alm", 1, 1e-5);
+  o.contact.r = 1e3;
+  const sig::FiniteStrainSolution alm = sig::solve_finite_strain_contact(ring.problem, o);
+  ASSERT_TRUE(alm.converged()) << alm.steps.back().failure;
+  EXPECT_EQ(alm.steps.back().iterations(), static_cast<int>(reference.size()));
 }
 
 TEST(FiniteStrainContact, NonConvergenceIsAStatus) {

@@ -12,9 +12,16 @@
 #include <cstdio>
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-assemble",
+      .purpose = "Assembly stage (MODULEF's THENEW/ELASCT and assembly): P1 stiffness and mass "
+                 "matrices, load vectors and Dirichlet dofs of the case.",
+      .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)", "OUTDIR/case.mili (sig-material)"},
+      .writes = {"OUTDIR/case.tae (dof numbering, K, M, loads, Dirichlet dofs and values)"},
+      .cards = {"TITLE", "DIRICHLET", "TRACTION", "PRESSURE", "BODYFORCE", "MOVINGLOAD"}};
   return sig::run_stage("sig-assemble", [&] {
     // 1. Command line and inputs.
-    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-assemble");
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));

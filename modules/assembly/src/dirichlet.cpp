@@ -30,6 +30,11 @@ std::array<int, 2> ReducedSystem::contact_node_dofs(int node) const {
   return dofs;
 }
 
+Eigen::VectorXd ReducedSystem::load_at(double t) const {
+  if (time_loads.empty()) return f;
+  return f + restrict(time_loads.change(t, num_full()));
+}
+
 Eigen::VectorXd ReducedSystem::restrict(const Eigen::VectorXd& full) const {
   SIG_VERIFY(full.size() == num_full(),
              "restrict: " << full.size() << " values for " << num_full() << " dofs");
@@ -96,6 +101,7 @@ ReducedSystem reduce(const LinearSystem& system) {
   }
   reduced.K = reduced.restrict_matrix(system.K);
   reduced.f = reduced.restrict(system.f - system.K * u_d);
+  reduced.time_loads = system.time_loads;
   return reduced;
 }
 

@@ -2,15 +2,16 @@
 
 #include "assembly/cards.hpp"
 #include "assembly/p1.hpp"
+#include "assembly/time_loads.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
-
 #include "mesh/topology.hpp"
+
 #include <algorithm>
 #include <cstdint>
-
+#include <sstream>
 #include <unordered_map>
 #include <vector>
 
@@ -79,6 +80,28 @@ void add_edge_load(const Mesh& mesh, const MaterialTable& table, const EdgeOwner
   f.segment<2>(2 * edge.b) += fe.tail<2>();
 }
 
+// The MOVINGLOAD card, its quadrature laid out on the edges of its references.
+MovingLoad moving_load(const Card& card, const Mesh& mesh, const MaterialTable& table,
+                       const EdgeOwners& owners) {
+  MovingLoad load;
+  load.F = card.real("F");
+  load.psi = card.real("psi");
+  load.c = card.real("c");
+  load.x0 = card.real("x0", 0.0);
+  if (!(load.psi > 0)) {
+    std::ostringstream what;
+    what << "must be > 0 (the Gaussian's decay, per unit length squared: m^-2 in the thesis's "
+            "units), got "
+         << load.psi;
+    card.fail("psi", what.str());
+  }
+  for (int ref : card_references(card, mesh, RefSupport::edges))
+    for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
+      load.add_edge(edge.a, edge.b, mesh.nodes[edge.a], mesh.nodes[edge.b],
+                    table.of(mesh.subdomain[owners.of(edge.a, edge.b).first]).thickness);
+  return load;
+}
+
 } // namespace
 
 Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge) {
@@ -86,11 +109,12 @@ Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge) 
 }
 
 Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
-                               const Datafile& datafile) {
+                               const Datafile& datafile, TimeLoads* time_loads) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
   const auto traction_cards = datafile.all("TRACTION");
   const auto pressure_cards = datafile.all("PRESSURE");
-  if (!traction_cards.empty() || !pressure_cards.empty()) {
+  const auto moving_cards = datafile.all("MOVINGLOAD");
+  if (!traction_cards.empty() || !pressure_cards.empty() || !moving_cards.empty()) {
     const EdgeOwners owners(mesh);
     for (const Card* card : traction_cards) {
       const Eigen::Vector2d traction = card_vector(*card, "f");
@@ -103,6 +127,11 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
           add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), f);
+    }
+    for (const Card* card : moving_cards) {
+      MovingLoad load = moving_load(*card, mesh, table, owners);
+      load.add(0.0, f);
+      if (time_loads != nullptr) time_loads->moving.push_back(std::move(load));
     }
   }
   for (const Card* card : datafile.all("BODYFORCE")) {

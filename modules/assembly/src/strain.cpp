@@ -5,6 +5,8 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 
+#include <cmath>
+
 namespace sig {
 
 std::vector<Eigen::Vector3d> element_strains(const Mesh& mesh, const Eigen::VectorXd& u) {
@@ -18,6 +20,17 @@ std::vector<Eigen::Vector3d> element_strains(const Mesh& mesh, const Eigen::Vect
     strains[t] = p1_strain_matrix(p1_gradients(triangle_vertices(mesh, t))) * ue;
   }
   return strains;
+}
+
+double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u) {
+  const std::vector<Eigen::Vector3d> strains = element_strains(mesh, u);
+  double sum = 0;
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const Eigen::Vector3d& e = strains[t]; // (e11, e22, 2 e12): eps : eps = e11^2 + e22^2 + 2 e12^2
+    sum += 0.5 * std::abs(signed_double_area(mesh, t)) *
+           (e[0] * e[0] + e[1] * e[1] + 0.5 * e[2] * e[2]);
+  }
+  return std::sqrt(sum);
 }
 
 std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const MaterialTable& table,

@@ -70,6 +70,11 @@ void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vecto
   }
 }
 
+Eigen::VectorXd LinearSystem::load_at(double t) const {
+  if (time_loads.empty()) return f;
+  return f + time_loads.change(t, num_dofs());
+}
+
 LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
                              const Datafile& datafile) {
   const Stopwatch clock;
@@ -78,7 +83,7 @@ LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
   system.K = assemble_stiffness(mesh, table, pattern);
   if (table.has_mass()) system.M = assemble_mass(mesh, table, pattern);
   system.M_lumped = assemble_lumped_mass(mesh, table);
-  system.f = assemble_loads(mesh, table, datafile);
+  system.f = assemble_loads(mesh, table, datafile, &system.time_loads);
   dirichlet_from_cards(mesh, datafile, system.dirichlet_dofs, system.dirichlet_values);
   system.assemble_seconds = clock.seconds();
   return system;

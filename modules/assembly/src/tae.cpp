@@ -64,6 +64,65 @@ Eigen::SparseMatrix<double> from_csr(const std::filesystem::path& path, std::int
   return Eigen::SparseMatrix<double>(A);
 }
 
+void put_moving_loads(Ds& ds, const TimeLoads& loads) {
+  if (loads.moving.empty()) return;
+  std::vector<double> parameters, x1, weight;
+  std::vector<std::int64_t> count, nodes;
+  for (const MovingLoad& load : loads.moving) {
+    parameters.insert(parameters.end(), {load.F, load.psi, load.c, load.x0});
+    count.push_back(static_cast<std::int64_t>(load.points.size()));
+    for (const MovingLoadPoint& p : load.points) {
+      nodes.insert(nodes.end(), {p.node_a + 1, p.node_b + 1});
+      x1.push_back(p.x1);
+      weight.insert(weight.end(), {p.weight_a, p.weight_b});
+    }
+  }
+  ds.put("moving_load", parameters);
+  ds.put("moving_points", count);
+  ds.put("moving_node", nodes);
+  ds.put("moving_x1", x1);
+  ds.put("moving_weight", weight);
+}
+
+// The moving loads of a TAE, checked so that a corrupt file is an error naming the array.
+TimeLoads get_moving_loads(const std::filesystem::path& path, const Ds& ds, std::int64_t ndof) {
+  TimeLoads loads;
+  if (!ds.has("moving_load")) return loads;
+  const auto parameters = ds.reals("moving_load");
+  const auto count = ds.ints("moving_points");
+  const auto nodes = ds.ints("moving_node");
+  const auto x1 = ds.reals("moving_x1");
+  const auto weight = ds.reals("moving_weight");
+  SIG_VERIFY(parameters.size() == 4 * count.size(),
+             path.string() << ": arrays 'moving_load' and 'moving_points' differ in length");
+  std::size_t total = 0;
+  for (std::int64_t n : count) {
+    SIG_VERIFY(n >= 0, path.string() << ": array 'moving_points' has a negative count");
+    total += static_cast<std::size_t>(n);
+  }
+  SIG_VERIFY(nodes.size() == 2 * total && x1.size() == total && weight.size() == 2 * total,
+             path.string() << ": arrays 'moving_node', 'moving_x1' and 'moving_weight' do not "
+                              "hold the "
+                           << total << " points of 'moving_points'");
+  std::size_t point = 0;
+  for (std::size_t l = 0; l < count.size(); ++l) {
+    MovingLoad load{
+        parameters[4 * l], parameters[4 * l + 1], parameters[4 * l + 2], parameters[4 * l + 3], {}};
+    SIG_VERIFY(load.psi > 0, path.string() << ": array 'moving_load': psi = " << load.psi
+                                           << " of load " << l + 1 << " must be > 0");
+    for (std::int64_t k = 0; k < count[l]; ++k, ++point) {
+      const std::int64_t a = nodes[2 * point], b = nodes[2 * point + 1];
+      SIG_VERIFY(a >= 1 && b >= 1 && 2 * a <= ndof && 2 * b <= ndof,
+                 path.string() << ": array 'moving_node' entry " << point + 1
+                               << " names a node out of range");
+      load.points.push_back({static_cast<int>(a - 1), static_cast<int>(b - 1), x1[point],
+                             weight[2 * point], weight[2 * point + 1]});
+    }
+    loads.moving.push_back(std::move(load));
+  }
+  return loads;
+}
+
 } // namespace
 
 void write_tae(const std::filesystem::path& path, const LinearSystem& system,
@@ -86,6 +145,7 @@ void write_tae(const std::filesystem::path& path, const LinearSystem& system,
   ds.put("dirichlet_value",
          std::span<const double>(system.dirichlet_values.data(), system.dirichlet_values.size()));
   ds.put_scalar("time_assemble", system.assemble_seconds);
+  put_moving_loads(ds, system.time_loads);
   write_ds(path, ds);
 }
 
@@ -117,6 +177,7 @@ LinearSystem read_tae(const std::filesystem::path& path) {
   }
   system.dirichlet_values = Eigen::Map<const Eigen::VectorXd>(values.data(), values.size());
   if (ds.has("time_assemble")) system.assemble_seconds = ds.scalar("time_assemble");
+  system.time_loads = get_moving_loads(path, ds, n);
   return system;
 }
 

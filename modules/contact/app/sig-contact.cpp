@@ -13,9 +13,20 @@
 #include <iostream>
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{.name = "sig-contact",
+                            .purpose = "Contact stage: builds the node-to-rigid contact elements "
+                                       "(a Gamma3 node and a Lagrange node "
+                                       "each, thesis Remark 3.1) of the CONTACT card: normal, "
+                                       "tangent, initial gap, nodal weight "
+                                       "and laws per node. Without a CONTACT card it writes "
+                                       "nothing (and removes a case.cont of an "
+                                       "earlier run).",
+                            .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)"},
+                            .writes = {"OUTDIR/case.cont (contact elements)"},
+                            .cards = {"TITLE", "CONTACT", "FRICTION"}};
   return sig::run_stage("sig-contact", [&] {
     // 1. Arguments, datafile and mesh.
-    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-contact");
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const std::filesystem::path cont_path = args.ds_path("cont");
 

@@ -9,6 +9,18 @@
 
 namespace sig {
 
+namespace {
+
+/// The CONT array of a law parameter's card field.
+std::string cont_array_of(const std::string& field) {
+  if (field == "g") return "depth";
+  if (field == "bound" || field == "a" || field == "b" || field == "alpha")
+    return "friction_" + field;
+  return field;
+}
+
+} // namespace
+
 void write_cont(const std::filesystem::path& path, const ContactElements& elements,
                 const std::string& title, const std::string& creator) {
   const int m = elements.size();
@@ -17,8 +29,10 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
                  static_cast<int>(elements.tangent.size()) == m && elements.gap.size() == m &&
                  elements.weight.size() == m && static_cast<int>(elements.law.size()) == m,
              "write_cont " << path.string() << ": arrays of different lengths");
-  std::vector<std::int64_t> node(m), lagrange(m), law(m), friction_law(m);
-  std::vector<double> normal(2 * m), tangent(2 * m), cn(m), c3(m), depth(m), mu(m), threshold(m);
+  std::vector<std::int64_t> node(m), lagrange(m), law(m), friction_law(m), friction_bound(m),
+      friction_of(m);
+  std::vector<double> normal(2 * m), tangent(2 * m), cn(m), c3(m), depth(m), mu(m), threshold(m),
+      a(m), b(m), alpha(m);
   for (int i = 0; i < m; ++i) { // files are 1-based
     node[i] = elements.node[i] + 1;
     lagrange[i] = elements.lagrange_node[i] + 1;
@@ -34,6 +48,11 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
     friction_law[i] = static_cast<std::int64_t>(l.friction);
     mu[i] = l.mu;
     threshold[i] = l.threshold;
+    friction_bound[i] = static_cast<std::int64_t>(l.bound);
+    a[i] = l.a;
+    b[i] = l.b;
+    alpha[i] = l.alpha;
+    friction_of[i] = static_cast<std::int64_t>(l.of);
   }
   Ds ds("CONT", title, creator);
   ds.put_int("num_nodes", elements.num_nodes);
@@ -52,6 +71,11 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
   ds.put("friction_law", friction_law);
   ds.put("mu", mu);
   ds.put("threshold", threshold);
+  ds.put("friction_bound", friction_bound);
+  ds.put("friction_a", a);
+  ds.put("friction_b", b);
+  ds.put("friction_alpha", alpha);
+  ds.put("friction_of", friction_of);
   ds.put_text("obstacle_kind", elements.obstacle.kind);
   ds.put("obstacle_point", std::span<const double>(elements.obstacle.point.data(), 2));
   ds.put("obstacle_normal", std::span<const double>(elements.obstacle.normal.data(), 2));
@@ -79,11 +103,18 @@ ContactElements read_cont(const std::filesystem::path& path) {
   const std::vector<double> depth = ds.reals("depth");
   const std::vector<double> mu = ds.reals("mu");
   const std::vector<double> threshold = ds.reals("threshold");
+  const std::vector<std::int64_t> friction_bound = ds.ints("friction_bound");
+  const std::vector<double> a = ds.reals("friction_a");
+  const std::vector<double> b = ds.reals("friction_b");
+  const std::vector<double> alpha = ds.reals("friction_alpha");
+  const std::vector<std::int64_t> friction_of = ds.ints("friction_of");
   const std::size_t m = node.size();
   const std::initializer_list<std::size_t> per_element = {
-      lagrange.size(), law.size(),       friction_law.size(), gap.size(),
-      weight.size(),   cn.size(),        c3.size(),           depth.size(),
-      mu.size(),       threshold.size(), normal.size() / 2,   tangent.size() / 2};
+      lagrange.size(),   law.size(),       friction_law.size(), gap.size(),
+      weight.size(),     cn.size(),        c3.size(),           depth.size(),
+      mu.size(),         threshold.size(), normal.size() / 2,   tangent.size() / 2,
+      a.size(),          b.size(),         alpha.size(),        friction_bound.size(),
+      friction_of.size()};
   SIG_VERIFY(normal.size() % 2 == 0 && tangent.size() % 2 == 0 &&
                  std::all_of(per_element.begin(), per_element.end(),
                              [m](std::size_t size) { return size == m; }),
@@ -111,18 +142,23 @@ ContactElements read_cont(const std::filesystem::path& path) {
     try {
       l.normal = normal_law_of_id(law[i]);
       l.friction = friction_law_of_id(friction_law[i]);
+      l.bound = friction_bound_of_id(friction_bound[i]);
+      l.of = slip_measure_of_id(friction_of[i]);
     } catch (const Error& e) {
-      SIG_VERIFY(false,
-                 where << ": arrays law / friction_law, element " << i + 1 << ": " << e.what());
+      SIG_VERIFY(false, where << ": arrays law / friction_law / friction_bound / friction_of, "
+                              << "element " << i + 1 << ": " << e.what());
     }
     l.cn = cn[i];
     l.c3 = c3[i] == 0 ? l.c3 : c3[i];
     l.depth = depth[i];
     l.mu = mu[i];
     l.threshold = threshold[i];
+    l.a = a[i];
+    l.b = b[i];
+    l.alpha = alpha[i];
     if (const std::optional<LawProblem> problem = law_problem(l))
-      SIG_VERIFY(false, where << ": array " << (problem->field == "g" ? "depth" : problem->field)
-                              << ", element " << i + 1 << ": " << problem->what);
+      SIG_VERIFY(false, where << ": array " << cont_array_of(problem->field) << ", element "
+                              << i + 1 << ": " << problem->what);
     elements.law.push_back(l);
     elements.tangent.push_back(t);
     elements.node.push_back(static_cast<int>(node[i] - 1));

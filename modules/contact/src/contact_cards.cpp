@@ -60,18 +60,22 @@ void refuse_unused(const Card& card, const std::string& field, const std::string
 /// The normal law and its parameters from CONTACT.
 ContactLaw normal_law_from_card(const Card& card) {
   ContactLaw law;
-  const std::string name = card.choice("law", normal_law_choices, "signorini");
+  const std::string name = card.choice("law", normal_law_choices);
   law.normal = normal_law_named(name);
-  if (law.has_compliance()) {
+  if (law.has_compliance())
     law.cn = card.real("cn");
-    law.c3 = card.real("c3", law.c3);
-  } else {
+  else
     refuse_unused(card, "cn", name);
+  // The truncation is chapter 6's, of a compliance in the penetration.
+  if (law.has_compliance() && !law.in_velocity())
+    law.c3 = card.real("c3", law.c3);
+  else
     refuse_unused(card, "c3", name);
-  }
   if (law.normal == NormalLaw::compliance_unilateral && !card.has("g") && !card.has("gap"))
     card.fail("g", "law=compliance-unilateral needs the depth of its compliant layer, the wall "
                    "at q_n = g");
+  if (law.normal == NormalLaw::damped_unilateral && !card.has("g") && !card.has("gap"))
+    card.fail("g", "law=damped-unilateral needs its velocity bound, v_n <= g");
   if (law.has_wall()) {
     law.depth = wall_depth(card);
   } else {
@@ -99,6 +103,20 @@ void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
       law.threshold = card->real("threshold");
     else
       refuse_unused(*card, "threshold", name);
+    if (law.has_coefficient())
+      law.bound = friction_bound_named(card->choice("bound", friction_bound_choices, "normal"));
+    else
+      refuse_unused(*card, "bound", name);
+    if (law.friction == FrictionLaw::nonmonotone) {
+      law.a = card->real("a");
+      law.b = card->real("b");
+      law.alpha = card->real("alpha");
+      law.of = slip_measure_named(card->choice("of", slip_measure_choices, "slip"));
+      law.mu = law.a; // mu(0): the first convex solve starts from no slip (ALGORITHMS.md 1.3)
+    } else {
+      for (const char* field : {"a", "b", "alpha", "of"})
+        refuse_unused(*card, field, name);
+    }
     if (const std::optional<LawProblem> problem = law_problem(law))
       card->fail(problem->field, problem->what);
   }
@@ -115,7 +133,7 @@ const Card* friction_card_with_law(const Datafile& datafile) {
 double wall_depth(const Card& contact) {
   if (contact.has("g") && contact.has("gap"))
     contact.fail("gap", "give the wall depth once: g= (gap= is its old spelling)");
-  return contact.has("gap") ? contact.real("gap") : contact.real("g", 0.0);
+  return contact.has("gap") ? contact.real("gap") : contact.real("g");
 }
 
 std::optional<ContactElements> contact_from_cards(const Datafile& datafile, const Mesh& mesh) {
@@ -137,10 +155,18 @@ std::optional<ContactElements> contact_from_cards(const Datafile& datafile, cons
     card.fail(problem->field == "g" && card.has("gap") ? "gap" : problem->field, problem->what);
   friction_from_cards(datafile, static_cast<int>(ref), law);
   const std::unique_ptr<Obstacle> obstacle = obstacle_from_card(card);
+  std::vector<int> excluded;
+  if (card.has("exclude"))
+    for (long other : card.integers("exclude")) {
+      const std::vector<int> nodes = mesh.nodes_with_ref(static_cast<int>(other));
+      if (nodes.empty())
+        card.fail("exclude", "reference " + std::to_string(other) + " carries no mesh node");
+      excluded.insert(excluded.end(), nodes.begin(), nodes.end());
+    }
 
   // A node starting inside the obstacle is a geometric error of this card's obstacle.
   try {
-    return build_contact_elements(mesh, static_cast<int>(ref), *obstacle, law, 1.0);
+    return build_contact_elements(mesh, static_cast<int>(ref), *obstacle, law, 1.0, excluded);
   } catch (const InputError&) {
     throw;
   } catch (const Error& e) {

@@ -101,7 +101,8 @@ double ContactElements::bound(int i) const {
 }
 
 ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle& obstacle,
-                                       const ContactLaw& law, double thickness) {
+                                       const ContactLaw& law, double thickness,
+                                       const std::vector<int>& excluded) {
   SIG_VERIFY(std::isfinite(thickness) && thickness > 0,
              "contact elements: thickness " << thickness << " must be > 0");
   const std::optional<LawProblem> inadmissible = law_problem(law);
@@ -130,6 +131,10 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
   elements.thickness = thickness;
   elements.obstacle = obstacle.description();
   elements.node = nodes_along_boundary(edges);
+  const std::set<int> skip(excluded.begin(), excluded.end());
+  std::erase_if(elements.node, [&](int k) { return skip.count(k) > 0; });
+  SIG_VERIFY(!elements.node.empty(),
+             "contact elements: every node of reference " << ref << " is excluded");
   const int m = elements.size();
   elements.gap.resize(m);
   elements.weight.resize(m);

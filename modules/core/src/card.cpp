@@ -81,6 +81,16 @@ std::vector<std::string> split_list(const Card& card, const std::string& name,
   }
 }
 
+// The schema's default of a field, nullptr when it has none (or the card is not in the schema).
+const char* schema_fallback(const std::string& keyword, const std::string& name) {
+  const CardSpec* spec = find_card_spec(keyword);
+  if (spec == nullptr) return nullptr;
+  const std::string key = to_lower(name);
+  for (const FieldSpec& field : spec->fields)
+    if (to_lower(field.name) == key) return field.fallback;
+  return nullptr;
+}
+
 std::string allowed_list(std::initializer_list<const char*> allowed) {
   std::string list;
   for (const char* a : allowed)
@@ -94,9 +104,9 @@ bool Card::has(const std::string& name) const {
 }
 
 std::string Card::text(const std::string& name) const {
-  const std::string* value = find_value(*this, name);
-  if (value == nullptr) fail(name, "missing (required by " + keyword + ")");
-  return *value;
+  if (const std::string* value = find_value(*this, name)) return *value;
+  if (const char* fallback = schema_fallback(keyword, name)) return fallback;
+  fail(name, "missing (required by " + keyword + ")");
 }
 
 std::string Card::text(const std::string& name, const std::string& fallback) const {
@@ -168,10 +178,9 @@ std::string Card::choice(const std::string& name, std::initializer_list<const ch
 
 void Card::fail(const std::string& name, const std::string& what) const {
   // The field as the schema spells it ('R', 'N'), whatever case the code asked for it in.
-  for (const CardSpec& spec : card_schema())
-    if (keyword == spec.keyword)
-      for (const FieldSpec& field : spec.fields)
-        if (to_lower(field.name) == to_lower(name)) throw InputError(file, line, field.name, what);
+  if (const CardSpec* spec = find_card_spec(keyword))
+    for (const FieldSpec& field : spec->fields)
+      if (to_lower(field.name) == to_lower(name)) throw InputError(file, line, field.name, what);
   throw InputError(file, line, name, what);
 }
 

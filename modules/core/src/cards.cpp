@@ -19,7 +19,7 @@ const std::vector<CardSpec>& card_schema() {
                     "to the datafile's folder"},
            {"R", "radius of the disc or half disc"},
            {"N", "number of boundary segments along the arc (disc, half disc, ring)"},
-           {"center", "centre of the disc or ring: x,y"},
+           {"center", "centre of the disc or ring: x,y", "0,0"},
            {"r_in", "inner radius of the ring"},
            {"r_out", "outer radius of the ring"},
            {"layers", "number of element layers across the ring"},
@@ -27,8 +27,11 @@ const std::vector<CardSpec>& card_schema() {
            {"ly", "height of the rectangle"},
            {"nx", "number of segments along x"},
            {"ny", "number of segments along y"},
-           {"refs", "boundary references of the generated mesh, as a list"},
-           {"grading", "mesh size ratio from the contact zone to the far boundary"},
+           {"refs", "boundary references of the rectangle or square: bottom,right,top,left",
+            "3,4,2,1"},
+           {"grading",
+            "growth of the mesh size per unit distance from the contact boundary (0: uniform)",
+            "0"},
            {"gamma1_above",
             "vertices with y above this value get the Gamma1 (Dirichlet) reference"},
            {"gamma3_below", "vertices with y below this value get the Gamma3 (contact) reference"},
@@ -38,15 +41,15 @@ const std::vector<CardSpec>& card_schema() {
        "constitutive law of one sub-domain",
        {
            {"region", "sub-domain number (1-based, as in the mesh file)"},
-           {"law", "hooke | svk | ciarlet-geymonat"},
+           {"law", "hooke | svk | ciarlet-geymonat", "hooke"},
            {"E", "Young's modulus (hooke, svk)"},
            {"nu", "Poisson's ratio, -1 < nu < 0.5 (hooke, svk)"},
            {"c1", "ciarlet-geymonat: coefficient of I1 - 3, > 0"},
            {"c2", "ciarlet-geymonat: coefficient of I2 - 3, >= 0"},
            {"a", "ciarlet-geymonat: coefficient of I3 - 1, >= 0"},
-           {"plane", "strain | stress (2D reduction: F33 = 1, or F33 from sigma33 = 0)"},
-           {"thickness", "out-of-plane thickness (plane stress); 1 by default"},
-           {"rho", "mass density (dynamic problems)"},
+           {"plane", "strain | stress (2D reduction: F33 = 1, or F33 from sigma33 = 0)", "strain"},
+           {"thickness", "out-of-plane thickness, > 0", "1"},
+           {"rho", "mass density, >= 0 (dynamic problems need rho > 0)", "0"},
        }},
       {"DIRICHLET",
        true,
@@ -77,6 +80,19 @@ const std::vector<CardSpec>& card_schema() {
            {"region", "sub-domain number"},
            {"f", "force per unit volume: fx,fy"},
        }},
+      {"MOVINGLOAD",
+       true,
+       "a vertical Gaussian traction moving along x1 (the moving mass of ch. 6, (6.91)): "
+       "(0, -F exp(-psi (x1 - x0 - c t)^2)) on the edges of a boundary reference; a static deck "
+       "(no TIME card) takes it at t = 0",
+       {
+           {"ref", "boundary reference number"},
+           {"F", "peak traction (GPa in the thesis's units)"},
+           {"psi", "decay of the Gaussian, > 0, per unit length squared (m^-2; the thesis prints "
+                   "m^-1)"},
+           {"c", "speed of the load's centre along x1 (m/s)"},
+           {"x0", "x1 of the load's centre at t = 0 (default 0)"},
+       }},
       {"CONTACT",
        false,
        "contact of a boundary reference (Gamma3) with a rigid obstacle: node-to-rigid elements "
@@ -89,18 +105,29 @@ const std::vector<CardSpec>& card_schema() {
            {"normal", "outward unit normal of the obstacle: nx,ny"},
            {"centre", "disc obstacle: centre x,y"},
            {"radius", "disc obstacle: radius"},
-           {"law", "signorini (1.22) | compliance (1.24): pressure cn [q_n]+, truncated at c3 | "
-                   "compliance-unilateral (1.26): compliance while q_n < g, a rigid wall at "
-                   "q_n = g; default signorini"},
-           {"cn", "compliance: pressure per unit penetration (GPa/m in the thesis's units), > 0"},
+           {"law",
+            "signorini (1.22) | compliance (1.24): pressure cn [q_n]+, truncated at c3 | "
+            "compliance-unilateral (1.26): compliance while q_n < g, a rigid wall at q_n = g | "
+            "damped (1.25): pressure cn [v_n]+ of the normal velocity v_n | damped-unilateral "
+            "(1.28): damped while v_n < g, the bound v_n <= g beyond (the laws in velocity need "
+            "TIME scheme=quasistatic)",
+            "signorini"},
+           {"cn", "compliance: pressure per unit penetration (GPa/m in the thesis's units), > 0; "
+                  "damped laws: pressure per unit normal velocity (GPa s/m)"},
            {"c3", "compliance: truncation pressure min(cn [q_n]+, c3) of ch. 6, > 0; default "
                   "none"},
-           {"g", "depth of the rigid wall beyond the obstacle surface, >= 0, default 0: "
-                 "signorini's extra gap, compliance-unilateral's layer, ipm's allowed "
-                 "penetration (sig-march)"},
+           {"g",
+            "depth of the rigid wall beyond the obstacle surface, >= 0: signorini's extra gap, "
+            "compliance-unilateral's layer, ipm's allowed penetration (sig-march); "
+            "damped-unilateral: the bound on the normal velocity",
+            "0"},
+           {"exclude", "boundary references whose nodes get no contact element (e.g. the clamped "
+                       "ends of Gamma3 on Gamma1), as a list"},
            {"gap", "old spelling of g"},
-           {"strategy", "dynamic contact strategy of sig-march (a TIME deck only): signorini | "
-                        "compliance | specific-penalty | two-step | ipm; default signorini"},
+           {"strategy",
+            "dynamic contact strategy of sig-march (a TIME deck only): signorini | "
+            "compliance | specific-penalty | two-step | ipm",
+            "signorini"},
            {"r", "foundation stiffness per unit area of compliance, specific-penalty and ipm "
                  "(sig-march), > 0"},
        }},
@@ -111,31 +138,59 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference of the CONTACT card"},
            {"law", "none | tresca (1.33): |T| <= threshold on every contact node | coulomb "
-                   "(1.35): |T| <= mu N"},
+                   "(1.35): |T| <= mu N | nonmonotone (1.39): |T| <= mu(r) N, mu(r) = "
+                   "(a - b) exp(-alpha r) + b, r the slip (or slip rate) magnitude, solved by "
+                   "the convexification loop (4.110)-(4.112)"},
            {"mu", "coulomb: friction coefficient, >= 0"},
            {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
+           {"bound", "coulomb, nonmonotone: normal (default): mu times the whole normal "
+                     "pressure N | compliance: mu times the compliance pressure p(min(q_n, g)) "
+                     "only, (4.6)/(5.6): on the wall Tresca's mu p(g)"},
+           {"a", "nonmonotone: mu(0), >= b"},
+           {"b", "nonmonotone: mu at large slip, >= 0"},
+           {"alpha", "nonmonotone: decay of mu per unit slip, >= 0"},
+           {"of", "nonmonotone: slip (default; the tangential displacement from the "
+                  "reference, ch. 4) | slip-rate (the tangential velocity, ch. 6)"},
        }},
       {"SOLVER",
        false,
        "linear backend and contact algorithm",
        {
-           {"linear", "cholmod | umfpack | mumps"},
-           {"method", "linear | alm | penalty | pdas | projection"},
-           {"r", "augmentation parameter (alm) or foundation stiffness (penalty)"},
-           {"gamma", "parameter of the primal-dual active set test (3.20)"},
-           {"c", "parameter of the iterative projection method (7.16)"},
-           {"eps", "tolerance of stopping test (iv): relative increment and residual"},
-           {"maxit", "maximum number of nonlinear iterations"},
-           {"search", "auto | yes | no: line search on the residual of a linear contact solve "
-                      "(auto: with friction or a compliance law, for alm, pdas and projection; "
-                      "the large-deformation solve always searches)"},
+           {"linear", "cholmod | umfpack | mumps: the sparse direct solver", "cholmod"},
+           {"method", "linear | alm | penalty | pdas | projection; default pdas with a CONTACT "
+                      "card, linear without"},
+           {"r", "augmentation parameter (alm) or foundation stiffness (penalty), > 0", "100"},
+           {"gamma", "parameter of the primal-dual active set test (3.20), > 0", "100"},
+           {"c", "parameter of the iterative projection method (7.16), > 0", "100"},
+           {"eps", "tolerance of stopping test (iv): relative increment and residual, > 0", "1e-5"},
+           {"maxit", "maximum number of nonlinear iterations: of the solve (sig-solve, default "
+                     "100), of each Newton phase of a time step (sig-march, default 50)"},
+           {"search",
+            "auto | yes | no: line search on the residual of a linear contact solve "
+            "(auto: with friction or a compliance law, for alm, pdas and projection; "
+            "the large-deformation solve always searches)",
+            "auto"},
+       }},
+      {"CONVEXIFICATION",
+       false,
+       "the convexification loop (4.110)-(4.112) of FRICTION law=nonmonotone in a static solve "
+       "(sig-solve): mu frozen per node at the previous iterate's slip, each convex problem "
+       "solved by the SOLVER method",
+       {
+           {"eps", "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
+                   "||u(m)||_V and the same for the contact tractions on Gamma3; default 1e-5"},
+           {"maxit", "maximum number of outer iterations (convex solves), >= 1; default 200"},
+           {"relaxation", "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); "
+                          "default 1 (none, as the thesis)"},
+           {"start", "rest (default: u(0) = 0, mu = a) | slipped (mu = b, as after a long "
+                     "slip)"},
        }},
       {"LOADSTEPS",
        false,
        "load stepping of the large-deformation solve (hyperelastic laws, sig-solve): the "
        "imposed displacements and loads grow in n equal steps, each solved by Newton",
        {
-           {"n", "number of load steps, >= 1 (default 1)"},
+           {"n", "number of load steps, >= 1", "1"},
        }},
       {"TIME",
        false,
@@ -145,9 +200,11 @@ const std::vector<CardSpec>& card_schema() {
                       "acceleration; both conserve the discrete energy (8.33) without load"},
            {"T", "final time, > 0"},
            {"k", "time step, > 0; T / k must be a whole number of steps"},
-           {"output_every", "keep the state every this many steps (>= 1; default 1)"},
-           {"mass", "consistent | lumped | emm (Equivalent Mass Matrix (3.54), needs a CONTACT "
-                    "card); default consistent"},
+           {"output_every", "keep the state every this many steps, >= 1", "1"},
+           {"mass",
+            "consistent | lumped | emm (Equivalent Mass Matrix (3.54), needs a CONTACT "
+            "card)",
+            "consistent"},
        }},
       {"INITIAL",
        true,
@@ -166,14 +223,14 @@ const std::vector<CardSpec>& card_schema() {
            {"analytic", "hertz: 2D Hertz contact of a half disc on a plane, thesis (7.38)"},
            {"R", "radius of the half disc"},
            {"f", "magnitude of the vertical traction on the top edge"},
-           {"x0", "x1 of the centre line (default 0)"},
+           {"x0", "x1 of the centre line", "0"},
        }},
       {"OUTPUT",
        false,
        "what the post-processing stage writes",
        {
-           {"vtk", "yes | no: write .vtu/.pvd files for ParaView"},
-           {"name", "base name of the output files"},
+           {"vtk", "yes | no: write .vtu/.pvd files for ParaView", "yes"},
+           {"name", "base name of the output files; default the datafile's stem"},
        }},
   };
   return schema;

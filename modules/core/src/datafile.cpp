@@ -4,6 +4,7 @@
 #include "core/log.hpp"
 #include "text_case.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -20,10 +21,9 @@ bool is_name_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
 
-const CardSpec* find_spec(const std::string& keyword) {
-  for (const auto& spec : card_schema())
-    if (keyword == spec.keyword) return &spec;
-  return nullptr;
+std::vector<std::string>& looked_up() {
+  static std::vector<std::string> keywords;
+  return keywords;
 }
 
 // The canonical spelling of a field of `spec` (case-insensitive match), or nullptr.
@@ -133,7 +133,7 @@ Card parse_card(const std::string& raw, const std::string& file, int line) {
   while (end < content.size() && !is_space(content[end]))
     ++end;
   card.keyword = to_upper(content.substr(0, end));
-  const CardSpec* spec = find_spec(card.keyword);
+  const CardSpec* spec = find_card_spec(card.keyword);
   if (spec == nullptr)
     throw InputError(file, line, "",
                      "unknown card '" + content.substr(0, end) + "' (known: " + known_keywords() +
@@ -163,6 +163,17 @@ std::string repeated_card_message(const Card& first, const Card& second) {
 }
 } // namespace
 
+const CardSpec* find_card_spec(const std::string& keyword) {
+  const std::string key = to_upper(keyword);
+  for (const auto& spec : card_schema())
+    if (key == spec.keyword) return &spec;
+  return nullptr;
+}
+
+const std::vector<std::string>& cards_looked_up() {
+  return looked_up();
+}
+
 Datafile Datafile::read(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   SIG_VERIFY(in, path.string() << ": cannot read datafile: " << std::strerror(errno));
@@ -188,7 +199,7 @@ Datafile Datafile::parse(const std::string& text, const std::string& file_name) 
     ++line;
     if (trim(strip_comment(raw, file_name, line)).empty()) continue;
     Card card = parse_card(raw, file_name, line);
-    if (!find_spec(card.keyword)->repeatable)
+    if (!find_card_spec(card.keyword)->repeatable)
       for (const auto& earlier : deck.cards_)
         if (earlier.keyword == card.keyword)
           throw InputError(file_name, line, "", repeated_card_message(earlier, card));
@@ -199,6 +210,8 @@ Datafile Datafile::parse(const std::string& text, const std::string& file_name) 
 
 std::vector<const Card*> Datafile::all(const std::string& keyword) const {
   const std::string key = to_upper(keyword);
+  if (std::find(looked_up().begin(), looked_up().end(), key) == looked_up().end())
+    looked_up().push_back(key);
   std::vector<const Card*> found;
   for (const auto& card : cards_)
     if (card.keyword == key) found.push_back(&card);

@@ -14,11 +14,22 @@ double seconds_between(std::chrono::steady_clock::time_point a,
   return std::chrono::duration<double>(b - a).count();
 }
 
-std::string progress_line(const std::string& label, long done, long total, double elapsed,
-                          const std::string& detail) {
-  char numbers[128];
+// "label 120/2000 (6%) 1.2s, 100 steps/s, 18.8s left detail": the rate and the rest from the
+// mean rate so far.
+std::string progress_line(const std::string& label, const std::string& unit, long done, long total,
+                          double elapsed, const std::string& detail) {
+  char numbers[160];
   const double percent = total > 0 ? 100.0 * static_cast<double>(done) / total : 100.0;
-  std::snprintf(numbers, sizeof numbers, " %ld/%ld (%.0f%%) %.1fs", done, total, percent, elapsed);
+  int n = std::snprintf(numbers, sizeof numbers, " %ld/%ld (%.0f%%) %.1fs", done, total, percent,
+                        elapsed);
+  if (done > 0 && elapsed > 0) {
+    const double rate = static_cast<double>(done) / elapsed;
+    n += std::snprintf(numbers + n, sizeof numbers - n, rate >= 100 ? ", %.0f %s/s" : ", %.3g %s/s",
+                       rate, unit.c_str());
+    if (done < total)
+      std::snprintf(numbers + n, sizeof numbers - n, ", %.1fs left",
+                    static_cast<double>(total - done) / rate);
+  }
   std::string line = "[sig] " + label + numbers;
   if (!detail.empty()) line += " " + detail;
   return line;
@@ -33,14 +44,14 @@ void log_warning(const std::string& message) {
   std::fprintf(stderr, "[sig] warning: %s\n", message.c_str());
 }
 
-Progress::Progress(std::string label, long total)
-    : label_(std::move(label)), total_(total), tty_(::isatty(STDERR_FILENO) == 1),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+Progress::Progress(std::string label, long total, std::string unit)
+    : label_(std::move(label)), unit_(std::move(unit)), total_(total),
+      tty_(::isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()), last_(start_) {}
 
 void Progress::update(long done, const std::string& detail) {
   const auto now = std::chrono::steady_clock::now();
   const std::string line =
-      progress_line(label_, done, total_, seconds_between(start_, now), detail);
+      progress_line(label_, unit_, done, total_, seconds_between(start_, now), detail);
   if (tty_) {
     // \r and erase-to-end-of-line: one line rewritten in place.
     std::fprintf(stderr, "\r%s\033[K", line.c_str());
@@ -54,7 +65,7 @@ void Progress::update(long done, const std::string& detail) {
 void Progress::finish(const std::string& detail) {
   const auto now = std::chrono::steady_clock::now();
   const std::string line =
-      progress_line(label_, total_, total_, seconds_between(start_, now), detail);
+      progress_line(label_, unit_, total_, total_, seconds_between(start_, now), detail);
   if (tty_)
     std::fprintf(stderr, "\r%s\033[K\n", line.c_str());
   else

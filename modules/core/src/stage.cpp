@@ -1,15 +1,21 @@
 #include "core/stage.hpp"
 
+#include "core/card_help.hpp"
+#include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/provenance.hpp"
+#include "revision.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <exception>
+#include <fstream>
 #include <iostream>
 
 namespace sig {
@@ -19,14 +25,88 @@ namespace {
 std::string program_name(const std::string& stage) {
   return stage.rfind("sig-", 0) == 0 ? stage : "sig-" + stage;
 }
+
+std::string list_lines(const std::vector<std::string>& items, std::size_t indent) {
+  std::string out;
+  for (const std::string& item : items)
+    out += "  " + wrap_text(item, 2, indent);
+  return out;
+}
+
+// The cards the stage looked up, for the test suite's check of --help (stage_help.sh).
+void append_card_trace(const std::string& program) {
+  const char* file = std::getenv("SIG_CARD_TRACE");
+  if (file == nullptr || *file == '\0' || cards_looked_up().empty()) return;
+  std::string lines;
+  for (const std::string& keyword : cards_looked_up())
+    lines += program + " " + keyword + "\n";
+  std::ofstream(file, std::ios::app) << lines;
+}
 } // namespace
+
+std::string stage_help_text(const StageHelp& help) {
+  const std::string name = program_name(help.name);
+  std::string out = "usage: " + name + " " + help.usage + "\n       " + name +
+                    " --help | --version\n\n" + wrap_text(help.purpose, 0, 0) + "\n";
+  if (!help.reads.empty()) out += "Reads:\n" + list_lines(help.reads, 4);
+  if (!help.writes.empty()) out += "Writes:\n" + list_lines(help.writes, 4);
+  std::vector<std::pair<std::string, std::string>> options;
+  if (help.usage.find("-o OUTDIR") != std::string::npos)
+    options.emplace_back("-o OUTDIR", "the case's folder, where the stages read and write their "
+                                      "files (default out/<datafile stem>/)");
+  options.insert(options.end(), help.options.begin(), help.options.end());
+  options.emplace_back("-h, --help", "this help");
+  options.emplace_back("--version", "version and git revision");
+  std::size_t width = 0;
+  for (const auto& option : options)
+    width = std::max(width, option.first.size());
+  out += "\nOptions:\n";
+  for (auto [option, text] : options) {
+    option.resize(width, ' ');
+    out += "  " + option + "  " + wrap_text(text, width + 4, width + 4);
+  }
+  if (!help.cards.empty()) {
+    out += '\n';
+    out += wrap_text("Cards it reads (one per line, KEYWORD name=value ...; keywords and "
+                     "names are case-insensitive, # starts a comment; all the cards: "
+                     "sig-dump --cards):",
+                     0, 0);
+    for (const std::string& keyword : help.cards) {
+      const CardSpec* spec = find_card_spec(keyword);
+      SIG_VERIFY(spec != nullptr, name << ": --help lists card " << keyword
+                                       << ", which the card schema does not have");
+      out += card_help(*spec);
+    }
+  }
+  return out;
+}
+
+std::string version_line(const std::string& name) {
+  return program_name(name) + " (Signorini) " + build_version() + ", revision " + build_revision();
+}
+
+void handle_help_and_version(int argc, char** argv, const StageHelp& help) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::cout << stage_help_text(help);
+      throw StageExit{0};
+    }
+    if (arg == "--version") {
+      std::cout << version_line(help.name) << "\n";
+      throw StageExit{0};
+    }
+  }
+}
 
 std::filesystem::path StageArgs::ds_path(const std::string& extension) const {
   return outdir / ("case." + extension);
 }
 
-StageArgs parse_stage_args(int argc, char** argv, const std::string& stage) {
-  const std::string usage = "usage: " + program_name(stage) + " DATAFILE [-o OUTDIR]";
+StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help) {
+  handle_help_and_version(argc, argv, help);
+  const std::string usage = "usage: " + program_name(help.name) + " " + help.usage +
+                            " (--help: what it reads, writes and the cards it uses)";
   StageArgs args;
   bool have_outdir = false;
   for (int i = 1; i < argc; ++i) {
@@ -54,24 +134,30 @@ StageArgs parse_stage_args(int argc, char** argv, const std::string& stage) {
 }
 
 int run_stage(const std::string& stage, const std::function<void()>& body) {
-  int status = 1;
+  int code = 1;
   close_case();
   try {
     body();
-    // What the stage printed is a result too (sig-dump > file): a failed write is an error.
-    std::cout.flush();
-    errno = 0;
-    SIG_VERIFY(std::cout.good() && std::fflush(stdout) == 0 && !std::ferror(stdout),
-               "cannot write to the standard output"
-                   << (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()));
-    status = 0;
+    code = 0;
+  } catch (const StageExit& exit) {
+    code = exit.code;
   } catch (const std::exception& e) {
     std::cerr << program_name(stage) << ": error: " << e.what() << std::endl;
   } catch (...) {
     std::cerr << program_name(stage) << ": error: unknown exception" << std::endl;
   }
   close_case();
-  return status;
+  // What the stage printed is a result too (sig-dump > file): a failed write is an error.
+  std::cout.flush();
+  errno = 0;
+  if (code == 0 && !(std::cout.good() && std::fflush(stdout) == 0 && !std::ferror(stdout))) {
+    std::cerr << program_name(stage) << ": error: cannot write to the standard output"
+              << (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string())
+              << std::endl;
+    code = 1;
+  }
+  append_card_trace(program_name(stage));
+  return code;
 }
 
 std::string ds_date() {

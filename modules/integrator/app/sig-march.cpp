@@ -37,10 +37,24 @@
 #include <optional>
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-march",
+      .purpose = "Time marching of elastodynamics, M a + K u = f, from the INITIAL state with the "
+                 "scheme of the TIME card (K + (4/k^2) M factorized once), with node-to-rigid "
+                 "contact by the CONTACT card's strategy. A step whose Newton fails stops the "
+                 "march: the files hold the steps done, a warning is printed and the stage exits "
+                 "0. A progress line shows the step, time steps per second and the time left.",
+      .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
+                "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
+                "OUTDIR/case.cont (sig-contact; with a CONTACT card)"},
+      .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures)",
+                 "OUTDIR/energy.csv (one row per step: energies, contact work, penetration, active "
+                 "nodes, Newton iterations)"},
+      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER"}};
   return sig::run_stage("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
-    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-march");
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Card* contact = datafile.find("CONTACT");
     const sig::TimeParameters time =
@@ -92,7 +106,7 @@ int main(int argc, char** argv) {
     // 5. March, with a progress line: step / steps, time, total energy.
     const std::string label =
         time.scheme + (contact != nullptr ? " + " + contact_info.strategy : std::string());
-    sig::Progress progress("sig-march " + label, time.steps);
+    sig::Progress progress("sig-march " + label, time.steps, "time steps");
     char detail[96];
     const auto observer = [&](const sig::DynamicState& state, const sig::EnergyRecord& energy) {
       std::snprintf(detail, sizeof detail, "t = %.6g  E = %.12g", state.time, energy.total);

@@ -9,7 +9,7 @@ namespace sig {
 ContactHistoryInfo contact_history_info(const Card& contact) {
   ContactHistoryInfo info;
   info.strategy = contact.choice(
-      "strategy", {"signorini", "compliance", "specific-penalty", "two-step", "ipm"}, "signorini");
+      "strategy", {"signorini", "compliance", "specific-penalty", "two-step", "ipm"});
   const bool needs_r = info.strategy == "compliance" || info.strategy == "specific-penalty" ||
                        info.strategy == "ipm";
   if (needs_r && !contact.has("r"))

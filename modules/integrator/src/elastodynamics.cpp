@@ -5,12 +5,24 @@
 #include "core/error.hpp"
 #include "integrator/emm.hpp"
 
+#include <memory>
 #include <utility>
 
 namespace sig {
 
 LoadHistory constant_load(Eigen::VectorXd f) {
   return [f = std::move(f)](double) { return f; };
+}
+
+LoadHistory reduced_load(const ReducedSystem& reduced) {
+  if (reduced.time_loads.empty()) return constant_load(reduced.f);
+  // What ReducedSystem::load_at reads, without the stiffness.
+  auto loads = std::make_shared<ReducedSystem>();
+  loads->f = reduced.f;
+  loads->free_dofs = reduced.free_dofs;
+  loads->reduced_index = reduced.reduced_index;
+  loads->time_loads = reduced.time_loads;
+  return [loads](double t) { return loads->load_at(t); };
 }
 
 Eigen::VectorXd Elastodynamics::load_at(double t) const {
@@ -73,7 +85,7 @@ Elastodynamics reduced_elastodynamics(const ReducedSystem& reduced,
   Elastodynamics problem;
   problem.K = reduced.K;
   problem.M = reduced.restrict_matrix(mass);
-  problem.load = constant_load(reduced.f);
+  problem.load = reduced_load(reduced);
   return problem;
 }
 

@@ -24,9 +24,9 @@ TimeParameters time_parameters(const Card& time, bool has_contact) {
     time.fail("k", what.str());
   }
   p.steps = static_cast<int>(steps);
-  const long every = time.integer("output_every", 1);
+  const long every = time.integer("output_every");
   p.output_every = static_cast<int>(std::min<long>(every, p.steps));
-  const std::string mass = time.choice("mass", {"consistent", "lumped", "emm"}, "consistent");
+  const std::string mass = time.choice("mass", {"consistent", "lumped", "emm"});
   if (mass == "emm" && !has_contact)
     time.fail("mass", "mass=emm needs a CONTACT card: the Equivalent Mass Matrix (3.54) removes "
                       "the normal inertia of the contact nodes of Gamma3");

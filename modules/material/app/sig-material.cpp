@@ -10,9 +10,16 @@
 #include <sstream>
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{.name = "sig-material",
+                            .purpose = "Material stage (MODULEF's COMILI): gives every sub-domain "
+                                       "of the mesh its constitutive law "
+                                       "from the MATERIAL cards, checked against the mesh.",
+                            .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)"},
+                            .writes = {"OUTDIR/case.mili (law and parameters per sub-domain)"},
+                            .cards = {"TITLE", "MATERIAL"}};
   return sig::run_stage("sig-material", [&] {
     // 1. Command line and inputs.
-    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-material");
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
 

@@ -62,7 +62,7 @@ Hooke hooke_from_card(const Card& card) {
 }
 
 PlaneMode plane_mode_from_card(const Card& card) {
-  return card.choice("plane", {"strain", "stress"}, "strain") == "stress" ? PlaneMode::stress
+  return card.choice("plane", {"strain", "stress"}) == "stress" ? PlaneMode::stress
                                                                           : PlaneMode::strain;
 }
 

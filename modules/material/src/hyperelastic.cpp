@@ -11,8 +11,8 @@ namespace sig {
 
 namespace {
 
-constexpr int in_plane[4] = {0, 1, 3, 4}; // 3D index 3 i + J of F11, F12, F21, F22
-constexpr int out_of_plane = 8;           // 3D index of F33
+constexpr int in_plane_index[4] = {0, 1, 3, 4}; // 3D index 3 i + J of F11, F12, F21, F22
+constexpr int out_of_plane = 8;                 // 3D index of F33
 
 Eigen::Matrix3d embedded(const Eigen::Matrix2d& F, double F33) {
   Eigen::Matrix3d F3 = Eigen::Matrix3d::Zero();
@@ -93,7 +93,7 @@ HyperelasticResponse HyperelasticLaw::plane_strain(const Eigen::Matrix2d& F) con
   out.stress = r.P.topLeftCorner<2, 2>();
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b)
-      out.tangent(a, b) = r.A(in_plane[a], in_plane[b]);
+      out.tangent(a, b) = r.A(in_plane_index[a], in_plane_index[b]);
   out.stretch33 = 1.0;
   return out;
 }
@@ -108,9 +108,33 @@ HyperelasticResponse HyperelasticLaw::plane_stress(const Eigen::Matrix2d& F) con
   const double A33 = r.A(out_of_plane, out_of_plane);
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b)
-      out.tangent(a, b) = r.A(in_plane[a], in_plane[b]) -
-                          r.A(in_plane[a], out_of_plane) * r.A(out_of_plane, in_plane[b]) / A33;
+      out.tangent(a, b) =
+          r.A(in_plane_index[a], in_plane_index[b]) -
+          r.A(in_plane_index[a], out_of_plane) * r.A(out_of_plane, in_plane_index[b]) / A33;
   out.stretch33 = F33;
+  return out;
+}
+
+MaterialPoint2d HyperelasticLaw::in_plane(const Eigen::Matrix2d& C) const {
+  SIG_VERIFY(C.determinant() > 0.0,
+             "hyperelastic law: det C = " << C.determinant() << " <= 0 (inverted element)");
+  Eigen::Matrix3d C3 = Eigen::Matrix3d::Zero();
+  C3.topLeftCorner<2, 2>() = C;
+  C3(2, 2) = plane_ == PlaneMode::strain ? 1.0 : out_of_plane_c33(C);
+  const MaterialPoint3d point = at(C3);
+  MaterialPoint2d out;
+  out.energy = point.energy;
+  out.S = point.S.topLeftCorner<2, 2>();
+  // Plane stress: S33 = 0 along the path gives dC33 = -CC_33pq dC_pq / CC_3333, which condenses
+  // the tangent as for the first Piola tangent in plane_stress().
+  const double CC33 = point.CC(out_of_plane, out_of_plane);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      out.CC(a, b) =
+          point.CC(in_plane_index[a], in_plane_index[b]) -
+          (plane_ == PlaneMode::stress ? point.CC(in_plane_index[a], out_of_plane) *
+                                             point.CC(out_of_plane, in_plane_index[b]) / CC33
+                                       : 0.0);
   return out;
 }
 

@@ -72,7 +72,7 @@ bool MaterialTable::has_mass() const {
 }
 
 SubdomainMaterial material_from_card(const Card& card) {
-  const std::string law = card.choice("law", {"hooke", "svk", "ciarlet-geymonat"}, "hooke");
+  const std::string law = card.choice("law", {"hooke", "svk", "ciarlet-geymonat"});
   SubdomainMaterial material;
   if (law == "ciarlet-geymonat") {
     reject_fields(card, {"E", "nu"}, law);
@@ -86,8 +86,8 @@ SubdomainMaterial material_from_card(const Card& card) {
       material.hyperelastic = std::make_shared<const SaintVenantKirchhoff>(
           material.hooke.E, material.hooke.nu, material.hooke.plane);
   }
-  material.thickness = card.real("thickness", 1.0); // > 0 and rho >= 0: core/ranges.hpp
-  material.density = card.real("rho", 0.0);
+  material.thickness = card.real("thickness"); // > 0 and rho >= 0: core/ranges.hpp
+  material.density = card.real("rho");
   return material;
 }
 

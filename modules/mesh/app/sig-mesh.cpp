@@ -34,9 +34,19 @@ std::string describe_references(const sig::Mesh& mesh) {
 } // namespace
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-mesh",
+      .purpose = "The mesh stage (MODULEF's APNOPO): builds the mesh of the MESH card (a generator "
+                 "of the thesis's geometries, or a gmsh, FreeFem or NOPO file), checks it and "
+                 "writes it as a NOPO structure with double-precision coordinates.",
+      .reads = {"DATAFILE, and the mesh file its MESH card names (file=, relative to the "
+                "datafile's folder)"},
+      .writes = {"OUTDIR/case.nopo (NOPO mesh: nodes, triangles, sub-domains, references of "
+                 "vertices and edges)"},
+      .cards = {"TITLE", "MESH"}};
   return sig::run_stage("sig-mesh", [&] {
     // 1. Command line and datafile.
-    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-mesh");
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
 
     // 2. Mesh from the MESH card (generator or file), relative paths from the datafile folder.

@@ -53,14 +53,12 @@ void verify_size(const Card& card, const std::string& field, double nodes) {
 }
 
 Eigen::Vector2d center(const Card& card) {
-  if (!card.has("center")) return {0, 0};
   const std::vector<double> c = card.reals("center");
   if (c.size() != 2) card.fail("center", "expects two coordinates, e.g. center=0,10");
   return {c[0], c[1]};
 }
 
 std::array<int, 4> refs(const Card& card) {
-  if (!card.has("refs")) return {3, 4, 2, 1};
   const std::vector<long> r = card.integers("refs");
   if (r.size() != 4 || *std::min_element(r.begin(), r.end()) < 1)
     card.fail("refs", "expects four references >= 1: bottom, right, top, left");
@@ -84,7 +82,7 @@ Mesh generate(const Card& card, const std::string& generator) {
     const int n = even_count(card, "N", generator == "disc" ? 4 : 2);
     // Uniform at the arc's size h = 2 pi R / N (disc) or pi R / N: N^2 / (4 pi) nodes at most.
     verify_size(card, "N", static_cast<double>(n) * n / (4 * std::numbers::pi));
-    const double grading = card.real("grading", 0.0);
+    const double grading = card.real("grading");
     return generator == "disc" ? disc(center(card), r, n, grading) : half_disc(r, n, grading);
   }
   if (generator == "ring") {

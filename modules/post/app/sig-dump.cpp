@@ -1,7 +1,11 @@
 // sig-dump: print a DS file (header and arrays) or a NOPO mesh, as MODULEF printed its
-// structures; --json gives stable keys for scripts.
+// structures; --json gives stable keys for scripts, --values adds the arrays' values to it (the
+// one way the report scripts read a DS: postproc/sigreport/ds.py). --cards prints the card
+// schema.
 //
-//   sig-dump [--json] FILE
+//   sig-dump [--json [--values | --values=NAME,NAME...]] FILE
+//   sig-dump --cards [CARD...]
+#include "core/card_help.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/stage.hpp"
@@ -9,31 +13,81 @@
 #include "post/dump.hpp"
 
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-dump",
+      .purpose = "Prints any DS file of the stages (header and arrays; NOPO meshes too) as MODULEF "
+                 "printed its structures, or the cards of the datafiles with their fields, help "
+                 "texts and defaults.",
+      .reads = {"FILE: a DS file (case.mili, case.cont, case.tae, case.b, case.hist, ...) or a "
+                "NOPO mesh"},
+      .writes = {"standard output"},
+      .cards = {},
+      .usage = "[--json [--values | --values=NAME,NAME...]] FILE | --cards [CARD...]",
+      .options = {{"--json", "stable keys for scripts (JSON) instead of text"},
+                  {"--values", "with --json: the values of every array too (one line)"},
+                  {"--values=A,B", "with --json: the values of the arrays named"},
+                  {"--cards", "every card with a one-line help; --cards CARD...: those cards' "
+                              "fields, help texts and defaults"}}};
   return sig::run_stage("sig-dump", [&] {
     // 1. Command line.
-    bool json = false;
-    std::filesystem::path file;
+    sig::handle_help_and_version(argc, argv, help);
+    const std::string usage = "usage: sig-dump " + help.usage;
+    bool json = false, cards = false;
+    bool values_given = false;
+    sig::DumpValues values;
+    std::vector<std::string> names;
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
       if (arg == "--json") {
         json = true;
+      } else if (arg == "--cards") {
+        cards = true;
+      } else if (arg == "--values") {
+        values_given = values.all = true;
+      } else if (arg.starts_with("--values=")) {
+        values_given = true;
+        std::istringstream list(arg.substr(9));
+        for (std::string name; std::getline(list, name, ',');)
+          if (!name.empty()) values.names.push_back(name);
+        SIG_VERIFY(!values.names.empty(), "--values= needs array names (" << usage << ")");
       } else {
-        SIG_VERIFY(file.empty() && !arg.starts_with("-"), "usage: sig-dump [--json] FILE");
-        file = arg;
+        SIG_VERIFY(!arg.starts_with("-"), usage);
+        names.push_back(arg);
       }
     }
-    SIG_VERIFY(!file.empty(), "usage: sig-dump [--json] FILE");
-    SIG_VERIFY(std::filesystem::exists(file), file.string() << ": no such file");
 
-    // 2. A DS starts with its magic; anything else must be a NOPO mesh.
-    if (sig::is_ds_file(file)) {
-      const sig::Ds ds = sig::read_ds(file);
-      std::cout << (json ? sig::dump_ds_json(ds).dump() + "\n" : sig::dump_ds_text(ds));
+    // 2. The card schema: all cards, or the named ones.
+    if (cards) {
+      SIG_VERIFY(!json && !values_given, usage);
+      if (names.empty())
+        std::cout << "Cards of the datafiles (sig-dump --cards CARD):\n" << sig::card_index();
+      for (const std::string& name : names) {
+        const sig::CardSpec* spec = sig::find_card_spec(name);
+        SIG_VERIFY(spec != nullptr, "no card " << name << "; the cards are:\n"
+                                               << sig::card_index());
+        std::cout << sig::card_help(*spec);
+      }
       return;
     }
+    SIG_VERIFY(names.size() == 1, usage);
+    const std::filesystem::path file = names.front();
+    SIG_VERIFY(json || !values_given, "--values needs --json (" << usage << ")");
+    SIG_VERIFY(std::filesystem::exists(file), file.string() << ": no such file");
+
+    // 3. A DS starts with its magic; anything else must be a NOPO mesh.
+    if (sig::is_ds_file(file)) {
+      const sig::Ds ds = sig::read_ds(file);
+      // With values the JSON is written on one line: arrays of thousands of numbers.
+      std::cout << (json ? sig::dump_ds_json(ds, values).dump(values_given ? -1 : 2) + "\n"
+                         : sig::dump_ds_text(ds));
+      return;
+    }
+    SIG_VERIFY(!values_given, file.string() << ": --values is for DS files, not NOPO meshes");
     const sig::NopoFile nopo = sig::read_nopo_file(file);
     const std::string& title = nopo.text.title;
     std::cout << (json ? sig::dump_mesh_json(nopo.mesh, title).dump() + "\n"

@@ -50,20 +50,33 @@ sig::Json hertz_comparison(const sig::Card& compare, const sig::MaterialTable& m
   data.poisson = materials.entries.front().hooke.nu;
   if (data.radius <= 0) compare.fail("R", "must be positive");
   if (data.traction <= 0) compare.fail("f", "must be positive");
-  const auto samples = sig::pressure_samples(contact, compare.real("x0", 0.0));
+  const auto samples = sig::pressure_samples(contact, compare.real("x0"));
   return sig::hertz_json(data, sig::hertz_pressure_error(data, samples));
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-post",
+      .purpose = "Post-processing: the solved case (or the marched one, with a TIME card) for "
+                 "ParaView and scripts. Refuses a solution holding NaN or inf.",
+      .reads = {"DATAFILE", "OUTDIR/case.nopo, case.mili",
+                "OUTDIR/case.b (sig-solve) or, with a TIME card, OUTDIR/case.hist (sig-march)",
+                "OUTDIR/case.cont (with a CONTACT card)"},
+      .writes = {"OUTDIR/<name>.pvd and <name>_NNNN.vtu (unless OUTPUT vtk=no; one .vtu per load "
+                 "step or kept time step)",
+                 "OUTDIR/summary.json (method, convergence, sizes, histories, times, energies, "
+                 "Hertz comparison)",
+                 "OUTDIR/contact.csv (one row per contact node; contact cases)"},
+      .cards = {"TITLE", "OUTPUT", "TIME", "CONTACT", "COMPARE"}};
   return sig::run_stage("sig-post", [&] {
     // 1. Command line, datafile and the OUTPUT card.
-    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "sig-post");
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Card* output = datafile.find("OUTPUT");
     const bool write_vtk =
-        output == nullptr || output->choice("vtk", {"yes", "no"}, "yes") == "yes";
+        output == nullptr || output->choice("vtk", {"yes", "no"}) == "yes";
 
     // 2. Mesh and materials. A dynamic case (TIME card) is shown as the states sig-march kept
     //    in case.hist, one .vtu each; its energies are in energy.csv already.

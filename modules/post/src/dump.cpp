@@ -41,6 +41,20 @@ std::string first_values(const Ds& ds, const DsArray& array, std::size_t max_val
   return out.str();
 }
 
+Json array_values(const Ds& ds, const DsArray& array) {
+  switch (array.type) {
+  case DsType::Int64: {
+    const auto v = ds.ints(array.name);
+    return Json::array_of(std::vector<long long>(v.begin(), v.end()));
+  }
+  case DsType::Float64:
+    return Json::array_of(ds.reals(array.name));
+  case DsType::Text:
+    return Json(ds.text(array.name));
+  }
+  return Json();
+}
+
 } // namespace
 
 bool is_ds_file(const std::filesystem::path& path) {
@@ -80,13 +94,18 @@ std::string dump_ds_text(const Ds& ds, std::size_t max_values) {
   return out.str();
 }
 
-Json dump_ds_json(const Ds& ds) {
+Json dump_ds_json(const Ds& ds, const DumpValues& values) {
+  for (const auto& name : values.names)
+    SIG_VERIFY(ds.has(name),
+               ds.source << ": no array '" << name << "' in this " << ds.header.kind << " DS");
   Json::Array arrays;
   for (const auto& a : ds.arrays()) {
     Json entry = Json::object();
     entry.set("name", a.name);
     entry.set("type", ds_type_name(a.type));
     entry.set("shape", Json::array_of(std::vector<long long>(a.shape.begin(), a.shape.end())));
+    if (values.all || std::ranges::find(values.names, a.name) != values.names.end())
+      entry.set("values", array_values(ds, a));
     arrays.push_back(std::move(entry));
   }
   Json j = Json::object();

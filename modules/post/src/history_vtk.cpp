@@ -66,9 +66,7 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
       fields.point.push_back(
           {"contact_pressure", 1,
            std::vector<double>(pressure.begin() + s * nodes, pressure.begin() + (s + 1) * nodes)});
-    VtkState state{times[s], std::move(fields.point), std::move(fields.cell), field_data};
-    state.field_data.emplace_back("time", std::to_string(times[s]));
-    return state;
+    return VtkState{times[s], std::move(fields.point), std::move(fields.cell), field_data, {}};
   });
 }
 

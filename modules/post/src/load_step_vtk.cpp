@@ -78,9 +78,11 @@ std::vector<std::filesystem::path> write_load_step_vtk(const std::filesystem::pa
       contact = contact_rows(mesh, *cont, state);
     }
     SolutionFields fields = solution_fields(mesh, state.reals("u"), materials, contact);
-    VtkState vtk{load[s], std::move(fields.point), std::move(fields.cell), field_data};
-    vtk.field_data.emplace_back("load_step", std::to_string(s + 1));
-    vtk.field_data.emplace_back("load_factor", std::to_string(load[s]));
+    VtkState vtk{load[s],
+                 std::move(fields.point),
+                 std::move(fields.cell),
+                 field_data,
+                 {{"load_step", static_cast<double>(s + 1)}, {"load_factor", load[s]}}};
     return vtk;
   });
 }

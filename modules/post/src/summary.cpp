@@ -83,6 +83,20 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
     s.set("stick_history", history(solution, "history_stick"));
     s.set("slip_history", history(solution, "history_slip"));
   }
+  // The convexification loop of a nonmonotone law: the outer count and each inner count.
+  if (solution.has("outer_iterations")) {
+    Json loop = Json::object();
+    loop.set("converged", solution.integer("outer_converged") != 0);
+    loop.set("outer_iterations", static_cast<long>(solution.integer("outer_iterations")));
+    loop.set("inner_iterations", history(solution, "outer_inner_iterations"));
+    loop.set("displacement_change", history(solution, "outer_u_change"));
+    loop.set("force_change", history(solution, "outer_xi_change"));
+    loop.set("mu_change", history(solution, "outer_mu_change"));
+    loop.set("status_changes", history(solution, "outer_status_changes"));
+    loop.set("cycle", static_cast<long>(solution.integer("outer_cycle")));
+    loop.set("failure", solution.text("outer_failure"));
+    s.set("convexification", std::move(loop));
+  }
   s.set("times", std::move(times_json));
   return s;
 }

@@ -12,7 +12,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
-#include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -79,7 +79,7 @@ vtkNew<vtkUnstructuredGrid> make_grid(const Mesh& mesh) {
 
 void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
                const std::vector<VtkField>& point_fields, const std::vector<VtkField>& cell_fields,
-               const VtkText& field_data) {
+               const VtkText& field_data, const VtkNumbers& field_numbers) {
   const std::string where = path.string();
   const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   SIG_VERIFY(std::filesystem::is_directory(folder),
@@ -92,10 +92,18 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
     grid->GetCellData()->AddArray(make_array(field, mesh.num_triangles(), where));
   }
   for (const auto& [name, text] : field_data) {
-    vtkNew<vtkStringArray> strings;
-    strings->SetName(name.c_str());
-    strings->InsertNextValue(text);
-    grid->GetFieldData()->AddArray(strings);
+    vtkNew<vtkUnsignedCharArray> bytes;
+    bytes->SetName(name.c_str());
+    bytes->SetNumberOfValues(static_cast<vtkIdType>(text.size()));
+    for (std::size_t i = 0; i < text.size(); ++i)
+      bytes->SetValue(static_cast<vtkIdType>(i), static_cast<unsigned char>(text[i]));
+    grid->GetFieldData()->AddArray(bytes);
+  }
+  for (const auto& [name, value] : field_numbers) {
+    vtkNew<vtkDoubleArray> number;
+    number->SetName(name.c_str());
+    number->InsertNextValue(value);
+    grid->GetFieldData()->AddArray(number);
   }
 
   // The name every atomic write uses: a killed sig-post's leftover is found at the next start.
@@ -142,11 +150,13 @@ write_vtu_series(const std::filesystem::path& outdir, const std::string& stem, c
   std::vector<std::filesystem::path> files{outdir / (stem + ".pvd")};
   std::vector<PvdStep> steps;
   for (std::size_t s = 0; s < count; ++s) {
-    const VtkState fields = state(s);
+    VtkState fields = state(s);
+    fields.field_numbers.emplace_back("TimeValue", fields.time);
     char suffix[32];
     std::snprintf(suffix, sizeof suffix, "_%04zu.vtu", s);
     const std::string vtu = stem + suffix;
-    write_vtu(outdir / vtu, mesh, fields.point, fields.cell, fields.field_data);
+    write_vtu(outdir / vtu, mesh, fields.point, fields.cell, fields.field_data,
+              fields.field_numbers);
     steps.push_back({fields.time, vtu});
     files.push_back(outdir / vtu);
   }

@@ -58,7 +58,20 @@ std::string json_list(const std::vector<double>& values) {
 } // namespace
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-bench-finite-strain",
+      .purpose = "Times the large-deformation Newton of sig-solve (scene 7b) K times in one "
+                 "process against its floor: one symbolic analysis, then numeric factorization + "
+                 "solve of the tangent at the final state, times the Newton iterations. "
+                 "Non-convergence is reported, not an error.",
+      .reads = {"DATAFILE", "OUTDIR/case.nopo, case.mili, case.tae, case.cont (as sig-solve)"},
+      .writes = {"OUTDIR/bench.json (solve seconds of each run and their median, floor, analysis, "
+                 "assembly, iterations, reactions)"},
+      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION"},
+      .usage = "DATAFILE [-o OUTDIR] [--repeat K]",
+      .options = {{"--repeat K", "timed runs of the solve and of the floor (default 3)"}}};
   return sig::run_stage("bench-finite-strain", [&] {
+    sig::handle_help_and_version(argc, argv, help);
     // 1. Arguments: --repeat K, the rest as every stage.
     int repeat = 3;
     std::vector<char*> rest{argv[0]};
@@ -72,7 +85,7 @@ int main(int argc, char** argv) {
       }
     }
     const sig::StageArgs args =
-        sig::parse_stage_args(static_cast<int>(rest.size()), rest.data(), "bench-finite-strain");
+        sig::parse_stage_args(static_cast<int>(rest.size()), rest.data(), help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
 
     // 2. The SOLVER and LOADSTEPS cards, as sig-solve reads them.

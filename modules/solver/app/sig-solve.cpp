@@ -30,9 +30,23 @@
 #include <optional>
 
 int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-solve",
+      .purpose = "Static solve: linear elasticity, or contact with the SOLVER card's method (alm, "
+                 "penalty, pdas, projection) and the laws of case.cont; in large deformation (a "
+                 "hyperelastic MATERIAL) Newton in LOADSTEPS steps. A method that does not "
+                 "converge is a result: the stage exits 0 and case.b says converged = 0 (\"Nv\").",
+      .reads = {"DATAFILE", "OUTDIR/case.tae (sig-assemble)", "OUTDIR/case.mili (sig-material)",
+                "OUTDIR/case.cont (sig-contact; with a CONTACT card)",
+                "OUTDIR/case.nopo (sig-mesh; large deformation, INITIAL, the norm of the "
+                "convexification loop)"},
+      .writes = {"OUTDIR/case.b (displacement, multipliers, statuses, iteration history, phase "
+                 "times; per load step in large deformation)"},
+      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION",
+                "INITIAL"}};
   return sig::run_stage("solve", [&] {
     // 1. Arguments and the SOLVER card.
-    const sig::StageArgs args = sig::parse_stage_args(argc, argv, "solve");
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Card* contact_card = datafile.find("CONTACT");
     const bool has_contact = contact_card != nullptr;
@@ -43,6 +57,14 @@ int main(int argc, char** argv) {
                                                 "TIME card); a static deck has no strategy: ") +
                                         "remove it (the static method is SOLVER method=, its "
                                         "stiffness SOLVER r=)");
+    // The laws in velocity (damped, damped-unilateral) are laws of a march in time.
+    if (has_contact && contact_card->has("law")) {
+      const std::string law = contact_card->choice("law", sig::normal_law_choices);
+      if (sig::ContactLaw{sig::normal_law_named(law)}.in_velocity())
+        contact_card->fail("law", "law=" + law +
+                                      " is a contact law in velocity: it needs a march in time "
+                                      "(TIME scheme=quasistatic, sig-march)");
+    }
     const sig::SolverCard card = sig::read_solver_card(datafile);
     for (const sig::Card* initial : datafile.all("INITIAL")) {
       if (initial->has("v"))
@@ -51,6 +73,12 @@ int main(int argc, char** argv) {
         initial->fail("u", "a static deck without contact is one linear solve: it has no first "
                            "iterate to start from");
     }
+    // A static solve has no time, hence no slip rate.
+    if (const sig::Card* friction = sig::friction_card_with_law(datafile))
+      if (friction->choice("law", sig::friction_law_choices) == "nonmonotone" &&
+          friction->choice("of", sig::slip_measure_choices, "slip") == "slip-rate")
+        friction->fail("of", "a static solve has no slip rate: of=slip-rate is for a march in "
+                             "time (sig-march); use of=slip");
     const std::string& backend = card.backend;
     const sig::ContactSolverParameters& parameters = card.parameters;
     const std::string& method = parameters.method;
@@ -100,17 +128,29 @@ int main(int argc, char** argv) {
       solution = sig::solve_linear_elasticity(system, backend);
     } else {
       const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));
+      // The mesh gives the first iterate of INITIAL and the norm of V of the convexification
+      // loop's test.
+      const bool loop = sig::needs_convexification(contact.law);
+      std::optional<sig::Mesh> mesh;
+      if (loop || !datafile.all("INITIAL").empty()) mesh = sig::read_nopo(args.ds_path("nopo"));
       Eigen::VectorXd start;
-      if (!datafile.all("INITIAL").empty())
-        start = sig::initial_fields(datafile, sig::read_nopo(args.ds_path("nopo"))).u;
-      solution = sig::solve_static_contact(system, contact, parameters, backend, start);
+      if (!datafile.all("INITIAL").empty()) start = sig::initial_fields(datafile, *mesh).u;
+      solution = sig::solve_static_contact(system, contact, parameters, backend, start,
+                                           {card.convexification, loop ? &*mesh : nullptr});
     }
 
     // 5. Write case.b and report.
     sig::write_solution(args.ds_path("b"), solution, method, backend, datafile.title());
     std::cout << "sig-solve: " << method << " (" << backend << "), " << solution.unknowns
               << " dofs, " << (solution.converged ? "converged" : "NOT converged (Nv)") << " in "
-              << solution.history.size() << " iterations, solve " << solution.seconds["solve"]
-              << " s -> " << args.ds_path("b").string() << "\n";
+              << solution.history.size() << " iterations";
+    if (const auto& loop = solution.convexification) {
+      std::cout << " (" << loop->outer_iterations() << " convex solves:";
+      for (const sig::OuterRecord& outer : loop->history)
+        std::cout << " " << outer.inner_iterations;
+      std::cout << (loop->cycle ? ", statuses cycling" : "") << ")";
+    }
+    std::cout << ", solve " << solution.seconds["solve"] << " s -> " << args.ds_path("b").string()
+              << "\n";
   });
 }

@@ -4,7 +4,8 @@ namespace sig {
 
 CondensedSolution solve_condensed_contact(CondensedProblem problem, const ContactSetting& setting,
                                           const ContactSolverParameters& parameters,
-                                          const Eigen::VectorXd& start) {
+                                          const Eigen::VectorXd& start,
+                                          const CondensedConvexification& loop) {
   const std::unique_ptr<ContactMethod> method = make_contact_method(parameters);
   const int m = setting.size();
   Eigen::VectorXd default_stiffness(m);
@@ -14,8 +15,18 @@ CondensedSolution solve_condensed_contact(CondensedProblem problem, const Contac
   CondensedBulk bulk(std::move(problem), default_stiffness, start);
   ContactIterate iterate;
   CondensedSolution s;
-  s.contact =
-      solve_contact(bulk, setting, *method, newton_options(parameters, setting.law), iterate);
+  const ContactNewtonOptions inner = newton_options(parameters, setting.law);
+  if (needs_convexification(setting.law)) {
+    ConvexificationMeasures measures;
+    measures.displacement = [&](const ContactBulk&) {
+      return loop.displacement ? loop.displacement(bulk.displacement()) : bulk.displacement();
+    };
+    measures.norm = loop.norm;
+    s.convexification = convexify(bulk, setting, *method, inner, loop.options, measures, iterate);
+    s.contact = s.convexification->last;
+  } else {
+    s.contact = solve_contact(bulk, setting, *method, inner, iterate);
+  }
   s.w = bulk.displacement();
   s.multiplier_unknowns = m * method->multiplier_unknowns(friction);
   return s;

@@ -45,22 +45,26 @@ private:
   double weight(int p) const { return s_.weight[p]; }
 
   /// The kernel of node p at (q_n, q_t) with the multiplier lambda the test sees (penalty:
-  /// none), in pressures.
-  ContactKernel kernel(int p, double q_n, double q_t, double lambda, double t) const {
+  /// none), in pressures; on the branch `on` if given.
+  ContactKernel kernel(int p, double q_n, double q_t, double lambda, double t,
+                       const NodeBranch* on = nullptr) const {
     NodeVariables x{q_n, q_t, 0.0, 0.0};
     if (method_.has_multipliers()) {
       x.lambda = lambda / weight(p);
       x.t = t / weight(p);
     }
-    return contact_kernel(s_.law[p], x, method_.augmentation(), method_.augmentation());
+    const double r = method_.augmentation();
+    return on ? contact_kernel(s_.law[p], x, r, r, *on) : contact_kernel(s_.law[p], x, r, r);
   }
 
-  /// The kernels at the bulk's iterate with multipliers (lambda, t).
-  ContactPoint point(const Eigen::VectorXd& lambda, const Eigen::VectorXd& t) const {
+  /// The kernels at the bulk's iterate with multipliers (lambda, t); on the branches `on` if
+  /// given.
+  ContactPoint point(const Eigen::VectorXd& lambda, const Eigen::VectorXd& t,
+                     const std::vector<NodeBranch>* on = nullptr) const {
     ContactPoint c{bulk_.penetration(), bulk_.slip(), lambda, t, {}};
     c.kernel.reserve(m_);
     for (int p = 0; p < m_; ++p)
-      c.kernel.push_back(kernel(p, c.q_n[p], c.q_t[p], lambda[p], t[p]));
+      c.kernel.push_back(kernel(p, c.q_n[p], c.q_t[p], lambda[p], t[p], on ? &(*on)[p] : nullptr));
     return c;
   }
 
@@ -91,6 +95,17 @@ private:
     return std::sqrt(sum);
   }
 
+  /// The residual of the system step (iii) linearized, at a point of its line: `c` on the
+  /// branches of (ii), whose off-wall rows are the method's condition there, lambda = 0 or
+  /// projection's Robin law lambda = (w / c) (q_n - q_n at the step's origin `origin`).
+  double held_residual(ContactPoint c, const Eigen::VectorXd& origin) const {
+    for (int p = 0; p < m_; ++p)
+      if (!c.kernel[p].wall_active)
+        c.kernel[p].complementarity[0] -=
+            off_wall_stiffness(method_, s_.law[p], weight(p)) * (c.q_n[p] - origin[p]) / weight(p);
+    return residual(c);
+  }
+
   /// Step (iii): the condition of node p on the branch of kernel k.
   NodeConditions node_conditions(int p, const ContactKernel& k, double q_n, double q_t) const {
     const ContactLaw& law = s_.law[p];
@@ -110,15 +125,14 @@ private:
     } else if (k.stick) {
       c.tangential.force = w * k.tangential;
       c.tangential.stiffness = w * k.d_force(1, kQt);
-    } else if (law.friction == FrictionLaw::coulomb && c.normal.imposed) {
+    } else if (k.bound_slope != 0 && c.normal.imposed) {
       c.tangential.coupling = k.slip * k.bound_slope; // T = sigma mu N, N the wall's reaction
-    } else if (law.friction == FrictionLaw::coulomb) {
-      // T = sigma mu N with N the kernel's normal force law, not the projection's Robin term
-      // (a relaxation of the inactive nodes, not a contact force).
-      c.tangential.force = w * k.slip * k.bound_slope * k.normal;
-      c.tangential.cross = w * k.slip * k.bound_slope * k.d_force(0, kQn);
     } else {
+      // T = sigma s with s the kernel's bound law: a threshold, mu p(q_n) (bound=compliance), or
+      // mu N with N the kernel's normal force law, not the projection's Robin term (a
+      // relaxation of the inactive nodes, not a contact force).
       c.tangential.force = w * k.slip * k.bound;
+      c.tangential.cross = w * k.slip * k.d_bound(kQn);
     }
     return c;
   }
@@ -148,13 +162,15 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
     std::vector<NodeConditions> conditions(m_);
     IterationRecord record;
     for (int p = 0; p < m_; ++p) {
-      const bool was_inactive = !iterate.branch.empty() && !iterate.branch[p].wall;
+      const bool was_on_wall = !iterate.branch.empty() && iterate.branch[p].wall;
+      const bool was_inactive = !iterate.branch.empty() && !was_on_wall;
       const ContactKernel& k = tested[p] =
           kernel(p, now.q_n[p], now.q_t[p],
                  method_.tested_multiplier(iterate.lambda[p], was_inactive), iterate.t[p]);
-      branch[p] = {k.wall_active, k.stick, k.slip};
+      branch[p] = branch_of(k);
       conditions[p] = node_conditions(p, k, now.q_n[p], now.q_t[p]);
       record.active += k.wall_active ? 1 : 0;
+      if (k.wall_active != was_on_wall) ++(k.wall_active ? record.entered : record.left);
       record.stick += k.stick ? 1 : 0;
       record.slip += k.slip != 0 && k.bound > 0 ? 1 : 0;
     }
@@ -195,20 +211,29 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
     const bool far = residual_norm > kSearchFar * options_.eps * bulk_.force_scale();
     const bool search = nonlinear || (options_.line_search && far);
     const bool seek_decrease = iteration > 0 || residual_norm > options_.eps * bulk_.force_scale();
-    double alpha = 1, accepted = 0, accepted_residual = 0;
+    // The merit of the search (header): on a nonlinear bulk, ||R|| on the branches of (ii).
+    const std::vector<NodeBranch>* held = nonlinear ? &branch : nullptr;
+    const Eigen::VectorXd origin = now.q_n;
+    const double start_merit =
+        held ? held_residual(point(iterate.lambda, iterate.t, held), origin) : residual_norm;
+    double alpha = 1, accepted = 0, accepted_residual = 0, accepted_merit = 0;
     ContactPoint trial;
     for (int h = 0; h <= (search ? kMaxHalvings : 0); ++h, alpha /= 2) {
       if (!bulk_.move(alpha)) continue;
-      trial = point(iterate.lambda + alpha * (lambda - iterate.lambda),
-                    iterate.t + alpha * (t - iterate.t));
+      const Eigen::VectorXd trial_lambda = iterate.lambda + alpha * (lambda - iterate.lambda);
+      const Eigen::VectorXd trial_t = iterate.t + alpha * (t - iterate.t);
+      trial = point(trial_lambda, trial_t);
       const double trial_residual = residual(trial);
       if (!std::isfinite(trial_residual)) continue; // outside the domain, as an inversion is
-      const bool decreases = trial_residual < residual_norm;
-      if (accepted == 0 || decreases || (!nonlinear && trial_residual < accepted_residual)) {
+      const double merit =
+          held ? held_residual(point(trial_lambda, trial_t, held), origin) : trial_residual;
+      const bool decreases = merit < start_merit;
+      if (accepted == 0 || decreases || (!nonlinear && merit < accepted_merit)) {
         bulk_.keep();
         std::swap(now, trial);
         accepted = alpha;
         accepted_residual = trial_residual;
+        accepted_merit = merit;
       }
       if (decreases || !search || (!seek_decrease && accepted > 0)) break;
     }

@@ -8,10 +8,11 @@ namespace sig {
 SolverCard read_solver_card(const Datafile& datafile) {
   const bool has_contact = datafile.find("CONTACT") != nullptr;
   const Card* card = datafile.find("SOLVER");
-  const Card defaults;
+  Card defaults; // no SOLVER card: every field takes the schema's default
+  defaults.keyword = "SOLVER";
   const Card& solver = card ? *card : defaults;
   SolverCard result;
-  result.backend = solver.choice("linear", {"cholmod", "umfpack", "mumps"}, "cholmod");
+  result.backend = solver.choice("linear", {"cholmod", "umfpack", "mumps"});
   ContactSolverParameters& p = result.parameters;
   p.method = solver.choice("method", {"linear", "alm", "penalty", "pdas", "projection"},
                            has_contact ? "pdas" : "linear");
@@ -20,15 +21,32 @@ SolverCard read_solver_card(const Datafile& datafile) {
                 "the datafile has a CONTACT card: choose alm, penalty, pdas or projection");
   if (p.method != "linear" && !has_contact)
     solver.fail("method", "method " + p.method + " needs a CONTACT card");
-  p.r = solver.real("r", p.r);
-  p.gamma = solver.real("gamma", p.gamma);
-  p.c = solver.real("c", p.c);
-  p.eps = solver.real("eps", p.eps);
+  p.r = solver.real("r");
+  p.gamma = solver.real("gamma");
+  p.c = solver.real("c");
+  p.eps = solver.real("eps");
   p.max_iterations = static_cast<int>(solver.integer("maxit", p.max_iterations));
-  p.search = solver.choice("search", {"auto", "yes", "no"}, "auto");
+  p.search = solver.choice("search", {"auto", "yes", "no"});
   // r, gamma, c, eps > 0, maxit >= 1, LOADSTEPS n >= 1: the cards' ranges (core/ranges.hpp).
+
+  if (const Card* loop = datafile.find("CONVEXIFICATION")) {
+    const Card* friction = datafile.find("FRICTION");
+    if (friction == nullptr || friction->choice("law", friction_law_choices) != "nonmonotone")
+      loop->fail("", "the convexification loop belongs to FRICTION law=nonmonotone, which this "
+                     "deck does not have");
+    ConvexificationOptions& o = result.convexification;
+    o.eps = loop->real("eps", o.eps);
+    if (!(o.eps > 0)) loop->fail("eps", "must be positive");
+    o.max_iterations = static_cast<int>(loop->integer("maxit", o.max_iterations));
+    if (o.max_iterations < 1) loop->fail("maxit", "must be at least 1");
+    o.relaxation = loop->real("relaxation", o.relaxation);
+    if (!(o.relaxation > 0 && o.relaxation <= 1)) loop->fail("relaxation", "must be in (0, 1]");
+    o.start = loop->choice("start", {"rest", "slipped"}, "rest") == "rest"
+                  ? ConvexificationStart::rest
+                  : ConvexificationStart::slipped;
+  }
   if (const Card* steps = datafile.find("LOADSTEPS"))
-    result.load_steps = static_cast<int>(steps->integer("n", 1));
+    result.load_steps = static_cast<int>(steps->integer("n"));
   return result;
 }
 

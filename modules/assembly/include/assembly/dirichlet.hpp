@@ -15,7 +15,8 @@ namespace sig {
 
 struct ReducedSystem {
   Eigen::SparseMatrix<double> K;  ///< K_ff
-  Eigen::VectorXd f;              ///< f_f - K_fd u_d
+  Eigen::VectorXd f;              ///< f_f - K_fd u_d at t = 0
+  TimeLoads time_loads;           ///< the change of f_f in time (assembly/time_loads.hpp)
   std::vector<int> free_dofs;     ///< sorted; reduced index -> full dof
   std::vector<int> reduced_index; ///< full dof -> reduced index, -1 for an imposed dof
   std::vector<int> dirichlet_dofs;
@@ -23,6 +24,8 @@ struct ReducedSystem {
 
   int num_free() const { return static_cast<int>(free_dofs.size()); }
   int num_full() const { return static_cast<int>(reduced_index.size()); }
+  /// f at time t: f + the free part of time_loads.change(t).
+  Eigen::VectorXd load_at(double t) const;
   /// The full vector: u_free on the free dofs, the imposed values on the others.
   Eigen::VectorXd expand(const Eigen::VectorXd& u_free) const;
   /// The free part of a full vector.

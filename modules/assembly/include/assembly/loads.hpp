@@ -6,6 +6,8 @@
 //   TRACTION  ref=R f=fx,fy   constant traction g on the edges of reference R
 //   PRESSURE  ref=R p=P       normal traction g = -P n, n the outward unit normal (P > 0 pushes)
 //   BODYFORCE [region=S] f=fx,fy   force per unit volume on sub-domains S (default all)
+//   MOVINGLOAD ref=R F= psi= c= [x0=]   a load that moves (assembly/time_loads.hpp): in the
+//                             load vector at t = 0, its change in time apart
 #include <Eigen/Core>
 
 namespace sig {
@@ -14,6 +16,7 @@ class Datafile;
 struct Mesh;
 struct MaterialTable;
 struct BoundaryEdge;
+struct TimeLoads;
 
 /// Outward unit normal of a boundary edge: pointing away from the triangle that owns it (so an
 /// edge stored in either direction gets the same normal); for an edge shared by two triangles
@@ -22,9 +25,10 @@ struct BoundaryEdge;
 /// one-off queries, not for loops over edges.
 Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge);
 
-/// f from the TRACTION, PRESSURE and BODYFORCE cards (size 2 * nodes). References and regions
-/// are checked (assembly/cards.hpp).
+/// f at t = 0 from the TRACTION, PRESSURE, BODYFORCE and MOVINGLOAD cards (size 2 * nodes);
+/// the change of the time-dependent ones in `*time_loads` when it is given. References and
+/// regions are checked (assembly/cards.hpp), and MOVINGLOAD's psi > 0.
 Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
-                               const Datafile& datafile);
+                               const Datafile& datafile, TimeLoads* time_loads = nullptr);
 
 } // namespace sig

@@ -12,6 +12,11 @@ struct MaterialTable;
 /// eps = B u_e on every triangle; u has 2 * nodes values (dof = 2 node + component).
 std::vector<Eigen::Vector3d> element_strains(const Mesh& mesh, const Eigen::VectorXd& u);
 
+/// ||eps(u)||_L2(Omega) = (integral of eps(u) : eps(u))^(1/2), the norm of V (thesis (2.6),
+/// (u, v)_V = integral of eps(u) . eps(v), l.3041; ALGORITHMS.md 0.6): exact for P1, whose
+/// strain is constant on each triangle.
+double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u);
+
 /// sigma = D eps with the law of each triangle's sub-domain.
 std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const MaterialTable& table,
                                               const Eigen::VectorXd& u);

@@ -7,6 +7,7 @@
 //                                   of reference R (edges and vertices); a dof named by several
 //                                   cards takes the value of the last one
 #include "assembly/pattern.hpp"
+#include "assembly/time_loads.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -24,12 +25,15 @@ struct LinearSystem {
   Eigen::SparseMatrix<double> K;   ///< stiffness
   Eigen::SparseMatrix<double> M;   ///< consistent mass; 0 x 0 if every density is 0
   Eigen::VectorXd M_lumped;        ///< row sums of the consistent mass (zeros without density)
-  Eigen::VectorXd f;               ///< loads
+  Eigen::VectorXd f;               ///< loads at t = 0
+  TimeLoads time_loads;            ///< their change in time (empty: constant loads)
   std::vector<int> dirichlet_dofs; ///< sorted, unique, 0-based
   Eigen::VectorXd dirichlet_values;
   double assemble_seconds = 0.0; ///< wall time of assemble_system
 
   int num_dofs() const { return static_cast<int>(f.size()); }
+  /// The loads at time t: f + time_loads.change(t).
+  Eigen::VectorXd load_at(double t) const;
 };
 
 /// Stiffness sum over triangles of p1_stiffness with the law and thickness of their sub-domain.
@@ -46,14 +50,16 @@ Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& tabl
 void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vector<int>& dofs,
                           Eigen::VectorXd& values);
 
-/// Everything from the mesh, the MILI table and the DIRICHLET, TRACTION, PRESSURE and
-/// BODYFORCE cards.
+/// Everything from the mesh, the MILI table and the DIRICHLET, TRACTION, PRESSURE, BODYFORCE
+/// and MOVINGLOAD cards.
 LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
                              const Datafile& datafile);
 
 /// DS "TAE": ndof; K_rowptr, K_col (1-based CSR of the full symmetric matrix), K_val; M_val
 /// (same pattern, only if M is not empty); M_lumped; f; dirichlet_dof (1-based);
-/// dirichlet_value; time_assemble (seconds).
+/// dirichlet_value; time_assemble (seconds); with moving loads: moving_load (F, psi, c, x0 per
+/// load), moving_points (points per load), moving_node (nodes a, b per point, 1-based),
+/// moving_x1 and moving_weight (weight_a, weight_b per point) (assembly/time_loads.hpp).
 void write_tae(const std::filesystem::path& path, const LinearSystem& system,
                const std::string& title);
 LinearSystem read_tae(const std::filesystem::path& path);

@@ -63,9 +63,12 @@ struct ContactElements {
 /// (a node on three or more of them) the order falls back to node numbers.
 /// A node inside the obstacle (gap < 0 beyond roundoff, 1e-9 of the shortest Gamma3 edge) is a
 /// sig::Error; roundoff-negative gaps of nodes lying on the obstacle are set to 0. Every element
-/// gets `law` (sig::Error if law_problem finds it inadmissible).
+/// gets `law` (sig::Error if law_problem finds it inadmissible). The nodes of `excluded` (0-based)
+/// get no element (the weights of the others are unchanged): the ends of Gamma3 that are clamped
+/// nodes of Gamma1, whose reaction is the Dirichlet condition's.
 ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle& obstacle,
-                                       const ContactLaw& law = {}, double thickness = 1);
+                                       const ContactLaw& law = {}, double thickness = 1,
+                                       const std::vector<int>& excluded = {});
 
 /// B_N (size() x ndof, dof = 2 node + component): (B_N u)_i = u_n,i = -n_i . u_i.
 Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof);
@@ -79,7 +82,10 @@ inline double gap_at(const Obstacle& obstacle, const Eigen::Vector2d& x) {
 ///   CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=signorini g=0
 ///   CONTACT ref=3 obstacle=disc centre=0,0 radius=1 law=compliance cn=10 c3=1e8
 ///   CONTACT ref=3 ... law=compliance-unilateral cn=10 g=0.5
+///   CONTACT ref=3 ... law=damped cn=10 | law=damped-unilateral cn=10 g=0.01   (in velocity)
+///   CONTACT ref=3 ... exclude=1,4      no element on the nodes that also carry reference 1 or 4
 ///   FRICTION ref=3 law=coulomb mu=0.3          (or law=tresca threshold=2, law=none)
+///   FRICTION ref=3 law=nonmonotone a=2 b=0.02 alpha=1 of=slip bound=compliance
 /// ref must carry edges on the mesh; law defaults to signorini, g to 0 (gap= is its old
 /// spelling; compliance-unilateral must give it); a field the law does not use is an error, as is a
 /// FRICTION card whose ref has no CONTACT card. Thickness 1 (plane strain). Errors are
@@ -96,8 +102,9 @@ double wall_depth(const Card& contact);
 
 /// DS kind "CONT": node, lagrange_node (1-based), normal and tangent (m x 2), gap (d_i), weight;
 /// the laws per element: law (normal law id, contact_law.hpp), cn, c3 (0 = no truncation),
-/// depth (g), friction_law (id), mu, threshold; obstacle_kind, obstacle_point, obstacle_normal,
-/// obstacle_radius, num_nodes, ref, thickness.
+/// depth (g), friction_law (id), mu, threshold, friction_bound (0 normal, 1 compliance),
+/// friction_a, friction_b, friction_alpha, friction_of (0 slip, 1 slip-rate); obstacle_kind,
+/// obstacle_point, obstacle_normal, obstacle_radius, num_nodes, ref, thickness.
 void write_cont(const std::filesystem::path& path, const ContactElements& elements,
                 const std::string& title = "contact elements",
                 const std::string& creator = "sig-contact");

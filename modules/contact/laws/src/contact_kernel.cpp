@@ -25,16 +25,19 @@ double d_compliance_pressure(const ContactLaw& law, double q_n) {
   return d_truncated_normal_compliance(q_n, law.cn, law.c3);
 }
 
-ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n,
-                             double r_t) {
+namespace {
+
+/// The kernel at x, on its own branch or, given `on`, on that one.
+ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t,
+                       const KernelBranch* on) {
   ContactKernel k;
   // Normal: compliance P plus the wall's augmented multiplier Lambda.
   k.compliance = compliance_pressure(law, x.q_n);
   k.compliance_slope = d_compliance_pressure(law, x.q_n);
   if (law.has_wall()) {
     const double augmented = x.lambda + r_n * (x.q_n - law.depth);
-    k.wall_active = d_positive_part(augmented) > 0;
-    k.wall = positive_part(augmented);
+    k.wall_active = on ? on->wall : d_positive_part(augmented) > 0;
+    k.wall = on ? (on->wall ? augmented : 0.0) : positive_part(augmented);
   }
   const double chi = k.wall_active ? 1.0 : 0.0;
   k.normal = k.compliance + k.wall;
@@ -52,26 +55,46 @@ ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, doub
     k.bound = law.threshold;
     break;
   case FrictionLaw::coulomb:
-    k.bound = law.mu * k.normal;
-    k.bound_slope = law.mu;
+  case FrictionLaw::nonmonotone: // mu frozen for this convex solve (contact_law.hpp)
+    if (law.bound == FrictionBound::normal) {
+      k.bound = law.mu * k.normal;
+      k.bound_slope = law.mu;
+      k.d_bound = law.mu * k.d_force.row(0);
+    } else { // the compliance pressure only: mu p(g), Tresca's, on the wall
+      k.bound = law.mu * k.compliance;
+      k.d_bound(kQn) = law.mu * k.compliance_slope;
+    }
     break;
   }
   if (law.has_friction()) {
     const double z = x.t + r_t * x.q_t;
-    k.tangential = project_interval(z, k.bound);
-    k.stick = k.bound > 0 && d_project_interval_dz(z, k.bound) > 0;
+    k.stick = on ? on->stick : k.bound > 0 && d_project_interval_dz(z, k.bound) > 0;
     if (k.stick) {
+      k.tangential = z;
       k.d_force(1, kQt) = r_t;
       k.d_force(1, kT) = 1.0;
     } else {
-      k.slip = static_cast<int>(d_project_interval_ds(z, k.bound)); // 0 for z = s = 0
-      k.d_force.row(1) = k.slip * k.bound_slope * k.d_force.row(0);
+      k.slip = on ? on->slip : static_cast<int>(d_project_interval_ds(z, k.bound)); // 0: z = s = 0
+      k.tangential = k.slip * k.bound;
+      k.d_force.row(1) = k.slip * k.d_bound;
     }
   }
   k.complementarity[1] = x.t - k.tangential;
   k.d_complementarity.row(1) = -k.d_force.row(1);
   k.d_complementarity(1, kT) += 1.0;
   return k;
+}
+
+} // namespace
+
+ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n,
+                             double r_t) {
+  return evaluate(law, x, r_n, r_t, nullptr);
+}
+
+ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t,
+                             const KernelBranch& on) {
+  return evaluate(law, x, r_n, r_t, &on);
 }
 
 } // namespace sig

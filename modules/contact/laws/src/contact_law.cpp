@@ -15,6 +15,10 @@ std::string to_string(NormalLaw law) {
     return "compliance";
   case NormalLaw::compliance_unilateral:
     return "compliance-unilateral";
+  case NormalLaw::damped:
+    return "damped";
+  case NormalLaw::damped_unilateral:
+    return "damped-unilateral";
   }
   return "?";
 }
@@ -27,37 +31,94 @@ std::string to_string(FrictionLaw law) {
     return "tresca";
   case FrictionLaw::coulomb:
     return "coulomb";
+  case FrictionLaw::nonmonotone:
+    return "nonmonotone";
   }
   return "?";
 }
 
+std::string to_string(FrictionBound bound) {
+  return bound == FrictionBound::normal ? "normal" : "compliance";
+}
+
+std::string to_string(SlipMeasure measure) {
+  return measure == SlipMeasure::slip ? "slip" : "slip-rate";
+}
+
 NormalLaw normal_law_named(const std::string& name) {
   for (NormalLaw law :
-       {NormalLaw::signorini, NormalLaw::compliance, NormalLaw::compliance_unilateral})
+       {NormalLaw::signorini, NormalLaw::compliance, NormalLaw::compliance_unilateral,
+        NormalLaw::damped, NormalLaw::damped_unilateral})
     if (to_string(law) == name) return law;
   SIG_VERIFY(false, "normal law '" << name << "' is unknown; known: " << normal_law_names);
   return NormalLaw::signorini;
 }
 
 FrictionLaw friction_law_named(const std::string& name) {
-  for (FrictionLaw law : {FrictionLaw::none, FrictionLaw::tresca, FrictionLaw::coulomb})
+  for (FrictionLaw law :
+       {FrictionLaw::none, FrictionLaw::tresca, FrictionLaw::coulomb, FrictionLaw::nonmonotone})
     if (to_string(law) == name) return law;
   SIG_VERIFY(false, "friction law '" << name << "' is unknown; known: " << friction_law_names);
   return FrictionLaw::none;
 }
 
+FrictionBound friction_bound_named(const std::string& name) {
+  for (FrictionBound bound : {FrictionBound::normal, FrictionBound::compliance})
+    if (to_string(bound) == name) return bound;
+  SIG_VERIFY(false, "friction bound '" << name << "' is unknown; known: normal, compliance");
+  return FrictionBound::normal;
+}
+
+SlipMeasure slip_measure_named(const std::string& name) {
+  for (SlipMeasure measure : {SlipMeasure::slip, SlipMeasure::slip_rate})
+    if (to_string(measure) == name) return measure;
+  SIG_VERIFY(false, "slip measure '" << name << "' is unknown; known: slip, slip-rate");
+  return SlipMeasure::slip;
+}
+
 NormalLaw normal_law_of_id(long id) {
-  SIG_VERIFY(id >= 1 && id <= 3, "normal law id " << id
+  SIG_VERIFY(id >= 1 && id <= 5, "normal law id " << id
                                                   << " is unknown; known: 1 = signorini, "
                                                      "2 = compliance, 3 = "
-                                                     "compliance-unilateral");
+                                                     "compliance-unilateral, 4 = damped, 5 = "
+                                                     "damped-unilateral");
   return static_cast<NormalLaw>(id);
 }
 
 FrictionLaw friction_law_of_id(long id) {
-  SIG_VERIFY(id >= 0 && id <= 2,
-             "friction law id " << id << " is unknown; known: 0 = none, 1 = tresca, 2 = coulomb");
+  SIG_VERIFY(id >= 0 && id <= 3, "friction law id "
+                                     << id
+                                     << " is unknown; known: 0 = none, 1 = tresca, 2 = coulomb, "
+                                        "3 = nonmonotone");
   return static_cast<FrictionLaw>(id);
+}
+
+FrictionBound friction_bound_of_id(long id) {
+  SIG_VERIFY(id == 0 || id == 1,
+             "friction bound id " << id << " is unknown; known: 0 = normal, 1 = compliance");
+  return static_cast<FrictionBound>(id);
+}
+
+SlipMeasure slip_measure_of_id(long id) {
+  SIG_VERIFY(id == 0 || id == 1,
+             "slip measure id " << id << " is unknown; known: 0 = slip, 1 = slip-rate");
+  return static_cast<SlipMeasure>(id);
+}
+
+double friction_coefficient(const ContactLaw& law, double r) {
+  switch (law.friction) {
+  case FrictionLaw::coulomb:
+    return law.mu;
+  case FrictionLaw::nonmonotone:
+    return (law.a - law.b) * std::exp(-law.alpha * r) + law.b;
+  default:
+    return 0.0;
+  }
+}
+
+double d_friction_coefficient(const ContactLaw& law, double r) {
+  if (law.friction != FrictionLaw::nonmonotone) return 0.0;
+  return -law.alpha * (law.a - law.b) * std::exp(-law.alpha * r);
 }
 
 std::optional<LawProblem> law_problem(const ContactLaw& law) {
@@ -75,10 +136,25 @@ std::optional<LawProblem> law_problem(const ContactLaw& law) {
   if (!(law.c3 > 0)) return problem("c3", "must be > 0 (a truncation pressure), got ", law.c3);
   if (!(std::isfinite(law.depth) && law.depth >= 0))
     return problem("g", "must be >= 0 (the depth of the wall), got ", law.depth);
-  // An unused mu or threshold is 0: the ranges hold whatever the friction law.
-  if (!(std::isfinite(law.mu) && law.mu >= 0)) return problem("mu", "must be >= 0, got ", law.mu);
   if (!(std::isfinite(law.threshold) && law.threshold >= 0))
     return problem("threshold", "must be >= 0 (a traction), got ", law.threshold);
+  // The parameters of (1.39), 0 when unused: a >= b >= 0, alpha >= 0 (alpha = 0 or a = b is
+  // Coulomb with mu = a).
+  if (!(std::isfinite(law.a) && law.a >= 0)) return problem("a", "must be >= 0, got ", law.a);
+  if (!(std::isfinite(law.b) && law.b >= 0)) return problem("b", "must be >= 0, got ", law.b);
+  if (law.b > law.a)
+    return problem("b", "must be <= a (1.39): mu(r) falls from a at r = 0 to b, got b = ", law.b,
+                   " > a = ", law.a);
+  if (!(std::isfinite(law.alpha) && law.alpha >= 0))
+    return problem("alpha", "must be >= 0 (the decay of mu per unit slip), got ", law.alpha);
+  // An unused mu or threshold is 0: the ranges hold whatever the friction law (nonmonotone's
+  // frozen mu after a, b, alpha, so that the card's a, from which it starts, is named).
+  if (!(std::isfinite(law.mu) && law.mu >= 0)) return problem("mu", "must be >= 0, got ", law.mu);
+  // Bounding by the compliance pressure needs one: signorini's bound would vanish everywhere.
+  if (law.has_coefficient() && law.bound == FrictionBound::compliance && !law.has_compliance())
+    return problem("bound", "compliance bounds the slip by mu p(q_n), and ", normal,
+                   " has no compliance pressure p: the bound would be 0 (use bound=normal or "
+                   "law=none)");
   return std::nullopt;
 }
 
@@ -92,6 +168,10 @@ std::string describe(const ContactLaw& law) {
   if (law.has_wall()) out << " g=" << law.depth;
   out << ", friction " << to_string(law.friction);
   if (law.friction == FrictionLaw::coulomb) out << " mu=" << law.mu;
+  if (law.friction == FrictionLaw::nonmonotone)
+    out << " a=" << law.a << " b=" << law.b << " alpha=" << law.alpha << " of " << to_string(law.of)
+        << " (mu=" << law.mu << ")";
+  if (law.has_coefficient()) out << " bound=" << to_string(law.bound);
   if (law.friction == FrictionLaw::tresca) out << " threshold=" << law.threshold;
   return out.str();
 }

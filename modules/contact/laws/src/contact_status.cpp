@@ -12,7 +12,7 @@ NormalStatus normal_status(const ContactKernel& kernel) {
 FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel) {
   if (!law.has_friction()) return FrictionStatus::none;
   if (kernel.stick) return FrictionStatus::stick;
-  if (law.friction == FrictionLaw::coulomb && normal_status(kernel) == NormalStatus::free)
+  if (law.has_coefficient() && normal_status(kernel) == NormalStatus::free)
     return FrictionStatus::none; // no normal force, so no friction
   if (kernel.slip > 0) return FrictionStatus::slip_forward;
   if (kernel.slip < 0) return FrictionStatus::slip_backward;
@@ -29,6 +29,11 @@ std::string label(NormalStatus status) {
     return "CU";
   }
   return "?";
+}
+
+std::string label(NormalStatus status, const ContactLaw& law) {
+  if (!law.in_velocity() || status == NormalStatus::free) return label(status);
+  return status == NormalStatus::compliance ? "RNI" : "CUV";
 }
 
 std::string label(FrictionStatus status) {

@@ -25,8 +25,10 @@ public:
   std::string text_value;                                  ///< free text (TITLE)
 
   // Field names given to the accessors are case-insensitive ("E" and "e" are the same field).
-  bool has(const std::string& name) const;
-  std::string text(const std::string& name) const; ///< required field
+  // An accessor without a fallback returns the schema's default of an absent field (FieldSpec::
+  // fallback) and fails naming the field when the schema has none: the field is required.
+  bool has(const std::string& name) const; ///< given in the deck (a schema default is not)
+  std::string text(const std::string& name) const;
   std::string text(const std::string& name, const std::string& fallback) const;
   double real(const std::string& name) const;
   double real(const std::string& name, double fallback) const;
@@ -65,8 +67,13 @@ private:
 };
 
 struct FieldSpec {
+  FieldSpec(const char* name, const char* help, const char* fallback = nullptr)
+      : name(name), help(help), fallback(fallback) {}
   const char* name;
   const char* help;
+  /// The value an absent field takes (nullptr: none). Card::text, real, ... without a fallback
+  /// return it, and --help shows it, so a default is written once, here.
+  const char* fallback;
 };
 struct CardSpec {
   const char* keyword;
@@ -76,5 +83,12 @@ struct CardSpec {
 };
 /// Every card any stage reads, with its fields and help text (README's card table).
 const std::vector<CardSpec>& card_schema();
+/// The schema of a card (keyword case-insensitive), nullptr if there is none.
+const CardSpec* find_card_spec(const std::string& keyword);
+
+/// The keywords this process has looked up in any datafile (Datafile::all, find, require,
+/// title), upper case: what a stage reads, which its --help must list (the test suite checks it
+/// through SIG_CARD_TRACE, see stage.hpp).
+const std::vector<std::string>& cards_looked_up();
 
 } // namespace sig

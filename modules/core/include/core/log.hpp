@@ -1,6 +1,7 @@
 #pragma once
-// Logging to stderr, and a progress line for long loops: on a terminal it rewrites one line,
-// otherwise it prints at most every few seconds so logs stay short.
+// Logging to stderr, and a progress line for long loops (done/total, elapsed, rate per second,
+// time left): on a terminal it rewrites one line, otherwise it prints at most every few seconds
+// so logs stay short.
 #include <chrono>
 #include <string>
 
@@ -11,13 +12,15 @@ void log_warning(const std::string& message);
 
 class Progress {
 public:
-  Progress(std::string label, long total);
+  /// `unit`: what is counted, for the rate ("steps" -> "100 steps/s").
+  Progress(std::string label, long total, std::string unit = "steps");
   /// Report step `done` of total with a short free text (time, energy ...).
   void update(long done, const std::string& detail = "");
   void finish(const std::string& detail = "");
 
 private:
   std::string label_;
+  std::string unit_;
   long total_;
   bool tty_;
   std::chrono::steady_clock::time_point start_, last_;

@@ -1,12 +1,42 @@
 #pragma once
-// What every stage main shares: the command line `sig-<stage> DATAFILE [-o OUTDIR]`, the output
-// folder (default out/<datafile stem>/), the DS paths in it, and the catch-all that turns any
-// exception into a message and a non-zero exit.
+// What every stage main shares: the command line `sig-<stage> DATAFILE [-o OUTDIR]` with --help
+// and --version, the output folder (default out/<datafile stem>/), the DS paths in it, and the
+// catch-all that turns any exception into a message and a non-zero exit.
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sig {
+
+/// What a stage's --help says. The cards are keywords of the card schema (cards.cpp), printed
+/// with their fields, help texts and defaults from there: list every card the stage reads
+/// (tests/pipeline/stage_help.sh checks it against the cards the stages look up).
+struct StageHelp {
+  std::string name{};                ///< "sig-solve"
+  std::string purpose{};             ///< one sentence: what the stage does
+  std::vector<std::string> reads{};  ///< files, e.g. "OUTDIR/case.tae (sig-assemble)"
+  std::vector<std::string> writes{}; ///< files, e.g. "OUTDIR/case.b"
+  std::vector<std::string> cards{};  ///< keywords, in the order shown
+  std::string usage = "DATAFILE [-o OUTDIR]";
+  /// Options beside -o, --help and --version: {"--repeat K", "timed runs (default 3)"}.
+  std::vector<std::pair<std::string, std::string>> options{};
+};
+
+/// The --help text: usage, purpose, files, options and every card with its fields.
+std::string stage_help_text(const StageHelp& help);
+
+/// "NAME (Signorini) VERSION, revision REV" (the git revision the build was made from).
+std::string version_line(const std::string& name);
+
+/// Thrown by the argument parsers after printing --help or --version; run_stage returns `code`.
+struct StageExit {
+  int code = 0;
+};
+
+/// --help / -h or --version anywhere on the command line: print and throw StageExit{0}.
+void handle_help_and_version(int argc, char** argv, const StageHelp& help);
 
 struct StageArgs {
   std::filesystem::path datafile;
@@ -15,13 +45,16 @@ struct StageArgs {
   std::filesystem::path ds_path(const std::string& extension) const;
 };
 
-/// Parse `DATAFILE [-o OUTDIR]`; creates OUTDIR, removes the temporaries killed stages left in
-/// it (remove_stale_temporaries) and opens the case: the DS files in OUTDIR it reads are checked
-/// to belong together (core/provenance.hpp). Throws sig::Error with a usage line.
-StageArgs parse_stage_args(int argc, char** argv, const std::string& stage);
+/// Parse `DATAFILE [-o OUTDIR]` (after handle_help_and_version); creates OUTDIR, removes the
+/// temporaries killed stages left in it (remove_stale_temporaries) and opens the case: the DS
+/// files in OUTDIR the stage reads are checked to belong together (core/provenance.hpp). Throws
+/// sig::Error with the usage line.
+StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help);
 
-/// Run `body`, printing "stage: error: ..." and returning 1 on any exception, 0 otherwise; a
-/// failed write to the standard output (a full disk, /dev/full) is an error too.
+/// Run `body`, printing "stage: error: ..." and returning 1 on any exception, 0 otherwise
+/// (StageExit: its code); a failed write to the standard output (a full disk, /dev/full) is an
+/// error too. With SIG_CARD_TRACE=FILE in the environment (the test suite) it
+/// appends "STAGE KEYWORD" to FILE for every card the stage looked up.
 int run_stage(const std::string& stage, const std::function<void()>& body);
 
 /// Today's date as MODULEF writes it in DS headers: "yy/mm/dd".

@@ -22,6 +22,8 @@ using LoadHistory = std::function<Eigen::VectorXd(double)>;
 
 /// A load that does not change in time.
 LoadHistory constant_load(Eigen::VectorXd f);
+/// The loads of a reduced system, f_f(t) - K_fd u_d (ReducedSystem::load_at).
+LoadHistory reduced_load(const ReducedSystem& reduced);
 
 struct Elastodynamics {
   Eigen::SparseMatrix<double> K; ///< stiffness on the free dofs, symmetric
@@ -55,7 +57,7 @@ Eigen::SparseMatrix<double> diagonal_mass(const Eigen::VectorXd& lumped);
 Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice choice,
                                         const Mesh& mesh, const ContactNormals& contact = {});
 
-/// The reduced problem: K_ff, M_ff of the full-size `mass`, constant load reduced.f.
+/// The reduced problem: K_ff, M_ff of the full-size `mass`, the loads reduced_load(reduced).
 Elastodynamics reduced_elastodynamics(const ReducedSystem& reduced,
                                       const Eigen::SparseMatrix<double>& mass);
 

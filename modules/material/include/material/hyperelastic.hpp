@@ -38,6 +38,16 @@ struct MaterialPoint3d {
   Matrix9d CC = Matrix9d::Zero();
 };
 
+/// The 2D law as a function of the in-plane block C of the right Cauchy-Green tensor: W(C),
+/// S = 2 dW/dC and CC = 2 dS/dC (2 x 2 blocks, index 2 I + J, both minor symmetries). In plane
+/// strain these are the in-plane blocks of the 3D law at C33 = 1; in plane stress C33 follows C
+/// (S33 = 0), W is the reduced energy W(C, C33(C)) and CC is condensed.
+struct MaterialPoint2d {
+  double energy = 0.0;
+  Eigen::Matrix2d S = Eigen::Matrix2d::Zero();
+  Eigen::Matrix4d CC = Eigen::Matrix4d::Zero();
+};
+
 class HyperelasticLaw {
 public:
   virtual ~HyperelasticLaw() = default;
@@ -55,6 +65,9 @@ public:
 
   /// The 3D law at C (symmetric, det C > 0).
   virtual MaterialPoint3d at(const Eigen::Matrix3d& C) const = 0;
+  /// The 2D law at the in-plane C (symmetric, det C > 0): what an algorithmic stress of the
+  /// time step is built from (material/algorithmic_stress.hpp). Throws as response().
+  MaterialPoint2d in_plane(const Eigen::Matrix2d& C) const;
 
   /// Lame parameters of the small-strain limit of the 3D law: S = lambda tr(E) I + 2 mu E +
   /// O(|E|^2) with E = (C - I) / 2.

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace sig {
 
@@ -19,8 +20,16 @@ std::string ds_type_name(DsType type);
 /// Header lines, then one line per array: name, type, shape and its first `max_values` values.
 std::string dump_ds_text(const Ds& ds, std::size_t max_values = 8);
 
-/// {kind, title, creator, date, arrays: [{name, type, shape}]}.
-Json dump_ds_json(const Ds& ds);
+/// The arrays whose values dump_ds_json prints: every one, or those named (each must exist).
+struct DumpValues {
+  bool all = false;
+  std::vector<std::string> names;
+};
+
+/// {kind, title, creator, date, arrays: [{name, type, shape[, values]}]}: `values` for the arrays
+/// `values` selects, a flat row-major list of numbers (non-finite ones null) or the text.
+/// Throws naming the DS file when a selected array is missing.
+Json dump_ds_json(const Ds& ds, const DumpValues& values = {});
 
 /// Node, triangle and edge counts, references and sub-domains, bounding box.
 std::string dump_mesh_text(const Mesh& mesh, const std::string& title);

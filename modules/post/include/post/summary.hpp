@@ -24,7 +24,9 @@ std::vector<std::pair<std::string, double>> gather_times(const std::vector<const
 /// increment_history, active_history, times (phase -> seconds; "solve" is the linear or
 /// nonlinear solve). multipliers = number of multiplier unknowns: the contact element count for
 /// method alm, 0 otherwise. contact_nodes = rows with status contact. Histories are empty lists
-/// when the solution has none.
+/// when the solution has none. A solve with the convexification loop adds convexification:
+/// converged, outer_iterations, inner_iterations (per convex solve), displacement_change,
+/// force_change, mu_change, status_changes (per convex solve), cycle, failure.
 Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solution,
                    const std::vector<ContactRow>& contact,
                    const std::vector<std::pair<std::string, double>>& times);

@@ -1,7 +1,9 @@
 #pragma once
 // ParaView output: one .vtu per output time (the mesh with its point, cell and field data) and a
 // .pvd collection listing them with their times. Both are written atomically (temporary file in
-// the same folder, then renamed), so ParaView never opens a half-written step.
+// the same folder, then renamed), so ParaView never opens a half-written step. Every array has a
+// numeric type, so that ParaView, VTK's readers, pyvista and meshio all read the files (meshio
+// stops at VTK's string arrays).
 #include "mesh/mesh.hpp"
 
 #include <cstddef>
@@ -22,14 +24,17 @@ struct VtkField {
   bool integer = false; ///< written as vtkIntArray (sub-domains, statuses)
 };
 
-/// Field data of the whole grid: named strings (title, method ...).
+/// Field data of the whole grid: named texts (title, method ...), each stored as its UTF-8 bytes in
+/// an unsigned char array (XML type UInt8; Python: bytes(array).decode()).
 using VtkText = std::vector<std::pair<std::string, std::string>>;
+/// Field data of the whole grid: named numbers (load_step, load_factor ...), Float64.
+using VtkNumbers = std::vector<std::pair<std::string, double>>;
 
 /// Write the mesh (z = 0) with its fields as a binary, compressed .vtu. Throws sig::Error when a
 /// field does not have one tuple per point (cell) or the file cannot be written.
 void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
                const std::vector<VtkField>& point_fields, const std::vector<VtkField>& cell_fields,
-               const VtkText& field_data);
+               const VtkText& field_data, const VtkNumbers& field_numbers = {});
 
 struct PvdStep {
   double time = 0;
@@ -45,11 +50,13 @@ struct VtkState {
   std::vector<VtkField> point;
   std::vector<VtkField> cell;
   VtkText field_data;
+  VtkNumbers field_numbers;
 };
 
 /// A series for ParaView: OUTDIR/<stem>_NNNN.vtu for state NNNN = 0 .. count-1 (made one at a
 /// time by `state`, so a long series never sits in memory whole) and OUTDIR/<stem>.pvd listing
-/// them with their times. Returns the .pvd, then the .vtu files.
+/// them with their times; each .vtu also holds its time as the field data TimeValue (ParaView's
+/// name for it, so a .vtu opened alone knows its time). Returns the .pvd, then the .vtu files.
 std::vector<std::filesystem::path>
 write_vtu_series(const std::filesystem::path& outdir, const std::string& stem, const Mesh& mesh,
                  std::size_t count, const std::function<VtkState(std::size_t)>& state);

@@ -15,16 +15,30 @@
 // A solve that does not converge is a result: converged = false, failure and the history.
 //
 // Step length: alpha = 1, 1/2, ... 2^-12 of the step (u and the multipliers), the first that lowers
-// ||R||; a trial outside the bulk's domain (an inverted element) or with a residual that is not
-// finite is never taken. A nonlinear bulk always searches and, if no alpha lowers ||R||, takes the
-// largest admissible one (an active-set change may raise the residual for one step). A linear bulk
-// searches when `line_search` says so, while its relative residual is above 1e3 eps, and, if no
-// alpha lowers ||R||, takes the one of least ||R||: friction needs it where the tangential rigid
-// motion of the body is held by friction alone, since a full step that leaves every node slipping
-// holds nothing sideways and drifts by the tangential load over the proximal term of
-// condensed_bulk.hpp, a state the stick tests never leave again; the compliance laws need it too,
-// whose kink at the obstacle surface makes full steps cycle between two branches. The thesis's
-// methods take full steps on frictionless Signorini contact (Tables 7.1, 7.2), and so do we.
+// the search's merit; a trial outside the bulk's domain (an inverted element) or with a residual
+// that is not finite is never taken.
+//  - A nonlinear bulk always searches, on the residual of the system (iii) linearized: ||R|| with
+//    the branches of (ii) held (the kernel's smooth piece, contact_kernel.hpp) and, off the wall,
+//    the method's condition there (lambda = 0, or projection's Robin law). The step is the exact
+//    Newton step of that smooth system, so a short enough step lowers it, and the search acts on
+//    the bulk's nonlinearity alone while the active set is (ii)'s business, as in the thesis's
+//    loop. On each trial's own branches instead, a node the step leaves penetrating while off the
+//    wall counts r_n times its penetration, and r_n = gamma is the parameter the thesis finds
+//    without influence (Table 7.5): at gamma >= 1e4 the search then refused the full steps whose
+//    penetrations the next (ii) puts right, and crept on steps of 2^-5 ... 2^-11 (the ring of
+//    scene 7b in one load step at N = 256: 81 iterations; 24 for every gamma with the branches
+//    held, projection 23). If no alpha lowers the merit, the largest admissible one is taken (an
+//    active-set change may raise the residual for one step).
+//  - A linear bulk searches when `line_search` says so, while its relative residual is above
+//    1e3 eps, on ||R|| at each trial's own branches, and, if no alpha lowers it, takes the one of
+//    least ||R||: its search is there to damp the branch changes themselves (held, they would
+//    make every full step exact). Friction needs it where the tangential rigid motion of the body
+//    is held by friction alone, since a full step that leaves every node slipping holds nothing
+//    sideways and drifts by the tangential load over the proximal term of condensed_bulk.hpp, a
+//    state the stick tests never leave again; the compliance laws need it too, whose kink at the
+//    obstacle surface makes full steps cycle between two branches. The thesis's methods take
+//    full steps on frictionless Signorini contact (Tables 7.1, 7.2), and so do we.
+#include "contact/contact_kernel.hpp"
 #include "contact/contact_law.hpp"
 #include "contact/contact_status.hpp"
 #include "solver/contact_bulk.hpp"
@@ -46,12 +60,7 @@ struct ContactSetting {
 };
 
 /// The branch of the kernel a node's linear step used (step (ii)).
-struct NodeBranch {
-  bool wall = false;
-  bool stick = false;
-  int slip = 0;
-  bool operator==(const NodeBranch&) const = default;
-};
+using NodeBranch = KernelBranch;
 
 /// The multiplier part of the Newton vector, nodal forces (pressure x weight), and the branches
 /// of the last iteration: a warm start in, the solution out. Empty vectors start from zero.
@@ -62,9 +71,11 @@ struct ContactIterate {
 };
 
 struct IterationRecord {
-  int active = 0;       ///< nodes on the wall in the iteration's step
-  int stick = 0;        ///< nodes sticking
-  int slip = 0;         ///< nodes slipping with a friction bound s > 0
+  int active = 0;  ///< nodes on the wall in the iteration's step
+  int entered = 0; ///< of them, nodes off the wall in the previous iteration (a cold start: all)
+  int left = 0;    ///< nodes on the wall in the previous iteration, off it now
+  int stick = 0;   ///< nodes sticking
+  int slip = 0;    ///< nodes slipping with a friction bound s > 0
   double residual = 0;  ///< relative residual after the iteration
   double increment = 0; ///< relative increment ||x(k+1) - x(k)|| / ||x(k+1)||
   double step = 0;      ///< E_k = ||x(k+1) - x(k)||, the measure of the thesis's Figs 7.14-7.16

@@ -5,7 +5,9 @@
 //   SOLVER method=linear|alm|penalty|pdas|projection linear=cholmod|umfpack|mumps
 //          r= gamma= c= eps= maxit=
 //   LOADSTEPS n=   (hyperelastic laws only; default 1)
+//   CONVEXIFICATION eps= maxit= relaxation= start=rest|slipped   (FRICTION law=nonmonotone)
 #include "solver/contact_method.hpp"
+#include "solver/convexification.hpp"
 
 #include <string>
 
@@ -17,12 +19,14 @@ struct SolverCard {
   std::string backend;                ///< cholmod | umfpack | mumps (default cholmod)
   ContactSolverParameters parameters; ///< method ("linear" without contact) and its parameters
   int load_steps = 1;
+  ConvexificationOptions convexification; ///< the CONVEXIFICATION card (or its defaults)
 };
 
 /// The SOLVER card (absent: the defaults) and LOADSTEPS. The method defaults to pdas with a
 /// CONTACT card and to linear without; a contact method without a CONTACT card, linear with
 /// one, a non-positive r, gamma, c, eps or maxit, or n < 1 is a sig::Error naming the file,
-/// line and field.
+/// line and field. So is a CONVEXIFICATION card out of range or in a deck without a nonmonotone
+/// friction law.
 SolverCard read_solver_card(const Datafile& datafile);
 
 } // namespace sig

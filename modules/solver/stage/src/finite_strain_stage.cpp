@@ -133,6 +133,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   std::vector<double> load;
   std::vector<std::int64_t> step_iterations, step_converged, history_step;
   std::vector<IterationRecord> history;
+  std::vector<double> step_length;
   std::string failure;
   for (std::size_t k = 0; k < solution.steps.size(); ++k) {
     const LoadStepResult& step = solution.steps[k];
@@ -142,6 +143,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
     if (!step.converged && failure.empty())
       failure = "load step " + std::to_string(k + 1) + ": " + step.failure;
     history.insert(history.end(), step.history.begin(), step.history.end());
+    step_length.insert(step_length.end(), step.step_length.begin(), step.step_length.end());
     history_step.insert(history_step.end(), step.history.size(), static_cast<std::int64_t>(k + 1));
   }
   ds.put_text("failure", failure);
@@ -150,6 +152,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   ds.put("step_converged", std::span<const std::int64_t>(step_converged));
   put_history(ds, history);
   ds.put("history_step", std::span<const std::int64_t>(history_step));
+  ds.put("history_step_length", std::span<const double>(step_length));
 
   if (!solution.steps.empty()) {
     const LoadStepResult& last = solution.steps.back();

@@ -30,10 +30,12 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
 }
 
 void put_history(Ds& ds, const std::vector<IterationRecord>& history) {
-  std::vector<std::int64_t> active, stick, slip;
+  std::vector<std::int64_t> active, entered, left, stick, slip;
   std::vector<double> residual, increment, step_norm;
   for (const IterationRecord& h : history) {
     active.push_back(h.active);
+    entered.push_back(h.entered);
+    left.push_back(h.left);
     stick.push_back(h.stick);
     slip.push_back(h.slip);
     residual.push_back(h.residual);
@@ -41,11 +43,43 @@ void put_history(Ds& ds, const std::vector<IterationRecord>& history) {
     step_norm.push_back(h.step);
   }
   ds.put("history_active", std::span<const std::int64_t>(active));
+  ds.put("history_entered", std::span<const std::int64_t>(entered));
+  ds.put("history_left", std::span<const std::int64_t>(left));
   ds.put("history_stick", std::span<const std::int64_t>(stick));
   ds.put("history_slip", std::span<const std::int64_t>(slip));
   ds.put("history_residual", std::span<const double>(residual));
   ds.put("history_increment", std::span<const double>(increment));
   ds.put("history_step_norm", std::span<const double>(step_norm));
+}
+
+void put_convexification(Ds& ds, const ConvexificationResult& loop) {
+  std::vector<std::int64_t> inner, changes, wall, compliance, stick, slip;
+  std::vector<double> du, dxi, dmu;
+  for (const OuterRecord& r : loop.history) {
+    inner.push_back(r.inner_iterations);
+    changes.push_back(r.status_changes);
+    wall.push_back(r.wall);
+    compliance.push_back(r.compliance);
+    stick.push_back(r.stick);
+    slip.push_back(r.slip);
+    du.push_back(r.displacement_change);
+    dxi.push_back(r.force_change);
+    dmu.push_back(r.mu_change);
+  }
+  ds.put_int("outer_converged", loop.converged ? 1 : 0);
+  ds.put_int("outer_iterations", loop.outer_iterations());
+  ds.put_int("outer_cycle", loop.cycle);
+  ds.put_text("outer_failure", loop.failure);
+  ds.put("outer_inner_iterations", std::span<const std::int64_t>(inner));
+  ds.put("outer_u_change", std::span<const double>(du));
+  ds.put("outer_xi_change", std::span<const double>(dxi));
+  ds.put("outer_mu_change", std::span<const double>(dmu));
+  ds.put("outer_status_changes", std::span<const std::int64_t>(changes));
+  ds.put("outer_wall", std::span<const std::int64_t>(wall));
+  ds.put("outer_compliance", std::span<const std::int64_t>(compliance));
+  ds.put("outer_stick", std::span<const std::int64_t>(stick));
+  ds.put("outer_slip", std::span<const std::int64_t>(slip));
+  ds.put("friction_coefficient", std::span<const double>(loop.mu.data(), loop.mu.size()));
 }
 
 void write_solution(const std::filesystem::path& path, const StaticSolution& solution,
@@ -69,6 +103,7 @@ void write_solution(const std::filesystem::path& path, const StaticSolution& sol
                       solution.friction_status);
     put_history(ds, solution.history);
   }
+  if (solution.convexification) put_convexification(ds, *solution.convexification);
   for (const auto& [phase, seconds] : solution.seconds)
     ds.put_scalar("time_" + phase, seconds);
   write_ds(path, ds);

@@ -1,6 +1,7 @@
 #include "solver/static_solve.hpp"
 
 #include "assembly/dirichlet.hpp"
+#include "assembly/strain.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/condensed_contact.hpp"
@@ -56,7 +57,8 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 
 StaticSolution solve_static_contact(const LinearSystem& system, const ContactElements& contact,
                                     const ContactSolverParameters& parameters,
-                                    const std::string& backend, const Eigen::VectorXd& start) {
+                                    const std::string& backend, const Eigen::VectorXd& start,
+                                    const StaticConvexification& loop) {
   ReducedSystem reduced = reduce(system);
   const std::vector<std::array<int, 2>> dofs = contact_dofs(reduced, contact);
   const int m = contact.size();
@@ -131,10 +133,22 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
     for (std::size_t k = 0; k < interface.size(); ++k)
       w_start[static_cast<Eigen::Index>(k)] = w[interface[k]];
   }
+  // The whole body's displacement of condensed unknowns w (frames undone, Dirichlet values in):
+  // one interior solve, for the loop's norm of V and for the result.
+  const auto whole_body = [&](const Eigen::VectorXd& w) {
+    Eigen::VectorXd u = schur.expand(f, w);
+    frames.from_frames(u, contact.normal);
+    return reduced.expand(u);
+  };
+  CondensedConvexification convexification{loop.options, whole_body, {}};
+  if (loop.mesh != nullptr)
+    convexification.norm = [&](const Eigen::VectorXd& u) { return strain_norm(*loop.mesh, u); };
   const CondensedSolution condensed = solve_condensed_contact(
-      std::move(problem), {contact.law, contact.weight}, parameters, w_start);
+      std::move(problem), {contact.law, contact.weight}, parameters, w_start, convexification);
   const ContactNewtonResult& c = condensed.contact;
   if (!c.converged) log_warning(parameters.method + " did not converge: " + c.failure);
+  if (condensed.convexification && !condensed.convexification->converged)
+    log_warning("the convexification loop did not converge: " + condensed.convexification->failure);
 
   // 4. Back to the whole body, and its equilibrium checked there: an unheld rigid motion that
   //    the factorization did not see as singular (its pivot a round-off) leaves a meaningless
@@ -155,10 +169,16 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   s.friction_status = c.friction_status;
   s.converged = c.converged;
   s.failure = c.failure;
-  SIG_VERIFY(!s.converged || imbalance <= std::max(1e3 * parameters.eps, 1e-6),
+  s.history = c.history;
+  if (condensed.convexification) {
+    s.convexification = condensed.convexification;
+    s.converged = s.convexification->converged;
+    s.failure = s.convexification->failure;
+    s.history = s.convexification->inner_history;
+  }
+  SIG_VERIFY(!c.converged || imbalance <= std::max(1e3 * parameters.eps, 1e-6),
              "the converged contact solve leaves the body out of equilibrium (relative residual "
                  << imbalance << "): " << unheld);
-  s.history = c.history;
   // As the thesis counts them: every displacement dof, plus the Lagrange nodes for ALM.
   s.unknowns = system.num_dofs() + condensed.multiplier_unknowns;
   return s;

@@ -9,7 +9,8 @@
 //   P = p(q_n)                                  compliance, clipped at the wall: p(min(q_n, g))
 //   Lambda = [lambda + r_n (q_n - g)]_+         wall (laws with a wall; else 0)
 //   N = P + Lambda                              normal pressure on the body
-//   s = threshold | mu N | 0                    slip bound (tresca | coulomb | none)
+//   s = threshold | mu N | mu P | 0             slip bound (tresca | coulomb or nonmonotone
+//                                               with bound=normal | bound=compliance | none)
 //   T = proj_[-s, s](t + r_t q_t)               tangential pressure (0 without friction)
 //   C_n = lambda - Lambda,  C_t = t - T         the Alart-Curnier functions, -r times the rows
 //                                               R of (3.19): zero exactly where the laws hold
@@ -48,11 +49,23 @@ struct ContactKernel {
   bool stick = false;          ///< s > 0 and |t + r_t q_t| <= s
   int slip = 0;                ///< sigma on the slip branch (-1, 0, 1); 0 when sticking
   double compliance_slope = 0; ///< kappa = dP/dq_n
-  double bound_slope = 0;      ///< ds/dN (mu for coulomb, 0 otherwise)
+  /// ds/dN: mu where the bound is mu N (bound=normal), 0 where it does not follow N (tresca,
+  /// bound=compliance); a linear step couples T to the wall's reaction through it
+  double bound_slope = 0;
+  /// Generalized derivative of s in (q_n, q_t, lambda, t)
+  Eigen::Matrix<double, 1, 4> d_bound = Eigen::Matrix<double, 1, 4>::Zero();
 
   /// Generalized derivatives of (N, T) and of (C_n, C_t) in (q_n, q_t, lambda, t).
   Eigen::Matrix<double, 2, 4> d_force = Eigen::Matrix<double, 2, 4>::Zero();
   Eigen::Matrix<double, 2, 4> d_complementarity = Eigen::Matrix<double, 2, 4>::Zero();
+};
+
+/// A branch of the kernel: the piece its positive part and its projection select.
+struct KernelBranch {
+  bool wall = false;  ///< chi = 1
+  bool stick = false; ///< the projection's inside
+  int slip = 0;       ///< sigma on its outside
+  bool operator==(const KernelBranch&) const = default;
 };
 
 /// The compliance pressure P(q_n) of a law (0 for signorini) and its slope, with the kinks
@@ -62,5 +75,19 @@ double d_compliance_pressure(const ContactLaw& law, double q_n);
 
 /// The kernel at x (header comment).
 ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t);
+
+/// The branch the kernel k is on.
+inline KernelBranch branch_of(const ContactKernel& k) {
+  return {k.wall_active, k.stick, k.slip};
+}
+
+/// The kernel's smooth piece `on` at x: the formulas above with chi, stick and sigma given
+/// instead of read off x, i.e. Lambda = chi (lambda + r_n (q_n - g)) and T = t + r_t q_t
+/// (stick) or sigma s (slip), even where x lies on another branch. It equals the kernel
+/// wherever x lies on `on`; along a Newton step that changes branches it is the function the
+/// step linearized (contact_newton.hpp measures its line search on it). The compliance P, a
+/// function of q_n alone, is not held.
+ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t,
+                             const KernelBranch& on);
 
 } // namespace sig

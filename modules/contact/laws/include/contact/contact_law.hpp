@@ -14,11 +14,27 @@
 //                           no wall
 //   compliance-unilateral   (1.26) N = p(q_n) while q_n < g, a Signorini wall at q_n = g (g the
 //                           depth of the compliant layer)
+// and the laws in velocity of chapter 5 (quasistatic march in velocity, sig-march
+// scheme=quasistatic): the same kernels with q_n the normal velocity v_n towards the obstacle and
+// q_t the tangential velocity (the slip rate), so that g is a velocity bound:
+//   damped                  (1.25) N = p(v_n) = cn [v_n]+, the damped (instantaneous) response
+//   damped-unilateral       (1.28) N = p(v_n) while v_n < g, the unilateral bound v_n <= g
+//                           beyond (the thesis's statuses RNI and CUV are CN and CU here)
 // and the friction laws, with s the slip bound (|T| <= s, T = s sign(q_t) where q_t != 0):
 //   none                    T = 0
 //   tresca                  (1.33) s = threshold, a given traction, on every contact element
 //                           whatever its normal state (the classical Tresca model)
 //   coulomb                 (1.35) s = mu N, N the whole normal pressure (compliance + wall)
+//   nonmonotone             (1.39) s = mu(r) N with mu(r) = (a - b) exp(-alpha r) + b, a >= b,
+//                           r the magnitude of the slip (of=slip, ch. 4) or of the slip rate
+//                           (of=slip-rate, ch. 6). Non-convex: one convex solve is Coulomb with
+//                           the coefficient `mu` frozen per node, which the convexification loop
+//                           (solver module) sets from the previous iterate's slip
+// The source of a Coulomb-type bound (coulomb, nonmonotone), `bound`:
+//   normal                  s = mu N, N the whole normal pressure: classical Coulomb (1.35)
+//   compliance              s = mu p(min(q_n, g)), the compliance (or damper) pressure only, as
+//                           (4.6) and (5.6): the wall's reaction never enters the bound, so on the
+//                           wall it is Tresca's mu p(g) (l.5767)
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -36,25 +52,43 @@ inline Eigen::Vector2d contact_tangent(const Eigen::Vector2d& n) {
   return {n.y(), -n.x()};
 }
 
-enum class NormalLaw { signorini = 1, compliance = 2, compliance_unilateral = 3 };
-enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2 };
+enum class NormalLaw {
+  signorini = 1,
+  compliance = 2,
+  compliance_unilateral = 3,
+  damped = 4,
+  damped_unilateral = 5
+};
+enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2, nonmonotone = 3 };
+enum class FrictionBound { normal = 0, compliance = 1 };
+enum class SlipMeasure { slip = 0, slip_rate = 1 };
 
-inline constexpr const char* normal_law_names = "signorini | compliance | compliance-unilateral";
-inline constexpr const char* friction_law_names = "none | tresca | coulomb";
+inline constexpr const char* normal_law_names =
+    "signorini | compliance | compliance-unilateral | damped | damped-unilateral";
+inline constexpr const char* friction_law_names = "none | tresca | coulomb | nonmonotone";
 /// The same names as a card field's choices (Card::choice).
-inline constexpr std::initializer_list<const char*> normal_law_choices = {"signorini", "compliance",
-                                                                          "compliance-unilateral"};
-inline constexpr std::initializer_list<const char*> friction_law_choices = {"none", "tresca",
-                                                                            "coulomb"};
+inline constexpr std::initializer_list<const char*> normal_law_choices = {
+    "signorini", "compliance", "compliance-unilateral", "damped", "damped-unilateral"};
+inline constexpr std::initializer_list<const char*> friction_law_choices = {
+    "none", "tresca", "coulomb", "nonmonotone"};
+inline constexpr std::initializer_list<const char*> friction_bound_choices = {"normal",
+                                                                              "compliance"};
+inline constexpr std::initializer_list<const char*> slip_measure_choices = {"slip", "slip-rate"};
 
 std::string to_string(NormalLaw law);
 std::string to_string(FrictionLaw law);
+std::string to_string(FrictionBound bound);
+std::string to_string(SlipMeasure measure);
 /// The laws of their card names; sig::Error listing the names for anything else.
 NormalLaw normal_law_named(const std::string& name);
 FrictionLaw friction_law_named(const std::string& name);
+FrictionBound friction_bound_named(const std::string& name);
+SlipMeasure slip_measure_named(const std::string& name);
 /// The laws of their CONT ids (the enum values); sig::Error for an unknown id.
 NormalLaw normal_law_of_id(long id);
 FrictionLaw friction_law_of_id(long id);
+FrictionBound friction_bound_of_id(long id);
+SlipMeasure slip_measure_of_id(long id);
 
 struct ContactLaw {
   NormalLaw normal = NormalLaw::signorini;
@@ -62,14 +96,40 @@ struct ContactLaw {
   double c3 = std::numeric_limits<double>::infinity(); ///< truncation pressure (ch. 6), > 0
   double depth = 0; ///< g >= 0: the wall at q_n = g (signorini, compliance-unilateral)
   FrictionLaw friction = FrictionLaw::none;
-  double mu = 0;        ///< coulomb: friction coefficient >= 0
-  double threshold = 0; ///< tresca: slip bound, a traction >= 0
+  /// coulomb: the friction coefficient >= 0; nonmonotone: the coefficient of the present convex
+  /// solve, frozen per node (mu(0) = a until the convexification loop sets it)
+  double mu = 0;
+  double threshold = 0;                        ///< tresca: slip bound, a traction >= 0
+  FrictionBound bound = FrictionBound::normal; ///< coulomb, nonmonotone: what mu multiplies
+  double a = 0;                                ///< nonmonotone: mu(0), >= b
+  double b = 0;                                ///< nonmonotone: mu at large slip, >= 0
+  double alpha = 0;                   ///< nonmonotone: decay per unit slip (or slip rate), >= 0
+  SlipMeasure of = SlipMeasure::slip; ///< nonmonotone: what r measures
 
-  bool has_wall() const { return normal != NormalLaw::compliance; }
+  bool has_wall() const { return normal != NormalLaw::compliance && normal != NormalLaw::damped; }
   bool has_compliance() const { return normal != NormalLaw::signorini; }
+  /// A law of the velocity (damped, damped-unilateral): q_n, q_t are velocities, g a velocity.
+  bool in_velocity() const {
+    return normal == NormalLaw::damped || normal == NormalLaw::damped_unilateral;
+  }
   bool has_friction() const { return friction != FrictionLaw::none; }
+  /// The bound is a coefficient times a pressure (coulomb, nonmonotone), not a given traction.
+  bool has_coefficient() const {
+    return friction == FrictionLaw::coulomb || friction == FrictionLaw::nonmonotone;
+  }
   bool operator==(const ContactLaw&) const = default;
 };
+
+/// The coefficient of friction at slip magnitude r >= 0: mu for coulomb, (1.39)
+/// (a - b) exp(-alpha r) + b for nonmonotone, 0 for the other laws.
+double friction_coefficient(const ContactLaw& law, double r);
+/// d/dr of friction_coefficient: -alpha (a - b) exp(-alpha r) for nonmonotone, else 0.
+double d_friction_coefficient(const ContactLaw& law, double r);
+
+/// Some law of `laws` is a law in velocity (ContactLaw::in_velocity).
+inline bool any_in_velocity(const std::vector<ContactLaw>& laws) {
+  return std::any_of(laws.begin(), laws.end(), [](const ContactLaw& l) { return l.in_velocity(); });
+}
 
 /// Some law of `laws` has friction (the problem then has tangential unknowns).
 inline bool any_friction(const std::vector<ContactLaw>& laws) {
@@ -77,7 +137,8 @@ inline bool any_friction(const std::vector<ContactLaw>& laws) {
                      [](const ContactLaw& l) { return l.has_friction(); });
 }
 
-/// A parameter out of its range: the card field that holds it (cn, c3, g, mu, threshold) and
+/// A parameter out of its range: the card field that holds it (cn, c3, g, mu, threshold, a, b,
+/// alpha, bound) and
 /// why ("must be > 0 for law=compliance, got -1").
 struct LawProblem {
   std::string field;

@@ -4,9 +4,9 @@
 //   normal      free (no normal force), CN (compliance, 0 < q_n < g), CU (on the wall: the
 //               Signorini contact or the unilateral wall of (1.26))
 //   tangential  S= (stick, the kernel's stick branch), S+ / S- (slip towards +t / -t: a zero
-//               Tresca threshold slips everywhere), or none: no friction law, Coulomb friction on
-//               a node with no normal force (no friction acts), or a zero bound with nothing to
-//               slip along
+//               Tresca threshold slips everywhere), or none: no friction law, Coulomb-type friction
+//               (coulomb, nonmonotone) on a node with no normal force (no friction acts), or a zero
+//               bound with nothing to slip along
 // The integer codes are the ones DS files store (case.b arrays normal_status, friction_status).
 #include "contact/contact_kernel.hpp"
 
@@ -22,6 +22,9 @@ FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kerne
 
 /// "free", "CN", "CU"; "-", "S=", "S+", "S-" (the thesis's labels).
 std::string label(NormalStatus status);
+/// The same for a node of law `law`: the laws in velocity call CN and CU RNI (instantaneous normal
+/// response, 0 < v_n < g) and CUV (unilateral condition in velocity, v_n = g), as chapter 5.
+std::string label(NormalStatus status, const ContactLaw& law);
 std::string label(FrictionStatus status);
 /// The statuses of their DS codes; sig::Error for a code out of range.
 NormalStatus normal_status_of_code(long code);

@@ -47,7 +47,8 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
 /// DS "B" of a finite-strain solve: u, multiplier, status of the last attempted step; method,
 /// linear, converged (1 iff every step converged), iterations (total), dofs, failure, load_steps;
 /// per step step_load, step_iterations, step_converged; the histories of all steps concatenated
-/// (put_history's arrays, and history_step = 1-based step);
+/// (put_history's arrays, history_step = 1-based step, history_step_length = the line search's
+/// alpha);
 /// finite_strain = 1; scalars reaction_x, reaction_y, reaction_moment, time_solve.
 /// One state per CONVERGED load step (the attempted steps stop at the first failure, so these
 /// are steps 1 .. s, s = number of rows; row k belongs to step_load[k]), for ParaView's series

@@ -1,9 +1,11 @@
 #pragma once
 // DS "B", the solution of sig-solve (MODULEF's B: global vectors). Arrays: u (2 dofs per node,
 // interleaved), method, linear (backend), converged, iterations, dofs, failure; for contact
-// cases the contact state (put_contact_state) and history_active, history_stick, history_slip,
+// cases the contact state (put_contact_state) and history_active, history_entered,
+// history_left, history_stick, history_slip,
 // history_residual, history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||); scalars
-// time_<phase> in seconds.
+// time_<phase> in seconds. With a convexification loop (put_convexification): outer_* arrays.
+// `iterations` counts every Newton iteration (of every convex solve).
 #include "solver/static_solve.hpp"
 
 #include <filesystem>
@@ -19,9 +21,18 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
                        const std::vector<NormalStatus>& normal_status,
                        const std::vector<FrictionStatus>& friction_status);
 
-/// The iteration history: history_active, history_stick, history_slip, history_residual,
+/// The iteration history: history_active (nodes on the wall), history_entered and history_left
+/// (of them, nodes that came onto it since the previous iteration; nodes that came off it),
+/// history_stick, history_slip, history_residual,
 /// history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||), one entry per iteration.
 void put_history(Ds& ds, const std::vector<IterationRecord>& history);
+
+/// The convexification loop: outer_converged, outer_iterations, outer_cycle (period of a status
+/// cycle, 0 if none), outer_failure; per convex solve outer_inner_iterations,
+/// outer_u_change, outer_xi_change, outer_mu_change, outer_status_changes,
+/// outer_wall, outer_compliance, outer_stick, outer_slip; per contact element
+/// friction_coefficient (the mu of the last convex solve).
+void put_convexification(Ds& ds, const ConvexificationResult& loop);
 
 void write_solution(const std::filesystem::path& path, const StaticSolution& solution,
                     const std::string& method, const std::string& backend,

@@ -4,17 +4,23 @@
 // into nodal frames (tangent, normal) at the contact nodes and condensed once onto their normal
 // displacements, and their slips when some element has friction (one sparse factorization,
 // solver/schur.hpp); the contact method then iterates on the small dense problem
-// (solver/condensed_bulk.hpp) with the one Newton driver (solver/contact_newton.hpp).
+// (solver/condensed_bulk.hpp) with the one Newton driver (solver/contact_newton.hpp). A
+// nonmonotone friction law runs the convexification loop (solver/convexification.hpp) on that
+// one condensed problem, its outer test in the norm ||eps(u)||_L2 of the whole body.
 #include "assembly/system.hpp"
 #include "contact/contact_elements.hpp"
 #include "contact/contact_status.hpp"
 #include "solver/contact_method.hpp"
 #include "solver/contact_newton.hpp"
+#include "solver/convexification.hpp"
 
 #include <map>
+#include <optional>
 #include <string>
 
 namespace sig {
+
+struct Mesh;
 
 struct StaticSolution {
   Eigen::VectorXd u;          ///< full displacement (2 dofs per node)
@@ -24,19 +30,29 @@ struct StaticSolution {
   std::vector<FrictionStatus> friction_status;
   bool converged = true;
   std::string failure;
-  std::vector<IterationRecord> history;
+  std::vector<IterationRecord> history; ///< every Newton iteration (of every convex solve)
+  std::optional<ConvexificationResult> convexification; ///< with a nonmonotone law
   int unknowns = 0;                      ///< dofs of the Newton vector, as the thesis counts them
   std::map<std::string, double> seconds; ///< factorize, frames, schur, solve
+};
+
+/// The convexification loop of a nonmonotone law: its options, and the mesh whose ||eps(u)||_L2
+/// is the norm of V in its outer test (null: the Euclidean norm of the nodal displacements).
+struct StaticConvexification {
+  ConvexificationOptions options;
+  const Mesh* mesh = nullptr;
 };
 
 StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::string& backend);
 
 /// `start` (empty: 0) is the first iterate of the displacement, 2 dofs per node: a warm start,
 /// or the small rigid shift a semi-coercive body may need to start from several contact nodes.
-/// Non-convergence of the method is returned; a body with a rigid motion that neither its
+/// A nonmonotone law runs the loop with `loop`. Non-convergence of the method (or of the loop)
+/// is returned; a body with a rigid motion that neither its
 /// Dirichlet conditions nor its contact laws can hold (no equilibrium exists) is a sig::Error.
 StaticSolution solve_static_contact(const LinearSystem& system, const ContactElements& contact,
                                     const ContactSolverParameters& parameters,
-                                    const std::string& backend, const Eigen::VectorXd& start = {});
+                                    const std::string& backend, const Eigen::VectorXd& start = {},
+                                    const StaticConvexification& loop = {});
 
 } // namespace sig

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Pipeline test (issue 17): drivers/scenes.sh (what drivers/run.sh --all runs) on canned scene
+# drivers (tests/pipeline/data/fake_scene.py, no solve: seconds), then the index:
+#  - every driver runs, with "[k/n]" progress lines, and the script exits 1 since some fail;
+#  - out/index.md and out/index.html exist and link every report that exists;
+#  - a scene whose checks all pass is a PASS; one failed check, a driver that crashed, a driver
+#    that wrote no scene.json, a scene.json pointing at a missing chart: each a FAIL with its
+#    reason, none skipped; a scene.json of a scene run on its own is picked up too;
+#  - the key tables, charts (relative <img>) and .pvd links are on the page, HTML-escaped.
+# The page in a real browser: index_browser.sh.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+python=${PYTHON:-/usr/bin/python3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() {
+  echo "scene_index: FAIL: $*" >&2
+  exit 1
+}
+
+mkdir -p "$work/drivers"
+declare -A kinds=([scene1]=pass [scene2]=fail [scene3]=crash [scene4]=silent [scene5]=broken
+  [friction_hertz]=pass)
+for name in "${!kinds[@]}"; do
+  printf '#!/usr/bin/env bash\nexec %q %q %q %q "$@"\n' "$python" \
+    "$root/tests/pipeline/data/fake_scene.py" "${kinds[$name]}" "$name" >"$work/drivers/$name.sh"
+done
+echo "not a scene driver" >"$work/drivers/bench-x.sh"
+out=$work/out
+mkdir -p "$out/lonely"
+"$python" "$root/tests/pipeline/data/fake_scene.py" pass lonely -o "$out/lonely" >/dev/null
+
+status=0
+SIG_SCENE_DRIVERS=$work/drivers bash "$root/drivers/scenes.sh" -o "$out" >"$work/log" 2>&1 ||
+  status=$?
+cat "$work/log"
+[ "$status" -eq 1 ] || fail "scenes.sh exited $status, not 1 (some scenes fail)"
+for k in 1 2 3 4 5 6; do
+  grep -qE "^\[$k/6\] " "$work/log" || fail "no progress line [$k/6]"
+done
+grep -q "bench-x" "$work/log" && fail "scenes.sh ran bench-x.sh, which is no scene driver"
+[ -s "$out/index.md" ] && [ -s "$out/index.html" ] || fail "no index.md / index.html"
+
+"$python" - "$out" <<'PY'
+import re, sys
+from pathlib import Path
+out = Path(sys.argv[1])
+md, page = (out / "index.md").read_text(), (out / "index.html").read_text()
+failures = []
+
+def check(ok, what):
+    print(("ok    " if ok else "FAIL  ") + what)
+    if not ok:
+        failures.append(what)
+
+reports = sorted(str(p.relative_to(out)) for p in out.glob("*/report.md"))
+check(len(reports) == 6, f"6 reports written: {reports}")
+for report in reports:
+    check(f"]({report})" in md, f"index.md links {report}")
+    check(f'href="{report}"' in page, f"index.html links {report}")
+rows = {m.group(1): m.group(2) for m in re.finditer(r"^\| (\S+) \| [^|]* \| ([^|]*) \|", md, re.M)}
+expect = {"scene1": "PASS", "scene2": "FAIL", "scene3": "FAIL", "scene4": "FAIL",
+          "scene5": "FAIL", "friction_hertz": "PASS", "lonely": "PASS"}
+for name, verdict in expect.items():
+    check(rows.get(name, "").startswith(verdict), f"{name}: {verdict} in the table ({rows.get(name)})")
+check("driver exited 1 (log: scene3.log)" in rows.get("scene3", ""), "scene3: the driver's exit")
+check("no scene4/scene.json" in rows.get("scene4", ""), "scene4: no scene.json said")
+check("missing scene5/no_such_chart.png" in rows.get("scene5", ""), "scene5: the missing chart")
+check("1 FAIL" in rows.get("scene2", ""), "scene2: its failed check counted")
+check("3 of 7 scenes pass" in md, "the summary counts 3 of 7")
+check('<img src="scene1/speed_accuracy.png"' in page and '<img src="scene1/stability.png"' in page,
+      "charts as relative images")
+check('href="scene1/N8/run/case.pvd"' in page, ".pvd linked")
+check("Table 7.1: ours (thesis)" in page and "<td>12 (11)</td>" in page, "the key table")
+check("Fake scene scene1 &lt;&amp;&gt;" in page and "<&>" not in page.split("<body>")[1]
+      .replace("&lt;&amp;&gt;", ""), "titles escaped")
+check("no_such_chart.png is missing" in page and '<img src="scene5/no_such_chart.png"' not in page,
+      "no <img> for a missing chart")
+if failures:
+    sys.exit(f"scene_index: {len(failures)} check(s) failed")
+PY
+echo "scene_index: ok"
