@@ -10,7 +10,9 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <set>
+#include <sstream>
 
 namespace sig {
 
@@ -133,8 +135,12 @@ public:
     const auto size = std::filesystem::file_size(path, error);
     SIG_VERIFY(!error, path_ << ": cannot read DS: " << error.message());
     left_ = size;
-    in_.open(path, std::ios::binary);
-    SIG_VERIFY(in_, path_ << ": cannot open DS: " << std::strerror(errno));
+    auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
+    SIG_VERIFY(*file, path_ << ": cannot open DS: " << std::strerror(errno));
+    in_ = std::move(file);
+  }
+  DsReader(std::string name, std::string bytes) : path_(std::move(name)), left_(bytes.size()) {
+    in_ = std::make_unique<std::istringstream>(std::move(bytes));
   }
   const std::string& path() const { return path_; }
   std::uint64_t left() const { return left_; }
@@ -143,8 +149,8 @@ public:
   void read(void* data, std::size_t size, const char* what) {
     SIG_VERIFY(size <= left_, path_ << ": truncated in " << context_ << " (expected " << size
                                     << " bytes of " << what << ", " << left_ << " left)");
-    in_.read(static_cast<char*>(data), static_cast<std::streamsize>(size));
-    SIG_VERIFY(in_, path_ << ": read error in " << context_);
+    in_->read(static_cast<char*>(data), static_cast<std::streamsize>(size));
+    SIG_VERIFY(*in_, path_ << ": read error in " << context_);
     crc_ = crc32(data, size, crc_);
     left_ -= size;
   }
@@ -165,7 +171,7 @@ public:
 private:
   std::string path_;
   std::string context_ = "file start";
-  std::ifstream in_;
+  std::unique_ptr<std::istream> in_;
   std::uint64_t left_ = 0;
   std::uint32_t crc_ = 0;
 };
@@ -263,9 +269,8 @@ void write_ds(const std::filesystem::path& path, const Ds& ds) {
   file.commit();
 }
 
-Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) {
-  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
-  DsReader in(path);
+namespace {
+Ds read_all(DsReader& in, const std::string& expected_kind) {
   char file_magic[sizeof magic];
   in.read(file_magic, sizeof magic, "magic");
   SIG_VERIFY(std::memcmp(file_magic, magic, sizeof magic) == 0,
@@ -280,7 +285,7 @@ Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) 
                        << in.left() / min_array_bytes << " (file corrupted or truncated)");
 
   Ds ds;
-  ds.source = path.string();
+  ds.source = in.path();
   ds.header = read_header(in);
   if (!expected_kind.empty())
     SIG_VERIFY(ds.header.kind == expected_kind, in.path()
@@ -300,10 +305,23 @@ Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) 
   SIG_VERIFY(in.left() == 0, in.path()
                                  << ": " << in.left() << " unexpected bytes after the trailer");
   ds.fingerprint = fingerprint;
-  note_case_input(ds.header.kind, path, fingerprint,
+  return ds;
+}
+} // namespace
+
+Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) {
+  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
+  DsReader in(path);
+  Ds ds = read_all(in, expected_kind);
+  note_case_input(ds.header.kind, path, ds.fingerprint,
                   ds.has(provenance_array) ? parse_provenance(ds.text(provenance_array), ds.source)
                                            : std::vector<ProvenanceEntry>{});
   return ds;
+}
+
+Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind) {
+  DsReader in(name, std::move(bytes));
+  return read_all(in, expected_kind);
 }
 
 } // namespace sig

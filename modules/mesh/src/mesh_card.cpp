@@ -5,6 +5,7 @@
 #include "mesh/generators.hpp"
 #include "mesh/gmsh.hpp"
 #include "mesh/nopo.hpp"
+#include "mesh/topology.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +26,7 @@ const std::set<std::string>& fields_of(const std::string& generator) {
       {"ring", {"center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
       {"rectangle", {"lx", "ly", "nx", "ny", "refs"}},
       {"square", {"lx", "nx", "refs"}},
-      {"file", {}},
+      {"file", {"coincident"}},
   };
   return fields.at(generator);
 }
@@ -73,7 +74,28 @@ Mesh mesh_from_file(const Card& card, const std::filesystem::path& folder) {
     card.fail("file", "unknown mesh file extension '" + extension + "' (.nopo or .msh)");
   if (!std::filesystem::is_regular_file(path) || !std::ifstream(path))
     card.fail("file", "cannot read " + path.string());
-  return read_mesh_file(path);
+  Mesh mesh = read_mesh_file(path);
+  // Two nodes at one place that the triangles do not share leave an open crack: what the file
+  // meant is rarely that (gmsh without Coherence, meshes pasted together).
+  const auto pairs = coincident_nodes(mesh);
+  if (!pairs.empty()) {
+    std::vector<long> numbers;
+    for (const auto& [a, b] : pairs) {
+      numbers.push_back(a + 1);
+      numbers.push_back(b + 1);
+    }
+    std::ostringstream what;
+    what << path.string() << ": " << pairs.size() << " pair(s) of nodes at the same place (nodes "
+         << pairs.front().first + 1 << " and " << pairs.front().second + 1 << " at ("
+         << mesh.nodes[pairs.front().first].x() << ", " << mesh.nodes[pairs.front().first].y()
+         << ")): an open crack in the mesh";
+    if (card.choice("coincident", {"error", "allow"}) == "error")
+      card.fail("file", what.str() + "; merge the nodes, or give coincident=allow if the crack "
+                                     "is meant");
+    warn_entities(path.string(), "nodes (1-based, in pairs) are coincident", numbers,
+                  "kept apart (coincident=allow): an open crack");
+  }
+  return mesh;
 }
 
 Mesh generate(const Card& card, const std::string& generator) {

@@ -93,20 +93,30 @@ std::string text_of_words(const std::string& raw, int int_bytes, int first, int 
   return end == std::string::npos ? std::string() : text.substr(0, end + 1);
 }
 
+// Read in one piece of the file's size (no stream copy): the records must tile the file, so the
+// whole of it is needed.
 std::string read_bytes(const std::filesystem::path& path) {
+  std::error_code error;
+  const auto size = std::filesystem::file_size(path, error);
+  SIG_VERIFY(!error, path.string() << ": cannot open the NOPO file: " << error.message());
   std::ifstream in(path, std::ios::binary);
   SIG_VERIFY(in, path.string() << ": cannot open the NOPO file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  SIG_VERIFY(!in.bad(), path.string() << ": read error");
-  return buffer.str();
+  std::string bytes(size, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(size));
+  SIG_VERIFY(in.gcount() == static_cast<std::streamsize>(size),
+             path.string() << ": read error (" << in.gcount() << " of " << size << " bytes)");
+  return bytes;
 }
 
 } // namespace
 
 NopoFile read_nopo_file(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  const std::string bytes = read_bytes(path);
+  NopoFile result = parse_nopo_file(path.string(), read_bytes(path));
+  note_case_input("NOPO", path, result.fingerprint, {}); // a stage's case.nopo: an input
+  return result;
+}
+
+NopoFile parse_nopo_file(const std::string& file, const std::string& bytes) {
   const FortranRecords records = split_fortran_records(bytes, file);
   NopoFile result;
   result.layout.marker_bytes = records.marker_bytes;
@@ -173,7 +183,9 @@ NopoFile read_nopo_file(const std::filesystem::path& path) {
   SIG_VERIFY(n2[word::NTACOO] <= 1, file << ": NOP2: NTACOO = " << n2[word::NTACOO]
                                          << ", only Cartesian coordinates are read");
   SIG_VERIFY(n2[word::NSUP] == 0, file << ": NOP2: super-elements are not supported");
-  SIG_VERIFY(n2[word::NP] > 0 && l4 == 2 * n2[word::NP],
+  SIG_VERIFY(n2[word::NP] > 0 && n2[word::NP] <= max_mesh_nodes,
+             file << ": NOP2: NP = " << n2[word::NP] << " points, not in 1.." << max_mesh_nodes);
+  SIG_VERIFY(l4 == 2 * n2[word::NP],
              file << ": NOP4 holds " << l4
                   << " reals but NOP2 says NDIM * NP = " << 2 * n2[word::NP]);
   SIG_VERIFY(n2[word::NE] > 0, file << ": NOP2: no element (NE = " << n2[word::NE] << ")");
@@ -181,8 +193,6 @@ NopoFile read_nopo_file(const std::filesystem::path& path) {
   // 4. Elements and references.
   result.mesh = walk_nop5(nop5, result.nop2, std::move(nop4), file);
   check_mesh(result.mesh, file);
-
-  note_case_input("NOPO", path, result.fingerprint, {}); // a stage's case.nopo: an input
   return result;
 }
 

@@ -111,6 +111,9 @@ void write_ds(const std::filesystem::path& path, const Ds& ds);
 /// is also checked against the other inputs of the stage (core/provenance.hpp).
 Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind = "");
 
+/// The same checks on the bytes of a file called `name` (tests, fuzzing); registers no input.
+Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind = "");
+
 /// Replace `path` with `contents` atomically (temporary file + rename); for text outputs
 /// (CSV, JSON, reports) so that a killed stage leaves the previous file intact.
 void write_file_atomically(const std::filesystem::path& path, const std::string& contents);

@@ -63,6 +63,8 @@ struct NopoFile {
 
 /// Read and check a NOPO file. Errors (sig::Error) name the file and the record or array.
 NopoFile read_nopo_file(const std::filesystem::path& path);
+/// The same from the bytes of a file called `name` (tests, fuzzing); registers no input.
+NopoFile parse_nopo_file(const std::string& name, const std::string& bytes);
 /// The mesh of a NOPO file, checked with check_mesh.
 Mesh read_nopo(const std::filesystem::path& path);
 
