@@ -154,7 +154,7 @@ def markdown(out, scenes, stamp):
                               f"[report]({s.link(s.report(out))})" if s.report(out) else "—"]
                              for s in scenes]), ""]
     for s in scenes:
-        lines += [f"## {s.name}: {s.title}" if s.title else f"## {s.name}", "",
+        lines += [f"## {s.title or s.name}", "",
                   f"**{s.verdict()}**", ""]
         command = s.run.get("command") or (s.entry or {}).get("command")
         if command:
@@ -193,6 +193,7 @@ figure { margin: 0; flex: 1 1 30em; max-width: 100%; }
 figcaption { font-weight: bold; margin-bottom: 0.3em; }
 img { max-width: 100%; border: 1px solid #ddd; }
 code { background: #f4f4f4; }
+summary { cursor: pointer; margin: 0.5em 0; }
 """
 
 
@@ -223,8 +224,8 @@ def page(out, scenes, stamp):
                          f'<a href="{s.link(s.report(out))}">report</a>' if s.report(out) else "—"]
                         for s in scenes], raw_columns=(0, 2, 4))]
     for s in scenes:
-        heading = f"{s.name}: {s.title}" if s.title else s.name
-        body += [f'<h2 id="{anchor(s)}">{html.escape(heading)}</h2>', f"<p>{verdict_html(s)}</p>"]
+        body += [f'<h2 id="{anchor(s)}">{html.escape(s.title or s.name)}</h2>',
+                 f"<p>{verdict_html(s)}</p>"]
         command = s.run.get("command") or (s.entry or {}).get("command")
         if command:
             body.append(f"<p>Command: <code>{html.escape(command)}</code> ({s.seconds()})</p>")
@@ -233,12 +234,16 @@ def page(out, scenes, stamp):
         if s.entry is None:
             continue
         if s.checks:
+            # A passing scene's checks fold away; a failing one's stay open.
+            body.append(f"<details{'' if s.ok else ' open'}><summary>{len(s.checks)} checks"
+                        f"</summary>")
             body.append(html_table(
                 ["check", "result", "detail"],
                 [[c.get("name", ""),
                   f'<span class="{ {True: "pass", False: "fail"}.get(c.get("pass"), "notrun")}">'
                   f"{check_text(c)}</span>", c.get("detail", "")] for c in s.checks],
                 raw_columns=(1,)))
+            body.append("</details>")
         table = s.entry.get("key_table")
         if isinstance(table, dict) and table.get("header"):
             if table.get("caption"):
@@ -257,8 +262,9 @@ def page(out, scenes, stamp):
             body.append('<div class="charts">' + "".join(figures) + "</div>")
         pvd = s.entry.get("pvd") or []
         if pvd:
-            body.append("<p>ParaView: " + ", ".join(
-                f'<a href="{s.link(p)}">{html.escape(p)}</a>' for p in pvd) + "</p>")
+            body.append(f"<details><summary>ParaView: {len(pvd)} .pvd files</summary><p>"
+                        + ", ".join(f'<a href="{s.link(p)}">{html.escape(p)}</a>' for p in pvd)
+                        + "</p></details>")
     return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
             "<title>Signorini: the scenes</title>\n<style>" + STYLE + "</style>\n</head>\n"
             "<body>\n" + "\n".join(body) + "\n</body>\n</html>\n")

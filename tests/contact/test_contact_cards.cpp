@@ -194,6 +194,12 @@ TEST(ContactCards, BadLawParameters) {
   expect_input_error(plane + "law=damped cn=10 g=0.5", "g", "not a parameter of law=damped");
   expect_input_error(plane + "law=damped cn=10 c3=5", "c3", "not a parameter of law=damped");
   expect_input_error(plane + "law=damped", "cn", "missing");
+  // Chapter 6's truncation c3 <= 0, and the bilateral test law: no truncation, no friction.
+  expect_input_error(plane + "law=compliance cn=10 c3=-1e8", "c3", "> 0");
+  expect_input_error(plane + "law=compliance-bilateral cn=10 c3=1e8", "c3",
+                     "not a parameter of law=compliance-bilateral");
+  expect_deck_error(plane + "law=compliance-bilateral cn=10\nFRICTION ref=3 law=coulomb mu=0.2", 3,
+                    "law", "is frictionless");
 }
 
 // FRICTION on line 3 of a deck with a CONTACT card on line 2 must fail on `field`.

@@ -89,7 +89,7 @@ ContactLaw law_of(NormalLaw normal, FrictionLaw friction,
   ContactLaw law;
   law.normal = normal;
   law.cn = 7.5;
-  law.depth = normal == NormalLaw::compliance || normal == NormalLaw::damped ? 0.0 : 0.4;
+  law.depth = law.has_wall() ? 0.4 : 0.0;
   law.friction = friction;
   law.mu = 0.3;
   law.threshold = 2.0;
@@ -247,7 +247,20 @@ INSTANTIATE_TEST_SUITE_P(
         Case{NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone, FrictionBound::compliance},
         Case{NormalLaw::damped, FrictionLaw::coulomb},
         Case{NormalLaw::damped_unilateral, FrictionLaw::none},
-        Case{NormalLaw::damped_unilateral, FrictionLaw::coulomb}));
+        Case{NormalLaw::damped_unilateral, FrictionLaw::coulomb},
+        Case{NormalLaw::compliance_bilateral, FrictionLaw::none}));
+
+// The bilateral test law: cn q_n on both sides of the surface, a spring in tension on its
+// compliance branch (CN), no kink at q_n = 0.
+TEST(ContactKernel, BilateralComplianceIsOneLinearSpring) {
+  const ContactLaw law = law_of(NormalLaw::compliance_bilateral, FrictionLaw::none);
+  for (double q_n : {-0.3, -1e-9, 0.0, 0.2}) {
+    const ContactKernel k = contact_kernel(law, {q_n, 0.1, 0.0, 0.0}, 5.0, 5.0);
+    EXPECT_EQ(k.normal, 7.5 * q_n);
+    EXPECT_EQ(k.d_force(0, kQn), 7.5);
+    EXPECT_EQ(normal_status(k), q_n == 0 ? NormalStatus::free : NormalStatus::compliance);
+  }
+}
 
 // The laws in velocity are the compliance kernels of the velocity: the same forces, branches and
 // derivatives at the same arguments, and the thesis's own status names.

@@ -5,7 +5,9 @@ uncaught exceptions, failed loads, and every <img> that did not resolve to a dec
     headless_check.py FILE.html [--chromium PATH]
 
 Talks to the browser over the DevTools protocol on a pipe (--remote-debugging-pipe: fd 3 in,
-fd 4 out, messages ended by NUL), so it needs nothing beyond the standard library. Prints one
+fd 4 out, messages ended by NUL), so it needs nothing beyond the standard library. The flags are
+those of a shared build machine or a CI container run as root (no sandbox, no GPU, no network
+services, /tmp rather than a small /dev/shm, a fresh profile). Prints one
 line per problem and a summary; exits 0 when the page loaded with no error and every image has a
 natural size, 1 otherwise, 2 when the browser could not be driven.
 """
@@ -22,7 +24,7 @@ from pathlib import Path
 
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
          "--disable-background-networking", "--disable-component-update", "--disable-sync",
-         "--remote-debugging-pipe"]
+         "--disable-dev-shm-usage", "--remote-debugging-pipe"]
 
 
 class Browser:

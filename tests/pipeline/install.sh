@@ -52,6 +52,22 @@ done
 grep -q '"converged": true' "$work/run/summary.json" || fail "the installed chain did not converge"
 echo "install: the cantilever chain ran from $prefix"
 
+# The package exports only what the public headers need: beyond our own modules, Eigen is the one
+# package a user's compile line gets; SuiteSparse, MUMPS, METIS, BLAS/LAPACK and VTK are link-only,
+# and no installed header includes theirs.
+targets=$prefix/lib/cmake/Signorini/SignoriniTargets.cmake
+[ -f "$targets" ] || fail "no $targets"
+public=$(sed -n 's/^ *INTERFACE_LINK_LIBRARIES "\(.*\)"/\1/p' "$targets" | tr ';' '\n' |
+  grep -v '^\\\$<LINK_ONLY:' | grep -v '^Signorini::' | sort -u | tr '\n' ' ')
+[ "$public" = "Eigen3::Eigen " ] || fail "public link dependencies beyond Eigen: $public"
+for target in core mesh material assembly contact_laws contact solver solver_stage integrator post; do
+  grep -q "add_library(Signorini::$target STATIC IMPORTED)" "$targets" || fail "no Signorini::$target"
+done
+if grep -rlE '#include [<"](vtk|cholmod|umfpack|dmumps|metis|cblas|lapacke)' "$prefix/include"; then
+  fail "an installed header includes a private dependency's header"
+fi
+echo "install: the package's public dependencies: $public(the rest link-only)"
+
 # 2. A downstream project: find_package(Signorini), Signorini::mesh, read the mesh.
 quiet cmake -S "$root/tests/pipeline/data/downstream" -B "$work/downstream" \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release

@@ -67,7 +67,7 @@ ContactLaw normal_law_from_card(const Card& card) {
   else
     refuse_unused(card, "cn", name);
   // The truncation is chapter 6's, of a compliance in the penetration.
-  if (law.has_compliance() && !law.in_velocity())
+  if (law.has_compliance() && !law.in_velocity() && law.normal != NormalLaw::compliance_bilateral)
     law.c3 = card.real("c3", law.c3);
   else
     refuse_unused(card, "c3", name);

@@ -54,16 +54,20 @@ double von_mises_stress(double s11, double s22, double s12, double s33) {
 }
 
 Hooke hooke_from_card(const Card& card) {
+  return hooke_from_card(card, plane_mode_from_card(card));
+}
+
+Hooke hooke_from_card(const Card& card, PlaneMode plane) {
   Hooke law;
   law.E = card.real("E"); // E > 0, -1 < nu < 0.5: the card's ranges (core/ranges.hpp)
   law.nu = card.real("nu");
-  law.plane = plane_mode_from_card(card);
+  law.plane = plane;
   return law;
 }
 
 PlaneMode plane_mode_from_card(const Card& card) {
   return card.choice("plane", {"strain", "stress"}) == "stress" ? PlaneMode::stress
-                                                                          : PlaneMode::strain;
+                                                                : PlaneMode::strain;
 }
 
 } // namespace sig

@@ -22,7 +22,7 @@ namespace {
 const std::set<std::string>& fields_of(const std::string& generator) {
   static const std::map<std::string, std::set<std::string>> fields = {
       {"half_disc", {"r", "n", "grading"}},
-      {"disc", {"center", "r", "n", "grading"}},
+      {"disc", {"center", "r", "n", "grading", "arcs"}},
       {"ring", {"center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
       {"rectangle", {"lx", "ly", "nx", "ny", "refs"}},
       {"square", {"lx", "nx", "refs"}},
@@ -105,7 +105,10 @@ Mesh generate(const Card& card, const std::string& generator) {
     // Uniform at the arc's size h = 2 pi R / N (disc) or pi R / N: N^2 / (4 pi) nodes at most.
     verify_size(card, "N", static_cast<double>(n) * n / (4 * std::numbers::pi));
     const double grading = card.real("grading");
-    return generator == "disc" ? disc(center(card), r, n, grading) : half_disc(r, n, grading);
+    return generator == "disc"
+               ? disc(center(card), r, n, grading,
+                      card.choice("arcs", {"uniform", "graded"}, "uniform") == "graded")
+               : half_disc(r, n, grading);
   }
   if (generator == "ring") {
     const double r_in = card.real("r_in"), r_out = card.real("r_out");

@@ -17,11 +17,13 @@ double clipped(const ContactLaw& law, double q_n) {
 
 double compliance_pressure(const ContactLaw& law, double q_n) {
   if (!law.has_compliance()) return 0.0;
+  if (law.normal == NormalLaw::compliance_bilateral) return law.cn * q_n;
   return truncated_normal_compliance(clipped(law, q_n), law.cn, law.c3);
 }
 
 double d_compliance_pressure(const ContactLaw& law, double q_n) {
   if (!law.has_compliance() || (law.has_wall() && q_n >= law.depth)) return 0.0;
+  if (law.normal == NormalLaw::compliance_bilateral) return law.cn;
   return d_truncated_normal_compliance(q_n, law.cn, law.c3);
 }
 

@@ -19,6 +19,8 @@ std::string to_string(NormalLaw law) {
     return "damped";
   case NormalLaw::damped_unilateral:
     return "damped-unilateral";
+  case NormalLaw::compliance_bilateral:
+    return "compliance-bilateral";
   }
   return "?";
 }
@@ -48,7 +50,7 @@ std::string to_string(SlipMeasure measure) {
 NormalLaw normal_law_named(const std::string& name) {
   for (NormalLaw law :
        {NormalLaw::signorini, NormalLaw::compliance, NormalLaw::compliance_unilateral,
-        NormalLaw::damped, NormalLaw::damped_unilateral})
+        NormalLaw::damped, NormalLaw::damped_unilateral, NormalLaw::compliance_bilateral})
     if (to_string(law) == name) return law;
   SIG_VERIFY(false, "normal law '" << name << "' is unknown; known: " << normal_law_names);
   return NormalLaw::signorini;
@@ -77,11 +79,11 @@ SlipMeasure slip_measure_named(const std::string& name) {
 }
 
 NormalLaw normal_law_of_id(long id) {
-  SIG_VERIFY(id >= 1 && id <= 5, "normal law id " << id
-                                                  << " is unknown; known: 1 = signorini, "
-                                                     "2 = compliance, 3 = "
-                                                     "compliance-unilateral, 4 = damped, 5 = "
-                                                     "damped-unilateral");
+  SIG_VERIFY(id >= 1 && id <= 6, "normal law id "
+                                     << id
+                                     << " is unknown; known: 1 = signorini, 2 = compliance, 3 = "
+                                        "compliance-unilateral, 4 = damped, 5 = "
+                                        "damped-unilateral, 6 = compliance-bilateral");
   return static_cast<NormalLaw>(id);
 }
 
@@ -134,6 +136,12 @@ std::optional<LawProblem> law_problem(const ContactLaw& law) {
   // CONT file cannot carry a value the cards would refuse.
   if (!(std::isfinite(law.cn) && law.cn >= 0)) return problem("cn", "must be >= 0, got ", law.cn);
   if (!(law.c3 > 0)) return problem("c3", "must be > 0 (a truncation pressure), got ", law.c3);
+  if (law.normal == NormalLaw::compliance_bilateral && std::isfinite(law.c3))
+    return problem("c3", normal, " has no truncation, got c3 = ", law.c3);
+  if (law.normal == NormalLaw::compliance_bilateral && law.has_friction())
+    return problem("law", normal,
+                   " is frictionless (its springs pull too, so no friction bound "
+                   "is defined where they do): give FRICTION law=none");
   if (!(std::isfinite(law.depth) && law.depth >= 0))
     return problem("g", "must be >= 0 (the depth of the wall), got ", law.depth);
   if (!(std::isfinite(law.threshold) && law.threshold >= 0))

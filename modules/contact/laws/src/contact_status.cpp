@@ -6,7 +6,8 @@ namespace sig {
 
 NormalStatus normal_status(const ContactKernel& kernel) {
   if (kernel.wall_active) return NormalStatus::unilateral;
-  return kernel.compliance > 0 ? NormalStatus::compliance : NormalStatus::free;
+  // != 0: a bilateral spring in tension is on its compliance branch too.
+  return kernel.compliance != 0 ? NormalStatus::compliance : NormalStatus::free;
 }
 
 FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel) {

@@ -14,6 +14,10 @@
 //                           no wall
 //   compliance-unilateral   (1.26) N = p(q_n) while q_n < g, a Signorini wall at q_n = g (g the
 //                           depth of the compliant layer)
+//   compliance-bilateral    N = cn q_n on both sides of the surface: springs that also pull (a
+//                           foundation glued to the body), no truncation, frictionless. A test
+//                           law: the Winkler strip of ALGORITHMS.md 3.6 has a semi-analytic
+//                           solution with it
 // and the laws in velocity of chapter 5 (quasistatic march in velocity, sig-march
 // scheme=quasistatic): the same kernels with q_n the normal velocity v_n towards the obstacle and
 // q_t the tangential velocity (the slip rate), so that g is a velocity bound:
@@ -57,18 +61,21 @@ enum class NormalLaw {
   compliance = 2,
   compliance_unilateral = 3,
   damped = 4,
-  damped_unilateral = 5
+  damped_unilateral = 5,
+  compliance_bilateral = 6
 };
 enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2, nonmonotone = 3 };
 enum class FrictionBound { normal = 0, compliance = 1 };
 enum class SlipMeasure { slip = 0, slip_rate = 1 };
 
 inline constexpr const char* normal_law_names =
-    "signorini | compliance | compliance-unilateral | damped | damped-unilateral";
+    "signorini | compliance | compliance-unilateral | damped | damped-unilateral | "
+    "compliance-bilateral";
 inline constexpr const char* friction_law_names = "none | tresca | coulomb | nonmonotone";
 /// The same names as a card field's choices (Card::choice).
 inline constexpr std::initializer_list<const char*> normal_law_choices = {
-    "signorini", "compliance", "compliance-unilateral", "damped", "damped-unilateral"};
+    "signorini", "compliance",        "compliance-unilateral",
+    "damped",    "damped-unilateral", "compliance-bilateral"};
 inline constexpr std::initializer_list<const char*> friction_law_choices = {
     "none", "tresca", "coulomb", "nonmonotone"};
 inline constexpr std::initializer_list<const char*> friction_bound_choices = {"normal",
@@ -106,7 +113,10 @@ struct ContactLaw {
   double alpha = 0;                   ///< nonmonotone: decay per unit slip (or slip rate), >= 0
   SlipMeasure of = SlipMeasure::slip; ///< nonmonotone: what r measures
 
-  bool has_wall() const { return normal != NormalLaw::compliance && normal != NormalLaw::damped; }
+  bool has_wall() const {
+    return normal == NormalLaw::signorini || normal == NormalLaw::compliance_unilateral ||
+           normal == NormalLaw::damped_unilateral;
+  }
   bool has_compliance() const { return normal != NormalLaw::signorini; }
   /// A law of the velocity (damped, damped-unilateral): q_n, q_t are velocities, g a velocity.
   bool in_velocity() const {
