@@ -20,6 +20,8 @@ constexpr ValueRange positive{0, inf, true, false, nullptr};
 constexpr ValueRange non_negative{0, inf, false, false, nullptr};
 constexpr ValueRange count_from_1{1, max_count, false, false, nullptr};
 constexpr ValueRange reference{1, 2147483647, false, false, nullptr};
+constexpr ValueRange poisson{-1, 0.5, true, true,
+                             "0.5 is the incompressible limit, where Hooke's law has no D"};
 
 struct FieldRange {
   const char* keyword;
@@ -44,14 +46,14 @@ constexpr FieldRange table[] = {
     {"MESH", "grading", non_negative},
     {"MATERIAL", "region", reference},
     {"MATERIAL", "E", positive},
-    {"MATERIAL",
-     "nu",
-     {-1, 0.5, true, true, "0.5 is the incompressible limit, where Hooke's law has no D"}},
+    {"MATERIAL", "nu", poisson},
     {"MATERIAL", "c1", positive},
     {"MATERIAL", "c2", non_negative},
     {"MATERIAL", "a", non_negative},
     {"MATERIAL", "thickness", positive},
     {"MATERIAL", "rho", non_negative},
+    {"MEMORY", "E", positive},
+    {"MEMORY", "nu", poisson},
     {"DIRICHLET", "ref", reference},
     {"TRACTION", "ref", reference},
     {"PRESSURE", "ref", reference},
