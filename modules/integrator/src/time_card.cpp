@@ -11,7 +11,7 @@ namespace sig {
 
 TimeParameters time_parameters(const Card& time, bool has_contact) {
   TimeParameters p;
-  p.scheme = time.choice("scheme", {"midpoint", "newmark"});
+  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic"});
   p.final_time = time.real("T"); // T, k > 0, output_every >= 1: core/ranges.hpp
   p.k = time.real("k");
   // A step count that is not whole would make the last step end before or after T.
@@ -26,6 +26,8 @@ TimeParameters time_parameters(const Card& time, bool has_contact) {
   p.steps = static_cast<int>(steps);
   const long every = time.integer("output_every");
   p.output_every = static_cast<int>(std::min<long>(every, p.steps));
+  if (p.scheme == "quasistatic" && time.has("mass"))
+    time.fail("mass", "a quasistatic march has no inertia: remove mass=");
   const std::string mass = time.choice("mass", {"consistent", "lumped", "emm"});
   if (mass == "emm" && !has_contact)
     time.fail("mass", "mass=emm needs a CONTACT card: the Equivalent Mass Matrix (3.54) removes "

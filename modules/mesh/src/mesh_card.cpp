@@ -24,8 +24,8 @@ const std::set<std::string>& fields_of(const std::string& generator) {
       {"half_disc", {"r", "n", "grading"}},
       {"disc", {"center", "r", "n", "grading", "arcs"}},
       {"ring", {"center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
-      {"rectangle", {"lx", "ly", "nx", "ny", "refs"}},
-      {"square", {"lx", "nx", "refs"}},
+      {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
+      {"square", {"lx", "nx", "refs", "pattern"}},
       {"file", {"coincident"}},
   };
   return fields.at(generator);
@@ -123,12 +123,8 @@ Mesh generate(const Card& card, const std::string& generator) {
     if (card.has("gamma3_below")) options.gamma3_below = card.real("gamma3_below");
     return ring(center(card), r_in, r_out, n, options);
   }
-  const double lx = card.real("lx");
-  const int nx = static_cast<int>(card.integer("nx"));
-  const double ly = generator == "rectangle" ? card.real("ly") : lx;
-  const int ny = generator == "rectangle" ? static_cast<int>(card.integer("ny")) : nx;
-  verify_size(card, "nx", (nx + 1.0) * (ny + 1.0));
-  return rectangle(lx, ly, nx, ny, refs(card));
+  {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
+      {"square", {"lx", "nx", "refs", "pattern"}}, {"file", {"coincident"}},
 }
 
 } // namespace
