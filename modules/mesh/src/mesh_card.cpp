@@ -123,8 +123,17 @@ Mesh generate(const Card& card, const std::string& generator) {
     if (card.has("gamma3_below")) options.gamma3_below = card.real("gamma3_below");
     return ring(center(card), r_in, r_out, n, options);
   }
-  {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
-      {"square", {"lx", "nx", "refs", "pattern"}}, {"file", {"coincident"}},
+  const CellPattern pattern = card.choice("pattern", {"alternating", "union-jack"}) == "union-jack"
+                                  ? CellPattern::union_jack
+                                  : CellPattern::alternating;
+  const double lx = card.real("lx");
+  const int nx = static_cast<int>(card.integer("nx"));
+  const double ly = generator == "rectangle" ? card.real("ly") : lx;
+  const int ny = generator == "rectangle" ? static_cast<int>(card.integer("ny")) : nx;
+  // Union-jack cells have a centre node each.
+  verify_size(card, "nx",
+              (nx + 1.0) * (ny + 1.0) + (pattern == CellPattern::union_jack ? 1.0 * nx * ny : 0.0));
+  return rectangle(lx, ly, nx, ny, refs(card), pattern);
 }
 
 } // namespace
