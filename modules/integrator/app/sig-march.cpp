@@ -79,6 +79,7 @@ int main(int argc, char** argv) {
       return;
     }
     const sig::Card* solver_card = datafile.find("SOLVER");
+    sig::warn_unused_solver_fields(solver_card);
     // A hyperelastic body marches in large deformation (integrator/finite_strain_march.hpp).
     const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
     const bool hyperelastic = sig::has_hyperelastic_law(materials);

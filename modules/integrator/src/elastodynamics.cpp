@@ -64,8 +64,7 @@ Eigen::SparseMatrix<double> diagonal_mass(const Eigen::VectorXd& lumped) {
 }
 
 Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice choice,
-                                        const Mesh& mesh,
-                                        const std::vector<int>& contact_nodes) {
+                                        const Mesh& mesh, const std::vector<int>& contact_nodes) {
   SIG_VERIFY(system.M.rows() == system.num_dofs() && system.M.nonZeros() > 0,
              "the system has no mass: give the MATERIAL cards a density rho > 0");
   switch (choice) {

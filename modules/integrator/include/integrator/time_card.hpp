@@ -38,4 +38,9 @@ struct TimeParameters {
 /// quasistatic deck.
 TimeParameters time_parameters(const Card& time, bool has_contact);
 
+/// The SOLVER fields a TIME deck uses (linear=, maxit=, and the strategies' gamma= and eps=); a
+/// warning names each other field given (method=, r= ... belong to sig-solve): a parameter
+/// silently ignored is a trap.
+void warn_unused_solver_fields(const Card* solver);
+
 } // namespace sig
