@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
       .reads = {"DATAFILE", "OUTDIR/case.nopo, case.mili, case.tae, case.cont (as sig-march)"},
       .writes = {"OUTDIR/bench.json (setup and march seconds per run, medians per step and of "
                  "its parts, the floor, the ratio, the factorization and iteration counts)"},
-      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "MATERIAL"},
+      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "CONVEXIFICATION",
+                "LOADSTEPS", "MATERIAL"},
       .usage = "DATAFILE [-o OUTDIR] [--repeat K]",
       .options = {{"--repeat K", "timed marches (default 3)"}}};
   return sig::run_stage("bench-quasistatic", [&] {
