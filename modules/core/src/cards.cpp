@@ -15,8 +15,12 @@ const std::vector<CardSpec>& card_schema() {
        "the mesh: a generated thesis geometry or a mesh file",
        {
            {"generator", "half-disc | disc | ring | rectangle | square"},
-           {"file", "mesh file: gmsh .msh (2.2 or 4.1), FreeFem .msh or MODULEF .nopo; relative "
-                    "to the datafile's folder"},
+           {"file", "mesh file: gmsh .msh (2.2 or 4.1, ASCII or binary), FreeFem .msh or MODULEF "
+                    ".nopo; relative to the datafile's folder"},
+           {"coincident",
+            "error | allow: nodes of a mesh file at the same place that the "
+            "triangles do not share (an open crack) are an error unless allowed",
+            "error"},
            {"R", "radius of the disc or half disc"},
            {"N", "number of boundary segments along the arc (disc, half disc, ring)"},
            {"center", "centre of the disc or ring: x,y", "0,0"},

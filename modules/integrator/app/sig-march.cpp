@@ -74,6 +74,7 @@ int main(int argc, char** argv) {
       return;
     }
     const sig::Card* solver_card = datafile.find("SOLVER");
+    sig::warn_unused_solver_fields(solver_card);
     const std::string backend =
         solver_card ? solver_card->choice("linear", {"cholmod", "umfpack", "mumps"}, "cholmod")
                     : "cholmod";

@@ -15,8 +15,7 @@ ContactHistoryInfo contact_history_info(const Card& contact) {
   if (needs_r && !contact.has("r"))
     contact.fail("r", "strategy=" + info.strategy +
                           " needs the foundation stiffness per unit area r > 0");
-  info.r = contact.real("r", 0.0);
-  if (contact.has("r") && !(info.r > 0)) contact.fail("r", "must be > 0");
+  info.r = contact.real("r", 0.0); // > 0 when given: core/ranges.hpp
   if (contact.has("r") && !needs_r)
     log_warning("CONTACT r= is not used by strategy=" + info.strategy);
   // The strategies define their own normal forces; the card's law must be the default.
@@ -37,9 +36,7 @@ ContactStrategyParameters contact_strategy_parameters(const Card& contact, const
   ContactStrategyParameters p;
   p.r = contact.real("r", 0.0);
   if (solver != nullptr) {
-    const long maxit = solver->integer("maxit", p.max_iterations);
-    if (maxit < 1) solver->fail("maxit", "must be >= 1");
-    p.max_iterations = static_cast<int>(maxit);
+    p.max_iterations = static_cast<int>(solver->integer("maxit", p.max_iterations)); // >= 1
   }
   return p;
 }

@@ -15,6 +15,7 @@
 // in the tables).
 #include "assembly/initial.hpp"
 #include "assembly/loads.hpp"
+#include "assembly/rigid_motion.hpp"
 #include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
@@ -126,6 +127,8 @@ int main(int argc, char** argv) {
     // 4. Solve, from the INITIAL displacement (the first iterate of the contact Newton).
     sig::StaticSolution solution;
     if (method == "linear") {
+      sig::verify_rigid_motions_held(sig::read_nopo(args.ds_path("nopo")), system.dirichlet_dofs,
+                                     datafile.path);
       solution = sig::solve_linear_elasticity(system, backend);
     } else {
       const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));

@@ -34,4 +34,8 @@ struct TimeParameters {
 /// quasistatic deck.
 TimeParameters time_parameters(const Card& time, bool has_contact);
 
+/// The SOLVER fields a TIME deck uses (linear=, maxit=); a warning names each other field given
+/// (method=, gamma= ... belong to sig-solve): a parameter silently ignored is a trap.
+void warn_unused_solver_fields(const Card* solver);
+
 } // namespace sig
