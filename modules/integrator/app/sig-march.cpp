@@ -61,11 +61,15 @@ int main(int argc, char** argv) {
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
                 "OUTDIR/case.mili (sig-material: the laws, hyperelastic or not)",
                 "OUTDIR/case.cont (sig-contact; with a CONTACT card)"},
-      .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures)",
+      .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures; quasistatic: "
+                 "per step the contact velocities, forces and statuses)",
                  "OUTDIR/energy.csv (one row per step: energies, contact work and its split into "
                  "interface, friction and wall work, penetration, active nodes, Newton "
-                 "iterations, the contact forces' sums)"},
-      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "MATERIAL"}};
+                 "iterations, the contact forces' sums)",
+                 "OUTDIR/steps.csv (quasistatic: one row per step: Newton iterations, status "
+                 "counts, largest velocity, normal displacement and pressure)"},
+      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "CONVEXIFICATION",
+                "LOADSTEPS", "MATERIAL"}};
   return sig::run_stage("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
