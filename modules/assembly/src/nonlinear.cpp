@@ -171,15 +171,25 @@ PreviousStrain previous_strain(const Mesh& mesh, const MaterialTable& table,
 void assemble_hyperelastic_step(const Mesh& mesh, const MaterialTable& table,
                                 const SparsityPattern& pattern, const PreviousStrain& previous,
                                 AlgorithmicStress stress, const Eigen::VectorXd& u,
-                                HyperelasticState& state, bool with_tangent) {
+                                HyperelasticState& state, bool with_tangent,
+                                PreviousStrain* strain) {
   SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == 2 * mesh.num_nodes() &&
                  static_cast<int>(previous.F.size()) == mesh.num_triangles(),
              "time step: displacement has " << u.size() << " values, pattern " << pattern.num_dofs()
                                             << " dofs, the step start " << previous.F.size()
                                             << " triangles");
+  if (strain) {
+    strain->F.resize(previous.F.size());
+    strain->energy.resize(previous.energy.size());
+  }
   const TriangleResponse response = [&](int t, const HyperelasticLaw& law, const Eigen::Matrix2d& F,
                                         bool tangent) {
-    return step_response(law, stress, previous.F[t], previous.energy[t], F, tangent);
+    StepResponse r = step_response(law, stress, previous.F[t], previous.energy[t], F, tangent);
+    if (strain) {
+      strain->F[t] = F;
+      strain->energy[t] = r.energy;
+    }
+    return r;
   };
   if (with_tangent) reset_tangent(pattern, state.tangent);
   assemble_over_triangles(mesh, table, &pattern, u, state, with_tangent ? &state.tangent : nullptr,

@@ -31,7 +31,8 @@ StepResponse gonzalez(const HyperelasticLaw& law, const Eigen::Matrix2d& F_prev,
                       const Eigen::Matrix2d& F, bool with_tangent) {
   const Eigen::Matrix2d C_prev = F_prev.transpose() * F_prev, C = F.transpose() * F;
   const Eigen::Matrix2d C_mid = 0.5 * (C + C_prev), dC = C - C_prev;
-  const MaterialPoint2d mid = law.in_plane(C_mid), now = law.in_plane(C);
+  // S(C_n) enters the tangent only; W(C_n) always.
+  const MaterialPoint2d mid = law.in_plane(C_mid, with_tangent), now = law.in_plane(C, false);
   const Eigen::Vector4d dc = voigt(dC);
   const double norm2 = dc.squaredNorm();
   const bool rigid = norm2 <= kRigidStep * kRigidStep * C_mid.squaredNorm();
@@ -82,7 +83,7 @@ StepResponse midpoint(const HyperelasticLaw& law, const Eigen::Matrix2d& F_prev,
 } // namespace
 
 double step_energy(const HyperelasticLaw& law, const Eigen::Matrix2d& F) {
-  return law.in_plane(F.transpose() * F).energy;
+  return law.in_plane(F.transpose() * F, false).energy;
 }
 
 std::string to_string(AlgorithmicStress stress) {

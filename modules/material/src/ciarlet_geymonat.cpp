@@ -15,7 +15,7 @@ CiarletGeymonat::CiarletGeymonat(double c1, double c2, double a, PlaneMode plane
                  << c1 << ", c2 = " << c2 << ", a = " << a << ")");
 }
 
-MaterialPoint3d CiarletGeymonat::at(const Eigen::Matrix3d& C) const {
+MaterialPoint3d CiarletGeymonat::at(const Eigen::Matrix3d& C, bool with_tangent) const {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   const double I1 = C.trace();
   const double I2 = 0.5 * (I1 * I1 - (C * C).trace());
@@ -34,6 +34,7 @@ MaterialPoint3d CiarletGeymonat::at(const Eigen::Matrix3d& C) const {
   // CC = 2 dS/dC = 4 [c2 (I x I - sym(I)) + a I3 C^-1 x C^-1 - (a I3 - d) sym(C^-1)], with
   // x = tensor_outer and d(C^-1)/dC = -sym(C^-1) = -symmetric_product(C^-1): written as one pass
   // over the 81 entries, since it runs once per triangle and Newton iteration.
+  if (!with_tangent) return p;
   const double c_identity = 4.0 * c2_, c_outer = 4.0 * a_ * I3, c_sym = 2.0 * (a_ * I3 - d);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)

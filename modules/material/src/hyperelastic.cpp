@@ -115,16 +115,17 @@ HyperelasticResponse HyperelasticLaw::plane_stress(const Eigen::Matrix2d& F) con
   return out;
 }
 
-MaterialPoint2d HyperelasticLaw::in_plane(const Eigen::Matrix2d& C) const {
+MaterialPoint2d HyperelasticLaw::in_plane(const Eigen::Matrix2d& C, bool with_tangent) const {
   SIG_VERIFY(C.determinant() > 0.0,
              "hyperelastic law: det C = " << C.determinant() << " <= 0 (inverted element)");
   Eigen::Matrix3d C3 = Eigen::Matrix3d::Zero();
   C3.topLeftCorner<2, 2>() = C;
   C3(2, 2) = plane_ == PlaneMode::strain ? 1.0 : out_of_plane_c33(C);
-  const MaterialPoint3d point = at(C3);
+  const MaterialPoint3d point = at(C3, with_tangent);
   MaterialPoint2d out;
   out.energy = point.energy;
   out.S = point.S.topLeftCorner<2, 2>();
+  if (!with_tangent) return out;
   // Plane stress: S33 = 0 along the path gives dC33 = -CC_33pq dC_pq / CC_3333, which condenses
   // the tangent as for the first Piola tangent in plane_stress().
   const double CC33 = point.CC(out_of_plane, out_of_plane);

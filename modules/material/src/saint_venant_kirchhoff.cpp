@@ -11,7 +11,7 @@ SaintVenantKirchhoff::SaintVenantKirchhoff(double E, double nu, PlaneMode plane)
                                                                                   << nu << ")");
 }
 
-MaterialPoint3d SaintVenantKirchhoff::at(const Eigen::Matrix3d& C) const {
+MaterialPoint3d SaintVenantKirchhoff::at(const Eigen::Matrix3d& C, bool with_tangent) const {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   const Eigen::Matrix3d E = 0.5 * (C - I);
   const double trE = E.trace();
@@ -19,7 +19,7 @@ MaterialPoint3d SaintVenantKirchhoff::at(const Eigen::Matrix3d& C) const {
   MaterialPoint3d p;
   p.energy = 0.5 * l * trE * trE + m * E.squaredNorm(); // thesis (1.62), E:E = tr(E^2)
   p.S = l * trE * I + 2.0 * m * E;
-  p.CC = l * tensor_outer(I, I) + 2.0 * m * symmetric_product(I);
+  if (with_tangent) p.CC = l * tensor_outer(I, I) + 2.0 * m * symmetric_product(I);
   return p;
 }
 

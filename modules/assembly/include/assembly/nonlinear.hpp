@@ -41,12 +41,13 @@ PreviousStrain previous_strain(const Mesh& mesh, const MaterialTable& table,
 /// The internal force of a midpoint time step from `previous` to u (thesis (3.40)): G_a =
 /// sum_T |T| t Pi : grad(lambda_a), Pi the stress of the step (`stress`); its derivative in u
 /// into state.tangent when `with_tangent` (not symmetric for Gonzalez's stress; the pattern's
-/// layout, as assemble_hyperelastic), and the stored energy at u. Throws as
-/// assemble_hyperelastic.
+/// layout, as assemble_hyperelastic), and the stored energy at u; the strain at u into `strain`
+/// if given (the next step's start, without a second pass). Throws as assemble_hyperelastic.
 void assemble_hyperelastic_step(const Mesh& mesh, const MaterialTable& table,
                                 const SparsityPattern& pattern, const PreviousStrain& previous,
                                 AlgorithmicStress stress, const Eigen::VectorXd& u,
-                                HyperelasticState& state, bool with_tangent);
+                                HyperelasticState& state, bool with_tangent,
+                                PreviousStrain* strain = nullptr);
 
 /// The stored energy alone (for a line search). +infinity when a triangle is inverted
 /// (det F <= 0), so that a step that folds the mesh is refused rather than thrown. Every

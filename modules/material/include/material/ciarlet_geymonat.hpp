@@ -23,7 +23,7 @@ public:
   double a() const { return a_; }
 
   /// S = 2 [c1 I + c2 (I1 I - C) + (a I3 - d) C^-1] with d = c1 + 2 c2 + a (thesis 1.61).
-  MaterialPoint3d at(const Eigen::Matrix3d& C) const override;
+  MaterialPoint3d at(const Eigen::Matrix3d& C, bool with_tangent = true) const override;
   double lambda() const override { return 4.0 * (a_ + c2_); }
   double mu() const override { return 2.0 * (c1_ + c2_); }
 

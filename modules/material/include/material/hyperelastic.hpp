@@ -63,11 +63,13 @@ public:
   Eigen::Matrix2d stress(const Eigen::Matrix2d& F) const { return response(F).stress; }
   Eigen::Matrix4d tangent(const Eigen::Matrix2d& F) const { return response(F).tangent; }
 
-  /// The 3D law at C (symmetric, det C > 0).
-  virtual MaterialPoint3d at(const Eigen::Matrix3d& C) const = 0;
+  /// The 3D law at C (symmetric, det C > 0); CC only `with_tangent` (zero otherwise: a force
+  /// evaluation skips its 81 entries).
+  virtual MaterialPoint3d at(const Eigen::Matrix3d& C, bool with_tangent = true) const = 0;
   /// The 2D law at the in-plane C (symmetric, det C > 0): what an algorithmic stress of the
-  /// time step is built from (material/algorithmic_stress.hpp). Throws as response().
-  MaterialPoint2d in_plane(const Eigen::Matrix2d& C) const;
+  /// time step is built from (material/algorithmic_stress.hpp); CC only `with_tangent`. Throws
+  /// as response().
+  MaterialPoint2d in_plane(const Eigen::Matrix2d& C, bool with_tangent = true) const;
 
   /// Lame parameters of the small-strain limit of the 3D law: S = lambda tr(E) I + 2 mu E +
   /// O(|E|^2) with E = (C - I) / 2.

@@ -21,7 +21,7 @@ public:
   double young() const { return E_; }
   double poisson() const { return nu_; }
 
-  MaterialPoint3d at(const Eigen::Matrix3d& C) const override;
+  MaterialPoint3d at(const Eigen::Matrix3d& C, bool with_tangent = true) const override;
   double lambda() const override { return E_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_)); }
   double mu() const override { return E_ / (2.0 * (1.0 + nu_)); }
 

@@ -61,6 +61,10 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
                                   << ") is off the mesh's P1 pattern");
         mass_.valuePtr()[slot - inner] += it.value();
       }
+    massless_.assign(static_cast<std::size_t>(ndof), 1);
+    for (int j = 0; j < ndof; ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(mass_, j); it; ++it)
+        if (it.value() != 0.0) massless_[static_cast<std::size_t>(j)] = 0;
   }
   // Gonzalez's tangent and the Coulomb coupling on the wall are not symmetric: LU.
   const bool symmetric =
@@ -86,27 +90,38 @@ void FiniteStrainBulk::start_time_step(const Eigen::VectorXd& u_prev,
   SIG_VERIFY(u_prev.size() == now_.u.size() && v_prev.size() == now_.u.size(),
              "time step: " << u_prev.size() << " displacements and " << v_prev.size()
                            << " velocities for " << now_.u.size() << " dofs");
+  // The strain at u_prev: the last evaluated iterate's when the step starts where the previous
+  // one ended (the march), else a pass over the mesh.
+  if (now_.strain.F.size() == problem_.mesh->triangles.size() && u_prev == now_.u)
+    previous_ = std::move(now_.strain);
+  else
+    previous_ = previous_strain(*problem_.mesh, *problem_.materials, u_prev);
   u_prev_ = u_prev;
   v_prev_ = v_prev;
-  previous_ = previous_strain(*problem_.mesh, *problem_.materials, u_prev);
   slip_origin_ = u_prev;
   // The predictor u_prev + k v_prev, shortened towards u_prev (always admissible) when a fast
   // rotation's straight-line extrapolation would invert a triangle.
   bool admissible = false;
+  // The force alone: a free flight's step is its predictor and needs no tangent (solve()
+  // assembles it when a Newton step is taken).
   for (double theta = 1; !admissible && theta >= 1.0 / 64; theta /= 2) {
     now_.u = u_prev + theta * problem_.time_step * v_prev;
-    admissible = evaluate(now_, true);
+    admissible = evaluate(now_, false);
   }
   if (!admissible) {
     now_.u = u_prev;
-    SIG_VERIFY(evaluate(now_, true), "the state at the start of the time step has an inverted "
-                                     "triangle");
+    SIG_VERIFY(evaluate(now_, false), "the state at the start of the time step has an inverted "
+                                      "triangle");
   }
   base_ = now_.u;
 }
 
 Eigen::VectorXd FiniteStrainBulk::velocity() const {
-  return (2.0 / problem_.time_step) * (now_.u - u_prev_) - v_prev_;
+  const double k = problem_.time_step;
+  Eigen::VectorXd v = (2.0 / k) * (now_.u - u_prev_) - v_prev_;
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (massless_[static_cast<std::size_t>(i)]) v[i] = (now_.u[i] - u_prev_[i]) / k;
+  return v;
 }
 
 void FiniteStrainBulk::set_load_factor(double s) {
@@ -124,7 +139,7 @@ bool FiniteStrainBulk::evaluate(State& s, bool with_tangent) {
   try {
     if (dynamic())
       assemble_hyperelastic_step(*problem_.mesh, *problem_.materials, pattern_, previous_,
-                                 problem_.stress, s.u, s.bulk, with_tangent);
+                                 problem_.stress, s.u, s.bulk, with_tangent, &s.strain);
     else if (with_tangent)
       assemble_hyperelastic(*problem_.mesh, *problem_.materials, pattern_, s.u, s.bulk);
     else

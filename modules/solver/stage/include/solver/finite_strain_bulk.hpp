@@ -67,7 +67,10 @@ public:
   /// slips are measured from u_prev. sig::Error without a mass, or if u_prev has an inverted
   /// triangle.
   void start_time_step(const Eigen::VectorXd& u_prev, const Eigen::VectorXd& v_prev);
-  /// (2 / k)(u - u_prev) - v_prev at the iterate.
+  /// (2 / k)(u - u_prev) - v_prev at the iterate; on a dof without mass (the Gamma3 nodes of an
+  /// Equivalent Mass Matrix) the mean velocity of the step (u - u_prev) / k: the midpoint
+  /// recurrence there is neutral, it neither changes the dynamics nor damps its rounding, and
+  /// would make the next predictor (and two-step's persistency) extrapolate noise.
   Eigen::VectorXd velocity() const;
 
   int contacts() const override { return contacts_; }
@@ -100,6 +103,7 @@ private:
     Eigen::VectorXd slip;                ///< q_t per contact node (friction)
     std::vector<Eigen::Vector2d> normal; ///< obstacle normal at the current position
     double inertia = 0;                  ///< ||(2 / k^2) M (u - u_prev)||: dynamics' force scale
+    PreviousStrain strain;               ///< dynamics: F and W per triangle at u
     bool has_tangent = false;            ///< bulk.tangent belongs to u
   };
 
@@ -117,6 +121,7 @@ private:
   int evaluations_ = 0;
   // Dynamics (problem_.mass): the mass on the pattern's layout, the step's start.
   Eigen::SparseMatrix<double> mass_;
+  std::vector<char> massless_; ///< per dof: no mass in its column
   PreviousStrain previous_;
   Eigen::VectorXd u_prev_, v_prev_;
   Eigen::VectorXd slip_origin_; ///< u at which the slips are 0
