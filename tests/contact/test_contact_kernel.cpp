@@ -452,6 +452,58 @@ TEST(ContactKernel, PenetrationDependentCoefficients) {
   (void)mu2;
 }
 
+// The specific penalty's secant (contact_law.hpp): its compliance is p_spe(previous, q_n), and
+// mu1 / mu2 follow the step's deepest penetration, so that the bound stays continuous where the
+// secant force of a leaving node does not vanish at q_n = 0; derivatives against central
+// differences on the secant's branches.
+TEST(ContactKernel, SecantLawsAndTheDeepestPenetrationOfTheStep) {
+  for (FrictionLaw friction : {FrictionLaw::coulomb, FrictionLaw::mu1, FrictionLaw::mu2})
+    for (NormalLaw normal : {NormalLaw::compliance, NormalLaw::compliance_unilateral}) {
+      ContactLaw law = law_of(normal, friction);
+      law.depth = 0.4;
+      law.secant = true;
+      for (double previous : {-0.2, 0.05, 0.3}) {
+        law.previous = previous;
+        // The work identity of the secant: P (q - previous) = cn ([q]_+^2 - [previous]_+^2) / 2.
+        for (double q : {-0.1, 0.02, 0.2, 0.35})
+          if (q != previous) {
+            const double P = compliance_pressure(law, q);
+            EXPECT_NEAR(P * (q - previous),
+                        compliance_energy(law, q) - compliance_energy(law, previous), 1e-12);
+          }
+        // The secant is smooth, not piecewise affine, on its pieces: central differences of
+        // step 1e-6 away from the kinks at 0, previous and g.
+        for (double q : {-0.15, 0.01, 0.12, 0.28})
+          for (double t : {0.0, 0.6}) {
+            const NodeVariables x{q, 0.05, -1.0, t};
+            const ContactKernel k = contact_kernel(law, x, 10, 10);
+            for (int j = 0; j < 4; ++j) {
+              const double h = 1e-6;
+              const Eigen::Vector4d fd = (outputs(contact_kernel(law, with(x, j, h), 10, 10)) -
+                                          outputs(contact_kernel(law, with(x, j, -h), 10, 10))) /
+                                         (2 * h);
+              for (int i = 0; i < 4; ++i)
+                EXPECT_NEAR(derivatives(k)(i, j), fd[i], 1e-6 * (1 + std::abs(fd[i])))
+                    << describe(law) << " previous " << previous << " q " << q << " output " << i
+                    << " variable " << j;
+            }
+          }
+      }
+      // The bound across q_n = 0 with a penetration at the start: continuous for every law.
+      law.previous = 0.05;
+      const double below = contact_kernel(law, {-1e-9, 0.3, -1.0, 0.0}, 10, 10).bound;
+      const double above = contact_kernel(law, {1e-9, 0.3, -1.0, 0.0}, 10, 10).bound;
+      EXPECT_NEAR(below, above, 1e-7) << describe(law);
+      EXPECT_GT(below, 0.0) << describe(law);
+      if (law.penetration_dependent()) {
+        // Shallower than at the start: the coefficient of the start's penetration.
+        EXPECT_DOUBLE_EQ(contact_kernel(law, {0.01, 0.3, -1.0, 0.0}, 10, 10).bound,
+                         penetration_friction(law, 0.05) *
+                             contact_kernel(law, {0.01, 0.3, -1.0, 0.0}, 10, 10).normal);
+      }
+    }
+}
+
 TEST(ContactKernel, NonmonotoneWithEqualCoefficientsIsCoulomb) {
   // a = b: mu(r) = a for every slip, whatever alpha; the kernel is Coulomb's with mu = a.
   for (FrictionBound bound : {FrictionBound::normal, FrictionBound::compliance}) {

@@ -71,7 +71,11 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
   case FrictionLaw::nonmonotone: // mu frozen for this convex solve (contact_law.hpp)
   case FrictionLaw::mu1:         // mu of the penetration (8.3)
   case FrictionLaw::mu2: {
-    const double mu = penetration_friction(law, x.q_n), d_mu = d_penetration_friction(law, x.q_n);
+    // A secant law's coefficient follows the deepest penetration of the step (contact_law.hpp).
+    const bool deeper = !law.secant || x.q_n > law.previous;
+    const double q_mu = deeper ? x.q_n : law.previous;
+    const double mu = penetration_friction(law, q_mu);
+    const double d_mu = deeper ? d_penetration_friction(law, q_mu) : 0.0;
     if (law.bound == FrictionBound::normal) {
       k.bound = mu * k.normal;
       k.bound_slope = mu;

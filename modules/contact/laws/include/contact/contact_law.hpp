@@ -48,7 +48,12 @@
 // (`secant`, the specific penalty of [62], (3.51), (8.32)): N = cn p_spe(previous, q_n), with
 // p_spe of complementarity.hpp and `previous` the penetration at the start of the step, whose
 // work over the step is exactly the change of the compliance's potential cn [q_n]_+^2 / 2. The
-// strategies of the march set it per step; it is never stored in CONT.
+// strategies of the march set it per step; it is never stored in CONT. Under a secant law mu1 and
+// mu2 take the deepest penetration of the step, max(previous, q_n): the asperities crushed so far
+// in the step ([choice]: with mu(q_n) the bound mu2(q_n) N jumps from 0 to 2 mu0 N at q_n = 0, N
+// being the secant's force of a node that leaves the obstacle, not 0 as in (8.2), and the
+// semi-smooth Newton method cycles on that jump, seen on scene 8b's ring; with the step's
+// deepest penetration the bound is continuous, since N -> 0 as that penetration -> 0).
 #include <Eigen/Core>
 
 #include <algorithm>
