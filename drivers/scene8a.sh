@@ -24,7 +24,9 @@
 #                          (Fig 8.2: positions and contact pressure before, during, after)
 # Methods: signorini (g = 0, consistent mass), compliance (-xi = r [u_n]_+, the thesis's
 # "g = 1000"), specific-penalty (3.51)/(8.32), emm (Signorini + Equivalent Mass Matrix (3.54)),
-# two-step ([13], 3.3.3), ipm (8.30)-(8.32), ipm-emm. r = 1e12 Pa/m, g = 5e-4 m (ball.dat).
+# two-step ([13], 3.3.3, persistency on the midpoint velocity: choice C15), two-step-increment
+# (persistency on the increment, the energy-exact reading), ipm (8.30)-(8.32), ipm-emm.
+# r = 1e12 Pa/m, g = 5e-4 m (ball.dat).
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3), GMSH (default gmsh).
 set -euo pipefail
@@ -52,7 +54,7 @@ require_charts
 
 r=1e12
 g=5e-4
-methods=(signorini compliance specific-penalty emm two-step ipm ipm-emm)
+methods=(signorini compliance specific-penalty emm two-step two-step-increment ipm ipm-emm)
 fig85_gaps=(1e-4 5e-4 1e-3 2e-3)
 if [ $quick -eq 1 ]; then
   impact_mesh=deck
@@ -80,6 +82,7 @@ strategy_fields() {
     specific-penalty-emm) echo "strategy=specific-penalty r=$r|emm" ;;
     emm) echo "strategy=signorini|emm" ;;
     two-step) echo "strategy=two-step|consistent" ;;
+    two-step-increment) echo "strategy=two-step persistency=increment|consistent" ;;
     ipm) echo "strategy=ipm r=$r gap=$gap|consistent" ;;
     ipm-emm) echo "strategy=ipm r=$r gap=$gap|emm" ;;
     *) die "unknown method $1" ;;

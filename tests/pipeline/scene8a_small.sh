@@ -3,9 +3,10 @@
 # two-step strategy with persistency on the increment and the specific penalty conserve the
 # discrete energy (8.33) within 1 %, the classical Signorini scheme loses more than either, and
 # IPM + EMM keeps the penetration below its bound g. Two-step with persistency on the midpoint
-# velocity (C15, the default, issue 14) lets a node sink at most k v / 2 = 5 mm. The ball of datafiles/scene8a/ball.dat (its mesh, 128 contact nodes, r, g, k),
-# with the foundation 2 cm below it (impact after 2 steps), marched over 25 steps of k = 1e-3:
-# contact lasts about 10 steps, so every run ends with the ball flying off. Checked on energy.csv.
+# velocity (C15, the default, issue 14) lets a node sink at most k v / 2 = 5 mm. The ball of
+# datafiles/scene8a/ball.dat (its mesh, 128 contact nodes, r, g, k), with the foundation 2 cm
+# below it (impact after 2 steps), marched over 25 steps of k = 1e-3: contact lasts about 10
+# steps, so every run ends with the ball flying off. Checked on energy.csv.
 set -euo pipefail
 bin=${SIG_BIN:?SIG_BIN is not set}
 work=$(mktemp -d)
