@@ -349,17 +349,19 @@ def main():
                ours=", ".join(f"{r['name']}: {r['failure']}" for r in
                               list(impact.values()) + list(friction.values())
                               if not r["converged"]) or "all")
-    worst = max((r["balance_drift"] for r in done), default=math.nan)
+    gonzalez = [r for r in done if not r["method"].endswith("-midpoint")]
+    worst = max((r["balance_drift"] for r in gonzalez), default=math.nan)
     checks.add(f"balance E + interface - friction work - wall work constant to {BALANCE_TOL:g} E0 "
-               "(Prop. 8.1 with Gonzalez's stress; every converged run)",
+               "(Prop. 8.1 with Gonzalez's stress; every converged run of it)",
                not math.isnan(worst) and worst <= BALANCE_TOL, ours=f"worst {worst:.2e}")
     thesis_runs = [r for r in list(impact.values()) + list(friction.values())
                    if r["placement"] == "thesis" and r["impact_step"]]
     if thesis_runs:
         drift = max(r["free_drift"] for r in thesis_runs)
         its = sum(r["free_iterations"] for r in thesis_runs)
+        # Rounding: v = (2 / k)(u_n - u_{n-1}) - v_{n-1} differences positions up to 90 m apart.
         checks.add("free flight (steps before the first contact, t < 9 s) exact: energy constant "
-                   "to 1e-12 E0, no Newton iteration", drift <= 1e-12 and its == 0,
+                   "to rounding (1e-11 E0), no Newton iteration", drift <= 1e-11 and its == 0,
                    ours=f"{thesis_runs[0]['free_steps']} steps, drift {drift:.1e} E0, "
                         f"{its} iterations, first contact at t = "
                         f"{fmt(thesis_runs[0]['impact_time'], '.4f')} s")
