@@ -4,6 +4,7 @@
 // Pi F_m^T that conserves the angular momentum; the plain midpoint stress missing the identity;
 // and the 2D material point against the 2D response it condenses.
 #include "core/error.hpp"
+#include "deformations.hpp"
 #include "material/algorithmic_stress.hpp"
 #include "material/ciarlet_geymonat.hpp"
 #include "material/saint_venant_kirchhoff.hpp"
@@ -33,24 +34,13 @@ std::vector<Law> laws() {
   return out;
 }
 
-std::string describe(const HyperelasticLaw& law) {
-  return law.name() + (law.plane() == PlaneMode::strain ? " plane strain" : " plane stress");
-}
+using test::describe;
+using test::rotation;
 
-Eigen::Matrix2d rotation(double theta) {
-  Eigen::Matrix2d q;
-  q << std::cos(theta), -std::sin(theta), std::sin(theta), std::cos(theta);
-  return q;
-}
-
-/// F = R diag(s1, s2) R' with det F in [0.5, 2] and a stretch ratio up to 1.8: inside the
-/// plane-stress domain of every law above.
+/// det F in [0.5, 2] and a stretch ratio up to 1.8: inside the plane-stress domain of every law
+/// above.
 Eigen::Matrix2d random_gradient(std::mt19937& rng) {
-  std::uniform_real_distribution<double> det(0.5, 2.0), angle(0.0, 2 * std::numbers::pi),
-      ratio(-0.3, 0.3);
-  const double d = det(rng), r = std::exp(ratio(rng));
-  const Eigen::Vector2d s(std::sqrt(d) * r, std::sqrt(d) / r);
-  return rotation(angle(rng)) * s.asDiagonal() * rotation(angle(rng));
+  return test::random_gradient(rng, 0.5, 2.0, 0.3);
 }
 
 /// The end of a large step from F0: a rotation by up to 1 rad and a random change of size 0.5,

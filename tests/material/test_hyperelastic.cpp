@@ -5,6 +5,7 @@
 // its closed forms, and the MATERIAL card / MILI round trip of the new laws.
 #include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "deformations.hpp"
 #include "material/ciarlet_geymonat.hpp"
 #include "material/mili.hpp"
 #include "material/saint_venant_kirchhoff.hpp"
@@ -37,28 +38,16 @@ std::vector<Law> all_laws() {
   return laws;
 }
 
-std::string describe(const HyperelasticLaw& law) {
-  return law.name() + (law.plane() == PlaneMode::strain ? " plane strain" : " plane stress");
-}
-
-Eigen::Matrix2d rotation(double theta) {
-  Eigen::Matrix2d q;
-  q << std::cos(theta), -std::sin(theta), std::sin(theta), std::cos(theta);
-  return q;
-}
+using test::describe;
+using test::rotation;
 
 // F = R(theta1) diag(s1, s2) R(theta2) with det F = s1 s2 uniform in [0.3, 3] and a stretch
 // ratio s1 / s2 up to 2.6.
 std::vector<Eigen::Matrix2d> random_gradients(int count, unsigned seed) {
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> det(0.3, 3.0), angle(0.0, 2 * std::numbers::pi),
-      ratio(-0.5, 0.5);
   std::vector<Eigen::Matrix2d> result;
-  for (int k = 0; k < count; ++k) {
-    const double d = det(rng), r = std::exp(ratio(rng));
-    const Eigen::Vector2d s(std::sqrt(d) * r, std::sqrt(d) / r);
-    result.push_back(rotation(angle(rng)) * s.asDiagonal() * rotation(angle(rng)));
-  }
+  for (int k = 0; k < count; ++k)
+    result.push_back(test::random_gradient(rng, 0.3, 3.0, 0.5));
   return result;
 }
 

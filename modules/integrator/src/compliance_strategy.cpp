@@ -16,12 +16,4 @@ std::vector<ContactLaw> ComplianceStrategy::first_laws(const ContactSetting& set
   return laws;
 }
 
-ContactStepSolution ComplianceStrategy::phases(ContactBulk& bulk, const ContactSetting& first,
-                                               const ContactStepStart&) const {
-  ContactStepSolution s;
-  ContactIterate iterate;
-  phase(bulk, first, iterate, s);
-  return s;
-}
-
 } // namespace sig

@@ -44,6 +44,14 @@ ContactStepSolution ContactStrategy::solve(ContactBulk& bulk, const ContactSetti
   return phases(bulk, first, start);
 }
 
+ContactStepSolution ContactStrategy::phases(ContactBulk& bulk, const ContactSetting& first,
+                                            const ContactStepStart&) const {
+  ContactStepSolution s;
+  ContactIterate iterate;
+  phase(bulk, first, iterate, s);
+  return s;
+}
+
 void ContactStrategy::phase(ContactBulk& bulk, const ContactSetting& setting,
                             ContactIterate& iterate, ContactStepSolution& solution,
                             const std::string& label) const {

@@ -12,12 +12,4 @@ std::vector<ContactLaw> SignoriniStrategy::first_laws(const ContactSetting& sett
   return setting.law;
 }
 
-ContactStepSolution SignoriniStrategy::phases(ContactBulk& bulk, const ContactSetting& first,
-                                              const ContactStepStart&) const {
-  ContactStepSolution s;
-  ContactIterate iterate;
-  phase(bulk, first, iterate, s);
-  return s;
-}
-
 } // namespace sig

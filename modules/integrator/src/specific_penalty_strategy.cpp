@@ -16,12 +16,4 @@ std::vector<ContactLaw> SpecificPenaltyStrategy::first_laws(const ContactSetting
   return secant_compliance(setting, start, p_.r, NormalLaw::compliance);
 }
 
-ContactStepSolution SpecificPenaltyStrategy::phases(ContactBulk& bulk, const ContactSetting& first,
-                                                    const ContactStepStart&) const {
-  ContactStepSolution s;
-  ContactIterate iterate;
-  phase(bulk, first, iterate, s);
-  return s;
-}
-
 } // namespace sig

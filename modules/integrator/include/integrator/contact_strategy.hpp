@@ -100,9 +100,10 @@ protected:
   /// The laws of the first phase.
   virtual std::vector<ContactLaw> first_laws(const ContactSetting& setting,
                                              const ContactStepStart& start) const = 0;
-  /// The phases, from the first one's laws: the solution of the step.
+  /// The phases, from the first one's laws: the solution of the step. By default the one phase
+  /// of the first laws (two-step and IPM add a second).
   virtual ContactStepSolution phases(ContactBulk& bulk, const ContactSetting& first,
-                                     const ContactStepStart& start) const = 0;
+                                     const ContactStepStart& start) const;
   /// One Newton phase of PDAS (gamma) on `bulk` with `setting`, continuing from `iterate`; adds
   /// to `solution` (forces, statuses, laws, iterations).
   void phase(ContactBulk& bulk, const ContactSetting& setting, ContactIterate& iterate,

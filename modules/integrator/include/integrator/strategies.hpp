@@ -14,8 +14,6 @@ public:
 protected:
   std::vector<ContactLaw> first_laws(const ContactSetting& setting,
                                      const ContactStepStart& start) const override;
-  ContactStepSolution phases(ContactBulk& bulk, const ContactSetting& first,
-                             const ContactStepStart& start) const override;
 };
 
 class ComplianceStrategy final : public ContactStrategy {
@@ -26,8 +24,6 @@ public:
 protected:
   std::vector<ContactLaw> first_laws(const ContactSetting& setting,
                                      const ContactStepStart& start) const override;
-  ContactStepSolution phases(ContactBulk& bulk, const ContactSetting& first,
-                             const ContactStepStart& start) const override;
 };
 
 class SpecificPenaltyStrategy final : public ContactStrategy {
@@ -38,8 +34,6 @@ public:
 protected:
   std::vector<ContactLaw> first_laws(const ContactSetting& setting,
                                      const ContactStepStart& start) const override;
-  ContactStepSolution phases(ContactBulk& bulk, const ContactSetting& first,
-                             const ContactStepStart& start) const override;
 };
 
 class TwoStepStrategy final : public ContactStrategy {
