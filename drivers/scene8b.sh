@@ -21,8 +21,8 @@
 #                            Coulomb; specific-penalty and two-step with Coulomb
 #   r/specific-penalty_r<r>  the window, frictionless, r = 1e6 1e7 1e8 1e9 (C13's sensitivity;
 #                            --quick: 1e8 1e9)
-#   sweep/<method>_n<n>_r<r> the window, frictionless, T = 0.5: every strategy for k = 1/n = 1/100,
-#                            1/300, 1/1000 and, for the penalty-type ones, r = 1e8 and 1e9
+#   sweep/<method>_n<n>_r<r> the window, frictionless, T = 0.5: every strategy for k = 1/n = 1/30,
+#                            1/100, 1/300, 1/1000 and, for the penalty-type ones, r = 1e8 and 1e9
 #                            (stability map and speed against accuracy); --quick: fewer
 #   fig86                    the scene's deck (IPM + EMM, mu1) with a state every 10 steps and
 #                            VTK: Fig 8.6 and the .pvd of the impact for ParaView
@@ -87,7 +87,7 @@ else
   friction_runs=(ipm-emm:mu1 ipm-emm:mu2 ipm-emm:coulomb specific-penalty:coulomb
     two-step:coulomb)
   r_values=(1e6 1e7 1e8 1e9)
-  sweep_n=(100 300 1000)
+  sweep_n=(30 100 300 1000)
   sweep_methods=(signorini emm specific-penalty two-step ipm ipm-emm)
   sweep_r=(1e8 1e9)
 fi
