@@ -7,11 +7,6 @@
 
 namespace sig {
 
-namespace {
-
-/// The predictor already solves the step: the bulk is in equilibrium there and no law gives a
-/// force (every node off the obstacle, no secant force from a penetration at the start). Free
-/// flight then costs no Newton iteration, and its states stay the scheme's exact ones.
 bool predictor_solves_step(const ContactBulk& bulk, const ContactSetting& setting, double eps) {
   const Eigen::VectorXd q_n = bulk.penetration(), q_t = bulk.slip();
   for (int p = 0; p < setting.size(); ++p) {
@@ -21,8 +16,6 @@ bool predictor_solves_step(const ContactBulk& bulk, const ContactSetting& settin
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(setting.size());
   return bulk.equilibrium_residual(none, none) <= eps * bulk.force_scale();
 }
-
-} // namespace
 
 ContactStepSolution ContactStrategy::solve(ContactBulk& bulk, const ContactSetting& setting,
                                            const ContactStepStart& start) const {

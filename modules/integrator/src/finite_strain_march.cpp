@@ -30,12 +30,8 @@ void contact_state(const FiniteStrainProblem& problem, const Eigen::VectorXd& u,
 /// solves it.
 ContactStepSolution bulk_step(FiniteStrainBulk& bulk, const HyperelasticMarchOptions& options) {
   ContactStepSolution s;
-  s.normal_force = s.tangential_force = Eigen::VectorXd::Zero(0);
-  const Eigen::VectorXd none(0);
-  if (bulk.equilibrium_residual(none, none) <= options.eps * bulk.force_scale()) {
-    s.converged = true;
-    return s;
-  }
+  s.converged = predictor_solves_step(bulk, ContactSetting{}, options.eps);
+  if (s.converged) return s;
   ContactSolverParameters parameters;
   parameters.eps = options.eps;
   parameters.max_iterations = options.max_iterations;

@@ -117,6 +117,12 @@ protected:
 std::unique_ptr<ContactStrategy> make_contact_strategy(const std::string& name,
                                                        const ContactStrategyParameters& p);
 
+/// The bulk's iterate (the step's predictor) already solves the step: the bulk is in
+/// equilibrium there to eps and no law gives a force (every node off the obstacle, no secant
+/// force from a penetration at the start). Free flight then costs no Newton iteration, and its
+/// states stay the scheme's exact ones.
+bool predictor_solves_step(const ContactBulk& bulk, const ContactSetting& setting, double eps);
+
 /// The energy of the foundation, sum_i w_i compliance_energy(law_i, q_n,i).
 double interface_energy(const std::vector<ContactLaw>& laws, const Eigen::VectorXd& weight,
                         const Eigen::VectorXd& penetration);
