@@ -149,7 +149,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
     frames.from_frames(u, contact.normal);
     return reduced.expand(u);
   };
-  CondensedConvexification convexification{loop.options, whole_body, {}};
+  CondensedConvexification convexification{loop.options, whole_body, {}, {}};
   if (loop.mesh != nullptr)
     convexification.norm = [&](const Eigen::VectorXd& u) { return strain_norm(*loop.mesh, u); };
   const CondensedSolution condensed = solve_condensed_contact(
