@@ -53,10 +53,14 @@ int main(int argc, char** argv) {
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
                 "OUTDIR/case.cont (sig-contact; with a CONTACT card)"},
-      .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures)",
+      .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures; quasistatic: "
+                 "per step the contact velocities, forces and statuses)",
                  "OUTDIR/energy.csv (one row per step: energies, contact work, penetration, active "
-                 "nodes, Newton iterations)"},
-      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "MATERIAL"}};
+                 "nodes, Newton iterations)",
+                 "OUTDIR/steps.csv (quasistatic: one row per step: Newton iterations, status "
+                 "counts, largest velocity, normal displacement and pressure)"},
+      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "CONVEXIFICATION",
+                "LOADSTEPS", "MATERIAL"}};
   return sig::run_stage("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
