@@ -31,11 +31,7 @@ TEST_P(SchurTest, MatchesDenseFormulaOnSpdMatrix) {
   SchurComplement schur(K, c, GetParam());
   const Eigen::MatrixXd Kd(K);
   auto block = [&](const std::vector<int>& r, const std::vector<int>& s) {
-    Eigen::MatrixXd B(r.size(), s.size());
-    for (size_t p = 0; p < r.size(); ++p)
-      for (size_t q = 0; q < s.size(); ++q)
-        B(p, q) = Kd(r[p], s[q]);
-    return B;
+    return test::dense_block(Kd, r, s);
   };
   const Eigen::MatrixXd K_ii = block(i_dofs, i_dofs), K_ic = block(i_dofs, c);
   const Eigen::LLT<Eigen::MatrixXd> llt(K_ii);
@@ -178,11 +174,7 @@ TEST(Schur, CholmodSplitMatchesTheDenseFormulas) {
   const std::vector<int> i_dofs = test::complement(c, n);
   const Eigen::MatrixXd Kd(K);
   auto block = [&](const std::vector<int>& r, const std::vector<int>& s) {
-    Eigen::MatrixXd B(r.size(), s.size());
-    for (size_t p = 0; p < r.size(); ++p)
-      for (size_t q = 0; q < s.size(); ++q)
-        B(p, q) = Kd(r[p], s[q]);
-    return B;
+    return test::dense_block(Kd, r, s);
   };
   const Eigen::MatrixXd K_ii = block(i_dofs, i_dofs), K_ic = block(i_dofs, c);
   const Eigen::LLT<Eigen::MatrixXd> llt(K_ii);

@@ -1,6 +1,7 @@
 // The split CHOLMOD solve (cholmod_split.hpp).
 #include "solver/cholmod_split.hpp"
 
+#include "cholmod_view.hpp"
 #include "core/error.hpp"
 
 #include <cholmod.h>
@@ -40,28 +41,6 @@ struct CholmodSplitSolver::State {
   }
 };
 
-namespace {
-
-/// A lower-triangle view of a compressed matrix (CHOLMOD reads, never writes, through it).
-cholmod_sparse lower_view(const Eigen::SparseMatrix<double>& A) {
-  cholmod_sparse s{};
-  s.nrow = static_cast<size_t>(A.rows());
-  s.ncol = static_cast<size_t>(A.cols());
-  s.nzmax = static_cast<size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = -1;
-  s.itype = CHOLMOD_INT;
-  s.xtype = CHOLMOD_REAL;
-  s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 1;
-  s.packed = 1;
-  return s;
-}
-
-} // namespace
-
 CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
                                        const std::vector<int>& last)
     : state_(std::make_unique<State>()) {
@@ -98,7 +77,7 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   c.nmethods = 1;
   c.method[0].ordering = CHOLMOD_METIS;
   c.postorder = 1;
-  cholmod_sparse view = lower_view(K_ii);
+  cholmod_sparse view = view_lower(K_ii);
   cholmod_factor* symbolic = cholmod_analyze(&view, &c);
   if (!symbolic) {
     c.method[0].ordering = CHOLMOD_AMD;
@@ -116,7 +95,7 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   c.method[0].ordering = CHOLMOD_GIVEN;
   c.postorder = 0;
   c.supernodal = CHOLMOD_SUPERNODAL;
-  view = lower_view(K);
+  view = view_lower(K);
   s.L = cholmod_analyze_p(&view, s.perm.data(), nullptr, 0, &c);
   SIG_VERIFY(s.L, "CHOLMOD split: analysis failed: status " << c.status);
   const int* used = static_cast<const int*>(s.L->Perm);
