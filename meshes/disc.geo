@@ -1,11 +1,13 @@
 // Disc of centre (cx, cy) and radius R in four quarter arcs (SCENES.md, scenes 4 and 8a).
 //   gmsh disc.geo -2 -format msh41 -setnumber cx 10 -setnumber cy 10 -setnumber R 10
 //                 -setnumber N 512 -setnumber grading 0
-// Each quarter carries N/4 uniform segments. Physical curves: 1 left quarter
-// (x1 <= cx - R/sqrt2), 2 top, 3 bottom (the contact side), 4 right.
-// Mesh size: h = 2 pi R / N on the circle, h + grading * d at distance d from the bottom
-// quarter, capped at R/4 (grading = 0 gives a uniform mesh).
-DefineConstant[ cx = 0, cy = 0, R = 1, N = 16, grading = 0 ];
+// The bottom quarter carries N/4 uniform segments; so does each other quarter (graded_arcs = 0),
+// or the size law below sets its segments (graded_arcs = 1: the mesh fine only near the
+// bottom). Physical curves: 1 left quarter (x1 <= cx - R/sqrt2), 2 top, 3 bottom (the contact
+// side), 4 right.
+// Mesh size: h = 2 pi R / N on the bottom quarter, h + grading * d at distance d from it, capped
+// at R/4 (grading = 0 gives a uniform mesh).
+DefineConstant[ cx = 0, cy = 0, R = 1, N = 16, grading = 0, graded_arcs = 0 ];
 
 General.NumThreads = 1; // one thread: the same input gives the same mesh
 Mesh.Algorithm = 6;     // frontal-Delaunay
@@ -28,7 +30,11 @@ Circle(3) = {3, 1, 4}; // left
 Circle(4) = {4, 1, 5}; // bottom
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
-Transfinite Curve {1, 2, 3, 4} = N / 4 + 1;
+If (graded_arcs == 0)
+  Transfinite Curve {1, 2, 3, 4} = N / 4 + 1;
+Else
+  Transfinite Curve {4} = N / 4 + 1;
+EndIf
 
 Field[1] = Distance;
 Field[1].CurvesList = {4};

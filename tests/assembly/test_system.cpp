@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 
@@ -70,6 +71,68 @@ TEST(Loads, TractionPressureAndBodyForceResultants) {
       (resultant(assemble(mesh, materials + "BODYFORCE f=1,0\n").f) - Eigen::Vector2d(3.0, 0.0))
           .norm(),
       1e-13);
+}
+
+// ramp=t1 puts g / t1 into the rate and nothing into the load at t = 0: f(t) = f + t rate.
+TEST(Loads, RampedLoadsGoToTheRate) {
+  const Mesh mesh = test::square_mesh(4, 3, 2.0, 0.0, 2);
+  const std::string material = "MATERIAL E=1 nu=0.3\n";
+  const LinearSystem constant = assemble(mesh, material + "TRACTION ref=1 f=2,-1\n"
+                                                          "PRESSURE ref=2 p=3\n"
+                                                          "BODYFORCE f=0,-4\n");
+  const LinearSystem ramped = assemble(mesh, material + "TRACTION ref=1 f=2,-1 ramp=0.5\n"
+                                                        "PRESSURE ref=2 p=3 ramp=2\n"
+                                                        "BODYFORCE f=0,-4\n");
+  const LinearSystem traction = assemble(mesh, material + "TRACTION ref=1 f=2,-1\n");
+  const LinearSystem pressure = assemble(mesh, material + "PRESSURE ref=2 p=3\n");
+  const LinearSystem body = assemble(mesh, material + "BODYFORCE f=0,-4\n");
+  EXPECT_TRUE(constant.time_loads.empty());
+  ASSERT_FALSE(ramped.time_loads.empty());
+  EXPECT_LT((ramped.f - body.f).norm(), 1e-14); // f is the load at t = 0
+  const Eigen::VectorXd rate = traction.f / 0.5 + pressure.f / 2;
+  EXPECT_LT((ramped.time_loads.rate - rate).norm(), 1e-13);
+  EXPECT_LT((ramped.load_at(0.75) - (body.f + 0.75 * rate)).norm(), 1e-13);
+  EXPECT_LT((constant.f - (traction.f + pressure.f + body.f)).norm(), 1e-13);
+  for (const char* bad :
+       {"TRACTION ref=1 f=2,-1 ramp=0", "PRESSURE ref=2 p=3 ramp=-1", "BODYFORCE f=0,-4 ramp=0"}) {
+    const InputError e = input_error([&] { assemble(mesh, material + bad + "\n"); });
+    EXPECT_EQ(e.line(), 2) << bad;
+    EXPECT_EQ(e.field(), "ramp") << bad;
+  }
+  const Datafile deck =
+      Datafile::parse(material + "TRACTION ref=1 f=1,0\nBODYFORCE f=0,-1 ramp=1\n", "case.dat");
+  ASSERT_NE(ramped_load_card(deck), nullptr);
+  EXPECT_EQ(ramped_load_card(deck)->line, 3);
+  EXPECT_EQ(ramped_load_card(Datafile::parse(material, "case.dat")), nullptr);
+}
+
+// The viscosity A (eta1, eta2) is Hooke's operator with the "Lame" constants (eta1, eta2 / 2): its
+// matrix equals the stiffness of the Hooke law with those constants; a memory term's matrix is its
+// tensor's stiffness, terms of one beta summed, on its sub-domains only.
+TEST(ViscoelasticSystem, ViscosityAndMemoryMatrices) {
+  const Mesh mesh = test::square_mesh(3, 3, 1.0, 0.2, 2);
+  const double E = 100, nu = 0.3;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  std::ostringstream deck;
+  deck.precision(17);
+  deck << "MATERIAL law=kelvin-voigt E=7 nu=0.2 eta1=" << lambda << " eta2=" << 2 * mu << "\n"
+       << "MEMORY region=2 E=20 nu=0.3 beta=10\nMEMORY region=2 E=5 nu=0.3 beta=10\n"
+       << "MEMORY E=3 nu=0.1 beta=2\n";
+  const LinearSystem kv = assemble(mesh, deck.str());
+  const LinearSystem hooke = assemble(mesh, "MATERIAL E=100 nu=0.3\n");
+  EXPECT_LT((kv.V - hooke.K).norm(), 1e-12 * hooke.K.norm());
+  EXPECT_LT((kv.K - assemble(mesh, "MATERIAL E=7 nu=0.2\n").K).norm(), 1e-12 * kv.K.norm());
+  // In the order the table meets them: sub-domain 1 has only beta = 2.
+  ASSERT_EQ(kv.memory.size(), 2u);
+  EXPECT_EQ(kv.memory[0].beta, 2);
+  EXPECT_EQ(kv.memory[1].beta, 10);
+  const LinearSystem right = assemble(mesh, "MATERIAL region=1 E=1e-300 nu=0.3\n"
+                                            "MATERIAL region=2 E=25 nu=0.3\n");
+  EXPECT_LT((kv.memory[1].K - right.K).norm(), 1e-12 * right.K.norm());
+  EXPECT_LT((kv.memory[0].K - assemble(mesh, "MATERIAL E=3 nu=0.1\n").K).norm(), 1e-12);
+  const LinearSystem plain = assemble(mesh, "MATERIAL E=1 nu=0.3\n");
+  EXPECT_EQ(plain.V.size(), 0);
+  EXPECT_TRUE(plain.memory.empty());
 }
 
 TEST(Loads, OutwardNormalDoesNotDependOnTheEdgeDirection) {
@@ -152,6 +215,33 @@ TEST(Tae, RoundTrip) {
   EXPECT_EQ(back.f, s.f);
   EXPECT_EQ(back.dirichlet_dofs, s.dirichlet_dofs);
   EXPECT_EQ(back.dirichlet_values, s.dirichlet_values);
+  EXPECT_EQ(back.V.size(), 0);
+  EXPECT_TRUE(back.memory.empty());
+  EXPECT_TRUE(back.time_loads.empty());
+}
+
+TEST(Tae, ViscoelasticRoundTrip) {
+  const Mesh mesh = test::square_mesh(3, 2, 1.0, 0.2, 2);
+  const LinearSystem s =
+      assemble(mesh, "MATERIAL law=kelvin-voigt E=2 nu=0.3 eta1=0.25 eta2=0.5\n"
+                     "MEMORY region=1 E=1 nu=0.3 beta=10\nMEMORY E=3 nu=0.2 beta=0.5\n"
+                     "TRACTION ref=3 f=0,-10 ramp=1\nTRACTION ref=2 f=1,0\n"
+                     "DIRICHLET ref=4 ux=0 uy=0\n");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("sig_test_tae_kv_" + std::to_string(::getpid()) + ".tae");
+  write_tae(path, s, "viscoelastic round trip");
+  const LinearSystem back = read_tae(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ((back.V - s.V).norm(), 0.0);
+  ASSERT_EQ(back.memory.size(), 2u);
+  for (std::size_t j = 0; j < 2; ++j) {
+    EXPECT_EQ(back.memory[j].beta, s.memory[j].beta);
+    EXPECT_EQ((back.memory[j].K - s.memory[j].K).norm(), 0.0);
+  }
+  EXPECT_EQ(back.time_loads.rate, s.time_loads.rate);
+  EXPECT_EQ(back.f, s.f);
+  EXPECT_EQ(back.load_at(0.5), s.load_at(0.5));
+  EXPECT_GT(s.time_loads.rate.norm(), 0);
 }
 
 TEST(Tae, NoMassWithoutDensity) {

@@ -116,6 +116,31 @@ TEST(Disc, QuartersAndArea) {
   EXPECT_NEAR(area(mesh), N * 0.5 * R * R * std::sin(2 * std::numbers::pi / N), 1e-10);
 }
 
+TEST(Disc, GradedArcsAreFineOnlyNearTheBottom) {
+  if (!testing::have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  // Scene 4: 128 uniform segments on Gamma3 (the bottom quarter), the rest coarsening away.
+  const Eigen::Vector2d c(10, 10);
+  const double R = 10;
+  const int N = 512;
+  const Mesh uniform = disc(c, R, N, 0.1), graded = disc(c, R, N, 0.1, true);
+  EXPECT_EQ(graded.edges_with_ref(3).size(), static_cast<std::size_t>(N / 4));
+  for (const auto& e : graded.edges_with_ref(3)) // uniform chords of 2 pi / N
+    EXPECT_NEAR((graded.nodes[e.a] - graded.nodes[e.b]).norm(),
+                2 * R * std::sin(std::numbers::pi / N), 1e-12);
+  for (int ref : {1, 2, 4}) {
+    EXPECT_LT(graded.edges_with_ref(ref).size(), static_cast<std::size_t>(N / 8)) << ref;
+    for (int i : graded.nodes_with_ref(ref))
+      EXPECT_NEAR((graded.nodes[i] - c).norm(), R, 1e-12) << ref;
+  }
+  // The top quarter, farthest from Gamma3, is the coarsest.
+  EXPECT_LT(graded.edges_with_ref(2).size(), graded.edges_with_ref(1).size());
+  EXPECT_EQ(graded.edges_with_ref(1).size(), graded.edges_with_ref(4).size());
+  EXPECT_LT(graded.num_triangles(), uniform.num_triangles());
+  EXPECT_GE(find_node(graded, {10, 0}), 0) << "lowest node must touch x2 = 0";
+  expect_domain_on_the_left(graded);
+  EXPECT_NEAR(area(graded), std::numbers::pi * R * R, 2 * std::numbers::pi * R * R / 64);
+}
+
 TEST(Ring, ThesisCountsAtN128) {
   const Mesh mesh = ring({0, 10}, 9, 10, 128);
   EXPECT_EQ(mesh.num_nodes(), 896); // 1792 dofs

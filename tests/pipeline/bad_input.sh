@@ -64,6 +64,9 @@ expect solve     "$nm a=1 b=0.5 alpha=1\nCONVEXIFICATION relaxation=2" "bad.dat:
 expect solve     '$a CONVEXIFICATION eps=1e-5'                 "bad.dat:" "CONVEXIFICATION" "nonmonotone"
 # The laws in velocity belong to the quasistatic march (issue 12), not to a static solve.
 expect solve     's/law=signorini gap=0/law=damped cn=10/'    "bad.dat:" "'law'" "velocity"
+expect solve     's/^TRACTION ref=2 .*/& ramp=1/'             "bad.dat:" "'ramp'" "no time"
+expect material  's/^MATERIAL .*/MATERIAL law=kelvin-voigt E=150 nu=0.3 eta1=-1/' "bad.dat:" "'eta1'" ">= 0"
+expect material  '$a MEMORY E=1 nu=0.3 beta=1'                 "bad.dat:" "'region'" "kelvin-voigt"
 # Scene 6 (issue 13): the moving load's psi > 0, the truncation c3 > 0, and friction of the slip
 # rate only in a march in time.
 expect assemble  '$a MOVINGLOAD ref=2 F=10 psi=0 c=2'        "bad.dat:" "'psi'" "> 0"

@@ -10,9 +10,11 @@
 #include "mesh/topology.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <sstream>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace sig {
@@ -108,25 +110,43 @@ Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge) 
   return outward_normal(mesh, EdgeOwners(mesh), edge);
 }
 
+const Card* ramped_load_card(const Datafile& datafile) {
+  for (const char* keyword : {"TRACTION", "PRESSURE", "BODYFORCE"})
+    for (const Card* card : datafile.all(keyword))
+      if (card->has("ramp")) return card;
+  return nullptr;
+}
+
 Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
                                const Datafile& datafile, TimeLoads* time_loads) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  Eigen::VectorXd rate = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  // A ramped card adds g / ramp to the rate (nothing at t = 0), a constant one g to f.
+  const auto target = [&](const Card& card) -> std::pair<Eigen::VectorXd&, double> {
+    if (!card.has("ramp")) return {f, 1.0};
+    const double ramp = card.real("ramp");
+    if (!(ramp > 0) || !std::isfinite(ramp))
+      card.fail("ramp", "the time at which the ramped load reaches its value must be > 0");
+    return {rate, 1.0 / ramp};
+  };
   const auto traction_cards = datafile.all("TRACTION");
   const auto pressure_cards = datafile.all("PRESSURE");
   const auto moving_cards = datafile.all("MOVINGLOAD");
   if (!traction_cards.empty() || !pressure_cards.empty() || !moving_cards.empty()) {
     const EdgeOwners owners(mesh);
     for (const Card* card : traction_cards) {
-      const Eigen::Vector2d traction = card_vector(*card, "f");
+      const auto [into, scale] = target(*card);
+      const Eigen::Vector2d traction = scale * card_vector(*card, "f");
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
-          add_edge_load(mesh, table, owners, edge, traction, f);
+          add_edge_load(mesh, table, owners, edge, traction, into);
     }
     for (const Card* card : pressure_cards) {
-      const double p = card->real("p");
+      const auto [into, scale] = target(*card);
+      const double p = scale * card->real("p");
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
-          add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), f);
+          add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), into);
     }
     for (const Card* card : moving_cards) {
       MovingLoad load = moving_load(*card, mesh, table, owners);
@@ -135,16 +155,18 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
     }
   }
   for (const Card* card : datafile.all("BODYFORCE")) {
-    const Eigen::Vector2d force = card_vector(*card, "f");
+    const auto [into, scale] = target(*card);
+    const Eigen::Vector2d force = scale * card_vector(*card, "f");
     const std::vector<int> regions = card_regions(*card, mesh);
     for (int t = 0; t < mesh.num_triangles(); ++t) {
       if (std::find(regions.begin(), regions.end(), mesh.subdomain[t]) == regions.end()) continue;
       const Vector6d fe = p1_body_load(p1_area(triangle_vertices(mesh, t)), force,
                                        table.of(mesh.subdomain[t]).thickness);
       for (int i = 0; i < 3; ++i)
-        f.segment<2>(2 * mesh.triangles[t][i]) += fe.segment<2>(2 * i);
+        into.segment<2>(2 * mesh.triangles[t][i]) += fe.segment<2>(2 * i);
     }
   }
+  if (time_loads != nullptr && (rate.array() != 0).any()) time_loads->rate = std::move(rate);
   return f;
 }
 

@@ -8,19 +8,68 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 
+#include <algorithm>
+#include <functional>
 #include <map>
+#include <optional>
 
 namespace sig {
 
-Eigen::SparseMatrix<double> assemble_stiffness(const Mesh& mesh, const MaterialTable& table,
-                                               const SparsityPattern& pattern) {
+namespace {
+
+/// The P1 stiffness of the operator `tensor` gives each sub-domain (sigma = D eps), the
+/// sub-domains where it gives none left out.
+Eigen::SparseMatrix<double> assemble_operator(
+    const Mesh& mesh, const MaterialTable& table, const SparsityPattern& pattern,
+    const std::function<std::optional<Eigen::Matrix3d>(const SubdomainMaterial&)>& tensor) {
   Eigen::SparseMatrix<double> K = pattern.zero_matrix();
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
-    pattern.add(K, t,
-                p1_stiffness(triangle_vertices(mesh, t), material.hooke.D(), material.thickness));
+    if (const std::optional<Eigen::Matrix3d> D = tensor(material))
+      pattern.add(K, t, p1_stiffness(triangle_vertices(mesh, t), *D, material.thickness));
   }
   return K;
+}
+
+} // namespace
+
+Eigen::SparseMatrix<double> assemble_stiffness(const Mesh& mesh, const MaterialTable& table,
+                                               const SparsityPattern& pattern) {
+  return assemble_operator(mesh, table, pattern,
+                           [](const SubdomainMaterial& m) { return m.hooke.D(); });
+}
+
+Eigen::SparseMatrix<double> assemble_viscosity(const Mesh& mesh, const MaterialTable& table,
+                                               const SparsityPattern& pattern) {
+  return assemble_operator(mesh, table, pattern,
+                           [](const SubdomainMaterial& m) -> std::optional<Eigen::Matrix3d> {
+                             if (!m.kelvin_voigt) return std::nullopt;
+                             return m.kelvin_voigt->viscosity.D();
+                           });
+}
+
+std::vector<MemoryStiffness> assemble_memory(const Mesh& mesh, const MaterialTable& table,
+                                             const SparsityPattern& pattern) {
+  // One matrix per distinct decay rate: a step then updates one history per rate.
+  std::vector<double> rates;
+  for (const auto& [subdomain, term] : table.memory_terms())
+    if (std::find(rates.begin(), rates.end(), term.beta) == rates.end()) rates.push_back(term.beta);
+  std::vector<MemoryStiffness> memory;
+  for (double beta : rates) {
+    const auto tensor = [beta](const SubdomainMaterial& m) -> std::optional<Eigen::Matrix3d> {
+      if (!m.kelvin_voigt) return std::nullopt;
+      Eigen::Matrix3d D = Eigen::Matrix3d::Zero();
+      bool any = false;
+      for (const MemoryTerm& term : m.kelvin_voigt->memory)
+        if (term.beta == beta) {
+          D += term.modulus.D();
+          any = true;
+        }
+      return any ? std::optional<Eigen::Matrix3d>(D) : std::nullopt;
+    };
+    memory.push_back({beta, assemble_operator(mesh, table, pattern, tensor)});
+  }
+  return memory;
 }
 
 Eigen::SparseMatrix<double> assemble_mass(const Mesh& mesh, const MaterialTable& table,
@@ -83,6 +132,10 @@ LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
   system.K = assemble_stiffness(mesh, table, pattern);
   if (table.has_mass()) system.M = assemble_mass(mesh, table, pattern);
   system.M_lumped = assemble_lumped_mass(mesh, table);
+  if (table.has_viscosity()) {
+    system.V = assemble_viscosity(mesh, table, pattern);
+    system.memory = assemble_memory(mesh, table, pattern);
+  }
   system.f = assemble_loads(mesh, table, datafile, &system.time_loads);
   dirichlet_from_cards(mesh, datafile, system.dirichlet_dofs, system.dirichlet_values);
   system.assemble_seconds = clock.seconds();

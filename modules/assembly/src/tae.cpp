@@ -84,9 +84,16 @@ void put_moving_loads(Ds& ds, const TimeLoads& loads) {
   ds.put("moving_weight", weight);
 }
 
-// The moving loads of a TAE, checked so that a corrupt file is an error naming the array.
-TimeLoads get_moving_loads(const std::filesystem::path& path, const Ds& ds, std::int64_t ndof) {
+// The ramped and moving loads of a TAE, checked so that a corrupt file is an error naming the
+// array.
+TimeLoads get_time_loads(const std::filesystem::path& path, const Ds& ds, std::int64_t ndof) {
   TimeLoads loads;
+  if (ds.has("f_rate")) {
+    const auto rate = ds.reals("f_rate");
+    SIG_VERIFY(static_cast<std::int64_t>(rate.size()) == ndof,
+               path.string() << ": array 'f_rate' must have ndof = " << ndof << " values");
+    loads.rate = Eigen::Map<const Eigen::VectorXd>(rate.data(), ndof);
+  }
   if (!ds.has("moving_load")) return loads;
   const auto parameters = ds.reals("moving_load");
   const auto count = ds.ints("moving_points");
@@ -138,6 +145,26 @@ void write_tae(const std::filesystem::path& path, const LinearSystem& system,
     SIG_VERIFY(same_pattern(K, M), "write_tae: M does not share the pattern of K");
     ds.put("M_val", values_of(M));
   }
+  if (system.V.size() > 0) {
+    const RowMatrix V = system.V;
+    SIG_VERIFY(same_pattern(K, V), "write_tae: V does not share the pattern of K");
+    ds.put("V_val", values_of(V));
+  }
+  if (!system.memory.empty()) {
+    std::vector<double> beta, values;
+    for (const MemoryStiffness& term : system.memory) {
+      const RowMatrix Km = term.K;
+      SIG_VERIFY(same_pattern(K, Km), "write_tae: a memory matrix does not share the pattern of K");
+      beta.push_back(term.beta);
+      const std::vector<double> v = values_of(Km);
+      values.insert(values.end(), v.begin(), v.end());
+    }
+    ds.put("memory_beta", beta);
+    ds.put("memory_val", values,
+           {static_cast<std::int64_t>(beta.size()), static_cast<std::int64_t>(K.nonZeros())});
+  }
+  const Eigen::VectorXd& rate = system.time_loads.rate;
+  if (rate.size() > 0) ds.put("f_rate", std::span<const double>(rate.data(), rate.size()));
   ds.put("M_lumped", std::span<const double>(system.M_lumped.data(), system.M_lumped.size()));
   ds.put("f", std::span<const double>(system.f.data(), system.f.size()));
   ds.put("dirichlet_dof", one_based(system.dirichlet_dofs.data(),
@@ -158,6 +185,21 @@ LinearSystem read_tae(const std::filesystem::path& path) {
   LinearSystem system;
   system.K = from_csr(path, n, rowptr, col, ds.reals("K_val"), "K_val");
   if (ds.has("M_val")) system.M = from_csr(path, n, rowptr, col, ds.reals("M_val"), "M_val");
+  if (ds.has("V_val")) system.V = from_csr(path, n, rowptr, col, ds.reals("V_val"), "V_val");
+  if (ds.has("memory_beta")) {
+    const auto beta = ds.reals("memory_beta");
+    const auto values = ds.reals("memory_val");
+    const std::size_t nnz = col.size();
+    SIG_VERIFY(values.size() == beta.size() * nnz,
+               path.string() << ": array 'memory_val' holds " << values.size() << " values for "
+                             << beta.size() << " terms of " << nnz << " entries");
+    for (std::size_t j = 0; j < beta.size(); ++j) {
+      SIG_VERIFY(beta[j] > 0, path.string() << ": array 'memory_beta' entry " << j + 1 << " = "
+                                            << beta[j] << " is not > 0");
+      const std::vector<double> v(values.begin() + j * nnz, values.begin() + (j + 1) * nnz);
+      system.memory.push_back({beta[j], from_csr(path, n, rowptr, col, v, "memory_val")});
+    }
+  }
   const auto lumped = ds.reals("M_lumped");
   const auto f = ds.reals("f");
   SIG_VERIFY(static_cast<std::int64_t>(lumped.size()) == n &&
@@ -177,7 +219,7 @@ LinearSystem read_tae(const std::filesystem::path& path) {
   }
   system.dirichlet_values = Eigen::Map<const Eigen::VectorXd>(values.data(), values.size());
   if (ds.has("time_assemble")) system.assemble_seconds = ds.scalar("time_assemble");
-  system.time_loads = get_moving_loads(path, ds, n);
+  system.time_loads = get_time_loads(path, ds, n);
   return system;
 }
 

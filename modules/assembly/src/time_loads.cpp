@@ -48,7 +48,9 @@ void MovingLoad::add_edge(int a, int b, const Eigen::Vector2d& xa, const Eigen::
 }
 
 Eigen::VectorXd TimeLoads::change(double t, int dofs) const {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs);
+  SIG_VERIFY(rate.size() == 0 || rate.size() == dofs,
+             "time loads: a rate of " << rate.size() << " values for " << dofs << " dofs");
+  Eigen::VectorXd f = rate.size() > 0 ? Eigen::VectorXd(t * rate) : Eigen::VectorXd::Zero(dofs);
   for (const MovingLoad& load : moving)
     for (const MovingLoadPoint& p : load.points) {
       const double dg = load.magnitude(p.x1, t) - load.magnitude(p.x1, 0.0);

@@ -32,6 +32,10 @@ const std::vector<CardSpec>& card_schema() {
            {"grading",
             "growth of the mesh size per unit distance from the contact boundary (0: uniform)",
             "0"},
+           {"arcs",
+            "disc: uniform (N/4 segments on every quarter) | graded (N/4 on the bottom quarter, "
+            "the others sized by the grading: fine only near contact)",
+            "uniform"},
            {"gamma1_above",
             "vertices with y above this value get the Gamma1 (Dirichlet) reference"},
            {"gamma3_below", "vertices with y below this value get the Gamma3 (contact) reference"},
@@ -41,15 +45,30 @@ const std::vector<CardSpec>& card_schema() {
        "constitutive law of one sub-domain",
        {
            {"region", "sub-domain number (1-based, as in the mesh file)"},
-           {"law", "hooke | svk | ciarlet-geymonat", "hooke"},
-           {"E", "Young's modulus (hooke, svk)"},
-           {"nu", "Poisson's ratio, -1 < nu < 0.5 (hooke, svk)"},
+           {"law",
+            "hooke | svk | ciarlet-geymonat | kelvin-voigt (5.1): viscosity eta1, eta2 plus "
+            "Hooke's E, nu, plus the MEMORY cards' kernel",
+            "hooke"},
+           {"E", "Young's modulus (hooke, svk, kelvin-voigt)"},
+           {"nu", "Poisson's ratio, -1 < nu < 0.5 (hooke, svk, kelvin-voigt)"},
+           {"eta1", "kelvin-voigt: viscosity coefficient of tr(eps') I (thesis mu1), >= 0", "0"},
+           {"eta2", "kelvin-voigt: viscosity coefficient of eps' (thesis mu2), >= 0", "0"},
            {"c1", "ciarlet-geymonat: coefficient of I1 - 3, > 0"},
            {"c2", "ciarlet-geymonat: coefficient of I2 - 3, >= 0"},
            {"a", "ciarlet-geymonat: coefficient of I3 - 1, >= 0"},
            {"plane", "strain | stress (2D reduction: F33 = 1, or F33 from sigma33 = 0)", "strain"},
            {"thickness", "out-of-plane thickness, > 0", "1"},
            {"rho", "mass density, >= 0 (dynamic problems need rho > 0)", "0"},
+       }},
+      {"MEMORY",
+       true,
+       "one exponential term exp(-beta t) KK of the memory kernel K of a kelvin-voigt law (5.1), "
+       "integrated by the trapezoidal rule (5.60)-(5.61); none: K = 0",
+       {
+           {"region", "sub-domain numbers (law=kelvin-voigt); default every sub-domain"},
+           {"E", "Young's modulus of the isotropic tensor KK, > 0"},
+           {"nu", "Poisson's ratio of KK, -1 < nu < 0.5"},
+           {"beta", "decay rate of exp(-beta t), > 0 (1 / time)"},
        }},
       {"DIRICHLET",
        true,
@@ -65,6 +84,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference number"},
            {"f", "traction vector: fx,fy"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"PRESSURE",
        true,
@@ -72,6 +93,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"ref", "boundary reference number"},
            {"p", "pressure"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"BODYFORCE",
        true,
@@ -79,6 +102,8 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"region", "sub-domain number"},
            {"f", "force per unit volume: fx,fy"},
+           {"ramp", "time t1 > 0 of a load growing linearly: value x t / t1 (TIME decks); default "
+                    "constant"},
        }},
       {"MOVINGLOAD",
        true,
@@ -144,14 +169,18 @@ const std::vector<CardSpec>& card_schema() {
                    "the convexification loop (4.110)-(4.112)"},
            {"mu", "coulomb: friction coefficient, >= 0"},
            {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
-           {"bound", "coulomb, nonmonotone: normal (default): mu times the whole normal "
-                     "pressure N | compliance: mu times the compliance pressure p(min(q_n, g)) "
-                     "only, (4.6)/(5.6): on the wall Tresca's mu p(g)"},
+           {"bound",
+            "coulomb, nonmonotone: normal: mu times the whole normal pressure N | compliance: "
+            "mu times the compliance pressure p(min(q_n, g)) only, (4.6)/(5.6): on the wall "
+            "Tresca's mu p(g)",
+            "normal"},
            {"a", "nonmonotone: mu(0), >= b"},
            {"b", "nonmonotone: mu at large slip, >= 0"},
            {"alpha", "nonmonotone: decay of mu per unit slip, >= 0"},
-           {"of", "nonmonotone: slip (default; the tangential displacement from the "
-                  "reference, ch. 4) | slip-rate (the tangential velocity, ch. 6)"},
+           {"of",
+            "nonmonotone: slip (the tangential displacement from the reference, ch. 4) | "
+            "slip-rate (the tangential velocity, ch. 6)",
+            "slip"},
        }},
       {"SOLVER",
        false,
@@ -178,13 +207,16 @@ const std::vector<CardSpec>& card_schema() {
        "(sig-solve): mu frozen per node at the previous iterate's slip, each convex problem "
        "solved by the SOLVER method",
        {
-           {"eps", "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
-                   "||u(m)||_V and the same for the contact tractions on Gamma3; default 1e-5"},
-           {"maxit", "maximum number of outer iterations (convex solves), >= 1; default 200"},
-           {"relaxation", "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); "
-                          "default 1 (none, as the thesis)"},
-           {"start", "rest (default: u(0) = 0, mu = a) | slipped (mu = b, as after a long "
-                     "slip)"},
+           {"eps",
+            "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
+            "||u(m)||_V and the same for the contact tractions on Gamma3, > 0",
+            "1e-5"},
+           {"maxit", "maximum number of outer iterations (convex solves), >= 1", "200"},
+           {"relaxation",
+            "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); 1: none, as "
+            "the thesis",
+            "1"},
+           {"start", "rest (u(0) = 0, mu = a) | slipped (mu = b, as after a long slip)", "rest"},
        }},
       {"LOADSTEPS",
        false,

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
                                        "from the MATERIAL cards, checked against the mesh.",
                             .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)"},
                             .writes = {"OUTDIR/case.mili (law and parameters per sub-domain)"},
-                            .cards = {"TITLE", "MATERIAL"}};
+                            .cards = {"TITLE", "MATERIAL", "MEMORY"}};
   return sig::run_stage("sig-material", [&] {
     // 1. Command line and inputs.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
@@ -31,10 +31,19 @@ int main(int argc, char** argv) {
     for (const sig::SubdomainMaterial& m : table.entries) {
       std::ostringstream line;
       line << "sub-domain " << m.subdomain << ": "
-           << (m.hyperelastic ? m.hyperelastic->name() + " (small-strain limit" : "hooke (")
+           << (m.hyperelastic   ? m.hyperelastic->name() + " (small-strain limit"
+               : m.kelvin_voigt ? std::string("kelvin-voigt (elastic part")
+                                : std::string("hooke ("))
            << " E=" << m.hooke.E << " nu=" << m.hooke.nu << ") plane "
            << (m.hooke.plane == sig::PlaneMode::strain ? "strain" : "stress")
            << " thickness=" << m.thickness << " rho=" << m.density;
+      if (m.kelvin_voigt) {
+        line << " eta1=" << m.kelvin_voigt->viscosity.eta1
+             << " eta2=" << m.kelvin_voigt->viscosity.eta2;
+        for (const sig::MemoryTerm& term : m.kelvin_voigt->memory)
+          line << ", memory exp(-" << term.beta << " t) (E=" << term.modulus.E
+               << " nu=" << term.modulus.nu << ")";
+      }
       sig::log_info(line.str());
     }
     sig::log_info("wrote " + args.ds_path("mili").string());

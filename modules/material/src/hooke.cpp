@@ -54,6 +54,10 @@ double von_mises_stress(double s11, double s22, double s12, double s33) {
 }
 
 Hooke hooke_from_card(const Card& card) {
+  return hooke_from_card(card, plane_mode_from_card(card));
+}
+
+Hooke hooke_from_card(const Card& card, PlaneMode plane) {
   Hooke law;
   law.E = card.real("E");
   if (!(law.E > 0.0)) {
@@ -64,13 +68,13 @@ Hooke hooke_from_card(const Card& card) {
   law.nu = card.real("nu");
   if (!(law.nu < 0.5)) card.fail("nu", "Poisson ratio must be < 0.5 (incompressible limit)");
   if (!(law.nu > -1.0)) card.fail("nu", "Poisson ratio must be > -1");
-  law.plane = plane_mode_from_card(card);
+  law.plane = plane;
   return law;
 }
 
 PlaneMode plane_mode_from_card(const Card& card) {
   return card.choice("plane", {"strain", "stress"}) == "stress" ? PlaneMode::stress
-                                                                          : PlaneMode::strain;
+                                                                : PlaneMode::strain;
 }
 
 } // namespace sig

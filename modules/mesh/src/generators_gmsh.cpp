@@ -59,16 +59,26 @@ Mesh half_disc(double R, int N, double grading) {
   return mesh;
 }
 
-Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading) {
+Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading, bool graded_arcs) {
   verify_size_law("disc", R, grading);
   SIG_VERIFY(N >= 4 && N % 4 == 0, "disc: N = " << N << " must be a multiple of 4");
-  Mesh mesh = mesh_with_gmsh(
-      "disc", geo::disc,
-      {{"cx", center.x()}, {"cy", center.y()}, {"R", R}, {"N", N}, {"grading", grading}});
-  // Quarter k (right, top, left, bottom) starts at -45 + 90 k degrees; ref 4, 2, 1, 3.
+  Mesh mesh = mesh_with_gmsh("disc", geo::disc,
+                             {{"cx", center.x()},
+                              {"cy", center.y()},
+                              {"R", R},
+                              {"N", N},
+                              {"grading", grading},
+                              {"graded_arcs", graded_arcs ? 1 : 0}});
+  // Quarter k (right, top, left, bottom) starts at -45 + 90 k degrees; ref 4, 2, 1, 3. Graded
+  // quarters have no uniform positions: their nodes go radially onto the circle.
   const double step = 2 * std::numbers::pi / N;
   const std::array<int, 4> refs = {4, 2, 1, 3};
   for (int q = 0; q < 4; ++q) {
+    if (graded_arcs && refs[q] != 3) {
+      for (int i : mesh.nodes_with_ref(refs[q]))
+        mesh.nodes[i] = center + R * (mesh.nodes[i] - center).normalized();
+      continue;
+    }
     snap_arc(mesh, refs[q], center, R, (2 * q - 1) * std::numbers::pi / 4, N / 4, step, "disc");
   }
   check_mesh(mesh, "disc");

@@ -20,7 +20,7 @@ namespace {
 const std::set<std::string>& fields_of(const std::string& generator) {
   static const std::map<std::string, std::set<std::string>> fields = {
       {"half_disc", {"r", "n", "grading"}},
-      {"disc", {"center", "r", "n", "grading"}},
+      {"disc", {"center", "r", "n", "grading", "arcs"}},
       {"ring", {"center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
       {"rectangle", {"lx", "ly", "nx", "ny", "refs"}},
       {"square", {"lx", "nx", "refs"}},
@@ -85,7 +85,8 @@ Mesh generate(const Card& card, const std::string& generator) {
   if (generator == "half_disc")
     return half_disc(positive(card, "r"), even_count(card, "n", 2), grading(card));
   if (generator == "disc")
-    return disc(center(card), positive(card, "r"), even_count(card, "n", 4), grading(card));
+    return disc(center(card), positive(card, "r"), even_count(card, "n", 4), grading(card),
+                card.choice("arcs", {"uniform", "graded"}, "uniform") == "graded");
   if (generator == "ring") {
     const double r_in = positive(card, "r_in"), r_out = positive(card, "r_out");
     if (r_in >= r_out) card.fail("r_in", "must be smaller than r_out");

@@ -14,6 +14,7 @@
 // is a result: the stage exits 0 and the DS records converged = 0 with the iteration history ("Nv"
 // in the tables).
 #include "assembly/initial.hpp"
+#include "assembly/loads.hpp"
 #include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
@@ -41,8 +42,8 @@ int main(int argc, char** argv) {
                 "convexification loop)"},
       .writes = {"OUTDIR/case.b (displacement, multipliers, statuses, iteration history, phase "
                  "times; per load step in large deformation)"},
-      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION",
-                "INITIAL"}};
+      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION", "INITIAL",
+                "TRACTION", "PRESSURE", "BODYFORCE"}};
   return sig::run_stage("solve", [&] {
     // 1. Arguments and the SOLVER card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
@@ -64,6 +65,9 @@ int main(int argc, char** argv) {
                                       " is a contact law in velocity: it needs a march in time "
                                       "(TIME scheme=quasistatic, sig-march)");
     }
+    if (const sig::Card* ramped = sig::ramped_load_card(datafile))
+      ramped->fail("ramp", "a static deck has no time: a load growing with t needs a TIME card "
+                           "(sig-march)");
     const sig::SolverCard card = sig::read_solver_card(datafile);
     for (const sig::Card* initial : datafile.all("INITIAL")) {
       if (initial->has("v"))

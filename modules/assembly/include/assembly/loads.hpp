@@ -8,10 +8,15 @@
 //   BODYFORCE [region=S] f=fx,fy   force per unit volume on sub-domains S (default all)
 //   MOVINGLOAD ref=R F= psi= c= [x0=]   a load that moves (assembly/time_loads.hpp): in the
 //                             load vector at t = 0, its change in time apart
+// Each of TRACTION, PRESSURE and BODYFORCE also takes `ramp=t1` (> 0): the load then grows
+// linearly in time, g(t) = g t / t1 (the thesis's f2 = (0, -10 t) of chapter 5 is
+// `f=0,-10 ramp=1`), zero at t = 0, its rate g / t1 in TimeLoads::rate; without ramp= it is
+// constant. Only a march in time (sig-march) has a t: a static deck refuses ramp=.
 #include <Eigen/Core>
 
 namespace sig {
 
+class Card;
 class Datafile;
 struct Mesh;
 struct MaterialTable;
@@ -26,9 +31,13 @@ struct TimeLoads;
 Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge);
 
 /// f at t = 0 from the TRACTION, PRESSURE, BODYFORCE and MOVINGLOAD cards (size 2 * nodes);
-/// the change of the time-dependent ones in `*time_loads` when it is given. References and
-/// regions are checked (assembly/cards.hpp), and MOVINGLOAD's psi > 0.
+/// the change of the time-dependent ones (moving, ramped) in `*time_loads` when it is given.
+/// References and regions are checked (assembly/cards.hpp), MOVINGLOAD's psi > 0 and ramp > 0.
 Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
                                const Datafile& datafile, TimeLoads* time_loads = nullptr);
+
+/// The first load card of `datafile` with a ramp= field, or null: the stages without time refuse
+/// it on its own line.
+const Card* ramped_load_card(const Datafile& datafile);
 
 } // namespace sig

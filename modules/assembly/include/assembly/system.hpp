@@ -21,13 +21,24 @@ class Datafile;
 struct Mesh;
 struct MaterialTable;
 
+/// The stiffness of one exponential term exp(-beta t) KK of a memory kernel (kelvin_voigt.hpp):
+/// every sub-domain's terms of the same beta, summed.
+struct MemoryStiffness {
+  double beta = 0;
+  Eigen::SparseMatrix<double> K;
+};
+
 struct LinearSystem {
-  Eigen::SparseMatrix<double> K;   ///< stiffness
-  Eigen::SparseMatrix<double> M;   ///< consistent mass; 0 x 0 if every density is 0
-  Eigen::VectorXd M_lumped;        ///< row sums of the consistent mass (zeros without density)
-  Eigen::VectorXd f;               ///< loads at t = 0
-  TimeLoads time_loads;            ///< their change in time (empty: constant loads)
-  std::vector<int> dirichlet_dofs; ///< sorted, unique, 0-based
+  Eigen::SparseMatrix<double> K; ///< stiffness (for a Kelvin-Voigt law: of its elastic part B)
+  Eigen::SparseMatrix<double> M; ///< consistent mass; 0 x 0 if every density is 0
+  Eigen::VectorXd M_lumped;      ///< row sums of the consistent mass (zeros without density)
+  Eigen::VectorXd f;             ///< loads at t = 0
+  TimeLoads time_loads;          ///< their change in time (empty: constant loads)
+  /// The viscosity's "stiffness" K_A (A of kelvin_voigt.hpp, on strain rates); 0 x 0 without a
+  /// kelvin-voigt law. Same pattern as K.
+  Eigen::SparseMatrix<double> V;
+  std::vector<MemoryStiffness> memory; ///< one per distinct beta of the MEMORY cards
+  std::vector<int> dirichlet_dofs;     ///< sorted, unique, 0-based
   Eigen::VectorXd dirichlet_values;
   double assemble_seconds = 0.0; ///< wall time of assemble_system
 
@@ -39,6 +50,12 @@ struct LinearSystem {
 /// Stiffness sum over triangles of p1_stiffness with the law and thickness of their sub-domain.
 Eigen::SparseMatrix<double> assemble_stiffness(const Mesh& mesh, const MaterialTable& table,
                                                const SparsityPattern& pattern);
+/// The viscous K_A of the kelvin-voigt sub-domains (zero elsewhere), and the stiffness of every
+/// distinct beta of their memory terms, in the order of first appearance in the table.
+Eigen::SparseMatrix<double> assemble_viscosity(const Mesh& mesh, const MaterialTable& table,
+                                               const SparsityPattern& pattern);
+std::vector<MemoryStiffness> assemble_memory(const Mesh& mesh, const MaterialTable& table,
+                                             const SparsityPattern& pattern);
 /// Consistent mass on the same pattern.
 Eigen::SparseMatrix<double> assemble_mass(const Mesh& mesh, const MaterialTable& table,
                                           const SparsityPattern& pattern);
@@ -59,7 +76,9 @@ LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
 /// (same pattern, only if M is not empty); M_lumped; f; dirichlet_dof (1-based);
 /// dirichlet_value; time_assemble (seconds); with moving loads: moving_load (F, psi, c, x0 per
 /// load), moving_points (points per load), moving_node (nodes a, b per point, 1-based),
-/// moving_x1 and moving_weight (weight_a, weight_b per point) (assembly/time_loads.hpp).
+/// moving_x1 and moving_weight (weight_a, weight_b per point) (assembly/time_loads.hpp); with
+/// ramped loads: f_rate (ndof); with a kelvin-voigt law: V_val (same pattern), memory_beta
+/// (terms) and memory_val {terms, nnz} (same pattern).
 void write_tae(const std::filesystem::path& path, const LinearSystem& system,
                const std::string& title);
 LinearSystem read_tae(const std::filesystem::path& path);

@@ -2,6 +2,9 @@
 // The loads that change in time. The TAE's load vector f is the load at t = 0 (what a static
 // deck solves with); a march applies f(t) = f + change(t), change(0) = 0.
 //
+//   TRACTION, PRESSURE, BODYFORCE ... ramp=t1   a load growing linearly, t / t1 times its value
+//       (assembly/loads.hpp): change(t) = t rate, rate the sum of the ramped loads over t1.
+//
 //   MOVINGLOAD ref=R F= psi= c= [x0=0]   the thesis's moving mass (6.91): the traction
 //       (0, -F exp(-psi (x1 - x0 - c t)^2)) on the edges of reference R, a Gaussian of x1 whose
 //       centre x0 + c t moves at speed c (vertical whatever the edge's direction, as (6.91)).
@@ -45,8 +48,10 @@ struct MovingLoad {
 
 struct TimeLoads {
   std::vector<MovingLoad> moving;
+  /// The ramped loads per unit time (assembly/loads.hpp, ramp=): t rate at time t; empty: none.
+  Eigen::VectorXd rate;
 
-  bool empty() const { return moving.empty(); }
+  bool empty() const { return moving.empty() && rate.size() == 0; }
   /// f(t) - f(0), of size `dofs`.
   Eigen::VectorXd change(double t, int dofs) const;
 };

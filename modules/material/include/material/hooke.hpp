@@ -39,6 +39,9 @@ double von_mises_stress(double s11, double s22, double s12, double s33);
 /// Throws sig::InputError naming the card line and the field when E <= 0 or nu is outside
 /// (-1, 1/2): nu = 1/2 is the incompressible limit, where D does not exist.
 Hooke hooke_from_card(const Card& card);
+/// The same with the plane mode given, for a card without plane= (a memory term takes its
+/// sub-domain's).
+Hooke hooke_from_card(const Card& card, PlaneMode plane);
 
 /// The card's `plane=strain|stress` (default strain), for every 2D law.
 PlaneMode plane_mode_from_card(const Card& card);

@@ -19,7 +19,10 @@ Mesh half_disc(double R, int N, double grading = 0);
 /// Disc of centre `center` and radius R in four quarter arcs of N/4 segments (N multiple of
 /// 4): left quarter (x1 <= cx - R/sqrt2) ref 1, top ref 2, bottom ref 3 (contact side), right
 /// ref 4. Size law as half_disc with h = 2 pi R / N, d measured from the bottom quarter.
-Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading = 0);
+/// `graded_arcs`: only the bottom quarter has N/4 uniform segments, the size law sets the
+/// others' (a mesh fine only near the contact side, scene 4).
+Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading = 0,
+          bool graded_arcs = false);
 
 struct RingOptions {
   int layers = 0;                     ///< nodes through the thickness; 0 = default_ring_layers(N)

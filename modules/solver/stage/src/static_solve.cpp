@@ -133,10 +133,19 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
     for (std::size_t k = 0; k < interface.size(); ++k)
       w_start[static_cast<Eigen::Index>(k)] = w[interface[k]];
   }
-  // The whole body's displacement of condensed unknowns w (frames undone, Dirichlet values in):
-  // one interior solve, for the loop's norm of V and for the result.
+  // The reduced displacement (in frames) of condensed unknowns w, one interior solve, kept for
+  // the last w: the convexification loop's last norm of V and the result share it.
+  Eigen::VectorXd expanded_w, expanded_u;
+  const auto expand = [&](const Eigen::VectorXd& w) -> const Eigen::VectorXd& {
+    if (expanded_w.size() != w.size() || expanded_w != w) {
+      expanded_u = schur.expand(f, w);
+      expanded_w = w;
+    }
+    return expanded_u;
+  };
+  // The whole body's displacement (frames undone, Dirichlet values in), for the norm of V.
   const auto whole_body = [&](const Eigen::VectorXd& w) {
-    Eigen::VectorXd u = schur.expand(f, w);
+    Eigen::VectorXd u = expand(w);
     frames.from_frames(u, contact.normal);
     return reduced.expand(u);
   };
@@ -153,7 +162,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   // 4. Back to the whole body, and its equilibrium checked there: an unheld rigid motion that
   //    the factorization did not see as singular (its pivot a round-off) leaves a meaningless
   //    drift.
-  Eigen::VectorXd u = schur.expand(f, condensed.w);
+  Eigen::VectorXd u = expand(condensed.w);
   Eigen::VectorXd r = K * u - f;
   for (int p = 0; p < m; ++p) {
     r[dofs[p][1]] += c.normal_force[p];

@@ -1,0 +1,128 @@
+// sig-error: the error of a solved case against a reference case on a finer mesh, in the norm of
+// V (post/error_norm.hpp): ||u_ref - P u_h||_V = ||eps(u_ref - P u_h)||_L2, exact on nested
+// meshes (the convergence figures 4.7, 5.12, 6.5) and an interpolation otherwise.
+//
+//   sig-error [--json] CASE_DIR REFERENCE_DIR
+//
+// Each folder holds a chain's output: case.nopo and case.b (a static solve), or case.nopo and
+// case.hist (a march in time: the error at every output time of the case that the reference
+// also kept, its value at the last one and its maximum, ALGORITHMS.md 0.6).
+#include "core/ds.hpp"
+#include "core/error.hpp"
+#include "core/json.hpp"
+#include "core/stage.hpp"
+#include "mesh/nopo.hpp"
+#include "post/error_norm.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+/// The displacement states of a case folder with their times (one state, time 0, for case.b).
+struct States {
+  sig::Mesh mesh;
+  std::vector<double> time;
+  std::vector<Eigen::VectorXd> u;
+};
+
+States read_states(const std::filesystem::path& dir) {
+  States s;
+  s.mesh = sig::read_nopo(dir / "case.nopo");
+  const auto ndof = static_cast<std::size_t>(2 * s.mesh.num_nodes());
+  const auto b = dir / "case.b", hist = dir / "case.hist";
+  const bool static_case = std::filesystem::exists(b);
+  SIG_VERIFY(static_case || std::filesystem::exists(hist),
+             dir.string() << ": neither case.b nor case.hist (run the case's chain first)");
+  const sig::Ds ds = static_case ? sig::read_ds(b, "B") : sig::read_ds(hist, "HIST");
+  const std::vector<double> u = ds.reals("u");
+  const std::vector<double> times =
+      static_case ? std::vector<double>{0.0} : ds.reals("output_time");
+  SIG_VERIFY(u.size() == times.size() * ndof, ds.source << ": array 'u' holds " << u.size()
+                                                        << " values, not " << times.size()
+                                                        << " states of " << ndof << " dofs ("
+                                                        << s.mesh.num_nodes() << " mesh nodes)");
+  for (double v : u)
+    SIG_VERIFY(std::isfinite(v), ds.source << ": array 'u' holds a value that is not finite");
+  s.time = times;
+  for (std::size_t k = 0; k < times.size(); ++k)
+    s.u.push_back(
+        Eigen::Map<const Eigen::VectorXd>(u.data() + k * ndof, static_cast<Eigen::Index>(ndof)));
+  return s;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-error",
+      .purpose = "The error of a solved case against a reference case on a finer mesh in the "
+                 "norm of V, ||eps(u_ref - P u_h)||_L2 on the reference mesh (P the P1 "
+                 "interpolation of the case's field at the reference nodes: exact on nested "
+                 "meshes); for marches in time at every shared output time.",
+      .reads = {"CASE_DIR/case.nopo, case.b or case.hist", "REFERENCE_DIR/the same"},
+      .writes = {"standard output"},
+      .cards = {},
+      .usage = "[--json] CASE_DIR REFERENCE_DIR",
+      .options = {{"--json", "stable keys for scripts: error, reference_norm, relative, "
+                             "max_error, times, errors"}}};
+  return sig::run_stage("sig-error", [&] {
+    sig::handle_help_and_version(argc, argv, help);
+    bool json = false;
+    std::vector<std::filesystem::path> dirs;
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (a == "--json")
+        json = true;
+      else if (!a.empty() && a[0] == '-')
+        SIG_VERIFY(false, "unknown option " << a << "; usage: sig-error " << help.usage);
+      else
+        dirs.emplace_back(a);
+    }
+    SIG_VERIFY(dirs.size() == 2, "usage: sig-error " << help.usage);
+    const States coarse = read_states(dirs[0]), reference = read_states(dirs[1]);
+
+    // The case's output times that the reference kept too.
+    std::vector<double> times, errors;
+    double last_reference_norm = 0;
+    const double scale = std::max(1.0, std::abs(coarse.time.back()));
+    for (std::size_t k = 0; k < coarse.time.size(); ++k)
+      for (std::size_t j = 0; j < reference.time.size(); ++j)
+        if (std::abs(coarse.time[k] - reference.time[j]) <= 1e-9 * scale) {
+          const sig::StrainError e =
+              sig::strain_error(reference.mesh, reference.u[j], coarse.mesh, coarse.u[k]);
+          times.push_back(coarse.time[k]);
+          errors.push_back(e.error);
+          last_reference_norm = e.reference_norm;
+          break;
+        }
+    SIG_VERIFY(!errors.empty(), dirs[0].string()
+                                    << " and " << dirs[1].string() << " share no output time");
+    double max_error = 0;
+    for (double e : errors)
+      max_error = std::max(max_error, e);
+    const double error = errors.back();
+    const double relative = last_reference_norm > 0 ? error / last_reference_norm : error;
+    if (json) {
+      sig::Json out = sig::Json::object();
+      out.set("norm", std::string("||eps(u_ref - P u_h)||_L2"));
+      out.set("error", error);
+      out.set("reference_norm", last_reference_norm);
+      out.set("relative", relative);
+      out.set("max_error", max_error);
+      out.set("times", sig::Json::array_of(times));
+      out.set("errors", sig::Json::array_of(errors));
+      std::cout << out.dump() << "\n";
+    } else {
+      std::cout << "sig-error: ||eps(u_ref - P u_h)||_L2 = " << error << " (relative " << relative
+                << ", reference norm " << last_reference_norm << ")";
+      if (times.size() > 1)
+        std::cout << " at t = " << times.back() << "; maximum over " << times.size() << " times "
+                  << max_error;
+      std::cout << "\n";
+    }
+  });
+}
