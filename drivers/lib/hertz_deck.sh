@@ -1,17 +1,8 @@
-# Sourced by scene7a.sh, friction_hertz.sh and bench-hertz.sh: variants of the Hertz deck and
-# one-stage runs.
+# Sourced by scene7a.sh, friction_hertz.sh and bench-hertz.sh: variants of the Hertz deck (and,
+# through lib/stages.sh, one-stage runs).
 # Needs $bin (stage executables) and a die() function from the caller.
 source "$(dirname "${BASH_SOURCE[0]}")/deck.sh"
-
-# The parameter a method's value sets on the SOLVER card.
-parameter_of() {
-  case $1 in
-    pdas) echo gamma ;;
-    projection) echo c ;;
-    alm | penalty) echo r ;;
-    *) die "no parameter known for method '$1'" ;;
-  esac
-}
+source "$(dirname "${BASH_SOURCE[0]}")/stages.sh"
 
 # hertz_deck TEMPLATE DECK N GRADING [METHOD [VALUE]]: the template with MESH N= (and grading=
 # unless GRADING is empty) and the SOLVER card's method and parameter replaced; a template with an
@@ -49,33 +40,4 @@ hertz_deck() {
 # card). Needs $python.
 rigid_shift() {
   "$python" -c "import math, sys; R, n = float(sys.argv[1]), int(sys.argv[2]); print(f'{(math.pi * R / n) ** 2 / R:.6g}')" "$1" "$2"
-}
-
-# run_stage STAGE DECK DIR: one stage, its output kept in DIR/<stage>.log and shown on failure.
-run_stage() {
-  local stage=$1 deck=$2 dir=$3
-  if ! "$bin/sig-$stage" "$deck" -o "$dir" >"$dir/$stage.log" 2>&1; then
-    cat "$dir/$stage.log" >&2
-    echo "sig-$stage failed for $deck (log: $dir/$stage.log)" >&2
-    return 1
-  fi
-}
-
-# build_base DECK DIR WHAT: sig-mesh, sig-material, sig-contact and sig-assemble of DECK in DIR,
-# the DS files the runs of one mesh share; dies naming WHAT when a stage fails.
-build_base() {
-  local stage
-  for stage in mesh material contact assemble; do
-    run_stage "$stage" "$1" "$2" || die "cannot build $3"
-  done
-}
-
-# link_ds FROM DIR DS...: DIR/case.<DS> links to FROM/case.<DS> (FROM relative to DIR, or
-# absolute), so that a run reuses the DS files of an earlier stage.
-link_ds() {
-  local from=$1 dir=$2 ds
-  shift 2
-  for ds; do
-    ln -s "$from/case.$ds" "$dir/case.$ds"
-  done
 }

@@ -7,6 +7,7 @@ bin=${SIG_BIN:-$root/build/bin}
 export SIG_BIN=$bin
 python=${PYTHON:-/usr/bin/python3}
 source "$(dirname "${BASH_SOURCE[0]}")/deck.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/stages.sh"
 
 die() {
   echo "$(basename "$0"): error: $*" >&2

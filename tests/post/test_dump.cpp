@@ -81,6 +81,24 @@ TEST(Dump, MeshSummaryCountsTheMesh) {
   const std::string json = dump_mesh_json(mesh, "small").dump(-1);
   EXPECT_EQ(json, "{\"kind\":\"NOPO\",\"title\":\"small\",\"nodes\":5,\"triangles\":3,"
                   "\"boundary_edges\":5,\"references\":[1,2,3,4],\"subdomains\":[1,2]}");
+  // With its values: the mesh itself, numbered from 1.
+  const Json full = dump_mesh_json(mesh, "small", true);
+  const std::string values = full.dump(-1);
+  std::string coordinates = "\"coordinates\":[";
+  for (int i = 0; i < mesh.num_nodes(); ++i)
+    coordinates += Json(mesh.nodes[i].x()).dump(-1) + "," + Json(mesh.nodes[i].y()).dump(-1) +
+                   (i + 1 < mesh.num_nodes() ? "," : "]");
+  EXPECT_NE(values.find(coordinates), std::string::npos) << values;
+  const auto& t = mesh.triangles.front();
+  EXPECT_NE(values.find("\"triangle_nodes\":[" + std::to_string(t[0] + 1) + "," +
+                        std::to_string(t[1] + 1) + "," + std::to_string(t[2] + 1) + ","),
+            std::string::npos)
+      << values;
+  const BoundaryEdge& e = mesh.edges.front();
+  EXPECT_NE(values.find("\"edges\":[" + std::to_string(e.a + 1) + "," + std::to_string(e.b + 1) +
+                        "," + std::to_string(e.ref) + ","),
+            std::string::npos)
+      << values;
   const std::string text = dump_mesh_text(mesh, "small");
   EXPECT_NE(text.find("3 (2 edges, 3 nodes)"), std::string::npos);
   EXPECT_NE(text.find("2 (2 triangles)"), std::string::npos);

@@ -29,6 +29,10 @@ const std::vector<CardSpec>& card_schema() {
            {"ny", "number of segments along y"},
            {"refs", "boundary references of the rectangle or square: bottom,right,top,left",
             "3,4,2,1"},
+           {"pattern",
+            "rectangle, square: alternating (two triangles per cell, alternating diagonals) | "
+            "union-jack (four triangles around the cell centre)",
+            "alternating"},
            {"grading",
             "growth of the mesh size per unit distance from the contact boundary (0: uniform)",
             "0"},
@@ -227,16 +231,19 @@ const std::vector<CardSpec>& card_schema() {
        }},
       {"TIME",
        false,
-       "time marching of elastodynamics (stage sig-march; with a CONTACT card, by its strategy)",
+       "time marching (stage sig-march): elastodynamics (with a CONTACT card, by its strategy), "
+       "or the quasistatic viscoelastic march in velocity of ch. 5",
        {
            {"scheme", "midpoint | newmark: implicit midpoint rule (3.39) or Newmark's average "
-                      "acceleration; both conserve the discrete energy (8.33) without load"},
+                      "acceleration; both conserve the discrete energy (8.33) without load | "
+                      "quasistatic: backward Euler in velocity (5.62)-(5.64), no mass, contact "
+                      "laws in velocity (law=damped, damped-unilateral)"},
            {"T", "final time, > 0"},
            {"k", "time step, > 0; T / k must be a whole number of steps"},
            {"output_every", "keep the state every this many steps, >= 1", "1"},
            {"mass",
             "consistent | lumped | emm (Equivalent Mass Matrix (3.54), needs a CONTACT "
-            "card)",
+            "card); not for scheme=quasistatic",
             "consistent"},
        }},
       {"INITIAL",

@@ -1,5 +1,7 @@
 // sig-march DATAFILE [-o OUTDIR]: elastodynamics, M a + K u = f, marched from the INITIAL state
-// with the scheme of the TIME card, with or without node-to-rigid contact.
+// with the scheme of the TIME card, with or without node-to-rigid contact; or, with TIME
+// scheme=quasistatic, the quasistatic viscoelastic march in velocity of ch. 5
+// (integrator/quasistatic_stage.hpp).
 //
 //   TIME scheme=midpoint|newmark T= k= [output_every=1] [mass=consistent|lumped|emm]
 //   INITIAL [u=ux,uy] [v=vx,vy] [region=...]
@@ -27,6 +29,7 @@
 #include "integrator/contact_strategy.hpp"
 #include "integrator/history_io.hpp"
 #include "integrator/march.hpp"
+#include "integrator/quasistatic_stage.hpp"
 #include "integrator/time_card.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
@@ -41,7 +44,10 @@ int main(int argc, char** argv) {
       .name = "sig-march",
       .purpose = "Time marching of elastodynamics, M a + K u = f, from the INITIAL state with the "
                  "scheme of the TIME card (K + (4/k^2) M factorized once), with node-to-rigid "
-                 "contact by the CONTACT card's strategy. A step whose Newton fails stops the "
+                 "contact by the CONTACT card's strategy; or (scheme=quasistatic) the quasistatic "
+                 "Kelvin-Voigt march in velocity of ch. 5 with contact laws in velocity, its step "
+                 "matrix factorized and condensed once (case.hist, steps.csv). A step whose Newton "
+                 "fails stops the "
                  "march: the files hold the steps done, a warning is printed and the stage exits "
                  "0. A progress line shows the step, time steps per second and the time left.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
@@ -50,7 +56,7 @@ int main(int argc, char** argv) {
       .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures)",
                  "OUTDIR/energy.csv (one row per step: energies, contact work, penetration, active "
                  "nodes, Newton iterations)"},
-      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER"}};
+      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "MATERIAL"}};
   return sig::run_stage("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
@@ -59,6 +65,10 @@ int main(int argc, char** argv) {
     const sig::Card* contact = datafile.find("CONTACT");
     const sig::TimeParameters time =
         sig::time_parameters(datafile.require("TIME"), contact != nullptr);
+    if (time.scheme == "quasistatic") {
+      sig::run_quasistatic_march(args, datafile, time);
+      return;
+    }
     const sig::Card* solver_card = datafile.find("SOLVER");
     const std::string backend =
         solver_card ? solver_card->choice("linear", {"cholmod", "umfpack", "mumps"}, "cholmod")

@@ -10,7 +10,7 @@ namespace sig {
 
 TimeParameters time_parameters(const Card& time, bool has_contact) {
   TimeParameters p;
-  p.scheme = time.choice("scheme", {"midpoint", "newmark"});
+  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic"});
   p.final_time = time.real("T");
   p.k = time.real("k");
   if (p.k <= 0) time.fail("k", "the time step must be positive");
@@ -28,6 +28,8 @@ TimeParameters time_parameters(const Card& time, bool has_contact) {
   const long every = time.integer("output_every");
   if (every < 1) time.fail("output_every", "must be >= 1");
   p.output_every = static_cast<int>(std::min<long>(every, p.steps));
+  if (p.scheme == "quasistatic" && time.has("mass"))
+    time.fail("mass", "a quasistatic march has no inertia: remove mass=");
   const std::string mass = time.choice("mass", {"consistent", "lumped", "emm"});
   if (mass == "emm" && !has_contact)
     time.fail("mass", "mass=emm needs a CONTACT card: the Equivalent Mass Matrix (3.54) removes "

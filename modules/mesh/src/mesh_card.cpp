@@ -22,8 +22,8 @@ const std::set<std::string>& fields_of(const std::string& generator) {
       {"half_disc", {"r", "n", "grading"}},
       {"disc", {"center", "r", "n", "grading", "arcs"}},
       {"ring", {"center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
-      {"rectangle", {"lx", "ly", "nx", "ny", "refs"}},
-      {"square", {"lx", "nx", "refs"}},
+      {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
+      {"square", {"lx", "nx", "refs", "pattern"}},
       {"file", {}},
   };
   return fields.at(generator);
@@ -97,10 +97,15 @@ Mesh generate(const Card& card, const std::string& generator) {
     if (card.has("gamma3_below")) options.gamma3_below = card.real("gamma3_below");
     return ring(center(card), r_in, r_out, n, options);
   }
+  const CellPattern pattern = card.choice("pattern", {"alternating", "union-jack"}) == "union-jack"
+                                  ? CellPattern::union_jack
+                                  : CellPattern::alternating;
   if (generator == "rectangle")
     return rectangle(positive(card, "lx"), positive(card, "ly"), count(card, "nx", 1),
-                     count(card, "ny", 1), refs(card));
-  return square(positive(card, "lx"), count(card, "nx", 1), refs(card));
+                     count(card, "ny", 1), refs(card), pattern);
+  const double l = positive(card, "lx");
+  const int n = count(card, "nx", 1);
+  return rectangle(l, l, n, n, refs(card), pattern);
 }
 
 } // namespace

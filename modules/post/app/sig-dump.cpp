@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
                  "printed its structures, or the cards of the datafiles with their fields, help "
                  "texts and defaults.",
       .reads = {"FILE: a DS file (case.mili, case.cont, case.tae, case.b, case.hist, ...) or a "
-                "NOPO mesh"},
+                "NOPO mesh (with --json --values: its coordinates, triangles and edges)"},
       .writes = {"standard output"},
       .cards = {},
       .usage = "[--json [--values | --values=NAME,NAME...]] FILE | --cards [CARD...]",
@@ -87,10 +87,14 @@ int main(int argc, char** argv) {
                          : sig::dump_ds_text(ds));
       return;
     }
-    SIG_VERIFY(!values_given, file.string() << ": --values is for DS files, not NOPO meshes");
+    // A NOPO mesh: --values prints the mesh itself (coordinates, triangles, edges).
+    SIG_VERIFY(values.names.empty(), file.string() << ": --values=NAMES is for DS files; a NOPO "
+                                                      "mesh takes --values (the whole mesh)");
     const sig::NopoFile nopo = sig::read_nopo_file(file);
     const std::string& title = nopo.text.title;
-    std::cout << (json ? sig::dump_mesh_json(nopo.mesh, title).dump() + "\n"
-                       : sig::dump_mesh_text(nopo.mesh, title));
+    std::cout
+        << (json ? sig::dump_mesh_json(nopo.mesh, title, values.all).dump(values_given ? -1 : 2) +
+                       "\n"
+                 : sig::dump_mesh_text(nopo.mesh, title));
   });
 }

@@ -145,7 +145,7 @@ std::string dump_mesh_text(const Mesh& mesh, const std::string& title) {
   return out.str();
 }
 
-Json dump_mesh_json(const Mesh& mesh, const std::string& title) {
+Json dump_mesh_json(const Mesh& mesh, const std::string& title, bool with_values) {
   Json j = Json::object();
   j.set("kind", "NOPO");
   j.set("title", title);
@@ -154,6 +154,21 @@ Json dump_mesh_json(const Mesh& mesh, const std::string& title) {
   j.set("boundary_edges", static_cast<long>(mesh.edges.size()));
   j.set("references", Json::array_of(mesh.references()));
   j.set("subdomains", Json::array_of(mesh.subdomains()));
+  if (!with_values) return j;
+  // The mesh itself, numbered from 1 as in the files.
+  std::vector<double> xy;
+  for (const Eigen::Vector2d& x : mesh.nodes)
+    xy.insert(xy.end(), {x.x(), x.y()});
+  std::vector<long> triangles, edges;
+  for (const auto& t : mesh.triangles)
+    triangles.insert(triangles.end(), {t[0] + 1L, t[1] + 1L, t[2] + 1L});
+  for (const BoundaryEdge& e : mesh.edges)
+    edges.insert(edges.end(), {e.a + 1L, e.b + 1L, static_cast<long>(e.ref)});
+  j.set("coordinates", Json::array_of(xy));
+  j.set("triangle_nodes", Json::array_of(triangles));
+  j.set("triangle_subdomain", Json::array_of(mesh.subdomain));
+  j.set("edges", Json::array_of(edges));
+  j.set("vertex_ref", Json::array_of(mesh.vertex_ref));
   return j;
 }
 

@@ -56,6 +56,22 @@ CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_n
   last_normal_force_ = Eigen::VectorXd::Zero(m);
 }
 
+void CondensedBulk::restart(Eigen::VectorXd f, Eigen::VectorXd gap, const Eigen::VectorXd& start) {
+  SIG_VERIFY(f.size() == p_.f.size() && gap.size() == p_.gap.size() &&
+                 (start.size() == 0 || start.size() == w_.size()),
+             "condensed bulk: a restart with a load of "
+                 << f.size() << ", " << gap.size() << " origins and a start of " << start.size()
+                 << " for " << p_.f.size() << " unknowns, " << p_.gap.size() << " nodes");
+  p_.f = std::move(f);
+  p_.gap = std::move(gap);
+  if (start.size() > 0) {
+    w_ = start;
+    Sw_.noalias() = p_.S.selfadjointView<Eigen::Lower>() * w_;
+  }
+  base_ = w_;
+  step_.setZero();
+}
+
 void CondensedBulk::order_nodes(const std::vector<int>& nodes) {
   // Far first: the unknowns of no contact node, then the nodes in the given order, each node's
   // unknowns together.
@@ -101,6 +117,7 @@ void CondensedBulk::factorize() {
   for (int k = 0; k < n; ++k)
     B_(k, k) += p_.regularization + default_stiffness_[order_[k]];
   L_ = B_;
+  ++factorizations_;
   SIG_VERIFY(cholesky_in_place(L_),
              "the condensed step matrix is not positive definite (a rigid mode that neither the "
              "bulk nor the proximal term holds)");

@@ -2,6 +2,8 @@
 // The cards of a dynamic case (stage sig-march):
 //
 //   TIME scheme=midpoint|newmark T= k= [output_every=1] [mass=consistent|lumped|emm]
+//   TIME scheme=quasistatic T= k= [output_every=1]   (ch. 5: no inertia, a march in velocity,
+//                                                      integrator/kelvin_voigt_scheme.hpp)
 //   INITIAL [u=ux,uy] [v=vx,vy] [region=...]   (repeatable; sets only the fields it gives)
 //
 // Every check names the file, the line and the field (sig::InputError), so that a bad deck is
@@ -28,7 +30,8 @@ struct TimeParameters {
 };
 
 /// The TIME card, checked: k > 0, T > 0, T / k within 1e-9 relative of a whole number of steps,
-/// output_every >= 1, mass=emm only when the deck has a CONTACT card (`has_contact`).
+/// output_every >= 1, mass=emm only when the deck has a CONTACT card (`has_contact`), no mass= in a
+/// quasistatic deck.
 TimeParameters time_parameters(const Card& time, bool has_contact);
 
 } // namespace sig

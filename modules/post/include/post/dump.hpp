@@ -34,7 +34,9 @@ Json dump_ds_json(const Ds& ds, const DumpValues& values = {});
 /// Node, triangle and edge counts, references and sub-domains, bounding box.
 std::string dump_mesh_text(const Mesh& mesh, const std::string& title);
 
-/// {kind: "NOPO", title, nodes, triangles, boundary_edges, references, subdomains}.
-Json dump_mesh_json(const Mesh& mesh, const std::string& title);
+/// {kind: "NOPO", title, nodes, triangles, boundary_edges, references, subdomains}; with
+/// `with_values` the mesh too: coordinates (x, y per node), triangle_nodes (3 per triangle,
+/// 1-based), triangle_subdomain, edges (a, b, ref per boundary edge, 1-based), vertex_ref.
+Json dump_mesh_json(const Mesh& mesh, const std::string& title, bool with_values = false);
 
 } // namespace sig

@@ -1,0 +1,42 @@
+# Sourced by the drivers (through scene.sh and hertz_deck.sh) and pipeline tests: one-stage runs
+# on a deck, the shared DS files of a mesh, and the SOLVER parameter of each method.
+# Needs $bin (stage executables) and a die() function from the caller.
+
+# parameter_of METHOD: the parameter a method's value sets on the SOLVER card.
+parameter_of() {
+  case $1 in
+    pdas) echo gamma ;;
+    projection) echo c ;;
+    alm | penalty) echo r ;;
+    *) die "no parameter known for method '$1'" ;;
+  esac
+}
+
+# run_stage STAGE DECK DIR: one stage, its output kept in DIR/<stage>.log and shown on failure.
+run_stage() {
+  local stage=$1 deck=$2 dir=$3
+  if ! "$bin/sig-$stage" "$deck" -o "$dir" >"$dir/$stage.log" 2>&1; then
+    cat "$dir/$stage.log" >&2
+    echo "sig-$stage failed for $deck (log: $dir/$stage.log)" >&2
+    return 1
+  fi
+}
+
+# build_base DECK DIR WHAT: sig-mesh, sig-material, sig-contact and sig-assemble of DECK in DIR,
+# the DS files the runs of one mesh share; dies naming WHAT when a stage fails.
+build_base() {
+  local stage
+  for stage in mesh material contact assemble; do
+    run_stage "$stage" "$1" "$2" || die "cannot build $3"
+  done
+}
+
+# link_ds FROM DIR DS...: DIR/case.<DS> links to FROM/case.<DS> (FROM relative to DIR, or
+# absolute), so that a run reuses the DS files of an earlier stage.
+link_ds() {
+  local from=$1 dir=$2 ds
+  shift 2
+  for ds; do
+    ln -s "$from/case.$ds" "$dir/case.$ds"
+  done
+}
