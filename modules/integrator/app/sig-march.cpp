@@ -27,6 +27,7 @@
 #include "integrator/contact_card.hpp"
 #include "integrator/contact_march.hpp"
 #include "integrator/contact_strategy.hpp"
+#include "integrator/dynamic_stage.hpp"
 #include "integrator/history_io.hpp"
 #include "integrator/march.hpp"
 #include "integrator/quasistatic_stage.hpp"
@@ -46,7 +47,11 @@ int main(int argc, char** argv) {
                  "scheme of the TIME card (K + (4/k^2) M factorized once), with node-to-rigid "
                  "contact by the CONTACT card's strategy; or (scheme=quasistatic) the quasistatic "
                  "Kelvin-Voigt march in velocity of ch. 5 with contact laws in velocity, its step "
-                 "matrix factorized and condensed once (case.hist, steps.csv). A step whose Newton "
+                 "matrix factorized and condensed once (case.hist, steps.csv); or "
+                 "(scheme=backward-euler) the viscoelastodynamic march in velocity of ch. 6, "
+                 "(M/k + C + k K) factorized and condensed once, contact laws of the displacement "
+                 "and friction of the slip rate, with the convexification loop in every step for "
+                 "FRICTION law=nonmonotone. A step whose Newton "
                  "fails stops the "
                  "march: the files hold the steps done, a warning is printed and the stage exits "
                  "0. A progress line shows the step, time steps per second and the time left.",
@@ -56,7 +61,8 @@ int main(int argc, char** argv) {
       .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures)",
                  "OUTDIR/energy.csv (one row per step: energies, contact work, penetration, active "
                  "nodes, Newton iterations)"},
-      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "MATERIAL"}};
+      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "MATERIAL", "MEMORY",
+                "CONVEXIFICATION"}};
   return sig::run_stage("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
@@ -67,6 +73,10 @@ int main(int argc, char** argv) {
         sig::time_parameters(datafile.require("TIME"), contact != nullptr);
     if (time.scheme == "quasistatic") {
       sig::run_quasistatic_march(args, datafile, time);
+      return;
+    }
+    if (time.scheme == "backward-euler") {
+      sig::run_backward_euler_march(args, datafile, time);
       return;
     }
     const sig::Card* solver_card = datafile.find("SOLVER");

@@ -10,7 +10,7 @@ namespace sig {
 
 TimeParameters time_parameters(const Card& time, bool has_contact) {
   TimeParameters p;
-  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic"});
+  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic", "backward-euler"});
   p.final_time = time.real("T");
   p.k = time.real("k");
   if (p.k <= 0) time.fail("k", "the time step must be positive");

@@ -27,6 +27,19 @@ double d_compliance_pressure(const ContactLaw& law, double q_n) {
   return d_truncated_normal_compliance(q_n, law.cn, law.c3);
 }
 
+double compliance_potential(const ContactLaw& law, double q_n) {
+  if (!law.has_compliance()) return 0.0;
+  if (law.normal == NormalLaw::compliance_bilateral) return 0.5 * law.cn * q_n * q_n;
+  // The integral of min(cn [q]+, c3) up to q, then P's constant p(g) past the wall's clip.
+  const auto truncated = [&](double q) {
+    if (q <= 0) return 0.0;
+    const double knee = law.c3 / law.cn; // where the truncation starts (infinite without one)
+    return q <= knee ? 0.5 * law.cn * q * q : 0.5 * law.c3 * knee + law.c3 * (q - knee);
+  };
+  const double q = clipped(law, q_n);
+  return truncated(q) + compliance_pressure(law, q) * (q_n - q);
+}
+
 namespace {
 
 /// The kernel at x, on its own branch or, given `on`, on that one.

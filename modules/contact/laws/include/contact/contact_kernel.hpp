@@ -72,6 +72,9 @@ struct KernelBranch {
 /// [q_n]_+ at 0 on the compliance side, the wall q_n = g and the truncation c3 on the flat side.
 double compliance_pressure(const ContactLaw& law, double q_n);
 double d_compliance_pressure(const ContactLaw& law, double q_n);
+/// Its potential, the integral of P from 0 to q_n (convex: P does not decrease), the energy the
+/// compliance stores (a march's energy balance; 0 for signorini).
+double compliance_potential(const ContactLaw& law, double q_n);
 
 /// The kernel at x (header comment).
 ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t);
