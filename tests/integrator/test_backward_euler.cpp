@@ -78,7 +78,7 @@ Marched march(const Case& c, double k, int steps, const Eigen::VectorXd& v0_full
         const Eigen::Vector2d up(scheme.displacement()[contact->dofs[p][0]],
                                  scheme.displacement()[contact->dofs[p][1]]);
         stored += c.contact->weight[p] *
-                  compliance_potential(c.contact->law[p],
+                  compliance_energy(c.contact->law[p],
                                        -contact->normal[p].dot(up) - c.contact->gap[p]);
       }
     r.potential.push_back(stored);

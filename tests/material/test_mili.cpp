@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <unistd.h>
@@ -166,6 +167,42 @@ TEST(Mili, WrongKindIsRejected) {
                     ("sig_test_mili_kind_" + std::to_string(::getpid()) + ".tae");
   write_ds(path, Ds("TAE", "not a mili", "test"));
   EXPECT_THROW(read_mili(path), Error);
+  std::filesystem::remove(path);
+}
+
+// sig-assemble took a case.mili with nu = NaN, 0.5, E < 0 or thickness 0 and wrote a NaN
+// stiffness: the MATERIAL card's ranges hold for the file (core/ranges.hpp), each refusal naming
+// the file, the array and the row.
+TEST(Mili, ValuesOutOfTheCardsRangesAreRefused) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("sig_test_mili_range_" + std::to_string(::getpid()) + ".mili");
+  MaterialTable table;
+  SubdomainMaterial a;
+  a.hooke = {200.0, 0.3, PlaneMode::strain};
+  table.entries = {a};
+  write_mili(path, table, "ranges");
+  const Ds good = read_ds(path, "MILI");
+  struct Damage {
+    const char* array;
+    double value;
+    const char* expected;
+  };
+  for (const Damage& d : {Damage{"poisson", 0.5, "array 'poisson', row 1: 0.5 is not in (-1, 0.5)"},
+                          Damage{"poisson", NAN, "array 'poisson': value 1 of 1 is NaN"},
+                          Damage{"young", -3, "array 'young', row 1: -3 is not > 0"},
+                          Damage{"thickness", 0, "array 'thickness', row 1: 0 is not > 0"},
+                          Damage{"density", -1, "array 'density', row 1: -1 is not >= 0"}}) {
+    Ds bad = good;
+    bad.put(d.array, std::vector<double>{d.value}, {}, Finite::not_required);
+    write_ds(path, bad);
+    try {
+      read_mili(path);
+      ADD_FAILURE() << d.array << " = " << d.value << " accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(path.string() + ": " + d.expected), std::string::npos)
+          << e.what();
+    }
+  }
   std::filesystem::remove(path);
 }
 

@@ -15,8 +15,12 @@ const std::vector<CardSpec>& card_schema() {
        "the mesh: a generated thesis geometry or a mesh file",
        {
            {"generator", "half-disc | disc | ring | rectangle | square"},
-           {"file", "mesh file: gmsh .msh (2.2 or 4.1), FreeFem .msh or MODULEF .nopo; relative "
-                    "to the datafile's folder"},
+           {"file", "mesh file: gmsh .msh (2.2 or 4.1, ASCII or binary), FreeFem .msh or MODULEF "
+                    ".nopo; relative to the datafile's folder"},
+           {"coincident",
+            "error | allow: nodes of a mesh file at the same place that the "
+            "triangles do not share (an open crack) are an error unless allowed",
+            "error"},
            {"R", "radius of the disc or half disc"},
            {"N", "number of boundary segments along the arc (disc, half disc, ring)"},
            {"center", "centre of the disc or ring: x,y", "0,0"},
@@ -160,6 +164,10 @@ const std::vector<CardSpec>& card_schema() {
             "signorini"},
            {"r", "foundation stiffness per unit area of compliance, specific-penalty and ipm "
                  "(sig-march), > 0"},
+           {"persistency",
+            "strategy=two-step: midpoint (the normal velocity of (3.39) at t_n, choice C15) | "
+            "increment (q_n - q_{n-1}): what step (b) holds at zero",
+            "midpoint"},
        }},
       {"FRICTION",
        false,
@@ -170,8 +178,11 @@ const std::vector<CardSpec>& card_schema() {
            {"law", "none | tresca (1.33): |T| <= threshold on every contact node | coulomb "
                    "(1.35): |T| <= mu N | nonmonotone (1.39): |T| <= mu(r) N, mu(r) = "
                    "(a - b) exp(-alpha r) + b, r the slip (or slip rate) magnitude, solved by "
-                   "the convexification loop (4.110)-(4.112)"},
-           {"mu", "coulomb: friction coefficient, >= 0"},
+                   "the convexification loop (4.110)-(4.112) | mu1, mu2 (8.3): |T| <= mu(q_n) N, "
+                   "mu of the penetration q_n over the asperities' depth g of the CONTACT card: "
+                   "mu1 rises from 0 to mu, mu2 falls from 2 mu to mu (sig-march)"},
+           {"mu", "coulomb: friction coefficient, >= 0; mu1, mu2: mu0, the coefficient once the "
+                  "asperities are crushed"},
            {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
            {"bound",
             "coulomb, nonmonotone: normal: mu times the whole normal pressure N | compliance: "
@@ -251,6 +262,10 @@ const std::vector<CardSpec>& card_schema() {
             "consistent | lumped | emm (Equivalent Mass Matrix (3.54), needs a CONTACT "
             "card, midpoint and newmark only); not for scheme=quasistatic",
             "consistent"},
+           {"stress",
+            "hyperelastic bodies: gonzalez (Gonzalez's algorithmic stress (3.41), exact energy "
+            "balance) | midpoint (the midpoint configuration's stress, the contrast)",
+            "gonzalez"},
        }},
       {"INITIAL",
        true,
@@ -260,6 +275,9 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"u", "initial displacement: ux,uy (default 0,0)"},
            {"v", "initial velocity: vx,vy (default 0,0)"},
+           {"omega", "initial angular velocity (rad/s, counter-clockwise): adds omega e3 x "
+                     "(X - centre) to the velocity (needs centre=)"},
+           {"centre", "centre of the initial rotation: x,y"},
            {"region", "sub-domain numbers (1-based); default every sub-domain"},
        }},
       {"COMPARE",

@@ -152,7 +152,7 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
       for (int p = 0; p < contact->size(); ++p) {
         const Eigen::Vector2d up(u[contact->dofs[p][0]], u[contact->dofs[p][1]]);
         stored += elements->weight[p] *
-                  compliance_potential(elements->law[p], -contact->normal[p].dot(up) - gap[p]);
+                  compliance_energy(elements->law[p], -contact->normal[p].dot(up) - gap[p]);
       }
     }
     records.kinetic.push_back(scheme.kinetic_energy());

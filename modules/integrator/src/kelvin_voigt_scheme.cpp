@@ -14,6 +14,10 @@ QuasistaticKelvinVoigt::QuasistaticKelvinVoigt(const LinearSystem& system, Reduc
   const int n = reduced_.num_free();
   if (u_.size() == 0) u_ = Eigen::VectorXd::Zero(n);
   SIG_VERIFY(u_.size() == n, "quasistatic march: u0 of size " << u_.size() << " for " << n);
+  if (reduced_.time_loads.moving.empty()) {
+    rate_ = reduced_.time_loads.rate.size() > 0 ? reduced_.restrict(reduced_.time_loads.rate)
+                                                : Eigen::VectorXd::Zero(n);
+  }
   S_ = k_ * reduced_.K;
   if (system.V.size() > 0) S_ += reduced_.restrict_matrix(system.V);
   // w_0 = 0 (ALGORITHMS.md C8): every history starts at P_1 = 0.
@@ -25,7 +29,8 @@ QuasistaticKelvinVoigt::QuasistaticKelvinVoigt(const LinearSystem& system, Reduc
 }
 
 Eigen::VectorXd QuasistaticKelvinVoigt::right_side(int n) const {
-  Eigen::VectorXd b = reduced_.load_at(n * k_);
+  Eigen::VectorXd b =
+      rate_.size() > 0 ? Eigen::VectorXd(reduced_.f + (n * k_) * rate_) : reduced_.load_at(n * k_);
   b.noalias() -= reduced_.K * u_;
   for (std::size_t m = 0; m < memory_.size(); ++m)
     b.noalias() -= k_ * (memory_stiffness_[m] * memory_[m].history());

@@ -63,12 +63,17 @@ int LinearContactMarch::dense_factorizations() const {
   return bulk_ ? bulk_->factorizations() : 0;
 }
 
+int LinearContactMarch::tail_factorizations() const {
+  return bulk_ ? bulk_->tail_factorizations() : 0;
+}
+
 VelocityStep LinearContactMarch::step() {
   const Stopwatch clock;
   VelocityStep s;
   s.step = done_ + 1;
   s.time = s.step * scheme_.time_step();
   const Eigen::VectorXd b = scheme_.right_side(s.step);
+  s.seconds_right_side = clock.seconds();
   Eigen::VectorXd w;
   if (contact_ == nullptr) {
     w = factor_->solve(b);
@@ -77,8 +82,10 @@ VelocityStep LinearContactMarch::step() {
   } else {
     const Eigen::VectorXd origin = scheme_.normal_origin(s.step, *contact_);
     bulk_->restart(condensation_->condense(b), origin);
+    const Stopwatch contact_clock;
     s.contact = solver_ ? solver_(*bulk_, contact_->setting, iterate_)
                         : solve_contact(*bulk_, contact_->setting, *method_, options_, iterate_);
+    s.seconds_contact = contact_clock.seconds();
     s.normal_velocity = bulk_->penetration() + origin;
     s.tangential_velocity = bulk_->slip();
     w = condensation_->expand(bulk_->displacement());

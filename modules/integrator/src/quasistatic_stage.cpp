@@ -51,12 +51,11 @@ void refuse_other_models(const Datafile& datafile) {
 
 } // namespace
 
-void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
-                           const TimeParameters& time) {
+QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& datafile) {
   // 1. Cards: what the march does not model, then SOLVER (method, backend, Newton options).
   refuse_other_models(datafile);
-  const SolverCard solver = read_solver_card(datafile);
-  const bool has_contact = datafile.find("CONTACT") != nullptr;
+  QuasistaticCase c;
+  c.solver = read_solver_card(datafile);
 
   // 2. Mesh, laws, assembled system (elastic K, viscous V, memory terms, loads in time).
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
@@ -66,23 +65,32 @@ void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
           .front()
           ->fail("law", "a hyperelastic law is large deformation; the quasistatic march is small "
                         "strain (law=hooke or kelvin-voigt)");
-  const LinearSystem system = read_tae(args.ds_path("tae"));
-  ReducedSystem reduced = reduce(system);
-  const Eigen::VectorXd u0 = reduced.restrict(initial_fields(datafile, mesh).u);
+  c.system = read_tae(args.ds_path("tae"));
+  c.reduced = reduce(c.system);
+  c.u0 = c.reduced.restrict(initial_fields(datafile, mesh).u);
 
-  // 3. The contact boundary; the step matrix factorized and condensed here, once.
-  std::optional<ContactElements> elements;
-  std::optional<VelocityContact> contact;
-  if (has_contact) {
-    elements = read_cont(args.ds_path("cont"));
-    contact = velocity_contact(*elements, reduced);
-    if (elements->gap.maxCoeff() > 0)
+  // 3. The contact boundary.
+  if (datafile.find("CONTACT") != nullptr) {
+    c.elements = read_cont(args.ds_path("cont"));
+    c.contact = velocity_contact(*c.elements, c.reduced);
+    if (c.elements->gap.maxCoeff() > 0)
       log_warning("the laws in velocity ignore the initial gap (up to " +
-                  std::to_string(elements->gap.maxCoeff()) +
+                  std::to_string(c.elements->gap.maxCoeff()) +
                   "): they act on the normal velocity from t = 0, as if Gamma3 lay on the "
                   "obstacle (the thesis's model (5.5))");
   }
-  QuasistaticKelvinVoigt scheme(system, std::move(reduced), time.k, u0);
+  return c;
+}
+
+void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
+                           const TimeParameters& time) {
+  QuasistaticCase c = read_quasistatic_case(args, datafile);
+  const SolverCard& solver = c.solver;
+  const bool has_contact = c.contact.has_value();
+  const std::optional<ContactElements>& elements = c.elements;
+  const std::optional<VelocityContact>& contact = c.contact;
+  // The step matrix factorized and condensed here, once.
+  QuasistaticKelvinVoigt scheme(c.system, std::move(c.reduced), time.k, c.u0);
   LinearContactMarch march(scheme, contact ? &*contact : nullptr, solver.parameters,
                            solver.backend);
 

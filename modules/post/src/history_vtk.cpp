@@ -35,7 +35,6 @@ std::vector<double> nodal_values(const Ds& hist, const std::string& name, std::s
           std::all_of(row.begin(), row.end(), [&](std::int64_t r) { return r >= 0 && r < rows; }),
       hist.source << ": array '" << name << "' is not " << (per_step ? "steps" : "states") << " x "
                   << p << " contact nodes for the " << outputs << " kept states");
-  verify_finite(values, hist.source, name);
   std::vector<double> nodal(outputs * nodes, 0.0);
   for (std::size_t j = 0; j < p; ++j) {
     const std::int64_t node = contact_node[j];
@@ -67,8 +66,6 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
                hist.source << ": array '" << name << "' is not " << outputs << " states x " << ndof
                            << " dofs (" << mesh.num_nodes() << " mesh nodes)");
   }
-  verify_finite(u, hist.source, "u");
-  verify_finite(v, hist.source, "v");
   const auto nodes = static_cast<std::size_t>(mesh.num_nodes());
   // The contact pressure of every march with contact; a march in velocity also has per step the
   // statuses and the tangential force (integrator/velocity_history_io.hpp).

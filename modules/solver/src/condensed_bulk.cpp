@@ -301,17 +301,26 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
     rhs[a] = right;
   }
   if (nu > 0) {
-    Eigen::VectorXd x;
-    if (!coupled) {
-      const Eigen::LLT<Eigen::MatrixXd> cholesky(A);
-      SIG_VERIFY(cholesky.info() == Eigen::Success,
-                 "the contact step matrix is not positive definite (" << nu << " free of " << tail
-                                                                      << " tail unknowns)");
-      x = cholesky.solve(rhs);
-    } else {
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
-      x = lu.solve(rhs);
+    // The factorization of the last A serves again when A repeats: the iteration that confirms
+    // a Newton's converged branches, and every step of a march whose statuses hold (the laws'
+    // springs and couplings depend on the branches only, not on the iterate).
+    const bool repeated =
+        A.rows() == tail_matrix_.rows() && coupled == tail_coupled_ && A == tail_matrix_;
+    if (!repeated) {
+      tail_matrix_ = std::move(A);
+      tail_coupled_ = coupled;
+      if (!coupled) {
+        tail_llt_.compute(tail_matrix_);
+        SIG_VERIFY(tail_llt_.info() == Eigen::Success,
+                   "the contact step matrix is not positive definite (" << nu << " free of " << tail
+                                                                        << " tail unknowns)");
+      } else {
+        tail_lu_.compute(tail_matrix_);
+      }
+      ++tail_factorizations_;
     }
+    const Eigen::VectorXd x =
+        coupled ? Eigen::VectorXd(tail_lu_.solve(rhs)) : Eigen::VectorXd(tail_llt_.solve(rhs));
     SIG_VERIFY(x.allFinite(), "the contact step matrix is singular");
     for (int a = 0; a < nu; ++a)
       z_tail[free[a]] = x[a];

@@ -27,9 +27,7 @@ SolverCard read_solver_card(const Datafile& datafile) {
   p.eps = solver.real("eps");
   p.max_iterations = static_cast<int>(solver.integer("maxit", p.max_iterations));
   p.search = solver.choice("search", {"auto", "yes", "no"});
-  for (const char* positive : {"r", "gamma", "c", "eps", "maxit"})
-    if (solver.has(positive) && solver.real(positive) <= 0)
-      solver.fail(positive, "must be positive");
+  // r, gamma, c, eps > 0, maxit >= 1, LOADSTEPS n >= 1: the cards' ranges (core/ranges.hpp).
 
   if (const Card* loop = datafile.find("CONVEXIFICATION")) {
     const Card* friction = datafile.find("FRICTION");
@@ -54,10 +52,8 @@ SolverCard read_solver_card(const Datafile& datafile) {
               : start == "slipped" ? ConvexificationStart::slipped
                                    : ConvexificationStart::given;
   }
-  if (const Card* steps = datafile.find("LOADSTEPS")) {
+  if (const Card* steps = datafile.find("LOADSTEPS"))
     result.load_steps = static_cast<int>(steps->integer("n"));
-    if (result.load_steps < 1) steps->fail("n", "must be at least 1");
-  }
   return result;
 }
 

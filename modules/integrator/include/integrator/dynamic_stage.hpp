@@ -29,7 +29,7 @@
 // MEMORY card, mass=emm, a body without mass, a hyperelastic law.
 //
 // Writes OUTDIR/case.hist (integrator/velocity_history_io.hpp, plus per step kinetic, elastic,
-// compliance (the compliance's potential, compliance_potential) and total energy, and the
+// compliance (the compliance's potential, compliance_energy) and total energy, and the
 // convexification counts) and OUTDIR/steps.csv. A step whose contact Newton or convexification
 // loop fails stops the march: the files hold the steps done, a warning is printed and the stage
 // exits 0.

@@ -43,6 +43,9 @@ public:
 
 private:
   ReducedSystem reduced_; ///< K_B = reduced_.K, the loads
+  /// The ramped loads' rate on the free dofs when they are the only loads that change: f(t) =
+  /// reduced_.f + t rate_ without a full-size pass a step; empty otherwise (reduced_.load_at).
+  Eigen::VectorXd rate_;
   double k_;
   Eigen::SparseMatrix<double> S_;
   std::vector<Eigen::SparseMatrix<double>> memory_stiffness_; ///< K_m on the free dofs

@@ -100,6 +100,9 @@ struct VelocityStep {
   Eigen::VectorXd normal_velocity; ///< v_n per contact node (towards the obstacle)
   Eigen::VectorXd tangential_velocity; ///< v_t per contact node (along t = (n2, -n1))
   double seconds = 0;                  ///< wall time of the step
+  double seconds_right_side = 0;       ///< of it: the scheme's b_n
+  double seconds_contact = 0; ///< of it: the contact problem on the condensed bulk (the rest:
+                              ///< b_n's condensation and the velocity's expansion, or the solve)
   bool converged() const { return contact.converged; }
 };
 
@@ -128,6 +131,9 @@ public:
   /// Schur complement included).
   int sparse_factorizations() const { return 1; }
   int dense_factorizations() const;
+  /// Factorizations of the condensed bulk's tail systems (one per set of branches met in a row;
+  /// solver/condensed_bulk.hpp); 0 without contact.
+  int tail_factorizations() const;
   double seconds_factorize() const { return seconds_factorize_; }
 
 private:

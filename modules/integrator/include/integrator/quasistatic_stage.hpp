@@ -17,13 +17,36 @@
 // Writes OUTDIR/case.hist (integrator/velocity_history_io.hpp) and OUTDIR/steps.csv. A step whose
 // contact Newton fails stops the march: the files hold the steps done, a warning is printed and
 // the stage exits 0.
+#include "assembly/dirichlet.hpp"
+#include "assembly/system.hpp"
+#include "contact/contact_elements.hpp"
+#include "integrator/linear_contact_march.hpp"
 #include "integrator/time_card.hpp"
+#include "solver/solver_card.hpp"
+
+#include <optional>
 
 namespace sig {
 
 class Datafile;
 struct StageArgs;
 
+/// A quasistatic case as the stage reads it: cards checked, the assembled system on its free
+/// dofs, the initial displacement and the contact boundary.
+struct QuasistaticCase {
+  SolverCard solver;
+  LinearSystem system;
+  ReducedSystem reduced;
+  Eigen::VectorXd u0; ///< free dofs
+  std::optional<ContactElements> elements;
+  std::optional<VelocityContact> contact; ///< on the free dofs of `reduced`
+};
+
+/// The cards of the header checked (InputError naming the line and field), then OUTDIR's case.nopo,
+/// case.mili, case.tae and (with a CONTACT card) case.cont.
+QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& datafile);
+
+/// The stage: read the case, march, write case.hist and steps.csv, print a summary.
 void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
                            const TimeParameters& time);
 

@@ -73,6 +73,9 @@ public:
   const Eigen::VectorXd& displacement() const { return w_; }
   /// Cholesky factorizations of the default step matrix so far (1 + reorders(), once factorized).
   int factorizations() const { return factorizations_; }
+  /// Factorizations of a step's tail system: a step whose tail system repeats the last one (the
+  /// same branches) reuses its factorization.
+  int tail_factorizations() const { return tail_factorizations_; }
   /// Times the nodes were reordered (and B factorized again) to shorten the tail.
   int reorders() const { return reorders_; }
 
@@ -95,6 +98,13 @@ private:
   Eigen::VectorXd last_normal_force_;               ///< N of the last solve, per contact node
   int reorders_ = 0;
   int factorizations_ = 0;
+  /// The last tail system A of a step, kept with its factorization for the next step with the
+  /// same A.
+  Eigen::MatrixXd tail_matrix_;
+  bool tail_coupled_ = false;
+  Eigen::LLT<Eigen::MatrixXd> tail_llt_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> tail_lu_;
+  int tail_factorizations_ = 0;
 
   void order_nodes(const std::vector<int>& nodes);
   void reorder(const std::vector<char>& contact_zone);
