@@ -21,6 +21,10 @@ SolverCard read_solver_card(const Datafile& datafile) {
                 "the datafile has a CONTACT card: choose alm, penalty, pdas or projection");
   if (p.method != "linear" && !has_contact)
     solver.fail("method", "method " + p.method + " needs a CONTACT card");
+  // Without a CONTACT card no stage reads FRICTION: refuse it rather than ignore it.
+  if (const Card* friction = datafile.find("FRICTION"); friction != nullptr && !has_contact)
+    friction->fail("ref", "friction needs a CONTACT card on the same reference (this deck has "
+                          "none, so no contact stage runs)");
   p.r = solver.real("r");
   p.gamma = solver.real("gamma");
   p.c = solver.real("c");
