@@ -95,10 +95,13 @@ void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
                             std::to_string(ref) + ")");
     const std::string name = card->choice("law", friction_law_choices);
     law.friction = friction_law_named(name);
-    if (law.friction == FrictionLaw::coulomb)
+    if (law.friction == FrictionLaw::coulomb || law.penetration_dependent())
       law.mu = card->real("mu");
     else
       refuse_unused(*card, "mu", name);
+    if (law.penetration_dependent() && !(law.depth > 0))
+      card->fail("law", "law=" + name + " needs the asperities' depth g > 0 on the CONTACT card: " +
+                            "mu varies over the penetration 0 < q_n < g (8.3)");
     if (law.friction == FrictionLaw::tresca)
       law.threshold = card->real("threshold");
     else

@@ -11,7 +11,7 @@ namespace sig {
 
 TimeParameters time_parameters(const Card& time, bool has_contact) {
   TimeParameters p;
-  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic"});
+  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic", "backward-euler"});
   p.final_time = time.real("T"); // T, k > 0, output_every >= 1: core/ranges.hpp
   p.k = time.real("k");
   // A step count that is not whole would make the last step end before or after T.
@@ -33,16 +33,18 @@ TimeParameters time_parameters(const Card& time, bool has_contact) {
     time.fail("mass", "mass=emm needs a CONTACT card: the Equivalent Mass Matrix (3.54) removes "
                       "the normal inertia of the contact nodes of Gamma3");
   p.mass = mass_choice_from_string(mass);
+  p.stress = algorithmic_stress_named(time.choice("stress", {"gonzalez", "midpoint"}));
   return p;
 }
 
 void warn_unused_solver_fields(const Card* solver) {
   if (solver == nullptr) return;
   for (const auto& [name, value] : solver->fields)
-    if (name != "linear" && name != "maxit")
-      log_warning(solver->file + ":" + std::to_string(solver->line) + ": SOLVER " + name + "=" +
-                  value +
-                  " is not used by sig-march (a TIME deck uses linear= and maxit=): " + "ignored");
+    if (name != "linear" && name != "maxit" && name != "gamma" && name != "eps")
+      log_warning(
+          solver->file + ":" + std::to_string(solver->line) + ": SOLVER " + name + "=" + value +
+          " is not used by sig-march (a TIME deck uses linear=, maxit=, gamma= and eps=): " +
+          "ignored");
 }
 
 } // namespace sig

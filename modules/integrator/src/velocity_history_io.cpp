@@ -52,8 +52,20 @@ ContactRows contact_rows(const VelocityHistory& h, const VelocityHistoryInfo& in
 
 } // namespace
 
+/// sig::Error unless every extra column has a value per step 0 .. the last.
+void check_step_columns(const VelocityHistory& h, const VelocityHistoryInfo& info) {
+  for (const VelocityHistoryInfo::StepColumn& c : info.step_columns)
+    SIG_VERIFY(c.values.size() == h.steps.size() + 1,
+               "HIST: column '" << c.name << "' has " << c.values.size() << " values for "
+                                << h.steps.size() + 1 << " steps");
+}
+
 std::string velocity_steps_csv(const VelocityHistory& history, const VelocityHistoryInfo& info) {
-  std::string csv = std::string(velocity_steps_csv_header) + "\n";
+  check_step_columns(history, info);
+  std::string csv = velocity_steps_csv_header;
+  for (const VelocityHistoryInfo::StepColumn& c : info.step_columns)
+    csv += "," + c.name;
+  csv += "\n";
   const std::size_t p = info.contact_nodes.size();
   const ContactRows rows = contact_rows(history, info);
   char line[512];
@@ -69,11 +81,16 @@ std::string velocity_steps_csv(const VelocityHistory& history, const VelocityHis
       max_u = std::max(max_u, rows.displacement_n[at]);
       max_p = std::max(max_p, rows.force_n[at] / info.weight[static_cast<Eigen::Index>(i)]);
     }
-    std::snprintf(line, sizeof line, "%d,%.17g,%d,%d,%d,%d,%d,%d,%d,%d,%.17g,%.17g,%.17g,%.6g\n",
+    std::snprintf(line, sizeof line, "%d,%.17g,%d,%d,%d,%d,%d,%d,%d,%d,%.17g,%.17g,%.17g,%.6g",
                   step.step, step.time, step.converged() ? 1 : 0, step.contact.iterations(),
                   count[0], count[1], count[2], friction[1], friction[2], friction[3], max_v, max_u,
                   max_p, step.seconds);
     csv += line;
+    for (const VelocityHistoryInfo::StepColumn& c : info.step_columns) {
+      std::snprintf(line, sizeof line, ",%.17g", c.values[s + 1]);
+      csv += line;
+    }
+    csv += "\n";
   }
   return csv;
 }
@@ -116,6 +133,9 @@ void write_velocity_hist(const std::filesystem::path& path, const VelocityHistor
   ds.put("step_seconds", seconds);
   ds.put_int("converged", history.converged ? 1 : 0);
   ds.put_text("failure", history.failure);
+  check_step_columns(history, info);
+  for (const VelocityHistoryInfo::StepColumn& c : info.step_columns)
+    ds.put(c.name, c.values);
 
   const auto p = static_cast<std::int64_t>(info.contact_nodes.size());
   if (p > 0) {

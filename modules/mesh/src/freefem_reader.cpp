@@ -78,7 +78,7 @@ Mesh read_mesh(TokenReader& in) {
   std::vector<long> numbers;
   for (int t : flipped)
     numbers.push_back(t + 1);
-  warn_entities(in.file(), "triangles were clockwise (1-based)", numbers, "reoriented");
+  warn_entities(in.file(), "clockwise triangle(s) (1-based)", numbers, "reoriented");
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "boundary edge with label " + std::to_string(mesh.edges[bad].ref) +

@@ -351,8 +351,10 @@ Mesh read_mesh(TokenReader& in) {
     throw InputError(in.file(), triangle_lines[flat], "",
                      "triangle " + std::to_string(flat + 1) +
                          " (1-based) is degenerate: its three nodes are aligned (zero area)");
-  warn_entities(in.file(), "triangles were clockwise (1-based, in file order)",
-                {flipped.begin(), flipped.end()}, "reoriented");
+  std::vector<long> numbers;
+  for (int t : flipped)
+    numbers.push_back(t + 1);
+  warn_entities(in.file(), "clockwise triangle(s) (1-based, in file order)", numbers, "reoriented");
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "line element with physical tag " + std::to_string(mesh.edges[bad].ref) +
@@ -361,7 +363,7 @@ Mesh read_mesh(TokenReader& in) {
   std::vector<long> dropped;
   for (std::size_t i = 0; i < renumber.size(); ++i)
     if (renumber[i] < 0) dropped.push_back(content.node_tags[i]);
-  warn_entities(in.file(), "nodes are used by no triangle (node tags)", dropped, "dropped");
+  warn_entities(in.file(), "node(s) that no triangle uses (node tags)", dropped, "dropped");
   check_mesh(mesh, in.file());
   return mesh;
 }

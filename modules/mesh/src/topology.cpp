@@ -112,8 +112,8 @@ void warn_entities(const std::string& file, const std::string& what,
   for (std::size_t k = 0; k < numbers.size() && k < 10; ++k)
     list += (k ? ", " : "") + std::to_string(numbers[k]);
   if (numbers.size() > 10) list += ", ...";
-  log_warning(file + ": " + std::to_string(numbers.size()) + " " + what + " (" + list +
-              "): " + action);
+  log_warning(file + ": " + action + " " + std::to_string(numbers.size()) + " " + what + ": " +
+              list);
 }
 
 } // namespace sig

@@ -71,8 +71,10 @@ int main(int argc, char** argv) {
                            "(sig-march)");
     const sig::SolverCard card = sig::read_solver_card(datafile);
     for (const sig::Card* initial : datafile.all("INITIAL")) {
-      if (initial->has("v"))
-        initial->fail("v", "a static deck has no velocity (INITIAL v= is for TIME decks)");
+      for (const char* velocity : {"v", "omega"})
+        if (initial->has(velocity))
+          initial->fail(velocity, "a static deck has no velocity (INITIAL v=, omega= are for TIME "
+                                  "decks)");
       if (!has_contact)
         initial->fail("u", "a static deck without contact is one linear solve: it has no first "
                            "iterate to start from");

@@ -40,7 +40,7 @@ std::vector<int> drop_unused_nodes(Mesh& mesh);
 std::vector<std::pair<int, int>> coincident_nodes(const Mesh& mesh);
 
 /// A reader's warning that it changed what the file said, naming the entities (at most 10, then
-/// "..."): "FILE: 3 triangles were clockwise (1-based: 4, 9, 12): reoriented".
+/// "..."): "FILE: reoriented 3 clockwise triangle(s) (1-based): 4, 9, 12".
 void warn_entities(const std::string& file, const std::string& what,
                    const std::vector<long>& numbers, const std::string& action);
 
