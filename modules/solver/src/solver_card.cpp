@@ -45,9 +45,16 @@ SolverCard read_solver_card(const Datafile& datafile) {
     if (o.max_iterations < 1) loop->fail("maxit", "must be at least 1");
     o.relaxation = loop->real("relaxation", o.relaxation);
     if (!(o.relaxation > 0 && o.relaxation <= 1)) loop->fail("relaxation", "must be in (0, 1]");
-    o.start = loop->choice("start", {"rest", "slipped"}, "rest") == "rest"
-                  ? ConvexificationStart::rest
-                  : ConvexificationStart::slipped;
+    // A march starts each step's loop from the previous step's slip rate (ALGORITHMS.md 3.3).
+    const bool march = datafile.find("TIME") != nullptr;
+    const std::string start =
+        loop->choice("start", {"rest", "slipped", "previous"}, march ? "previous" : "rest");
+    if (start == "previous" && !march)
+      loop->fail("start", "previous is the slip rate of a march's previous time step: a static "
+                          "solve has none (rest or slipped)");
+    o.start = start == "rest"      ? ConvexificationStart::rest
+              : start == "slipped" ? ConvexificationStart::slipped
+                                   : ConvexificationStart::given;
   }
   if (const Card* steps = datafile.find("LOADSTEPS"))
     result.load_steps = static_cast<int>(steps->integer("n"));

@@ -5,7 +5,8 @@
 //   SOLVER method=linear|alm|penalty|pdas|projection linear=cholmod|umfpack|mumps
 //          r= gamma= c= eps= maxit=
 //   LOADSTEPS n=   (hyperelastic laws only; default 1)
-//   CONVEXIFICATION eps= maxit= relaxation= start=rest|slipped   (FRICTION law=nonmonotone)
+//   CONVEXIFICATION eps= maxit= relaxation= start=rest|slipped|previous
+//                   (FRICTION law=nonmonotone; previous, the default of a march: ch. 6)
 #include "solver/contact_method.hpp"
 #include "solver/convexification.hpp"
 
