@@ -14,7 +14,8 @@ export SIG_ROOT SIG_BUILD SIG_BIN
 # them so a fresh machine runs everything.
 packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libmumps-seq-dev libmetis-dev
   libopenblas-dev libvtk9-dev libgtest-dev gmsh python3 python3-numpy python3-matplotlib
-  python3-pytest freefem++ paraview xvfb python3-getfem python3-meshio chromium)
+  python3-pytest freefem++ paraview xvfb python3-getfem python3-meshio chromium
+  clang libclang-rt-14-dev) # clang + libFuzzer: the readers' fuzz targets (tests/fuzz/run.sh)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # drivers/test.sh: the set-up of run.sh, then the whole test suite (ctest), then the unit tests
-# again under AddressSanitizer + UBSan in build-asan/.
+# again under AddressSanitizer + UBSan in build-asan/, then the readers' fuzz targets for 30 s
+# each from a fixed seed in build-fuzz/ (clang and libFuzzer; skipped when clang is absent).
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 cd "$SIG_ROOT"
@@ -16,3 +17,18 @@ fi
 cmake --build "$asan" -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir "$asan" -j "$jobs" -L unit --output-on-failure
+
+# Fuzzing (tests/fuzz/README.md): libFuzzer needs clang, with every library instrumented, so a
+# build of its own; only the reader libraries and the five targets are built.
+fuzz=$SIG_ROOT/build-fuzz
+if command -v clang++ > /dev/null &&
+  ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a > /dev/null 2>&1; then
+  if [ ! -f "$fuzz/CMakeCache.txt" ]; then
+    CC=clang CXX=clang++ cmake -S "$SIG_ROOT" -B "$fuzz" -DCMAKE_BUILD_TYPE=None \
+      -DCMAKE_CXX_FLAGS="-O1" -DSIG_FUZZ=ON -DSIG_UNIT_TESTS_ONLY=ON
+  fi
+  cmake --build "$fuzz" -j "$jobs" --target fuzz_datafile fuzz_gmsh fuzz_freefem fuzz_nopo fuzz_ds
+  tests/fuzz/run.sh --build "$fuzz" --time "${SIG_FUZZ_SECONDS:-30}"
+else
+  echo "test.sh: clang or libFuzzer (libclang-rt-14-dev) absent: fuzzing skipped"
+fi

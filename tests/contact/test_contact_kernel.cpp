@@ -58,7 +58,14 @@ void expect_derivatives(const ContactLaw& law, const NodeVariables& x, double r,
     for (; h > 1e-13; h /= 4) {
       plus = contact_kernel(law, with(x, j, h), r, r);
       minus = contact_kernel(law, with(x, j, -h), r, r);
-      if (same_branch(plus, k) && same_branch(minus, k)) break;
+      // mu1 / mu2: also on x's piece of the coefficient (its kinks at q_n = 0 and g).
+      const auto piece = [&](double delta) {
+        return d_penetration_friction(law, with(x, j, delta).q_n) ==
+                   d_penetration_friction(law, x.q_n) &&
+               (penetration_friction(law, with(x, j, delta).q_n) > 0) ==
+                   (penetration_friction(law, x.q_n) > 0);
+      };
+      if (same_branch(plus, k) && same_branch(minus, k) && piece(h) && piece(-h)) break;
     }
     ASSERT_GT(h, 1e-13) << where << ": no step stays on the branch in variable " << j;
     const Eigen::Vector4d fd = (outputs(plus) - outputs(minus)) / (2 * h);
@@ -91,6 +98,7 @@ ContactLaw law_of(NormalLaw normal, FrictionLaw friction,
   law.cn = 7.5;
   law.depth = law.has_wall() ? 0.4 : 0.0;
   law.friction = friction;
+  if (law.penetration_dependent()) law.depth = 0.4; // the asperities' depth, walls or not
   law.mu = 0.3;
   law.threshold = 2.0;
   if (friction == FrictionLaw::nonmonotone) { // mu frozen at mu(r) of some slip r = 0.2
@@ -135,6 +143,12 @@ TEST_P(EveryLaw, DerivativesOnBothSidesOfEveryKink) {
           expect_derivatives(truncated, {1.5 / law.cn + side * delta, 0.01, -1.0 - 2 * r, 0}, r,
                              "truncation, " + where);
         }
+        // mu1 / mu2's kinks in the penetration, at 0 and g (sticking: the bound's slope in q_n
+        // then shows in nothing but the statuses; slipping: in T).
+        if (law.penetration_dependent())
+          for (double q_n : {side * delta, law.depth + side * delta})
+            for (double t : {0.0, 5.0})
+              expect_derivatives(law, {q_n, 0.3, -1.0 - 2 * r, t}, r, "mu kink, " + where);
         // The friction kink |t + r q_t| = s on both bounds, crossed along t.
         if (law.has_friction())
           for (double sign : {-1.0, 1.0})
@@ -245,6 +259,11 @@ INSTANTIATE_TEST_SUITE_P(
         Case{NormalLaw::compliance, FrictionLaw::coulomb, FrictionBound::compliance},
         Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb, FrictionBound::compliance},
         Case{NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone, FrictionBound::compliance},
+        Case{NormalLaw::signorini, FrictionLaw::mu1}, Case{NormalLaw::compliance, FrictionLaw::mu1},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::mu1},
+        Case{NormalLaw::compliance, FrictionLaw::mu2},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::mu2},
+        Case{NormalLaw::compliance_unilateral, FrictionLaw::mu2, FrictionBound::compliance},
         Case{NormalLaw::damped, FrictionLaw::coulomb},
         Case{NormalLaw::damped_unilateral, FrictionLaw::none},
         Case{NormalLaw::damped_unilateral, FrictionLaw::coulomb},
@@ -399,6 +418,40 @@ TEST(ContactKernel, ComplianceBoundIsTrescaOnTheWall) {
             contact_kernel(law, {law.depth, 0.0, 3.0, 0.0}, 10, 10).bound);
 }
 
+// (8.3): mu1 rises from 0 to mu0 over the asperities' depth g, mu2 falls from 2 mu0 to mu0; both
+// are mu0 once the asperities are crushed and 0 off the obstacle, and mu2 >= mu1 in between.
+TEST(ContactKernel, PenetrationDependentCoefficients) {
+  ContactLaw mu1 = law_of(NormalLaw::compliance_unilateral, FrictionLaw::mu1);
+  ContactLaw mu2 = law_of(NormalLaw::compliance_unilateral, FrictionLaw::mu2);
+  const double g = mu1.depth, mu0 = mu1.mu;
+  for (double q : {-0.1, 0.0})
+    EXPECT_EQ(penetration_friction(mu1, q) + penetration_friction(mu2, q), 0.0);
+  EXPECT_DOUBLE_EQ(penetration_friction(mu1, g / 4), mu0 / 4);
+  EXPECT_DOUBLE_EQ(penetration_friction(mu2, g / 4), 1.75 * mu0);
+  EXPECT_DOUBLE_EQ(penetration_friction(mu2, 1e-12), 2 * mu0 * (1 - 0.5e-12 / g));
+  for (double q : {g, 2 * g}) {
+    EXPECT_EQ(penetration_friction(mu1, q), mu0);
+    EXPECT_EQ(penetration_friction(mu2, q), mu0);
+    EXPECT_EQ(d_penetration_friction(mu1, q), 0.0); // the kinks belong to the flat sides
+  }
+  EXPECT_EQ(d_penetration_friction(mu2, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(d_penetration_friction(mu1, g / 2), mu0 / g);
+  EXPECT_DOUBLE_EQ(d_penetration_friction(mu2, g / 2), -mu0 / g);
+  for (int i = 1; i < 100; ++i) // mu2 >= mu1 on (0, g): it dissipates more
+    EXPECT_GE(penetration_friction(mu2, i * g / 100), penetration_friction(mu1, i * g / 100));
+  // Coulomb keeps its coefficient; the threshold mu2 p stays continuous at 0 since p(0) = 0.
+  EXPECT_EQ(penetration_friction(law_of(NormalLaw::signorini, FrictionLaw::coulomb), 1.0), 0.3);
+  const ContactKernel at_zero = contact_kernel(mu2, {1e-14, 0.0, 0.0, 0.0}, 10, 10);
+  EXPECT_LT(at_zero.bound, 1e-12);
+  // law_problem: the asperities need a depth.
+  mu1.depth = 0;
+  ASSERT_TRUE(law_problem(mu1).has_value());
+  EXPECT_EQ(law_problem(mu1)->field, "g");
+  EXPECT_EQ(friction_law_named("mu2"), FrictionLaw::mu2);
+  EXPECT_EQ(friction_law_of_id(5), FrictionLaw::mu2);
+  (void)mu2;
+}
+
 TEST(ContactKernel, NonmonotoneWithEqualCoefficientsIsCoulomb) {
   // a = b: mu(r) = a for every slip, whatever alpha; the kernel is Coulomb's with mu = a.
   for (FrictionBound bound : {FrictionBound::normal, FrictionBound::compliance}) {
@@ -441,6 +494,30 @@ TEST(ContactKernel, NonmonotoneCoefficientAndItsSlope) {
   // Other laws: coulomb's mu, 0 without a coefficient.
   EXPECT_EQ(friction_coefficient(law_of(NormalLaw::compliance, FrictionLaw::coulomb), 2.0), 0.3);
   EXPECT_EQ(friction_coefficient(law_of(NormalLaw::compliance, FrictionLaw::tresca), 2.0), 0.0);
+}
+
+} // namespace
+} // namespace sig
+
+namespace sig {
+namespace {
+
+// The compliance's energy is the integral of its pressure: its central difference is P, on both
+// sides of the obstacle surface and of the truncation, up to the wall.
+TEST(ContactKernel, ComplianceEnergyIntegratesThePressure) {
+  ContactLaw truncated = law_of(NormalLaw::compliance, FrictionLaw::none);
+  truncated.c3 = 1.5; // the knee at q_n = 0.2
+  const ContactLaw unilateral = law_of(NormalLaw::compliance_unilateral, FrictionLaw::none);
+  const ContactLaw bilateral = law_of(NormalLaw::compliance_bilateral, FrictionLaw::none);
+  for (const ContactLaw& law : {truncated, unilateral, bilateral})
+    for (double q : {-0.3, -0.01, 0.05, 0.19, 0.21, 0.35, 0.39}) {
+      const double h = 1e-6;
+      const double slope =
+          (compliance_energy(law, q + h) - compliance_energy(law, q - h)) / (2 * h);
+      EXPECT_NEAR(slope, compliance_pressure(law, q), 1e-8) << describe(law) << " q_n " << q;
+    }
+  EXPECT_EQ(compliance_energy(law_of(NormalLaw::signorini, FrictionLaw::none), 0.3), 0.0);
+  EXPECT_EQ(compliance_energy(truncated, -0.1), 0.0);
 }
 
 } // namespace

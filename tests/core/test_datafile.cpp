@@ -2,9 +2,11 @@
 // InputError that points at the file, the line and the field.
 #include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "core/ranges.hpp"
 #include "scratch_folder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <gtest/gtest.h>
 #include <set>
@@ -127,12 +129,12 @@ struct BadDeck {
 void read_like_a_stage(const Datafile& deck) {
   for (const Card* m : deck.all("MATERIAL")) {
     m->real("E");
-    const double nu = m->real("nu");
-    if (nu >= 0.5) m->fail("nu", "must be below 0.5");
+    m->real("nu");
     m->choice("plane", {"strain", "stress"}, "strain");
   }
   if (const Card* mesh = deck.find("MESH")) {
     mesh->integer("N", 8);
+    mesh->real("R", 1);
     if (mesh->has("center")) mesh->reals("center");
   }
   for (const Card* t : deck.all("TRACTION"))
@@ -169,7 +171,7 @@ const BadDeck bad_decks[] = {
      "allowed: region, law, E, nu"},
     {"field without =", "MESH generator disc\n", 1, "generator", "missing '='"},
     {"value missing", "MESH generator=\n", 1, "generator", "missing value"},
-    {"repeated field", "MESH generator=disc\nMATERIAL E=1 nu=0.2 e=3\n", 2, "e", "given twice"},
+    {"repeated field", "MESH generator=disc\nMATERIAL E=1 nu=0.2 e=3\n", 2, "E", "given twice"},
     {"not a number", "MESH generator=disc\n\nMATERIAL E=abc nu=0.3\n", 3, "E",
      "expected a number, got 'abc'"},
     {"number with unit", "MESH generator=disc\nMATERIAL E=210GPa nu=0.3\n", 2, "E",
@@ -183,8 +185,18 @@ const BadDeck bad_decks[] = {
     {"not an integer", "MESH generator=disc N=2.5\n", 1, "N", "expected an integer, got '2.5'"},
     {"bad choice", "MESH generator=disc\nMATERIAL E=1 nu=0.3 plane=strian\n", 2, "plane",
      "expected one of strain|stress, got 'strian'"},
-    {"stage check", "MESH generator=disc\n# steel\nMATERIAL E=1 nu=0.5\n", 3, "nu",
-     "must be below 0.5"},
+    {"out of its range", "MESH generator=disc\n# steel\nMATERIAL E=1 nu=0.5\n", 3, "nu",
+     "must be in (-1, 0.5), got 0.5"},
+    {"below its range", "MESH generator=disc\nMATERIAL E=-2 nu=0.3\n", 2, "E",
+     "must be > 0, got -2"},
+    {"count out of range", "MESH generator=disc N=0\n", 1, "N", "must be in [4, 1e+08], got 0"},
+    {"empty value swallowing the next field", "MESH generator=disc\nOUTPUT name= vtk=yes\n", 2,
+     "name", "empty value ('vtk=yes' is the next field)"},
+    {"empty value before a number field", "MESH generator=disc\nMATERIAL E= nu=0.3\n", 2, "E",
+     "empty value"},
+    {"empty quoted value", "MESH generator=disc\nOUTPUT name=\"\"\n", 2, "name", "empty value"},
+    {"lower-case field named as the schema spells it", "MESH generator=disc r=abc\n", 1, "R",
+     "expected a number"},
     {"missing required field", "MESH generator=disc\nMATERIAL nu=0.3\n", 2, "E", "missing"},
     {"unterminated quote", "MESH generator=disc\nOUTPUT name=\"abc\n", 2, "", "unterminated quote"},
     {"garbage instead of a field", "MESH generator=disc\nOUTPUT =yes\n", 2, "",
@@ -192,6 +204,8 @@ const BadDeck bad_decks[] = {
     {"repeated single card", "MESH generator=disc\nSOLVER method=alm\n\nsolver method=pdas\n", 4,
      "", "lines 2 and 4"},
     {"missing card", "MATERIAL E=1 nu=0.3\n", 0, "", "missing card MESH"},
+    {"CR line ends: the line number counts", "MESH generator=disc\r\rMATERIAL E=x nu=0.3\r", 3, "E",
+     "expected a number"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Datafile, DatafileBadInput, ::testing::ValuesIn(bad_decks),
@@ -203,6 +217,47 @@ INSTANTIATE_TEST_SUITE_P(Datafile, DatafileBadInput, ::testing::ValuesIn(bad_dec
                                '_');
                            return name;
                          });
+
+// Decks as editors save them: a byte order mark, CR LF or CR-only line ends read like LF.
+TEST(Datafile, ByteOrderMarkAndEveryLineEndRead) {
+  for (const std::string text :
+       {"\xEF\xBB\xBFMESH generator=disc\nTITLE a\n", "MESH generator=disc\r\nTITLE a\r\n",
+        "MESH generator=disc\rTITLE a\r", "MESH generator=disc\rTITLE a"}) {
+    const Datafile deck = Datafile::parse(text, "d.dat");
+    ASSERT_EQ(deck.cards().size(), 2u) << text;
+    EXPECT_EQ(deck.cards()[0].text("generator"), "disc");
+    EXPECT_EQ(deck.cards()[1].line, 2);
+    EXPECT_EQ(deck.title(), "a");
+  }
+}
+
+// A title that is not UTF-8 (Latin-1 from an old editor) has its bad bytes replaced, so every
+// output that carries it (summary.json, VTK, DS headers) stays valid.
+TEST(Datafile, TitleIsMadeValidUtf8) {
+  const Datafile deck =
+      Datafile::parse("TITLE caf\xe9 \xc3\xa9t\xc3\xa9\nMESH generator=disc\n", "d.dat");
+  EXPECT_EQ(deck.title(), "caf\xEF\xBF\xBD \xc3\xa9t\xc3\xa9");
+}
+
+// Output names are plain file names: no folder, never hidden.
+TEST(Datafile, FileNamesArePlain) {
+  const Datafile deck = Datafile::parse("OUTPUT name=hertz_N256.v2\nTITLE a\n", "d.dat");
+  EXPECT_EQ(deck.require("OUTPUT").file_name("name", "x"), "hertz_N256.v2");
+  EXPECT_EQ(Datafile::parse("TITLE a\nMESH generator=disc\n", "d.dat")
+                .require("MESH")
+                .file_name("name", "fallback"),
+            "fallback");
+  for (const char* bad : {"../../x/pwn", "/tmp/x", "a/b", ".hidden", "..", "a b", "x:y"}) {
+    const std::string text = std::string("OUTPUT name=\"") + bad + "\"\n";
+    try {
+      Datafile::parse(text, "d.dat").require("OUTPUT").file_name("name", "x");
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "name");
+      EXPECT_NE(std::string(e.what()).find("not a plain file name"), std::string::npos) << e.what();
+    }
+  }
+}
 
 TEST(Datafile, UnknownCardListsTheKnownOnes) {
   try {
@@ -248,6 +303,43 @@ TEST(Datafile, SchemaDeclaresEveryCardWithHelp) {
       "SOLVER linear=mumps method=alm r=1 gamma=1 c=1 eps=1e-10 maxit=50\n"
       "OUTPUT vtk=yes name=x\n",
       "all.dat"));
+}
+
+} // namespace
+} // namespace sig
+
+namespace sig {
+namespace {
+
+// One table of ranges serves the deck and the DS readers: the same words either way.
+TEST(Ranges, OneRangeForTheDeckAndTheFiles) {
+  ASSERT_NE(field_range("material", "NU"), nullptr);
+  EXPECT_EQ(field_range("MATERIAL", "nu")->text(), "in (-1, 0.5)");
+  EXPECT_EQ(field_range("MATERIAL", "E")->text(), "> 0");
+  EXPECT_EQ(field_range("MATERIAL", "rho")->text(), ">= 0");
+  EXPECT_EQ(field_range("TRACTION", "f"), nullptr);
+  EXPECT_NO_THROW(verify_in_range(0.3, "MATERIAL", "nu", "case.mili", "poisson", 1));
+  for (double bad : {0.5, -1.0, std::nan("")}) {
+    try {
+      verify_in_range(bad, "MATERIAL", "nu", "out/case.mili", "poisson", 2);
+      ADD_FAILURE() << bad;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("out/case.mili: array 'poisson', row 2: "),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("is not in (-1, 0.5) (the range of MATERIAL nu=)"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  // Every field with a range is a field of the schema (a misspelt line would check nothing).
+  for (const auto& [keyword, field] : fields_with_ranges()) {
+    bool found = false;
+    for (const auto& spec : card_schema())
+      for (const auto& f : spec.fields)
+        found = found || (keyword == spec.keyword && field == f.name);
+    EXPECT_TRUE(found) << keyword << " " << field;
+  }
 }
 
 } // namespace

@@ -79,7 +79,7 @@ TEST(DS, RoundTripOfEveryTypeAndShape) {
       0, -1, 1, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max(),
       6};
   const std::string text("UTF-8 \xc3\xa9t\xc3\xa9, a NUL \0 and a newline\n", 36);
-  ds.put("reals", reals);
+  ds.put("reals", reals, {}, Finite::not_required); // the container holds any double
   ds.put("grid", ints, {2, 3});
   ds.put("cube", std::vector<double>(24, 2.5), {2, 3, 4});
   ds.put("none", std::vector<double>{}, {0, 5});
@@ -98,7 +98,7 @@ TEST(DS, RoundTripOfEveryTypeAndShape) {
     EXPECT_EQ(back.arrays()[i].type, ds.arrays()[i].type);
     EXPECT_EQ(back.arrays()[i].shape, ds.arrays()[i].shape);
   }
-  const auto r = back.reals("reals");
+  const auto r = back.reals_any("reals");
   ASSERT_EQ(r.size(), reals.size());
   for (std::size_t i = 0; i < r.size(); ++i)
     EXPECT_TRUE(same_bits(r[i], reals[i])) << i;
@@ -462,6 +462,72 @@ TEST(Crc, CheckValueOfTheZlibPolynomial) {
   // zlib.crc32(b"The quick brown fox jumps over the lazy dog")
   const std::string fox = "The quick brown fox jumps over the lazy dog";
   EXPECT_EQ(crc32(fox.data(), fox.size()), 0x414FA339u);
+}
+
+} // namespace
+} // namespace sig
+
+namespace sig {
+namespace {
+
+using sig::testing::ScratchFolder;
+using sig::testing::slurp;
+
+// No NaN or inf leaves a stage: write_ds refuses it (the old file kept), Ds::reals refuses a file
+// that holds one anyway (written by another program, or edited: its CRC is valid), naming the
+// file, the array and the value; an array declared to hold them is written and read as such.
+TEST(DsFinite, NonFiniteValuesAreNeverWrittenNorHandedOut) {
+  ScratchFolder dir;
+  const auto path = dir / "case.hist";
+  write_ds(path, sample_ds());
+  const std::string old = slurp(path);
+
+  Ds bad = sample_ds();
+  bad.put("E", std::vector<double>{1.0, std::nan(""), 2.0});
+  try {
+    write_ds(path, bad);
+    ADD_FAILURE() << "NaN written";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string() + ": array 'E': value 2 of 3 is NaN"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(slurp(path), old);
+
+  Ds declared = sample_ds();
+  declared.put("E", std::vector<double>{1.0, -INFINITY}, {}, Finite::not_required);
+  write_ds(path, declared);
+  const Ds back = read_ds(path);
+  EXPECT_EQ(back.reals_any("E")[1], -INFINITY);
+  try {
+    back.reals("E");
+    ADD_FAILURE() << "-inf handed out";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string() + ": array 'E': value 2 of 2 is -inf"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(back.scalar("E"), Error); // every accessor of reals checks
+}
+
+// What a killed stage leaves (its temporary, named by temporary_path) is removed by the next one;
+// a temporary of a process that still runs is kept.
+TEST(DsFinite, StaleTemporariesOfDeadProcessesAreRemoved) {
+  ScratchFolder dir;
+  const auto mine = temporary_path(dir / "case.tae");
+  EXPECT_EQ(mine.filename().string(), ".case.tae.tmp." + std::to_string(::getpid()));
+  // A pid that cannot run: above the kernel's pid_max (at most 2^22).
+  const auto dead = dir / ".case.tae.tmp.99999999";
+  const auto vtu = dir / ".hertz_0000.vtu.tmp.99999998";
+  const auto other = dir / ".notes.tmp.abc"; // not a temporary of ours
+  for (const auto& p : {mine, dead, vtu, other})
+    testing::spit(p, "partial");
+  const auto removed = remove_stale_temporaries(dir.path());
+  EXPECT_EQ(removed.size(), 2u);
+  EXPECT_FALSE(std::filesystem::exists(dead));
+  EXPECT_FALSE(std::filesystem::exists(vtu));
+  EXPECT_TRUE(std::filesystem::exists(mine)); // this process runs
+  EXPECT_TRUE(std::filesystem::exists(other));
 }
 
 } // namespace

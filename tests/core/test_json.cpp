@@ -108,3 +108,27 @@ TEST(Json, IndentedLayout) {
 
 } // namespace
 } // namespace sig
+
+namespace sig {
+namespace {
+
+// JSON output is valid UTF-8 whatever a string holds: bad bytes become U+FFFD, good sequences
+// (2, 3 and 4 bytes) pass unchanged; overlong forms and surrogates are bad bytes.
+TEST(JsonUtf8, BadBytesAreReplaced) {
+  std::size_t replaced = 0;
+  EXPECT_EQ(valid_utf8("\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80 ok", &replaced),
+            "\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80 ok");
+  EXPECT_EQ(replaced, 0u);
+  EXPECT_EQ(valid_utf8("caf\xe9!", &replaced), "caf\xef\xbf\xbd!");
+  EXPECT_EQ(replaced, 1u);
+  std::string seven;
+  for (int k = 0; k < 7; ++k)
+    seven += "\xef\xbf\xbd";
+  EXPECT_EQ(valid_utf8("\xc0\xaf\xed\xa0\x80\xe2\x82", &replaced), seven);
+  EXPECT_EQ(replaced, 7u); // overlong '/', a surrogate, a cut sequence: every byte replaced
+  const std::string json = Json(Json::Object{{"title", "caf\xe9"}}).dump(-1);
+  EXPECT_EQ(json, "{\"title\":\"caf\xef\xbf\xbd\"}");
+}
+
+} // namespace
+} // namespace sig

@@ -27,12 +27,7 @@ struct FreeBody {
   LinearSystem system = test::free_body_system(mesh, test::unit_material());
   ReducedSystem reduced = reduce(system);
 
-  ContactNormals bottom() const {
-    ContactNormals c;
-    c.nodes = mesh.nodes_with_ref(3);
-    c.normals.assign(c.nodes.size(), Eigen::Vector2d(0.0, 1.0));
-    return c;
-  }
+  std::vector<int> bottom() const { return mesh.nodes_with_ref(3); }
   Elastodynamics problem(MassChoice choice) const {
     return reduced_elastodynamics(reduced, mass_matrix(system, choice, mesh, bottom()));
   }

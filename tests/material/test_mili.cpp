@@ -4,26 +4,18 @@
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
+#include "two_subdomains.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <unistd.h>
 
 namespace sig {
 namespace {
-
-// Two triangles of sub-domains 1 and 3: enough for the table, which only looks at sub-domains.
-Mesh two_subdomains() {
-  Mesh mesh;
-  mesh.nodes = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh.subdomain = {1, 3};
-  mesh.vertex_ref.assign(4, 0);
-  return mesh;
-}
 
 const Card& first_card(const Datafile& d) {
   return d.cards().front();
@@ -86,7 +78,7 @@ TEST(MaterialCard, RejectsOutOfRangeParameters) {
 }
 
 TEST(MaterialTable, OneLawPerSubdomain) {
-  const Mesh mesh = two_subdomains();
+  const Mesh mesh = test::two_subdomains();
   const Datafile d = Datafile::parse("MATERIAL region=3 E=2 nu=0.1\n"
                                      "MATERIAL region=1 E=1 nu=0.2 rho=5\n",
                                      "m.dat");
@@ -101,7 +93,7 @@ TEST(MaterialTable, OneLawPerSubdomain) {
 
 TEST(MaterialTable, CardWithoutRegionCoversEverySubdomain) {
   const Datafile d = Datafile::parse("MATERIAL E=4 nu=0.25\n", "m.dat");
-  const MaterialTable table = material_table_from_cards(d, two_subdomains());
+  const MaterialTable table = material_table_from_cards(d, test::two_subdomains());
   ASSERT_EQ(table.entries.size(), 2u);
   EXPECT_EQ(table.of(1).hooke.E, 4.0);
   EXPECT_EQ(table.of(3).hooke.E, 4.0);
@@ -109,7 +101,7 @@ TEST(MaterialTable, CardWithoutRegionCoversEverySubdomain) {
 }
 
 TEST(MaterialTable, MissingDuplicateOrUnknownSubdomainIsAnInputError) {
-  const Mesh mesh = two_subdomains();
+  const Mesh mesh = test::two_subdomains();
   const Datafile missing = Datafile::parse("MATERIAL region=1 E=1 nu=0.2\n", "m.dat");
   const InputError e1 = input_error([&] { material_table_from_cards(missing, mesh); });
   EXPECT_EQ(e1.line(), 1);
@@ -166,6 +158,42 @@ TEST(Mili, WrongKindIsRejected) {
                     ("sig_test_mili_kind_" + std::to_string(::getpid()) + ".tae");
   write_ds(path, Ds("TAE", "not a mili", "test"));
   EXPECT_THROW(read_mili(path), Error);
+  std::filesystem::remove(path);
+}
+
+// sig-assemble took a case.mili with nu = NaN, 0.5, E < 0 or thickness 0 and wrote a NaN
+// stiffness: the MATERIAL card's ranges hold for the file (core/ranges.hpp), each refusal naming
+// the file, the array and the row.
+TEST(Mili, ValuesOutOfTheCardsRangesAreRefused) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("sig_test_mili_range_" + std::to_string(::getpid()) + ".mili");
+  MaterialTable table;
+  SubdomainMaterial a;
+  a.hooke = {200.0, 0.3, PlaneMode::strain};
+  table.entries = {a};
+  write_mili(path, table, "ranges");
+  const Ds good = read_ds(path, "MILI");
+  struct Damage {
+    const char* array;
+    double value;
+    const char* expected;
+  };
+  for (const Damage& d : {Damage{"poisson", 0.5, "array 'poisson', row 1: 0.5 is not in (-1, 0.5)"},
+                          Damage{"poisson", NAN, "array 'poisson': value 1 of 1 is NaN"},
+                          Damage{"young", -3, "array 'young', row 1: -3 is not > 0"},
+                          Damage{"thickness", 0, "array 'thickness', row 1: 0 is not > 0"},
+                          Damage{"density", -1, "array 'density', row 1: -1 is not >= 0"}}) {
+    Ds bad = good;
+    bad.put(d.array, std::vector<double>{d.value}, {}, Finite::not_required);
+    write_ds(path, bad);
+    try {
+      read_mili(path);
+      ADD_FAILURE() << d.array << " = " << d.value << " accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(path.string() + ": " + d.expected), std::string::npos)
+          << e.what();
+    }
+  }
   std::filesystem::remove(path);
 }
 

@@ -249,5 +249,45 @@ TEST(Rectangle, CountsReferencesAndArea) {
   EXPECT_EQ(sq.references(), (std::vector<int>{1, 2}));
 }
 
+// The thesis's scene 5 mesh (ALGORITHMS.md 0.2): 64 x 12 union-jack cells on (0,5) x (0,1) have
+// 3072 triangles and 1613 nodes, i.e. 3226 displacement dofs plus 2 x 64 multipliers = 3354.
+TEST(Rectangle, UnionJackIsTheThesisScene5Mesh) {
+  const Mesh mesh = rectangle(5, 1, 64, 12, {3, 4, 2, 1}, CellPattern::union_jack);
+  EXPECT_EQ(mesh.num_triangles(), 3072);
+  EXPECT_EQ(mesh.num_nodes(), 1613);
+  EXPECT_EQ(2 * mesh.num_nodes() + 2 * 64, 3354);
+  EXPECT_EQ(mesh.edges_with_ref(3).size(), 64u);
+  EXPECT_EQ(mesh.nodes_with_ref(3).size(), 65u);
+  EXPECT_NEAR(area(mesh), 5.0, 1e-12);
+  expect_domain_on_the_left(mesh);
+  // Every centre has four triangles, every inner corner eight.
+  const int centre = 65 * 13 + 5 * 64 + 7, corner = 3 * 65 + 4;
+  EXPECT_EQ(mesh.nodes[centre], Eigen::Vector2d(5.0 * 7.5 / 64, 5.5 / 12));
+  int at_centre = 0, at_corner = 0;
+  for (const auto& t : mesh.triangles) {
+    at_centre += std::count(t.begin(), t.end(), centre);
+    at_corner += std::count(t.begin(), t.end(), corner);
+  }
+  EXPECT_EQ(at_centre, 4);
+  EXPECT_EQ(at_corner, 8);
+}
+
+// Halving the cells of a union-jack mesh nests the meshes: every coarse node is a fine node and
+// every coarse edge's midpoint is a fine node, so coarse P1 fields prolongate exactly.
+TEST(Rectangle, UnionJackRefinementIsNested) {
+  const Mesh coarse = rectangle(5, 1, 8, 2, {3, 4, 2, 1}, CellPattern::union_jack);
+  const Mesh fine = rectangle(5, 1, 16, 4, {3, 4, 2, 1}, CellPattern::union_jack);
+  const auto is_fine_node = [&](const Eigen::Vector2d& x) {
+    for (const Eigen::Vector2d& y : fine.nodes)
+      if ((x - y).norm() < 1e-12) return true;
+    return false;
+  };
+  for (const Eigen::Vector2d& x : coarse.nodes)
+    EXPECT_TRUE(is_fine_node(x));
+  for (const auto& t : coarse.triangles)
+    for (int j = 0; j < 3; ++j)
+      EXPECT_TRUE(is_fine_node(0.5 * (coarse.nodes[t[j]] + coarse.nodes[t[(j + 1) % 3]])));
+}
+
 } // namespace
 } // namespace sig

@@ -45,10 +45,10 @@ TEST(MeshCard, Files) {
 }
 
 TEST(MeshCard, InvalidFieldsAreBlamed) {
-  EXPECT_EQ(blamed_field("MESH generator=half_disc R=8 N=15"), "n");
-  EXPECT_EQ(blamed_field("MESH generator=half_disc R=8 N=2"), "n");
-  EXPECT_EQ(blamed_field("MESH generator=half_disc R=-1 N=16"), "r");
-  EXPECT_EQ(blamed_field("MESH generator=disc R=1 N=18"), "n");
+  EXPECT_EQ(blamed_field("MESH generator=half_disc R=8 N=15"), "N");
+  EXPECT_EQ(blamed_field("MESH generator=half_disc R=8 N=2"), "N");
+  EXPECT_EQ(blamed_field("MESH generator=half_disc R=-1 N=16"), "R");
+  EXPECT_EQ(blamed_field("MESH generator=disc R=1 N=18"), "N");
   EXPECT_EQ(blamed_field("MESH generator=ring r_in=10 r_out=9 N=16"), "r_in");
   EXPECT_EQ(blamed_field("MESH generator=ring r_in=9 r_out=10 N=16 lx=3"), "lx");
   EXPECT_EQ(blamed_field("MESH generator=ring r_in=9 r_out=10 N=16 center=1"), "center");

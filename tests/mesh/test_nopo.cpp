@@ -1,4 +1,5 @@
 // NOPO reader and writer against FreeFem's files (MODULEF.md section 5.3).
+#include "core/ds.hpp"
 #include "core/error.hpp"
 #include "mesh/freefem.hpp"
 #include "mesh/generators.hpp"
@@ -195,7 +196,8 @@ TEST(Nopo, I8r8RoundTripKeepsDoublesExactly) {
   EXPECT_EQ(back.layout.int_bytes, 8);
   EXPECT_EQ(back.layout.real_bytes, 8);
   EXPECT_EQ(back.text.title, "a round trip");
-  EXPECT_EQ(back.text.creator, "sig-mesh");
+  // The creator, then the fingerprint of the mesh records (the integrity check of case.nopo).
+  EXPECT_EQ(back.text.creator, "sig-mesh" + fingerprint_text(back.fingerprint));
   EXPECT_EQ(back.text.date.size(), 8u);
   EXPECT_EQ(back.nop2[1], 9); // NDSR: the largest reference
   EXPECT_EQ(back.nop2[2], 2); // NDSD
@@ -308,6 +310,39 @@ TEST(Nopo, DamagedFilesAreRejectedWithAMessage) {
   wrong_type[368] = 'X';
   testing::write_file(path, wrong_type);
   EXPECT_NE(error_of(path).find("'NOPO'"), std::string::npos);
+}
+
+// case.nopo carries the fingerprint of its mesh records: a node moved or a byte damaged after
+// sig-mesh wrote it is refused, while the text fields (not the mesh) may change.
+TEST(Nopo, FingerprintRefusesAMovedNodeOrDamagedBytes) {
+  const ScratchFolder dir;
+  const auto path = dir / "case.nopo";
+  write_nopo(path, two_region_mesh(), NopoVariant::i8r8, "integrity", "sig-mesh");
+  const std::string bytes = read_file(path);
+  const std::uint64_t fingerprint = read_nopo_file(path).fingerprint;
+
+  // i8r8: descriptor record 4 + 112 + 4, NOP0 4 + 8 + 32 * 8 + 4, NOP2 4 + 8 + 27 * 8 + 4, then
+  // NOP4's marker and count word: x of node 1 at byte 636.
+  std::string moved = bytes;
+  double x = 0;
+  std::memcpy(&x, moved.data() + 636, 8);
+  x += 0.5;
+  std::memcpy(moved.data() + 636, &x, 8);
+  testing::write_file(path, moved);
+  const std::string error = error_of(path);
+  EXPECT_NE(error.find("does not match the fingerprint " + fingerprint_text(fingerprint)),
+            std::string::npos)
+      << error;
+
+  std::string damaged = bytes; // a byte in the middle of NOP5
+  damaged[bytes.size() - 100] ^= 0x10;
+  testing::write_file(path, damaged);
+  EXPECT_NE(error_of(path).find("does not match the fingerprint"), std::string::npos);
+
+  std::string retitled = bytes; // NOP0's title is not the mesh
+  retitled[4 + 112 + 4 + 4 + 8] = 'X';
+  testing::write_file(path, retitled);
+  EXPECT_EQ(read_nopo_file(path).fingerprint, fingerprint);
 }
 
 } // namespace

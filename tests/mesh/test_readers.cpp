@@ -5,6 +5,8 @@
 #include "mesh/mesh_card.hpp"
 #include "mesh_testing.hpp"
 
+#include <functional>
+
 namespace sig {
 namespace {
 
@@ -200,6 +202,106 @@ TEST(MeshFile, DispatchesOnExtensionAndContent) {
   EXPECT_EQ(read_mesh_file(testing::shared_nopo("square3.msh")).num_nodes(), 16);
   EXPECT_EQ(read_mesh_file(testing::shared_nopo("square3.nopo")).num_nodes(), 16);
   EXPECT_THROW(read_mesh_file(dir / "g.vtk"), Error);
+}
+
+} // namespace
+} // namespace sig
+
+namespace sig {
+namespace {
+
+std::filesystem::path corpus(const std::string& name) {
+  return std::filesystem::path(SIG_SOURCE_DIR) / "tests" / "fuzz" / "corpus" / name;
+}
+
+std::string error_of(const std::function<void()>& read) {
+  try {
+    read();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted";
+  return "";
+}
+
+void expect_same_mesh(const Mesh& a, const Mesh& b) {
+  ASSERT_EQ(a.num_nodes(), b.num_nodes());
+  ASSERT_EQ(a.num_triangles(), b.num_triangles());
+  for (int i = 0; i < a.num_nodes(); ++i)
+    EXPECT_EQ(a.nodes[i], b.nodes[i]) << i;
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.subdomain, b.subdomain);
+  EXPECT_EQ(a.vertex_ref, b.vertex_ref);
+  ASSERT_EQ(a.edges.size(), b.edges.size());
+  for (std::size_t e = 0; e < a.edges.size(); ++e) {
+    EXPECT_EQ(a.edges[e].a, b.edges[e].a);
+    EXPECT_EQ(a.edges[e].b, b.edges[e].b);
+    EXPECT_EQ(a.edges[e].ref, b.edges[e].ref);
+  }
+}
+
+// gmsh 4.8 saved the same square as 2.2 and 4.1, ASCII and binary (`gmsh -2 -bin`): the four
+// files are one mesh, with its Physical Curve 3 (bottom), 2 (top) and Point 1.
+TEST(GmshReader, BinaryFilesReadAsTheirAsciiTwins) {
+  const Mesh ascii22 = read_gmsh(corpus("gmsh/square_v22_ascii.msh"));
+  EXPECT_EQ(ascii22.num_triangles(), 4);
+  EXPECT_EQ(ascii22.references(), (std::vector<int>{1, 2, 3}));
+  expect_same_mesh(ascii22, read_gmsh(corpus("gmsh/square_v22_binary.msh")));
+  expect_same_mesh(ascii22, read_gmsh(corpus("gmsh/square_v41_ascii.msh")));
+  expect_same_mesh(ascii22, read_gmsh(corpus("gmsh/square_v41_binary.msh")));
+}
+
+// A damaged binary file is refused with the file named, wherever it is cut.
+TEST(GmshReader, TruncatedBinaryFilesAreRefused) {
+  for (const char* name : {"gmsh/square_v22_binary.msh", "gmsh/square_v41_binary.msh"}) {
+    const std::string bytes = testing::read_file(corpus(name));
+    for (std::size_t cut = 0; cut + 1 < bytes.size(); cut += 7)
+      EXPECT_NE(error_of([&] { parse_gmsh("cut.msh", bytes.substr(0, cut)); }).find("cut.msh"),
+                std::string::npos)
+          << name << " cut at " << cut;
+  }
+}
+
+// Header counts are checked against the bytes left before anything is allocated: the error
+// names the file and the line instead of std::bad_alloc.
+TEST(GmshReader, CountsBeyondTheFileAreRefused) {
+  std::string huge = square_v22;
+  huge.replace(huge.find("$Nodes\n6"), 8, "$Nodes\n1000000000000");
+  std::string message = error_of([&] { parse_gmsh("huge.msh", huge); });
+  EXPECT_NE(message.find("huge.msh:10: 1000000000000 nodes: more than the 1e+08"),
+            std::string::npos)
+      << message;
+  std::string big = square_v22;
+  big.replace(big.find("$Nodes\n6"), 8, "$Nodes\n60000000");
+  message = error_of([&] { parse_gmsh("big.msh", big); });
+  EXPECT_NE(message.find("big.msh:10: 60000000 nodes announced, but the"), std::string::npos)
+      << message;
+
+  std::string block = square_v41; // a node block of 1e12 nodes
+  const auto at = block.find("2 1 0 3\n30");
+  ASSERT_NE(at, std::string::npos);
+  block.replace(at, 7, "2 1 0 1000000000000");
+  message = error_of([&] { parse_gmsh("block.msh", block); });
+  EXPECT_NE(message.find("block.msh:"), std::string::npos) << message;
+  EXPECT_NE(message.find("1000000000000 nodes"), std::string::npos) << message;
+
+  message = error_of([&] { parse_freefem_msh("ff.msh", "2000000000 1 0\n0 0 0\n"); });
+  EXPECT_NE(message.find("ff.msh:1: 2000000000 vertices: more than"), std::string::npos) << message;
+  message = error_of([&] { parse_freefem_msh("ff.msh", "20000 1 0\n0 0 0\n1 0 0\n0 1 0\n"); });
+  EXPECT_NE(message.find("ff.msh:1: 20000 vertices announced, but the"), std::string::npos)
+      << message;
+}
+
+// P1 is the model: quadrangles and second-order elements are refused, saying so.
+TEST(GmshReader, QuadranglesAndHigherOrderAreNamed) {
+  std::string quad = square_v22;
+  quad.replace(quad.find("3 1 2 0 2 20 30"), 15, "3 3 2 0 2 10 20 30 40");
+  EXPECT_NE(error_of([&] { parse_gmsh("q.msh", quad); }).find("is a quadrangle: the model is P1"),
+            std::string::npos);
+  std::string p2 = square_v22;
+  p2.replace(p2.find("3 1 2 0 2 20 30"), 15, "3 9 2 0 2 10 20 30 40 50 60");
+  EXPECT_NE(error_of([&] { parse_gmsh("p2.msh", p2); }).find("second or higher order"),
+            std::string::npos);
 }
 
 } // namespace

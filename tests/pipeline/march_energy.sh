@@ -20,7 +20,7 @@ import csv, sys
 path, expected_e0, label = sys.argv[1], sys.argv[2], sys.argv[5]
 min_el, max_el = float(sys.argv[3]), float(sys.argv[4])
 header = ("step,time,kinetic,elastic,total,contact_work,max_penetration,active_nodes,"
-          "newton_iterations")
+          "newton_iterations,interface,friction_work,wall_work,normal_force,tangential_force")
 with open(path) as f:
     first = f.readline().rstrip("\n")
     rows = list(csv.DictReader([first + "\n"] + f.readlines()))

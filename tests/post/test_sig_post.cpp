@@ -43,7 +43,7 @@ protected:
   }
   void write_solution(const std::vector<double>& u) {
     Ds b("B", "block", "test");
-    b.put("u", u);
+    b.put("u", u, {}, Finite::not_required); // a damaged case.b, as an editor may make it
     b.put_text("method", "linear");
     b.put_text("linear", "cholmod");
     b.put_int("converged", 1);
@@ -87,7 +87,7 @@ TEST_F(SigPost, RefusesNanWithTheDof) {
   write_solution(u);
   std::string output;
   EXPECT_NE(run(output), 0);
-  EXPECT_NE(output.find("case.b: array 'u' holds NaN at dof 7"), std::string::npos) << output;
+  EXPECT_NE(output.find("case.b: array 'u': value 7 of 10 is NaN"), std::string::npos) << output;
   EXPECT_FALSE(fs::exists(dir_ / "summary.json"));
   EXPECT_FALSE(fs::exists(dir_ / "block.pvd"));
 }

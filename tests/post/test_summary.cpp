@@ -171,21 +171,6 @@ TEST(Summary, TimesOfLaterStagesReplaceEarlierOnes) {
   EXPECT_EQ(times[1], (std::pair<std::string, double>{"solve", 2.0}));
 }
 
-TEST(Summary, NanInTheSolutionIsRefusedWithItsDof) {
-  std::vector<double> u(20, 1.0);
-  EXPECT_NO_THROW(verify_finite(u, "out/case.b", "u"));
-  u[16] = std::numeric_limits<double>::quiet_NaN();
-  try {
-    verify_finite(u, "out/case.b", "u");
-    FAIL() << "NaN accepted";
-  } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "out/case.b: array 'u' holds NaN at dof 17");
-  }
-  u[16] = 0;
-  u[3] = -std::numeric_limits<double>::infinity();
-  EXPECT_THROW(verify_finite(u, "case.b", "u"), Error);
-}
-
 TEST(Summary, HertzJsonHasTheReferenceBesideOurs) {
   const HertzData d;
   PressureError e;

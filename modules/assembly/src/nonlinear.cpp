@@ -2,12 +2,14 @@
 
 #include "assembly/p1.hpp"
 #include "core/error.hpp"
+#include "material/algorithmic_stress.hpp"
 #include "material/hyperelastic.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 
 #include <Eigen/LU>
 
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -35,9 +37,13 @@ struct Kinematics {
 Kinematics kinematics(const Mesh& mesh, int t, double thickness, const Eigen::VectorXd& u) {
   const Matrix23 x = triangle_vertices(mesh, t);
   const Matrix23 g = p1_gradients(x);
+  // Displacements relative to the first vertex's: the gradients sum to zero, so this changes
+  // nothing but rounding, and a body far from its reference position (a ring thrown 100 m) keeps
+  // F exact for a translation instead of carrying |u| eps / h of noise into the stress.
   Matrix23 ue;
+  const Eigen::Vector2d u0 = u.segment<2>(2 * mesh.triangles[t][0]);
   for (int a = 0; a < 3; ++a)
-    ue.col(a) = u.segment<2>(2 * mesh.triangles[t][a]);
+    ue.col(a) = u.segment<2>(2 * mesh.triangles[t][a]) - u0;
   Kinematics k;
   k.volume = thickness * p1_area(x);
   k.F = Eigen::Matrix2d::Identity() + ue * g.transpose();
@@ -73,11 +79,15 @@ double hyperelastic_energy(const Mesh& mesh, const MaterialTable& table, const E
 
 namespace {
 
-/// The loop of assemble_hyperelastic and assemble_hyperelastic_force: energy and force always,
-/// the tangent into K when K is given.
+/// What a triangle's law gives at its F: energy, first Piola stress, and dP/dF when asked.
+using TriangleResponse = std::function<StepResponse(int t, const HyperelasticLaw& law,
+                                                    const Eigen::Matrix2d& F, bool with_tangent)>;
+
+/// The loop of every assembly here: energy and force always, the tangent into K when K is given.
 void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
                              const SparsityPattern* pattern, const Eigen::VectorXd& u,
-                             HyperelasticState& state, Eigen::SparseMatrix<double>* K) {
+                             HyperelasticState& state, Eigen::SparseMatrix<double>* K,
+                             const TriangleResponse& response) {
   state.internal_force.setZero(2 * mesh.num_nodes());
   state.energy = 0.0;
   for (int t = 0; t < mesh.num_triangles(); ++t) {
@@ -86,9 +96,9 @@ void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
     const Kinematics k = kinematics(mesh, t, material.thickness, u);
     SIG_VERIFY(k.F.determinant() > 0.0,
                "triangle " << t + 1 << " is inverted: det F = " << k.F.determinant());
-    HyperelasticResponse r;
+    StepResponse r;
     try {
-      r = law.response(k.F);
+      r = response(t, law, k.F, K != nullptr);
     } catch (const Error& e) {
       throw Error("triangle " + std::to_string(t + 1) + ": " + e.what());
     }
@@ -105,6 +115,21 @@ void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
   }
 }
 
+/// The hyperelastic law's own response: P = dW/dF and its tangent.
+StepResponse law_response(int, const HyperelasticLaw& law, const Eigen::Matrix2d& F, bool) {
+  const HyperelasticResponse r = law.response(F);
+  return {r.stress, r.tangent, r.energy};
+}
+
+/// The tangent's layout: reused in place when it already has the pattern's.
+void reset_tangent(const SparsityPattern& pattern, Eigen::SparseMatrix<double>& K) {
+  if (K.isCompressed() && K.rows() == pattern.num_dofs() && K.cols() == pattern.num_dofs() &&
+      K.nonZeros() == pattern.nnz())
+    K.coeffs().setZero();
+  else
+    K = pattern.zero_matrix();
+}
+
 } // namespace
 
 void assemble_hyperelastic(const Mesh& mesh, const MaterialTable& table,
@@ -113,20 +138,52 @@ void assemble_hyperelastic(const Mesh& mesh, const MaterialTable& table,
   SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == 2 * mesh.num_nodes(),
              "displacement has " << u.size() << " values, pattern " << pattern.num_dofs()
                                  << " dofs, mesh " << mesh.num_nodes() << " nodes");
-  Eigen::SparseMatrix<double>& K = state.tangent;
-  if (K.isCompressed() && K.rows() == pattern.num_dofs() && K.cols() == pattern.num_dofs() &&
-      K.nonZeros() == pattern.nnz())
-    K.coeffs().setZero();
-  else
-    K = pattern.zero_matrix();
-  assemble_over_triangles(mesh, table, &pattern, u, state, &K);
+  reset_tangent(pattern, state.tangent);
+  assemble_over_triangles(mesh, table, &pattern, u, state, &state.tangent, law_response);
 }
 
 void assemble_hyperelastic_force(const Mesh& mesh, const MaterialTable& table,
                                  const Eigen::VectorXd& u, HyperelasticState& state) {
   SIG_VERIFY(u.size() == 2 * mesh.num_nodes(),
              "displacement has " << u.size() << " values for " << mesh.num_nodes() << " nodes");
-  assemble_over_triangles(mesh, table, nullptr, u, state, nullptr);
+  assemble_over_triangles(mesh, table, nullptr, u, state, nullptr, law_response);
+}
+
+PreviousStrain previous_strain(const Mesh& mesh, const MaterialTable& table,
+                               const Eigen::VectorXd& u_prev) {
+  SIG_VERIFY(u_prev.size() == 2 * mesh.num_nodes(), "displacement has "
+                                                        << u_prev.size() << " values for "
+                                                        << mesh.num_nodes() << " nodes");
+  PreviousStrain previous;
+  previous.F.resize(mesh.num_triangles());
+  previous.energy.resize(mesh.num_triangles());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
+    const Kinematics k = kinematics(mesh, t, material.thickness, u_prev);
+    SIG_VERIFY(k.F.determinant() > 0.0,
+               "triangle " << t + 1 << " is inverted: det F = " << k.F.determinant());
+    previous.F[t] = k.F;
+    previous.energy[t] = step_energy(law_of(material), k.F);
+  }
+  return previous;
+}
+
+void assemble_hyperelastic_step(const Mesh& mesh, const MaterialTable& table,
+                                const SparsityPattern& pattern, const PreviousStrain& previous,
+                                AlgorithmicStress stress, const Eigen::VectorXd& u,
+                                HyperelasticState& state, bool with_tangent) {
+  SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == 2 * mesh.num_nodes() &&
+                 static_cast<int>(previous.F.size()) == mesh.num_triangles(),
+             "time step: displacement has " << u.size() << " values, pattern " << pattern.num_dofs()
+                                            << " dofs, the step start " << previous.F.size()
+                                            << " triangles");
+  const TriangleResponse response = [&](int t, const HyperelasticLaw& law, const Eigen::Matrix2d& F,
+                                        bool tangent) {
+    return step_response(law, stress, previous.F[t], previous.energy[t], F, tangent);
+  };
+  if (with_tangent) reset_tangent(pattern, state.tangent);
+  assemble_over_triangles(mesh, table, &pattern, u, state, with_tangent ? &state.tangent : nullptr,
+                          response);
 }
 
 } // namespace sig

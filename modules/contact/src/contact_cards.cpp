@@ -40,8 +40,7 @@ std::unique_ptr<Obstacle> obstacle_from_card(const Card& card) {
   const std::string kind = card.choice("obstacle", {"plane", "disc"});
   if (kind == "disc") {
     const Eigen::Vector2d centre = pair_field(card, "centre");
-    const double radius = card.real("radius");
-    if (!(std::isfinite(radius) && radius > 0)) card.fail("radius", "must be > 0");
+    const double radius = card.real("radius"); // > 0: core/ranges.hpp
     return std::make_unique<Disc>(centre, radius);
   }
   const Eigen::Vector2d point = pair_field(card, "point");
@@ -96,10 +95,13 @@ void friction_from_cards(const Datafile& datafile, int ref, ContactLaw& law) {
                             std::to_string(ref) + ")");
     const std::string name = card->choice("law", friction_law_choices);
     law.friction = friction_law_named(name);
-    if (law.friction == FrictionLaw::coulomb)
+    if (law.friction == FrictionLaw::coulomb || law.penetration_dependent())
       law.mu = card->real("mu");
     else
       refuse_unused(*card, "mu", name);
+    if (law.penetration_dependent() && !(law.depth > 0))
+      card->fail("law", "law=" + name + " needs the asperities' depth g > 0 on the CONTACT card: " +
+                            "mu varies over the penetration 0 < q_n < g (8.3)");
     if (law.friction == FrictionLaw::tresca)
       law.threshold = card->real("threshold");
     else

@@ -4,6 +4,8 @@
 #include "core/error.hpp"
 
 #include <cerrno>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <string>
@@ -12,6 +14,8 @@
 namespace sig {
 
 namespace {
+constexpr const char* temporary_marker = ".tmp.";
+
 std::string reason() {
   return std::strerror(errno);
 }
@@ -25,12 +29,45 @@ void sync_folder(const std::filesystem::path& folder) {
 }
 } // namespace
 
-AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
-  SIG_VERIFY(!target_.filename().empty(), target_.string() << ": not a file name");
-  // Hidden, in the same folder (rename stays within one file system), unique per process.
+// Hidden, in the same folder (rename stays within one file system), unique per process.
+std::filesystem::path temporary_path(const std::filesystem::path& target) {
+  SIG_VERIFY(!target.filename().empty(), target.string() << ": not a file name");
   std::string name = ".";
-  name.append(target_.filename().string()).append(".tmp.").append(std::to_string(::getpid()));
-  temporary_ = target_.parent_path() / name;
+  name.append(target.filename().string())
+      .append(temporary_marker)
+      .append(std::to_string(::getpid()));
+  return target.parent_path() / name;
+}
+
+std::vector<std::string> remove_stale_temporaries(const std::filesystem::path& folder) {
+  std::vector<std::string> removed;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const auto marker = name.rfind(temporary_marker);
+    if (name.empty() || name[0] != '.' || marker == std::string::npos) continue;
+    const std::string digits = name.substr(marker + std::strlen(temporary_marker));
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    const auto pid = static_cast<pid_t>(std::stol(digits));
+    // ESRCH: no such process. EPERM means it runs (under another user): keep its file.
+    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::error_code ignored;
+    if (std::filesystem::remove(entry.path(), ignored)) removed.push_back(name);
+  }
+  return removed;
+}
+
+void stop_point_for_tests(const std::filesystem::path& target) {
+  const char* name = std::getenv("SIG_STOP_WRITING");
+  if (name == nullptr || target.filename() != name) return;
+  std::fflush(nullptr); // the half-written temporary is in the file when the test looks
+  ::raise(SIGSTOP);
+}
+
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  temporary_ = temporary_path(target_);
   file_ = std::fopen(temporary_.c_str(), "wb");
   SIG_VERIFY(file_ != nullptr, target_.string() << ": cannot create temporary file "
                                                 << temporary_.string() << ": " << reason());
@@ -48,6 +85,10 @@ void AtomicFile::write(const void* data, std::size_t size) {
   if (size == 0) return;
   SIG_VERIFY(std::fwrite(data, 1, size, file_) == size, target_.string()
                                                             << ": write failed: " << reason());
+  if (!stopped_) {
+    stopped_ = true;
+    stop_point_for_tests(target_);
+  }
 }
 
 void AtomicFile::commit() {

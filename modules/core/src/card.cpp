@@ -1,9 +1,11 @@
 #include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "core/ranges.hpp"
 #include "text_case.hpp"
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 #include <system_error>
 
 namespace sig {
@@ -32,6 +34,18 @@ double parse_real(const Card& card, const std::string& name, const std::string& 
     card.fail(name, "expected a number, got '" + text + "'");
   if (!std::isfinite(x)) card.fail(name, "expected a finite number, got '" + text + "'");
   return x;
+}
+
+// The range of the field (core/ranges.hpp), checked on every value a stage reads.
+template <class T> T in_range(const Card& card, const std::string& name, T value) {
+  const ValueRange* range = field_range(card.keyword, name);
+  if (range != nullptr && !range->contains(static_cast<double>(value))) {
+    std::ostringstream what;
+    what << "must be " << range->text() << ", got " << value;
+    if (range->why != nullptr) what << " (" << range->why << ")";
+    card.fail(name, what.str());
+  }
+  return value;
 }
 
 long parse_integer(const Card& card, const std::string& name, const std::string& text) {
@@ -101,7 +115,7 @@ std::string Card::text(const std::string& name, const std::string& fallback) con
 }
 
 double Card::real(const std::string& name) const {
-  return parse_real(*this, name, text(name));
+  return in_range(*this, name, parse_real(*this, name, text(name)));
 }
 
 double Card::real(const std::string& name, double fallback) const {
@@ -109,7 +123,7 @@ double Card::real(const std::string& name, double fallback) const {
 }
 
 long Card::integer(const std::string& name) const {
-  return parse_integer(*this, name, text(name));
+  return in_range(*this, name, parse_integer(*this, name, text(name)));
 }
 
 long Card::integer(const std::string& name, long fallback) const {
@@ -119,14 +133,14 @@ long Card::integer(const std::string& name, long fallback) const {
 std::vector<double> Card::reals(const std::string& name) const {
   std::vector<double> values;
   for (const auto& item : split_list(*this, name, text(name)))
-    values.push_back(parse_real(*this, name, item));
+    values.push_back(in_range(*this, name, parse_real(*this, name, item)));
   return values;
 }
 
 std::vector<long> Card::integers(const std::string& name) const {
   std::vector<long> values;
   for (const auto& item : split_list(*this, name, text(name)))
-    values.push_back(parse_integer(*this, name, item));
+    values.push_back(in_range(*this, name, parse_integer(*this, name, item)));
   return values;
 }
 
@@ -134,6 +148,19 @@ std::filesystem::path Card::path(const std::string& name) const {
   const std::filesystem::path given = text(name);
   if (given.empty()) fail(name, "empty file name");
   return given.is_absolute() ? given : std::filesystem::path(file).parent_path() / given;
+}
+
+std::string Card::file_name(const std::string& name, const std::string& fallback) const {
+  if (!has(name)) return fallback;
+  const std::string value = text(name);
+  const bool plain = !value.empty() && value.size() <= 200 && value.front() != '.' &&
+                     value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                             "0123456789._+-") == std::string::npos;
+  if (!plain)
+    fail(name, "'" + value +
+                   "' is not a plain file name: letters, digits, '.', '_', '+' and '-', not "
+                   "starting with '.' (no folder: the files go to the output folder)");
+  return value;
 }
 
 std::string Card::choice(const std::string& name,
@@ -150,6 +177,10 @@ std::string Card::choice(const std::string& name, std::initializer_list<const ch
 }
 
 void Card::fail(const std::string& name, const std::string& what) const {
+  // The field as the schema spells it ('R', 'N'), whatever case the code asked for it in.
+  if (const CardSpec* spec = find_card_spec(keyword))
+    for (const FieldSpec& field : spec->fields)
+      if (to_lower(field.name) == to_lower(name)) throw InputError(file, line, field.name, what);
   throw InputError(file, line, name, what);
 }
 

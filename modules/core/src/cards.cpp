@@ -15,8 +15,12 @@ const std::vector<CardSpec>& card_schema() {
        "the mesh: a generated thesis geometry or a mesh file",
        {
            {"generator", "half-disc | disc | ring | rectangle | square"},
-           {"file", "mesh file: gmsh .msh (2.2 or 4.1), FreeFem .msh or MODULEF .nopo; relative "
-                    "to the datafile's folder"},
+           {"file", "mesh file: gmsh .msh (2.2 or 4.1, ASCII or binary), FreeFem .msh or MODULEF "
+                    ".nopo; relative to the datafile's folder"},
+           {"coincident",
+            "error | allow: nodes of a mesh file at the same place that the "
+            "triangles do not share (an open crack) are an error unless allowed",
+            "error"},
            {"R", "radius of the disc or half disc"},
            {"N", "number of boundary segments along the arc (disc, half disc, ring)"},
            {"center", "centre of the disc or ring: x,y", "0,0"},
@@ -29,6 +33,10 @@ const std::vector<CardSpec>& card_schema() {
            {"ny", "number of segments along y"},
            {"refs", "boundary references of the rectangle or square: bottom,right,top,left",
             "3,4,2,1"},
+           {"pattern",
+            "rectangle, square: alternating (two triangles per cell, alternating diagonals) | "
+            "union-jack (four triangles around the cell centre)",
+            "alternating"},
            {"grading",
             "growth of the mesh size per unit distance from the contact boundary (0: uniform)",
             "0"},
@@ -156,6 +164,10 @@ const std::vector<CardSpec>& card_schema() {
             "signorini"},
            {"r", "foundation stiffness per unit area of compliance, specific-penalty and ipm "
                  "(sig-march), > 0"},
+           {"persistency",
+            "strategy=two-step: midpoint (the normal velocity of (3.39) at t_n, choice C15) | "
+            "increment (q_n - q_{n-1}): what step (b) holds at zero",
+            "midpoint"},
        }},
       {"FRICTION",
        false,
@@ -166,8 +178,11 @@ const std::vector<CardSpec>& card_schema() {
            {"law", "none | tresca (1.33): |T| <= threshold on every contact node | coulomb "
                    "(1.35): |T| <= mu N | nonmonotone (1.39): |T| <= mu(r) N, mu(r) = "
                    "(a - b) exp(-alpha r) + b, r the slip (or slip rate) magnitude, solved by "
-                   "the convexification loop (4.110)-(4.112)"},
-           {"mu", "coulomb: friction coefficient, >= 0"},
+                   "the convexification loop (4.110)-(4.112) | mu1, mu2 (8.3): |T| <= mu(q_n) N, "
+                   "mu of the penetration q_n over the asperities' depth g of the CONTACT card: "
+                   "mu1 rises from 0 to mu, mu2 falls from 2 mu to mu (sig-march)"},
+           {"mu", "coulomb: friction coefficient, >= 0; mu1, mu2: mu0, the coefficient once the "
+                  "asperities are crushed"},
            {"threshold", "tresca: slip bound, a traction (GPa in the thesis's units), >= 0"},
            {"bound",
             "coulomb, nonmonotone: normal: mu times the whole normal pressure N | compliance: "
@@ -204,8 +219,9 @@ const std::vector<CardSpec>& card_schema() {
       {"CONVEXIFICATION",
        false,
        "the convexification loop (4.110)-(4.112) of FRICTION law=nonmonotone in a static solve "
-       "(sig-solve): mu frozen per node at the previous iterate's slip, each convex problem "
-       "solved by the SOLVER method",
+       "(sig-solve), or in every step of a march (sig-march scheme=backward-euler, of=slip-rate): "
+       "mu frozen per node at the previous iterate's slip (rate), each convex problem solved by "
+       "the SOLVER method",
        {
            {"eps",
             "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
@@ -216,7 +232,9 @@ const std::vector<CardSpec>& card_schema() {
             "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); 1: none, as "
             "the thesis",
             "1"},
-           {"start", "rest (u(0) = 0, mu = a) | slipped (mu = b, as after a long slip)", "rest"},
+           {"start", "rest (u(0) = 0, mu = a) | slipped (mu = b, as after a long slip) | "
+                     "previous (a march: mu of the previous step's slip rate, ALGORITHMS.md 3.3); "
+                     "default rest in a static solve, previous in a march"},
        }},
       {"LOADSTEPS",
        false,
@@ -227,17 +245,27 @@ const std::vector<CardSpec>& card_schema() {
        }},
       {"TIME",
        false,
-       "time marching of elastodynamics (stage sig-march; with a CONTACT card, by its strategy)",
+       "time marching (stage sig-march): elastodynamics (with a CONTACT card, by its strategy), "
+       "the quasistatic viscoelastic march in velocity of ch. 5, or the viscoelastodynamic one "
+       "of ch. 6",
        {
            {"scheme", "midpoint | newmark: implicit midpoint rule (3.39) or Newmark's average "
-                      "acceleration; both conserve the discrete energy (8.33) without load"},
+                      "acceleration; both conserve the discrete energy (8.33) without load | "
+                      "quasistatic: backward Euler in velocity (5.62)-(5.64), no mass, contact "
+                      "laws in velocity (law=damped, damped-unilateral) | backward-euler: backward "
+                      "Euler in velocity with mass (6.63)-(6.66), (M/k + C + k K) w = ..., "
+                      "contact laws of the displacement, friction of the slip rate"},
            {"T", "final time, > 0"},
            {"k", "time step, > 0; T / k must be a whole number of steps"},
            {"output_every", "keep the state every this many steps, >= 1", "1"},
            {"mass",
             "consistent | lumped | emm (Equivalent Mass Matrix (3.54), needs a CONTACT "
-            "card)",
+            "card, midpoint and newmark only); not for scheme=quasistatic",
             "consistent"},
+           {"stress",
+            "hyperelastic bodies: gonzalez (Gonzalez's algorithmic stress (3.41), exact energy "
+            "balance) | midpoint (the midpoint configuration's stress, the contrast)",
+            "gonzalez"},
        }},
       {"INITIAL",
        true,
@@ -247,6 +275,9 @@ const std::vector<CardSpec>& card_schema() {
        {
            {"u", "initial displacement: ux,uy (default 0,0)"},
            {"v", "initial velocity: vx,vy (default 0,0)"},
+           {"omega", "initial angular velocity (rad/s, counter-clockwise): adds omega e3 x "
+                     "(X - centre) to the velocity (needs centre=)"},
+           {"centre", "centre of the initial rotation: x,y"},
            {"region", "sub-domain numbers (1-based); default every sub-domain"},
        }},
       {"COMPARE",

@@ -29,3 +29,22 @@ std::uint32_t crc32(const void* data, std::size_t size, std::uint32_t crc) {
 }
 
 } // namespace sig
+
+namespace sig {
+
+std::uint64_t fnv1a64(const void* data, std::size_t size, std::uint64_t hash) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < size; ++i)
+    hash = (hash ^ p[i]) * 0x100000001b3ull;
+  return hash;
+}
+
+std::string fingerprint_text(std::uint64_t fingerprint) {
+  static constexpr char digits[] = "0123456789abcdef";
+  std::string text(16, '0');
+  for (int k = 15; k >= 0; --k, fingerprint >>= 4)
+    text[k] = digits[fingerprint & 0xf];
+  return text;
+}
+
+} // namespace sig

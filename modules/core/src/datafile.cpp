@@ -1,5 +1,7 @@
 #include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "core/json.hpp"
+#include "core/log.hpp"
 #include "text_case.hpp"
 
 #include <algorithm>
@@ -108,7 +110,15 @@ void parse_fields(Card& card, const CardSpec& spec, const std::string& rest) {
         skip_spaces();
       }
       if (value.empty()) card.fail(written, "missing value after '='");
+      // `name= vtk=yes`: the value is empty and the next field follows; never take it as one.
+      std::size_t name_end = 0;
+      while (name_end < value.size() && is_name_char(value[name_end]))
+        ++name_end;
+      if (name_end > 0 && name_end < value.size() && value[name_end] == '=')
+        card.fail(written,
+                  "empty value ('" + value + "' is the next field); give a value after '='");
     }
+    if (value.empty()) card.fail(written, "empty value; give a value after '='");
     if (card.has(name)) card.fail(written, "field given twice");
     card.fields.emplace_back(name, value);
   }
@@ -134,6 +144,13 @@ Card parse_card(const std::string& raw, const std::string& file, int line) {
     card.text_value = rest;
     if (rest.size() >= 2 && rest.front() == '"' && rest.back() == '"')
       card.text_value = rest.substr(1, rest.size() - 2);
+    // Free text goes to JSON, VTK and DS headers: make it valid UTF-8, and say so.
+    std::size_t replaced = 0;
+    card.text_value = valid_utf8(card.text_value, &replaced);
+    if (replaced > 0)
+      log_warning(file + ":" + std::to_string(line) + ": " + card.keyword +
+                  " is not valid UTF-8: " + std::to_string(replaced) +
+                  " bad byte(s) replaced by U+FFFD");
   } else {
     parse_fields(card, *spec, rest);
   }
@@ -169,12 +186,17 @@ Datafile Datafile::read(const std::filesystem::path& path) {
 Datafile Datafile::parse(const std::string& text, const std::string& file_name) {
   Datafile deck;
   deck.path = file_name;
-  std::istringstream lines(text);
-  std::string raw;
+  // An editor's byte order mark is not a card.
+  std::size_t start = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
   int line = 0;
-  while (std::getline(lines, raw)) {
+  while (start < text.size()) {
+    // Lines end with LF, CR LF or CR alone (old Mac editors).
+    const std::size_t end = text.find_first_of("\r\n", start);
+    std::string raw = text.substr(start, end == std::string::npos ? end : end - start);
+    start = end == std::string::npos                                              ? text.size()
+            : text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? end + 2
+                                                                                  : end + 1;
     ++line;
-    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
     if (trim(strip_comment(raw, file_name, line)).empty()) continue;
     Card card = parse_card(raw, file_name, line);
     if (!find_card_spec(card.keyword)->repeatable)

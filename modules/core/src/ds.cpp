@@ -1,6 +1,7 @@
 #include "core/ds.hpp"
 
 #include "core/error.hpp"
+#include "core/finite.hpp"
 #include "core/stage.hpp"
 
 #include <algorithm>
@@ -85,8 +86,10 @@ Ds::Ds(std::string kind, std::string title, std::string creator) {
 }
 
 void Ds::put(const std::string& name, std::span<const double> values,
-             std::vector<std::int64_t> shape) {
-  replace_or_append(arrays_, make_array(name, DsType::Float64, values, std::move(shape)));
+             std::vector<std::int64_t> shape, Finite finite) {
+  DsArray array = make_array(name, DsType::Float64, values, std::move(shape));
+  array.finite = finite;
+  replace_or_append(arrays_, std::move(array));
 }
 
 void Ds::put(const std::string& name, std::span<const std::int64_t> values,
@@ -137,6 +140,15 @@ const DsArray& Ds::find(const std::string& name, DsType type) const {
 }
 
 std::vector<double> Ds::reals(const std::string& name) const {
+  std::vector<double> values = reals_any(name);
+  const std::string bad = first_non_finite(values);
+  SIG_VERIFY(bad.empty(), (source.empty() ? "DS " + header.kind : source)
+                              << ": array '" << name << "': " << bad
+                              << " (its CRC is valid: the file was written or edited so)");
+  return values;
+}
+
+std::vector<double> Ds::reals_any(const std::string& name) const {
   return values_of<double>(find(name, DsType::Float64));
 }
 

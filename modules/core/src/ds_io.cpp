@@ -1,6 +1,8 @@
 #include "atomic_file.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/finite.hpp"
+#include "core/provenance.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,7 +10,9 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <set>
+#include <sstream>
 
 namespace sig {
 
@@ -72,7 +76,22 @@ void check_writable(const std::filesystem::path& path, const Ds& ds) {
     SIG_VERIFY(product >= 0 && a.bytes.size() == expected * value_size(a.type),
                p << ": array '" << a.name << "': " << a.bytes.size()
                  << " payload bytes do not match its shape");
+    if (a.type == DsType::Float64 && a.finite == Finite::required) {
+      const std::string bad = first_non_finite(std::span<const double>(
+          reinterpret_cast<const double*>(a.bytes.data()), a.bytes.size() / sizeof(double)));
+      SIG_VERIFY(bad.empty(), p << ": array '" << a.name << "': " << bad
+                                << ": a non-finite result is never written (the file is left as "
+                                   "it was)");
+    }
   }
+}
+
+constexpr const char* provenance_array = "provenance";
+
+// Folds the CRC of each array record into the DS fingerprint (header excluded, so that a title
+// or a date does not make the same arrays another DS).
+std::uint64_t fold_fingerprint(std::uint64_t fingerprint, std::uint32_t record_crc) {
+  return fnv1a64(&record_crc, sizeof record_crc, fingerprint);
 }
 
 // Writes through to the file while keeping the running CRC of the current record.
@@ -89,6 +108,18 @@ public:
     raw(&crc_, sizeof crc_);
     crc_ = 0;
   }
+  void write_array(const DsArray& a) {
+    char name[name_bytes] = {};
+    std::memcpy(name, a.name.data(), a.name.size());
+    checked(name, name_bytes);
+    checked_value(static_cast<std::uint32_t>(a.type));
+    checked_value(static_cast<std::uint32_t>(a.shape.size()));
+    for (const auto n : a.shape)
+      checked_value(n);
+    checked_value(static_cast<std::uint64_t>(a.bytes.size()));
+    checked(a.bytes.data(), a.bytes.size());
+    end_record();
+  }
 
 private:
   AtomicFile& file_;
@@ -104,8 +135,12 @@ public:
     const auto size = std::filesystem::file_size(path, error);
     SIG_VERIFY(!error, path_ << ": cannot read DS: " << error.message());
     left_ = size;
-    in_.open(path, std::ios::binary);
-    SIG_VERIFY(in_, path_ << ": cannot open DS: " << std::strerror(errno));
+    auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
+    SIG_VERIFY(*file, path_ << ": cannot open DS: " << std::strerror(errno));
+    in_ = std::move(file);
+  }
+  DsReader(std::string name, std::string bytes) : path_(std::move(name)), left_(bytes.size()) {
+    in_ = std::make_unique<std::istringstream>(std::move(bytes));
   }
   const std::string& path() const { return path_; }
   std::uint64_t left() const { return left_; }
@@ -114,8 +149,8 @@ public:
   void read(void* data, std::size_t size, const char* what) {
     SIG_VERIFY(size <= left_, path_ << ": truncated in " << context_ << " (expected " << size
                                     << " bytes of " << what << ", " << left_ << " left)");
-    in_.read(static_cast<char*>(data), static_cast<std::streamsize>(size));
-    SIG_VERIFY(in_, path_ << ": read error in " << context_);
+    in_->read(static_cast<char*>(data), static_cast<std::streamsize>(size));
+    SIG_VERIFY(*in_, path_ << ": read error in " << context_);
     crc_ = crc32(data, size, crc_);
     left_ -= size;
   }
@@ -124,18 +159,19 @@ public:
     read(&v, sizeof v, what);
     return v;
   }
-  void check_crc() {
+  std::uint32_t check_crc() {
     const std::uint32_t computed = crc_;
     const auto stored = value<std::uint32_t>("CRC");
     SIG_VERIFY(stored == computed, path_ << ": " << context_ << ": CRC mismatch (file corrupted)");
     crc_ = 0;
+    return computed;
   }
   void start_record() { crc_ = 0; }
 
 private:
   std::string path_;
   std::string context_ = "file start";
-  std::ifstream in_;
+  std::unique_ptr<std::istream> in_;
   std::uint64_t left_ = 0;
   std::uint32_t crc_ = 0;
 };
@@ -155,7 +191,7 @@ DsHeader read_header(DsReader& in) {
   return header;
 }
 
-DsArray read_array(DsReader& in, std::uint32_t index) {
+DsArray read_array(DsReader& in, std::uint32_t index, std::uint64_t& fingerprint) {
   in.set_context("array #" + std::to_string(index + 1));
   in.start_record();
   char name[name_bytes];
@@ -191,7 +227,7 @@ DsArray read_array(DsReader& in, std::uint32_t index) {
                                        << payload << " bytes of data, " << in.left() << " left)");
   array.bytes.resize(payload);
   in.read(array.bytes.data(), payload, "data");
-  in.check_crc();
+  fingerprint = fold_fingerprint(fingerprint, in.check_crc());
   if (rank == 0) array.shape = {static_cast<std::int64_t>(array.count())};
   return array;
 }
@@ -199,11 +235,20 @@ DsArray read_array(DsReader& in, std::uint32_t index) {
 
 void write_ds(const std::filesystem::path& path, const Ds& ds) {
   check_writable(path, ds);
+  // Inside a stage the DS records the inputs it was built from, replacing what it may hold.
+  std::vector<const DsArray*> arrays;
+  for (const DsArray& a : ds.arrays())
+    if (a.name != provenance_array) arrays.push_back(&a);
+  Ds stamp;
+  if (const auto inputs = case_provenance(ds.header.kind); !inputs.empty()) {
+    stamp.put_text(provenance_array, provenance_text(inputs));
+    arrays.push_back(&stamp.arrays().front());
+  }
   AtomicFile file(path);
   DsWriter out(file);
   out.raw(magic, sizeof magic);
   const std::uint32_t version = format_version;
-  const auto n_arrays = static_cast<std::uint32_t>(ds.arrays().size());
+  const auto n_arrays = static_cast<std::uint32_t>(arrays.size());
   out.raw(&version, sizeof version);
   out.raw(&n_arrays, sizeof n_arrays);
 
@@ -218,25 +263,14 @@ void write_ds(const std::filesystem::path& path, const Ds& ds) {
   out.checked(words.data(), sizeof words);
   out.end_record();
 
-  for (const auto& a : ds.arrays()) {
-    char name[name_bytes] = {};
-    std::memcpy(name, a.name.data(), a.name.size());
-    out.checked(name, name_bytes);
-    out.checked_value(static_cast<std::uint32_t>(a.type));
-    out.checked_value(static_cast<std::uint32_t>(a.shape.size()));
-    for (const auto n : a.shape)
-      out.checked_value(n);
-    out.checked_value(static_cast<std::uint64_t>(a.bytes.size()));
-    out.checked(a.bytes.data(), a.bytes.size());
-    out.end_record();
-  }
+  for (const DsArray* a : arrays)
+    out.write_array(*a);
   out.raw(trailer, sizeof trailer);
   file.commit();
 }
 
-Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) {
-  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
-  DsReader in(path);
+namespace {
+Ds read_all(DsReader& in, const std::string& expected_kind) {
   char file_magic[sizeof magic];
   in.read(file_magic, sizeof magic, "magic");
   SIG_VERIFY(std::memcmp(file_magic, magic, sizeof magic) == 0,
@@ -251,14 +285,15 @@ Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) 
                        << in.left() / min_array_bytes << " (file corrupted or truncated)");
 
   Ds ds;
-  ds.source = path.string();
+  ds.source = in.path();
   ds.header = read_header(in);
   if (!expected_kind.empty())
     SIG_VERIFY(ds.header.kind == expected_kind, in.path()
                                                     << ": DS type is '" << ds.header.kind
                                                     << "', expected '" << expected_kind << "'");
+  std::uint64_t fingerprint = fnv1a64(nullptr, 0);
   for (std::uint32_t k = 0; k < n_arrays; ++k) {
-    DsArray array = read_array(in, k);
+    DsArray array = read_array(in, k, fingerprint);
     SIG_VERIFY(!ds.has(array.name), in.path() << ": array '" << array.name << "': repeated");
     ds.put(std::move(array));
   }
@@ -269,7 +304,24 @@ Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) 
              in.path() << ": missing ENDS trailer (file corrupted)");
   SIG_VERIFY(in.left() == 0, in.path()
                                  << ": " << in.left() << " unexpected bytes after the trailer");
+  ds.fingerprint = fingerprint;
   return ds;
+}
+} // namespace
+
+Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) {
+  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
+  DsReader in(path);
+  Ds ds = read_all(in, expected_kind);
+  note_case_input(ds.header.kind, path, ds.fingerprint,
+                  ds.has(provenance_array) ? parse_provenance(ds.text(provenance_array), ds.source)
+                                           : std::vector<ProvenanceEntry>{});
+  return ds;
+}
+
+Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind) {
+  DsReader in(name, std::move(bytes));
+  return read_all(in, expected_kind);
 }
 
 } // namespace sig

@@ -9,7 +9,34 @@
 namespace sig {
 
 namespace {
-void write_string(std::string& out, const std::string& s) {
+// Length of the well-formed UTF-8 sequence at p (RFC 3629: no overlong forms, no surrogates, at
+// most U+10FFFF), or 0.
+std::size_t utf8_sequence(const unsigned char* p, std::size_t left) {
+  const unsigned char c = p[0];
+  if (c < 0x80) return 1;
+  std::size_t n = 0;
+  unsigned char low = 0x80, high = 0xBF;
+  if (c >= 0xC2 && c <= 0xDF) {
+    n = 2;
+  } else if (c >= 0xE0 && c <= 0xEF) {
+    n = 3;
+    if (c == 0xE0) low = 0xA0;
+    if (c == 0xED) high = 0x9F;
+  } else if (c >= 0xF0 && c <= 0xF4) {
+    n = 4;
+    if (c == 0xF0) low = 0x90;
+    if (c == 0xF4) high = 0x8F;
+  } else {
+    return 0;
+  }
+  if (left < n || p[1] < low || p[1] > high) return 0;
+  for (std::size_t k = 2; k < n; ++k)
+    if (p[k] < 0x80 || p[k] > 0xBF) return 0;
+  return n;
+}
+
+void write_string(std::string& out, const std::string& text) {
+  const std::string s = valid_utf8(text);
   out += '"';
   for (const char ch : s) {
     switch (ch) {
@@ -70,6 +97,26 @@ void newline(std::string& out, int indent, int depth) {
   out.append(static_cast<std::size_t>(indent * depth), ' ');
 }
 } // namespace
+
+std::string valid_utf8(const std::string& text, std::size_t* replaced) {
+  std::string out;
+  out.reserve(text.size());
+  std::size_t bad = 0;
+  const auto* p = reinterpret_cast<const unsigned char*>(text.data());
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_sequence(p + i, text.size() - i);
+    if (n == 0) {
+      out += "\xEF\xBF\xBD"; // U+FFFD REPLACEMENT CHARACTER
+      ++bad;
+      ++i;
+    } else {
+      out.append(text, i, n);
+      i += n;
+    }
+  }
+  if (replaced != nullptr) *replaced = bad;
+  return out;
+}
 
 Json& Json::set(const std::string& key, Json value) {
   auto* object = std::get_if<Object>(&value_);

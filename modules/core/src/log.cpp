@@ -18,19 +18,19 @@ double seconds_between(std::chrono::steady_clock::time_point a,
 // mean rate so far.
 std::string progress_line(const std::string& label, const std::string& unit, long done, long total,
                           double elapsed, const std::string& detail) {
-  char numbers[160];
+  char text[96];
   const double percent = total > 0 ? 100.0 * static_cast<double>(done) / total : 100.0;
-  int n = std::snprintf(numbers, sizeof numbers, " %ld/%ld (%.0f%%) %.1fs", done, total, percent,
-                        elapsed);
+  std::snprintf(text, sizeof text, " %ld/%ld (%.0f%%) %.1fs", done, total, percent, elapsed);
+  std::string line = "[sig] " + label + text;
   if (done > 0 && elapsed > 0) {
     const double rate = static_cast<double>(done) / elapsed;
-    n += std::snprintf(numbers + n, sizeof numbers - n, rate >= 100 ? ", %.0f %s/s" : ", %.3g %s/s",
-                       rate, unit.c_str());
-    if (done < total)
-      std::snprintf(numbers + n, sizeof numbers - n, ", %.1fs left",
-                    static_cast<double>(total - done) / rate);
+    std::snprintf(text, sizeof text, rate >= 100 ? ", %.0f " : ", %.3g ", rate);
+    line += text + unit + "/s";
+    if (done < total) {
+      std::snprintf(text, sizeof text, ", %.1fs left", static_cast<double>(total - done) / rate);
+      line += text;
+    }
   }
-  std::string line = "[sig] " + label + numbers;
   if (!detail.empty()) line += " " + detail;
   return line;
 }

@@ -2,11 +2,17 @@
 
 #include "core/card_help.hpp"
 #include "core/datafile.hpp"
+#include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/provenance.hpp"
 #include "revision.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <exception>
 #include <fstream>
@@ -120,11 +126,16 @@ StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help) {
   std::error_code error;
   std::filesystem::create_directories(args.outdir, error);
   SIG_VERIFY(!error, args.outdir.string() << ": cannot create output folder: " << error.message());
+  // What a killed stage left: its temporaries would otherwise pile up in OUTDIR forever.
+  for (const std::string& name : remove_stale_temporaries(args.outdir))
+    log_info("removed " + (args.outdir / name).string() + ", left by a stage that was killed");
+  open_case(args.outdir);
   return args;
 }
 
 int run_stage(const std::string& stage, const std::function<void()>& body) {
   int code = 1;
+  close_case();
   try {
     body();
     code = 0;
@@ -134,6 +145,16 @@ int run_stage(const std::string& stage, const std::function<void()>& body) {
     std::cerr << program_name(stage) << ": error: " << e.what() << std::endl;
   } catch (...) {
     std::cerr << program_name(stage) << ": error: unknown exception" << std::endl;
+  }
+  close_case();
+  // What the stage printed is a result too (sig-dump > file): a failed write is an error.
+  std::cout.flush();
+  errno = 0;
+  if (code == 0 && !(std::cout.good() && std::fflush(stdout) == 0 && !std::ferror(stdout))) {
+    std::cerr << program_name(stage) << ": error: cannot write to the standard output"
+              << (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string())
+              << std::endl;
+    code = 1;
   }
   append_card_trace(program_name(stage));
   return code;

@@ -1,5 +1,7 @@
 // sig-march DATAFILE [-o OUTDIR]: elastodynamics, M a + K u = f, marched from the INITIAL state
-// with the scheme of the TIME card, with or without node-to-rigid contact.
+// with the scheme of the TIME card, with or without node-to-rigid contact; or, with TIME
+// scheme=quasistatic, the quasistatic viscoelastic march in velocity of ch. 5
+// (integrator/quasistatic_stage.hpp).
 //
 //   TIME scheme=midpoint|newmark T= k= [output_every=1] [mass=consistent|lumped|emm]
 //   INITIAL [u=ux,uy] [v=vx,vy] [region=...]
@@ -17,6 +19,7 @@
 #include "assembly/dirichlet.hpp"
 #include "assembly/system.hpp"
 #include "contact/contact_elements.hpp"
+#include "contact/obstacle.hpp"
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
@@ -25,11 +28,16 @@
 #include "integrator/contact_card.hpp"
 #include "integrator/contact_march.hpp"
 #include "integrator/contact_strategy.hpp"
+#include "integrator/dynamic_stage.hpp"
+#include "integrator/finite_strain_march.hpp"
 #include "integrator/history_io.hpp"
 #include "integrator/march.hpp"
+#include "integrator/quasistatic_stage.hpp"
 #include "integrator/time_card.hpp"
+#include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
+#include "solver/finite_strain_stage.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -41,16 +49,34 @@ int main(int argc, char** argv) {
       .name = "sig-march",
       .purpose = "Time marching of elastodynamics, M a + K u = f, from the INITIAL state with the "
                  "scheme of the TIME card (K + (4/k^2) M factorized once), with node-to-rigid "
-                 "contact by the CONTACT card's strategy. A step whose Newton fails stops the "
+                 "contact by the CONTACT card's strategy; a hyperelastic body (MATERIAL "
+                 "law=svk|ciarlet-geymonat) marches in large deformation by the midpoint rule with "
+                 "the stress of TIME stress= (Gonzalez's by default), each step a Newton method "
+                 "with the strategy's phases and friction; or (scheme=quasistatic) the quasistatic "
+                 "Kelvin-Voigt march in velocity of ch. 5 with contact laws in velocity, its step "
+                 "matrix factorized and condensed once (case.hist, steps.csv); or "
+                 "(scheme=backward-euler) the viscoelastodynamic march in velocity of ch. 6, "
+                 "(M/k + C + k K) factorized and condensed once, contact laws of the displacement "
+                 "and friction of the slip rate, with the convexification loop in every step for "
+                 "FRICTION law=nonmonotone. A step whose Newton "
+                 "fails stops the "
                  "march: the files hold the steps done, a warning is printed and the stage exits "
                  "0. A progress line shows the step, time steps per second and the time left.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
+                "OUTDIR/case.mili (sig-material: the laws, hyperelastic or not)",
                 "OUTDIR/case.cont (sig-contact; with a CONTACT card)"},
-      .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures)",
-                 "OUTDIR/energy.csv (one row per step: energies, contact work, penetration, active "
-                 "nodes, Newton iterations)"},
-      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER"}};
+      .writes =
+          {"OUTDIR/case.hist (kept states, energies, contact pressures; quasistatic: "
+           "per step the contact velocities, forces and statuses)",
+           "OUTDIR/energy.csv (one row per step: energies, contact work and its split into "
+           "interface, friction and wall work, penetration, active nodes, Newton "
+           "iterations, the contact forces' sums)",
+           "OUTDIR/steps.csv (quasistatic, backward-euler: one row per step: Newton iterations, "
+           "status counts, largest velocity, normal displacement and pressure; "
+           "backward-euler: the energies and the convexification counts)"},
+      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "CONVEXIFICATION",
+                "LOADSTEPS", "MATERIAL", "MEMORY"}};
   return sig::run_stage("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
@@ -59,15 +85,37 @@ int main(int argc, char** argv) {
     const sig::Card* contact = datafile.find("CONTACT");
     const sig::TimeParameters time =
         sig::time_parameters(datafile.require("TIME"), contact != nullptr);
+    if (time.scheme == "quasistatic") {
+      sig::run_quasistatic_march(args, datafile, time);
+      return;
+    }
+    if (time.scheme == "backward-euler") {
+      sig::run_backward_euler_march(args, datafile, time);
+      return;
+    }
     const sig::Card* solver_card = datafile.find("SOLVER");
+    sig::warn_unused_solver_fields(solver_card);
+    // A hyperelastic body marches in large deformation (integrator/finite_strain_march.hpp).
+    const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
+    const bool hyperelastic = sig::has_hyperelastic_law(materials);
+    const sig::Card& time_card = datafile.require("TIME");
+    if (!hyperelastic && time_card.has("stress"))
+      time_card.fail("stress", "is the stress of a hyperelastic time step: the linear midpoint "
+                               "rule conserves the energy as it is (remove stress=)");
+    if (hyperelastic && time.scheme != "midpoint")
+      time_card.fail("scheme",
+                     "a hyperelastic body marches by the midpoint rule (scheme=midpoint)");
+    const std::string default_backend = hyperelastic ? "mumps" : "cholmod";
     const std::string backend =
-        solver_card ? solver_card->choice("linear", {"cholmod", "umfpack", "mumps"}, "cholmod")
-                    : "cholmod";
+        solver_card
+            ? solver_card->choice("linear", {"cholmod", "umfpack", "mumps"}, default_backend)
+            : default_backend;
     sig::ContactHistoryInfo contact_info;
     sig::ContactStrategyParameters strategy_parameters;
-    if (const sig::Card* friction = sig::friction_card_with_law(datafile))
-      friction->fail("law", "friction in time marching is not implemented yet: a TIME deck is "
-                            "frictionless (law=none, or no FRICTION card)");
+    if (const sig::Card* friction = sig::friction_card_with_law(datafile);
+        friction && !hyperelastic)
+      friction->fail("law", "friction in time marching needs a hyperelastic body (its march "
+                            "solves the whole step); the linear march is frictionless");
     if (contact != nullptr) {
       contact_info = sig::contact_history_info(*contact);
       strategy_parameters = sig::contact_strategy_parameters(*contact, solver_card);
@@ -90,36 +138,68 @@ int main(int argc, char** argv) {
     initial.u = reduced.restrict(initial_full.u);
     initial.v = reduced.restrict(initial_full.v);
 
-    // 4. The contact boundary of case.cont, and the scheme: its step operator K + (4 / k^2) M
-    //    (EMM included) is factorized here, once.
+    // 4. The contact elements of case.cont and the mass (EMM included).
     std::optional<sig::ContactElements> elements;
     if (contact != nullptr) elements = sig::read_cont(args.ds_path("cont"));
-    const sig::ContactNormals normals =
-        elements ? sig::contact_normals(*elements) : sig::ContactNormals{};
-    sig::Stopwatch clock;
-    auto scheme = sig::make_time_scheme(
-        time.scheme,
-        sig::reduced_elastodynamics(reduced, sig::mass_matrix(system, time.mass, mesh, normals)),
-        time.k, backend);
+    const Eigen::SparseMatrix<double> mass =
+        sig::mass_matrix(system, time.mass, mesh, elements ? elements->node : std::vector<int>{});
+    if (elements) contact_info.nodes = elements->node;
+    std::unique_ptr<sig::ContactStrategy> strategy;
+    if (elements) strategy = sig::make_contact_strategy(contact_info.strategy, strategy_parameters);
 
     // 5. March, with a progress line: step / steps, time, total energy.
     const std::string label =
-        time.scheme + (contact != nullptr ? " + " + contact_info.strategy : std::string());
+        time.scheme + (hyperelastic ? " (" + sig::to_string(time.stress) + " stress)" : "") +
+        (contact != nullptr ? " + " + contact_info.strategy : std::string());
     sig::Progress progress("sig-march " + label, time.steps, "time steps");
     char detail[96];
     const auto observer = [&](const sig::DynamicState& state, const sig::EnergyRecord& energy) {
       std::snprintf(detail, sizeof detail, "t = %.6g  E = %.12g", state.time, energy.total);
       progress.update(energy.step, detail);
     };
+    sig::Stopwatch clock;
     sig::MarchHistory history;
-    if (elements) {
-      const sig::ContactBoundary boundary = sig::contact_boundary(*elements, mesh, reduced);
-      contact_info.nodes = boundary.nodes;
-      const auto strategy = sig::make_contact_strategy(contact_info.strategy, strategy_parameters);
-      history = sig::march_with_contact(*scheme, boundary, *strategy, initial, time.steps,
+    if (hyperelastic) {
+      // On the full dofs, the Dirichlet values held: the history is restricted afterwards.
+      std::unique_ptr<sig::Obstacle> obstacle;
+      if (elements && elements->size() > 0) obstacle = sig::make_obstacle(elements->obstacle);
+      sig::FiniteStrainProblem problem;
+      problem.mesh = &mesh;
+      problem.materials = &materials;
+      problem.dirichlet_dofs = system.dirichlet_dofs;
+      problem.dirichlet_values = system.dirichlet_values;
+      problem.load = system.f;
+      problem.contact = elements ? &*elements : nullptr;
+      problem.obstacle = obstacle.get();
+      problem.mass = &mass;
+      problem.time_step = time.k;
+      problem.stress = time.stress;
+      sig::HyperelasticMarchOptions options;
+      options.backend = backend;
+      options.eps = strategy_parameters.eps;
+      options.max_iterations = strategy_parameters.max_iterations;
+      sig::DynamicState full{0.0, reduced.expand(initial.u), reduced.expand(initial.v)};
+      for (int dof : system.dirichlet_dofs)
+        full.v[dof] = 0.0; // expand() puts the imposed values there
+      const auto on_free = [&](const sig::DynamicState& s) {
+        return sig::DynamicState{s.time, reduced.restrict(s.u), reduced.restrict(s.v)};
+      };
+      history = sig::march_hyperelastic(problem, strategy.get(), options, full, time.steps,
                                         time.output_every, observer);
+      for (sig::DynamicState& s : history.outputs)
+        s = on_free(s);
+      history.final_state = on_free(history.final_state);
     } else {
-      history = sig::march(*scheme, initial, time.steps, time.output_every, observer);
+      // The scheme's step operator K + (4 / k^2) M is factorized here, once.
+      auto scheme = sig::make_time_scheme(time.scheme, sig::reduced_elastodynamics(reduced, mass),
+                                          time.k, backend);
+      if (elements) {
+        const sig::ContactBoundary boundary = sig::contact_boundary(*elements, mesh, reduced);
+        history = sig::march_with_contact(*scheme, boundary, *strategy, initial, time.steps,
+                                          time.output_every, observer);
+      } else {
+        history = sig::march(*scheme, initial, time.steps, time.output_every, observer);
+      }
     }
     const double seconds = clock.seconds();
     if (history.converged) {
@@ -132,7 +212,7 @@ int main(int argc, char** argv) {
 
     // 6. Write case.hist and energy.csv (both atomic) and report the energy drift.
     sig::write_hist(args.ds_path("hist"), history, reduced, time, backend, seconds,
-                    datafile.title(), elements ? &contact_info : nullptr);
+                    datafile.title(), elements ? &contact_info : nullptr, hyperelastic);
     const auto csv_path = args.outdir / "energy.csv";
     sig::write_file_atomically(csv_path, sig::energy_csv(history.energy));
     const double e0 = history.energy.front().total;

@@ -1,16 +1,27 @@
-// Normal compliance at the end of the step, -xi = r [u_n - d]_+ (1.24) with d the geometric gap:
-// the foundation is a bed of springs of stiffness r per unit area, nodal force
-// r w_i [x_i - d_i]_+. This is the static penalty method (Remark 3.2) on the condensed step.
-// The force is evaluated at t_{n+1} only, so its work over a step is not the change of the spring
-// energy: the scheme gains or loses energy at the impact depending on the step.
-#include "integrator/dynamic_contact.hpp"
+// Normal compliance at the end of the step, N = r w [q_n]_+ (1.24): the foundation a bed of
+// springs of stiffness r per unit area, no wall (the thesis's "g = 1000"). The force is evaluated
+// at t_n only, so its work over a step is not the change of the springs' energy: the scheme gains
+// or loses energy at the impact depending on the step.
 #include "integrator/strategies.hpp"
 
 namespace sig {
 
-ContactStepSolution ComplianceStrategy::solve(const NormalStep& step,
-                                              const ContactBoundary& boundary) const {
-  return solve_unilateral(step, boundary, boundary.geometric_gap, static_method("penalty", p_));
+std::vector<ContactLaw> ComplianceStrategy::first_laws(const ContactSetting& setting,
+                                                       const ContactStepStart&) const {
+  std::vector<ContactLaw> laws = setting.law;
+  for (ContactLaw& law : laws) {
+    law.normal = NormalLaw::compliance;
+    law.cn = p_.r;
+  }
+  return laws;
+}
+
+ContactStepSolution ComplianceStrategy::phases(ContactBulk& bulk, const ContactSetting& first,
+                                               const ContactStepStart&) const {
+  ContactStepSolution s;
+  ContactIterate iterate;
+  phase(bulk, first, iterate, s);
+  return s;
 }
 
 } // namespace sig

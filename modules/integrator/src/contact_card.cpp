@@ -6,17 +6,24 @@
 
 namespace sig {
 
+namespace {
+
+std::string strategy_of(const Card& contact) {
+  return contact.choice(
+      "strategy", {"signorini", "compliance", "specific-penalty", "two-step", "ipm"}, "signorini");
+}
+
+} // namespace
+
 ContactHistoryInfo contact_history_info(const Card& contact) {
   ContactHistoryInfo info;
-  info.strategy = contact.choice(
-      "strategy", {"signorini", "compliance", "specific-penalty", "two-step", "ipm"});
+  info.strategy = strategy_of(contact);
   const bool needs_r = info.strategy == "compliance" || info.strategy == "specific-penalty" ||
                        info.strategy == "ipm";
   if (needs_r && !contact.has("r"))
     contact.fail("r", "strategy=" + info.strategy +
                           " needs the foundation stiffness per unit area r > 0");
-  info.r = contact.real("r", 0.0);
-  if (contact.has("r") && !(info.r > 0)) contact.fail("r", "must be > 0");
+  info.r = contact.real("r", 0.0); // > 0 when given: core/ranges.hpp
   if (contact.has("r") && !needs_r)
     log_warning("CONTACT r= is not used by strategy=" + info.strategy);
   // The strategies define their own normal forces; the card's law must be the default.
@@ -28,18 +35,23 @@ ContactHistoryInfo contact_history_info(const Card& contact) {
   if (!(info.depth >= 0)) contact.fail(depth, "must be >= 0");
   if (info.depth > 0 && (info.strategy == "compliance" || info.strategy == "specific-penalty"))
     log_warning(std::string("CONTACT ") + depth + "= sets a unilateral bound, which strategy=" +
-                info.strategy + " does not have: its force acts from the obstacle surface, " +
-                depth + " is ignored");
+                info.strategy + " does not have: its force acts from the obstacle surface (" +
+                depth + " is only read by a friction law=mu1|mu2)");
   return info;
 }
 
 ContactStrategyParameters contact_strategy_parameters(const Card& contact, const Card* solver) {
   ContactStrategyParameters p;
   p.r = contact.real("r", 0.0);
+  if (contact.has("persistency") && strategy_of(contact) != "two-step")
+    contact.fail("persistency", "is a field of strategy=two-step");
+  p.persistency = contact.choice("persistency", {"midpoint", "increment"}) == "midpoint"
+                      ? Persistency::midpoint
+                      : Persistency::increment;
   if (solver != nullptr) {
-    const long maxit = solver->integer("maxit", p.max_iterations);
-    if (maxit < 1) solver->fail("maxit", "must be >= 1");
-    p.max_iterations = static_cast<int>(maxit);
+    p.max_iterations = static_cast<int>(solver->integer("maxit", p.max_iterations)); // >= 1
+    p.gamma = solver->real("gamma", p.gamma);                                        // > 0
+    p.eps = solver->real("eps", p.eps);                                              // > 0
   }
   return p;
 }

@@ -20,16 +20,13 @@ ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& me
                                  const ReducedSystem& reduced) {
   ContactBoundary b;
   b.nodes = elements.node;
-  b.weight = elements.weight;
+  b.setting = {elements.law, elements.weight};
   b.geometric_gap = elements.gap;
   const int p = elements.size();
-  b.bound.resize(p);
-  for (int i = 0; i < p; ++i) {
+  for (int i = 0; i < p; ++i)
     SIG_VERIFY(elements.node[i] >= 0 && elements.node[i] < mesh.num_nodes(),
                "contact element " << i + 1 << ": node " << elements.node[i] + 1
                                   << " is not a node of the mesh");
-    b.bound[i] = elements.bound(i);
-  }
   std::vector<Eigen::Triplet<double>> entries;
   for (int i = 0; i < p; ++i) {
     const std::array<int, 2> dofs = reduced.contact_node_dofs(elements.node[i]);
@@ -39,10 +36,6 @@ ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& me
   b.B.resize(p, reduced.num_free());
   b.B.setFromTriplets(entries.begin(), entries.end());
   return b;
-}
-
-ContactNormals contact_normals(const ContactElements& elements) {
-  return {elements.node, elements.normal};
 }
 
 CondensedContact condense_contact(const TimeScheme& scheme, const ContactBoundary& boundary) {

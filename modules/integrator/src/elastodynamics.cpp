@@ -64,7 +64,7 @@ Eigen::SparseMatrix<double> diagonal_mass(const Eigen::VectorXd& lumped) {
 }
 
 Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice choice,
-                                        const Mesh& mesh, const ContactNormals& contact) {
+                                        const Mesh& mesh, const std::vector<int>& contact_nodes) {
   SIG_VERIFY(system.M.rows() == system.num_dofs() && system.M.nonZeros() > 0,
              "the system has no mass: give the MATERIAL cards a density rho > 0");
   switch (choice) {
@@ -74,8 +74,8 @@ Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice c
     return diagonal_mass(system.M_lumped);
   case MassChoice::emm:
     // Without contact nodes the EMM would be the consistent mass under another name.
-    SIG_VERIFY(!contact.nodes.empty(), "mass=emm needs the contact nodes (a CONTACT card)");
-    return equivalent_mass_matrix(system.M, mesh, contact);
+    SIG_VERIFY(!contact_nodes.empty(), "mass=emm needs the contact nodes (a CONTACT card)");
+    return equivalent_mass_matrix(system.M, mesh, contact_nodes);
   }
   return system.M;
 }

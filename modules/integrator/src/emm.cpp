@@ -1,155 +1,140 @@
 #include "integrator/emm.hpp"
 
 #include "core/error.hpp"
-#include "integrator/elastodynamics.hpp"
+#include "core/log.hpp"
 #include "mesh/mesh.hpp"
 
 #include <Eigen/Dense>
-#include <algorithm>
-#include <set>
+#include <Eigen/SparseCholesky>
+#include <array>
 #include <vector>
 
 namespace sig {
 namespace {
 
-std::vector<std::vector<int>> node_neighbours(const Mesh& mesh) {
-  std::vector<std::set<int>> sets(mesh.nodes.size());
-  for (const auto& t : mesh.triangles)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        if (a != b) sets[t[a]].insert(t[b]);
-  std::vector<std::vector<int>> neighbours(sets.size());
-  for (std::size_t i = 0; i < sets.size(); ++i)
-    neighbours[i].assign(sets[i].begin(), sets[i].end());
-  return neighbours;
+/// m, the scalar mass of M = m (x) I_2; sig::Error if M is not of that form.
+Eigen::SparseMatrix<double> scalar_mass(const Eigen::SparseMatrix<double>& M) {
+  const Eigen::Index n = M.rows() / 2;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index j = 0; j < M.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(M, j); it; ++it) {
+      if (it.value() == 0.0) continue; // the P1 pattern stores the x-y couplings as zeros
+      SIG_VERIFY(it.row() % 2 == j % 2 &&
+                     M.coeff(it.row() + 1 - 2 * (it.row() % 2), j + 1 - 2 * (j % 2)) == it.value(),
+                 "EMM: the mass is not the same in both directions (entry (" << it.row() + 1 << ", "
+                                                                             << j + 1 << "))");
+      if (j % 2 == 0) entries.emplace_back(it.row() / 2, j / 2, it.value());
+    }
+  Eigen::SparseMatrix<double> m(n, n);
+  m.setFromTriplets(entries.begin(), entries.end());
+  return m;
 }
 
-// Rows 1, (x_j - x_i) / h, (y_j - y_i) / h over the receivers: the affine constraints on the
-// weights, centred and scaled so that their conditioning depends on the shape of the receiver
-// cloud only.
-Eigen::MatrixXd affine_constraints(const Mesh& mesh, int node, const std::vector<int>& receivers) {
-  const Eigen::Vector2d x = mesh.nodes[node];
-  double h = 0.0;
-  for (int j : receivers)
-    h = std::max(h, (mesh.nodes[j] - x).norm());
-  Eigen::MatrixXd A(3, static_cast<Eigen::Index>(receivers.size()));
-  for (std::size_t c = 0; c < receivers.size(); ++c) {
-    const Eigen::Vector2d d = (mesh.nodes[receivers[c]] - x) / h;
-    A.col(static_cast<Eigen::Index>(c)) << 1.0, d.x(), d.y();
+/// me = m0 + sum beta_ab Pi Sym_P(phi_a phi_b^T) Pi for the first `fields` affine fields (3: 1,
+/// x1, x2 and every product; 1: the mass alone is never asked), beta from the moments'
+/// conditions (header); empty if me is not positive definite off Gamma3.
+Eigen::SparseMatrix<double> project(const Eigen::SparseMatrix<double>& m,
+                                    const std::vector<char>& removed, const Eigen::MatrixXd& phi,
+                                    bool second_moments) {
+  const Eigen::Index n = m.rows();
+  std::vector<std::array<int, 2>> pairs; // (a, b), a <= b: the conditions and the unknowns
+  for (int a = 0; a < 3; ++a)
+    for (int b = a; b < 3; ++b)
+      if (second_moments || a == 0) pairs.push_back({a, b});
+  const auto np = static_cast<Eigen::Index>(pairs.size());
+  Eigen::SparseMatrix<double> m0 = m;
+  m0.makeCompressed();
+  std::vector<Eigen::SparseMatrix<double>> S(pairs.size(), m0); // m's pattern, values below
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(m0, j); it; ++it) {
+      const Eigen::Index i = it.row();
+      const bool off = removed[static_cast<std::size_t>(i)] || removed[static_cast<std::size_t>(j)];
+      if (off) it.valueRef() = 0.0;
+      const auto slot = &it.valueRef() - m0.valuePtr();
+      for (std::size_t p = 0; p < pairs.size(); ++p) {
+        const int a = pairs[p][0], b = pairs[p][1];
+        S[p].valuePtr()[slot] = off ? 0.0 : 0.5 * (phi(i, a) * phi(j, b) + phi(i, b) * phi(j, a));
+      }
+    }
+  // G beta = the removed moments: row (c, d), column (a, b) = phi_c^T S_ab phi_d.
+  Eigen::MatrixXd G(np, np);
+  Eigen::VectorXd lost(np);
+  for (Eigen::Index q = 0; q < np; ++q) {
+    const auto& [c, d] = pairs[static_cast<std::size_t>(q)];
+    lost[q] = phi.col(c).dot((m - m0) * phi.col(d));
+    for (Eigen::Index p = 0; p < np; ++p)
+      G(q, p) = phi.col(c).dot(S[static_cast<std::size_t>(p)] * phi.col(d));
   }
-  return A;
-}
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(G);
+  if (!lu.isInvertible()) return {};
+  Eigen::VectorXd beta = lu.solve(lost);
+  beta += lu.solve(lost - G * beta); // one refinement: the moments to rounding
+  Eigen::SparseMatrix<double> me = m0;
+  for (std::size_t p = 0; p < pairs.size(); ++p)
+    me += beta[static_cast<Eigen::Index>(p)] * S[p];
 
-// True if the receivers span the plane affinely: A A^T is well conditioned.
-bool spans_plane(const Eigen::MatrixXd& A) {
-  if (A.cols() < 3) return false;
-  const Eigen::Vector3d eig =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(A * A.transpose()).eigenvalues(); // ascending
-  return eig(0) > 1e-6 * eig(2);
-}
-
-// The non-contact nodes of the smallest ring around `node` (1-ring, 2-ring, ...) that spans the
-// plane, with their minimum-norm affine weights c = A^T (A A^T)^{-1} (1, 0, 0).
-MassTransfer transfer_of(const Mesh& mesh, const std::vector<std::vector<int>>& neighbours,
-                         const std::vector<char>& is_contact, int node,
-                         const Eigen::Vector2d& normal) {
-  MassTransfer transfer;
-  transfer.node = node;
-  transfer.normal = normal.normalized();
-  std::vector<char> seen(mesh.nodes.size(), 0);
-  seen[node] = 1;
-  std::vector<int> front = {node};
-  Eigen::MatrixXd A;
-  while (!front.empty()) {
-    std::vector<int> next;
-    for (int i : front)
-      for (int j : neighbours[i])
-        if (!seen[j]) {
-          seen[j] = 1;
-          next.push_back(j);
-          if (!is_contact[j]) transfer.receivers.push_back(j);
-        }
-    front = std::move(next);
-    A = affine_constraints(mesh, node, transfer.receivers);
-    if (spans_plane(A)) break;
-  }
-  SIG_VERIFY(spans_plane(A), "EMM: the non-contact nodes connected to contact node "
-                                 << node + 1 << " do not span the plane ("
-                                 << transfer.receivers.size() << " receivers)");
-  // Minimum-norm solution by a complete orthogonal decomposition (no normal equations), with
-  // one step of refinement: the moments are kept only as exactly as the weights are affine.
-  const Eigen::Vector3d b(1.0, 0.0, 0.0);
-  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
-  Eigen::VectorXd c = cod.solve(b);
-  c += cod.solve(b - A * c);
-  transfer.weights.assign(c.data(), c.data() + c.size());
-  return transfer;
+  // Positive definite off Gamma3 (the Gamma3 block is zero by construction).
+  std::vector<int> index(static_cast<std::size_t>(n), -1);
+  int kept = 0;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!removed[static_cast<std::size_t>(i)]) index[static_cast<std::size_t>(i)] = kept++;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(me, j); it; ++it) {
+      const int r = index[static_cast<std::size_t>(it.row())],
+                c = index[static_cast<std::size_t>(j)];
+      if (r >= 0 && c >= 0) entries.emplace_back(r, c, it.value());
+    }
+  Eigen::SparseMatrix<double> block(kept, kept);
+  block.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> cholesky(block);
+  if (cholesky.info() != Eigen::Success) return {};
+  return me;
 }
 
 } // namespace
 
-std::vector<MassTransfer> mass_transfers(const Mesh& mesh, const ContactNormals& contact) {
-  const int n = mesh.num_nodes();
-  SIG_VERIFY(contact.nodes.size() == contact.normals.size(),
-             "EMM: " << contact.nodes.size() << " contact nodes but " << contact.normals.size()
-                     << " normals");
-  std::vector<char> is_contact(mesh.nodes.size(), 0);
-  for (std::size_t c = 0; c < contact.nodes.size(); ++c) {
-    const int i = contact.nodes[c];
-    SIG_VERIFY(i >= 0 && i < n,
-               "EMM: contact node " << i + 1 << " is not in the mesh (" << n << " nodes)");
-    SIG_VERIFY(!is_contact[i], "EMM: contact node " << i + 1 << " is given twice");
-    SIG_VERIFY(contact.normals[c].norm() > 0, "EMM: zero normal at contact node " << i + 1);
-    is_contact[i] = 1;
-  }
-  const auto neighbours = node_neighbours(mesh);
-  std::vector<MassTransfer> transfers;
-  transfers.reserve(contact.nodes.size());
-  for (std::size_t c = 0; c < contact.nodes.size(); ++c)
-    transfers.push_back(
-        transfer_of(mesh, neighbours, is_contact, contact.nodes[c], contact.normals[c]));
-  return transfers;
-}
-
-Eigen::SparseMatrix<double> emm_transfer_matrix(int num_nodes,
-                                                const std::vector<MassTransfer>& transfers) {
-  std::vector<char> is_contact(static_cast<std::size_t>(num_nodes), 0);
-  std::vector<Eigen::Triplet<double>> entries;
-  auto add_block = [&entries](int row_node, int col_node, const Eigen::Matrix2d& B) {
-    for (int a = 0; a < 2; ++a)
-      for (int b = 0; b < 2; ++b)
-        if (B(a, b) != 0.0) entries.emplace_back(2 * row_node + a, 2 * col_node + b, B(a, b));
-  };
-  for (const MassTransfer& t : transfers) {
-    SIG_VERIFY(t.node >= 0 && t.node < num_nodes,
-               "EMM: contact node " << t.node + 1 << " out of range");
-    is_contact[t.node] = 1;
-    const Eigen::Vector2d& nu = t.normal;
-    // I - nu nu^T written as tau tau^T: tau tau^T nu is then exactly zero in floating point.
-    const Eigen::Vector2d tau(-nu.y(), nu.x());
-    add_block(t.node, t.node, tau * tau.transpose());
-    for (std::size_t r = 0; r < t.receivers.size(); ++r)
-      add_block(t.node, t.receivers[r], t.weights[r] * nu * nu.transpose());
-  }
-  for (int i = 0; i < num_nodes; ++i)
-    if (!is_contact[i]) add_block(i, i, Eigen::Matrix2d::Identity());
-  Eigen::SparseMatrix<double> T(2 * num_nodes, 2 * num_nodes);
-  T.setFromTriplets(entries.begin(), entries.end());
-  return T;
-}
-
 Eigen::SparseMatrix<double> equivalent_mass_matrix(const Eigen::SparseMatrix<double>& M,
                                                    const Mesh& mesh,
-                                                   const ContactNormals& contact) {
-  SIG_VERIFY(M.rows() == 2 * mesh.num_nodes() && M.cols() == M.rows(),
-             "EMM: a " << M.rows() << " x " << M.cols() << " mass for " << mesh.num_nodes()
-                       << " nodes");
-  const Eigen::SparseMatrix<double> T =
-      emm_transfer_matrix(mesh.num_nodes(), mass_transfers(mesh, contact));
-  const Eigen::SparseMatrix<double> TtMT = T.transpose() * (M * T);
-  Eigen::SparseMatrix<double> Me = 0.5 * (TtMT + Eigen::SparseMatrix<double>(TtMT.transpose()));
-  Me.prune(0.0);
-  Me.makeCompressed();
+                                                   const std::vector<int>& contact_nodes) {
+  const int nodes = mesh.num_nodes();
+  SIG_VERIFY(M.rows() == 2 * nodes && M.cols() == M.rows(),
+             "EMM: a " << M.rows() << " x " << M.cols() << " mass for " << nodes << " nodes");
+  SIG_VERIFY(!contact_nodes.empty(), "EMM: no contact node (the EMM would be M)");
+  std::vector<char> removed(static_cast<std::size_t>(nodes), 0);
+  for (int i : contact_nodes) {
+    SIG_VERIFY(i >= 0 && i < nodes,
+               "EMM: contact node " << i + 1 << " is not in the mesh (" << nodes << " nodes)");
+    SIG_VERIFY(!removed[static_cast<std::size_t>(i)],
+               "EMM: contact node " << i + 1 << " is given twice");
+    removed[static_cast<std::size_t>(i)] = 1;
+  }
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& x : mesh.nodes)
+    centre += x / nodes;
+  Eigen::MatrixXd phi(nodes, 3);
+  for (int i = 0; i < nodes; ++i)
+    phi.row(i) << 1.0, mesh.nodes[i].x() - centre.x(), mesh.nodes[i].y() - centre.y();
+  const Eigen::SparseMatrix<double> m = scalar_mass(M);
+  Eigen::SparseMatrix<double> me = project(m, removed, phi, true);
+  if (me.nonZeros() == 0) {
+    log_warning("EMM: keeping the moments of inertia too makes the mass indefinite; only the "
+                "total mass and the centre of mass are kept");
+    me = project(m, removed, phi, false);
+    SIG_VERIFY(me.nonZeros() > 0, "EMM: with the inertia of the "
+                                      << contact_nodes.size()
+                                      << " contact nodes removed, no positive definite mass of "
+                                         "the pattern keeps the total mass and the centre");
+  }
+  // Me = me (x) I_2, on M's interleaved dofs.
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index j = 0; j < me.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(me, j); it; ++it)
+      if (it.value() != 0.0)
+        for (int c = 0; c < 2; ++c)
+          entries.emplace_back(2 * it.row() + c, 2 * j + c, it.value());
+  Eigen::SparseMatrix<double> Me(M.rows(), M.cols());
+  Me.setFromTriplets(entries.begin(), entries.end());
   return Me;
 }
 

@@ -4,6 +4,8 @@
 #include "integrator/elastodynamics.hpp"
 #include "integrator/time_scheme.hpp"
 
+#include <algorithm>
+
 namespace sig {
 
 double kinetic_energy(const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& v) {
@@ -30,6 +32,21 @@ EnergyRecord energy_record(const Elastodynamics& problem, const DynamicState& st
   r.total = r.kinetic + r.elastic;
   r.external_work = external_work;
   return r;
+}
+
+void add_contact_step(EnergyRecord& record, const EnergyRecord& before, const Eigen::VectorXd& N,
+                      const Eigen::VectorXd& T, const Eigen::VectorXd& q_before,
+                      const Eigen::VectorXd& q_after, const Eigen::VectorXd& slip,
+                      double interface) {
+  const double normal = -N.dot(q_after - q_before), tangential = -T.dot(slip);
+  record.contact_work = before.contact_work + normal + tangential;
+  record.friction_work = before.friction_work + tangential;
+  record.interface = interface;
+  record.wall_work = before.wall_work + normal + (interface - before.interface);
+  record.max_penetration = q_after.size() ? std::max(q_after.maxCoeff(), 0.0) : 0.0;
+  record.active_nodes = static_cast<int>((N.array() > 0).count());
+  record.normal_force = N.sum();
+  record.tangential_force = T.sum();
 }
 
 } // namespace sig

@@ -1,36 +1,45 @@
-// The Improved Penalized Method (IPM) of ch. 8.4, (8.30)-(8.32), frictionless: a Newton
-// continuation in two phases over each step,
-//   (a) the specific penalty (8.32) everywhere: -xi = r p(u_n), no bound;
-//   (b) where (a)'s penetration stays below g, the same law; where it reaches g, the compliance
-//       limited by the unilateral constraint, -xi in d phi_g(u_n) + L g: the penetration is held
-//       at most g (the bound d + g: the CONT gap d plus the depth g) and the force is the specific
-//       penalty at g plus a multiplier mu >= 0.
-// Phase (b) is one bounded semi-smooth Newton (bounded_newton.hpp) started from (a)'s solution
-// with (a)'s nodes beyond the bound active. The bound is checked at every node, so a node that
-// (a) kept below g but that (b) pushes beyond it joins the active set (the continuation of the
-// active-set iteration): the penetration is bounded by g at every node and step. The multiplier's
-// work -mu (d + g - x_n) <= 0 is the only departure from the energy identity (3.53).
-#include "integrator/dynamic_contact.hpp"
+// The Improved Penalized Method (IPM) of ch. 8.4, (8.30)-(8.32): a Newton continuation in two
+// phases over each step,
+//   (a) the specific penalty (8.32) everywhere, N = r w p_spe(q_{n-1}, q_n), no wall (8.30);
+//   (b) when (a) took a node beyond g: from (a)'s state, the same compliance limited by the
+//       unilateral wall at q_n = g (8.31): on the wall the force is the compliance at g,
+//       r w p_spe(q_{n-1}, g) ([choice] C14's p_g), plus the wall's reaction Lambda >= 0.
+// The wall applies to every node in (b), not only to those (a) took beyond g (the set W of
+// (8.31)): a node that (b) would push beyond g is stopped too, so the penetration is bounded by g
+// at every node and step. Off the wall the identity (3.53) holds as for the specific penalty;
+// the reaction's work -Lambda (g - q_{n-1}) <= 0 is the only dissipation of the frictionless
+// method (l.15560). Friction: Coulomb with the whole normal force (or mu1 / mu2 of the
+// penetration, (8.3)) in both phases; on the wall q_n = g, where mu1 and mu2 are mu0 (C14).
 #include "integrator/strategies.hpp"
+
+#include "solver/contact_bulk.hpp"
 
 namespace sig {
 
-ContactStepSolution ImprovedPenaltyStrategy::solve(const NormalStep& step,
-                                                   const ContactBoundary& boundary) const {
-  const NodalForceLaw law = specific_penalty_law(boundary, step.x_now, p_.r);
-  // (a) specific penalty.
-  const BoundedNewtonResult a = bounded_newton(step.A, step.x_free, law, {}, Eigen::VectorXd(),
-                                               step.x_free, p_.max_iterations, p_.tolerance);
-  if (!a.converged)
-    return {a.lambda, false, "phase (a), specific penalty: " + a.failure, a.iterations};
-  if (!any_beyond(a.x, boundary.bound)) return {a.lambda, true, "", a.iterations};
+std::vector<ContactLaw> ImprovedPenaltyStrategy::first_laws(const ContactSetting& setting,
+                                                            const ContactStepStart& start) const {
+  return secant_compliance(setting, start, p_.r, NormalLaw::compliance);
+}
 
-  // (b) bounded by the unilateral constraint x <= d + g.
-  const std::vector<char> bounded(boundary.size(), 1);
-  const BoundedNewtonResult b = bounded_newton(step.A, step.x_free, law, bounded, boundary.bound,
-                                               a.x, p_.max_iterations, p_.tolerance);
-  return {b.lambda, b.converged, b.converged ? "" : "phase (b), bounded: " + b.failure,
-          a.iterations + b.iterations};
+ContactStepSolution ImprovedPenaltyStrategy::phases(ContactBulk& bulk, const ContactSetting& first,
+                                                    const ContactStepStart& start) const {
+  ContactStepSolution a;
+  ContactIterate iterate;
+  phase(bulk, first, iterate, a, "phase (a), specific penalty");
+  if (!a.converged) return a;
+  const Eigen::VectorXd q = bulk.penetration();
+  bool beyond = false;
+  for (int p = 0; p < first.size(); ++p)
+    beyond = beyond || q[p] > first.law[p].depth;
+  if (!beyond) return a;
+
+  const ContactSetting b{secant_compliance(first, start, p_.r, NormalLaw::compliance_unilateral),
+                         first.weight};
+  ContactStepSolution s = a;
+  s.iterations = 0;
+  phase(bulk, b, iterate, s, "phase (b), bounded by g");
+  s.iterations += a.iterations;
+  return s;
 }
 
 } // namespace sig

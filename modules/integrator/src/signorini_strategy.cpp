@@ -1,16 +1,23 @@
-// Classical Signorini at the end of the step: u_n,i(t_{n+1}) <= bound_i, lambda_i >= 0,
-// lambda_i (u_n,i - bound_i) = 0, solved by the static primal-dual active set method on the
-// condensed step. Contact forces at t_{n+1} do work -lambda . (x_{n+1} - x_n) <= 0 on a node
-// that arrives at the obstacle: the scheme loses the normal kinetic energy of the nodes that hit
-// (the dissipation of Fig 8.3), and keeps the penetration at zero.
-#include "integrator/dynamic_contact.hpp"
+// Classical Signorini at the end of the step: q_n <= g, N >= 0, N (q_n - g) = 0 (the CONT law),
+// by the primal-dual active set method. A node that arrives at the obstacle is stopped there
+// within one step, and the forces at t_n do the work -N (q_n - q_{n-1}) <= 0: the scheme loses the
+// normal kinetic energy of the nodes that hit (the dissipation of Fig 8.3) and keeps the
+// penetration at g.
 #include "integrator/strategies.hpp"
 
 namespace sig {
 
-ContactStepSolution SignoriniStrategy::solve(const NormalStep& step,
-                                             const ContactBoundary& boundary) const {
-  return solve_unilateral(step, boundary, boundary.bound, static_method("pdas", p_));
+std::vector<ContactLaw> SignoriniStrategy::first_laws(const ContactSetting& setting,
+                                                      const ContactStepStart&) const {
+  return setting.law;
+}
+
+ContactStepSolution SignoriniStrategy::phases(ContactBulk& bulk, const ContactSetting& first,
+                                              const ContactStepStart&) const {
+  ContactStepSolution s;
+  ContactIterate iterate;
+  phase(bulk, first, iterate, s);
+  return s;
 }
 
 } // namespace sig

@@ -1,36 +1,27 @@
-// The specific penalty of [62], thesis (3.51) and (8.32): nodal force r w_i p(a_i, b_i) with
-// a_i, b_i the penetrations x_i - d_i at t_n and t_{n+1} (integrator/specific_penalty.hpp).
-// Its work over the step is -(r / 2) w_i ([b_i]_+^2 - [a_i]_+^2), so the midpoint rule conserves
-// E + (r / 2) sum_i w_i [x_i - d_i]_+^2 exactly (3.53); the penetration is not zero (0.0034 m in
-// scene 8a). p is non-decreasing in b: the step is a strictly convex problem, solved by the
-// semi-smooth Newton method of bounded_newton.hpp without bounds.
-#include "integrator/bounded_newton.hpp"
-#include "integrator/dynamic_contact.hpp"
-#include "integrator/specific_penalty.hpp"
+// The specific penalty of [62], thesis (3.48)-(3.53) and (8.32): the compliance r w [q]_+ as its
+// secant over the step, N = r w p_spe(q_{n-1}, q_n) (contact/complementarity.hpp). Its work over
+// the step, -r w ([q_n]_+^2 - [q_{n-1}]_+^2) / 2, is the change of the foundation's energy, so the
+// midpoint rule conserves E + (r / 2) sum w [q]_+^2 exactly (3.53); the penetration is not zero
+// (0.0034 m in scene 8a, 0.058 m in 8b). The compliance has no wall, hence no multiplier; friction
+// is exact Coulomb by the tangential multiplier of PDAS, as in IPM ([choice]: the thesis's garbled
+// stick law "gamma_tau = r delta u_tau" suggests a penalty T = proj(r Delta, mu N), ALGORITHMS.md
+// 4.3 (A); with r = 1e9 Pa/m the semi-smooth Newton method then cycles between the two slip
+// directions of a node that should stick, measured on the Scene 8b ring).
 #include "integrator/strategies.hpp"
 
 namespace sig {
 
-/// phi_i(x) = r w_i p(a_i, x_i - d_i), shared with ipm.cpp.
-NodalForceLaw specific_penalty_law(const ContactBoundary& boundary, const Eigen::VectorXd& x_now,
-                                   double r) {
-  const Eigen::VectorXd a = x_now - boundary.geometric_gap;
-  return
-      [&boundary, a, r](const Eigen::VectorXd& x, Eigen::VectorXd& force, Eigen::VectorXd& slope) {
-        for (Eigen::Index i = 0; i < x.size(); ++i) {
-          const double b = x[i] - boundary.geometric_gap[i];
-          force[i] = r * boundary.weight[i] * specific_penalty(a[i], b);
-          slope[i] = r * boundary.weight[i] * d_specific_penalty(a[i], b);
-        }
-      };
+std::vector<ContactLaw> SpecificPenaltyStrategy::first_laws(const ContactSetting& setting,
+                                                            const ContactStepStart& start) const {
+  return secant_compliance(setting, start, p_.r, NormalLaw::compliance);
 }
 
-ContactStepSolution SpecificPenaltyStrategy::solve(const NormalStep& step,
-                                                   const ContactBoundary& boundary) const {
-  const BoundedNewtonResult n =
-      bounded_newton(step.A, step.x_free, specific_penalty_law(boundary, step.x_now, p_.r), {},
-                     Eigen::VectorXd(), step.x_free, p_.max_iterations, p_.tolerance);
-  return {n.lambda, n.converged, n.failure, n.iterations};
+ContactStepSolution SpecificPenaltyStrategy::phases(ContactBulk& bulk, const ContactSetting& first,
+                                                    const ContactStepStart&) const {
+  ContactStepSolution s;
+  ContactIterate iterate;
+  phase(bulk, first, iterate, s);
+  return s;
 }
 
 } // namespace sig

@@ -1,6 +1,7 @@
 #include "integrator/time_card.hpp"
 
 #include "core/datafile.hpp"
+#include "core/log.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,11 +11,9 @@ namespace sig {
 
 TimeParameters time_parameters(const Card& time, bool has_contact) {
   TimeParameters p;
-  p.scheme = time.choice("scheme", {"midpoint", "newmark"});
-  p.final_time = time.real("T");
+  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic", "backward-euler"});
+  p.final_time = time.real("T"); // T, k > 0, output_every >= 1: core/ranges.hpp
   p.k = time.real("k");
-  if (p.k <= 0) time.fail("k", "the time step must be positive");
-  if (p.final_time <= 0) time.fail("T", "the final time must be positive");
   // A step count that is not whole would make the last step end before or after T.
   const double ratio = p.final_time / p.k;
   if (ratio > 1e9) time.fail("k", "T / k is more than 1e9 steps");
@@ -26,14 +25,26 @@ TimeParameters time_parameters(const Card& time, bool has_contact) {
   }
   p.steps = static_cast<int>(steps);
   const long every = time.integer("output_every");
-  if (every < 1) time.fail("output_every", "must be >= 1");
   p.output_every = static_cast<int>(std::min<long>(every, p.steps));
+  if (p.scheme == "quasistatic" && time.has("mass"))
+    time.fail("mass", "a quasistatic march has no inertia: remove mass=");
   const std::string mass = time.choice("mass", {"consistent", "lumped", "emm"});
   if (mass == "emm" && !has_contact)
     time.fail("mass", "mass=emm needs a CONTACT card: the Equivalent Mass Matrix (3.54) removes "
                       "the normal inertia of the contact nodes of Gamma3");
   p.mass = mass_choice_from_string(mass);
+  p.stress = algorithmic_stress_named(time.choice("stress", {"gonzalez", "midpoint"}));
   return p;
+}
+
+void warn_unused_solver_fields(const Card* solver) {
+  if (solver == nullptr) return;
+  for (const auto& [name, value] : solver->fields)
+    if (name != "linear" && name != "maxit" && name != "gamma" && name != "eps")
+      log_warning(
+          solver->file + ":" + std::to_string(solver->line) + ": SOLVER " + name + "=" + value +
+          " is not used by sig-march (a TIME deck uses linear=, maxit=, gamma= and eps=): " +
+          "ignored");
 }
 
 } // namespace sig

@@ -75,11 +75,15 @@ StepResponse midpoint(const HyperelasticLaw& law, const Eigen::Matrix2d& F_prev,
   StepResponse out;
   out.stress = mid.stress;
   if (with_tangent) out.tangent = 0.5 * mid.tangent; // dF_m = dF_n / 2
-  out.energy = law.energy(F);
+  out.energy = step_energy(law, F);
   return out;
 }
 
 } // namespace
+
+double step_energy(const HyperelasticLaw& law, const Eigen::Matrix2d& F) {
+  return law.in_plane(F.transpose() * F).energy;
+}
 
 std::string to_string(AlgorithmicStress stress) {
   return stress == AlgorithmicStress::gonzalez ? "gonzalez" : "midpoint";

@@ -59,15 +59,8 @@ Hooke hooke_from_card(const Card& card) {
 
 Hooke hooke_from_card(const Card& card, PlaneMode plane) {
   Hooke law;
-  law.E = card.real("E");
-  if (!(law.E > 0.0)) {
-    std::ostringstream what;
-    what << "Young's modulus must be > 0 (got " << law.E << ")";
-    card.fail("E", what.str());
-  }
+  law.E = card.real("E"); // E > 0, -1 < nu < 0.5: the card's ranges (core/ranges.hpp)
   law.nu = card.real("nu");
-  if (!(law.nu < 0.5)) card.fail("nu", "Poisson ratio must be < 0.5 (incompressible limit)");
-  if (!(law.nu > -1.0)) card.fail("nu", "Poisson ratio must be > -1");
   law.plane = plane;
   return law;
 }

@@ -3,6 +3,7 @@
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/ranges.hpp"
 #include "material/ciarlet_geymonat.hpp"
 #include "material/saint_venant_kirchhoff.hpp"
 #include "mesh/mesh.hpp"
@@ -52,12 +53,8 @@ void reject_fields(const Card& card, std::initializer_list<const char*> fields,
 
 // The Ciarlet-Geymonat law of a card; Hooke's law then is its small-strain limit.
 std::shared_ptr<const CiarletGeymonat> ciarlet_geymonat_from_card(const Card& card) {
-  const double c1 = card.real("c1");
-  if (!(c1 > 0.0)) card.fail("c1", "c1 must be > 0");
-  const double c2 = card.real("c2");
-  if (!(c2 >= 0.0)) card.fail("c2", "c2 must be >= 0");
-  const double a = card.real("a");
-  if (!(a >= 0.0)) card.fail("a", "a must be >= 0");
+  // c1 > 0, c2 >= 0, a >= 0: the card's ranges (core/ranges.hpp), checked by Card::real.
+  const double c1 = card.real("c1"), c2 = card.real("c2"), a = card.real("a");
   return std::make_shared<const CiarletGeymonat>(c1, c2, a, plane_mode_from_card(card));
 }
 
@@ -153,10 +150,8 @@ SubdomainMaterial material_from_card(const Card& card) {
           material.hooke.E, material.hooke.nu, material.hooke.plane);
     if (law == "kelvin-voigt") material.kelvin_voigt = KelvinVoigt{viscosity_from_card(card), {}};
   }
-  material.thickness = card.real("thickness");
-  if (!(material.thickness > 0.0)) card.fail("thickness", "thickness must be > 0");
+  material.thickness = card.real("thickness"); // > 0 and rho >= 0: core/ranges.hpp
   material.density = card.real("rho");
-  if (!(material.density >= 0.0)) card.fail("rho", "density must be >= 0");
   return material;
 }
 
@@ -279,6 +274,20 @@ MaterialTable read_mili(const std::filesystem::path& path) {
                path.string() << ": array 'plane' row " << i + 1 << ": unknown code " << plane[i]);
     SIG_VERIFY(i == 0 || subdomain[i] > subdomain[i - 1],
                path.string() << ": array 'subdomain' is not strictly increasing at row " << i + 1);
+    // The ranges of the MATERIAL card hold for the file too (core/ranges.hpp).
+    const std::string file = path.string();
+    verify_in_range(static_cast<double>(subdomain[i]), "MATERIAL", "region", file, "subdomain",
+                    i + 1);
+    if (law[i] == law_ciarlet_geymonat) {
+      verify_in_range(c1[i], "MATERIAL", "c1", file, "c1", i + 1);
+      verify_in_range(c2[i], "MATERIAL", "c2", file, "c2", i + 1);
+      verify_in_range(a[i], "MATERIAL", "a", file, "a", i + 1);
+    } else {
+      verify_in_range(young[i], "MATERIAL", "E", file, "young", i + 1);
+      verify_in_range(poisson[i], "MATERIAL", "nu", file, "poisson", i + 1);
+    }
+    verify_in_range(thickness[i], "MATERIAL", "thickness", file, "thickness", i + 1);
+    verify_in_range(density[i], "MATERIAL", "rho", file, "density", i + 1);
     SubdomainMaterial m;
     m.subdomain = static_cast<int>(subdomain[i]);
     m.hooke.E = young[i];

@@ -1,5 +1,6 @@
 #include "fortran_records.hpp"
 
+#include "core/ds.hpp"
 #include "core/error.hpp"
 
 #include <bit>
@@ -98,6 +99,13 @@ FortranRecords split_fortran_records(std::string_view bytes, const std::string& 
     }
   }
   throw Error(file + ": not a Fortran sequential file (truncated or not NOPO?): " + reasons);
+}
+
+std::uint64_t nopo_fingerprint(const FortranRecords& records) {
+  std::uint64_t hash = fnv1a64(nullptr, 0);
+  for (std::size_t k = 0; k < records.payloads.size(); ++k)
+    if (k != 1) hash = fnv1a64(records.payloads[k].data(), records.payloads[k].size(), hash);
+  return hash;
 }
 
 void append_fortran_record(std::string& out, const std::string& payload, int marker_bytes,

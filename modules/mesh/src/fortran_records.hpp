@@ -29,6 +29,10 @@ struct FortranRecords {
 /// bytes, little then big endian). Throws sig::Error naming `file` if none does.
 FortranRecords split_fortran_records(std::string_view bytes, const std::string& file);
 
+/// The fingerprint of a NOPO file (mesh/nopo.hpp): FNV-1a 64 of every record payload but the
+/// second (NOP0, the text).
+std::uint64_t nopo_fingerprint(const FortranRecords& records);
+
 /// Append one record holding `payload`.
 void append_fortran_record(std::string& out, const std::string& payload, int marker_bytes,
                            const WordCodec& codec);

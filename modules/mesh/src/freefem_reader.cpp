@@ -4,7 +4,9 @@
 #include "mesh/topology.hpp"
 #include "token_reader.hpp"
 
+#include <cstdint>
 #include <cstdlib>
+#include <limits>
 
 namespace sig {
 namespace {
@@ -16,19 +18,31 @@ int node_index(TokenReader& in, int nv) {
   return static_cast<int>(v - 1);
 }
 
-} // namespace
+// A label is a reference by its absolute value, as NOPO keeps it.
+int label(TokenReader& in) {
+  const long value = in.integer();
+  if (value < -std::numeric_limits<int>::max() || value > std::numeric_limits<int>::max())
+    in.fail("label " + std::to_string(value) + " is out of range");
+  return static_cast<int>(std::labs(value));
+}
 
-Mesh read_freefem_msh(const std::filesystem::path& path) {
-  TokenReader in(path);
-  const long nv = in.integer(), nt = in.integer(), nbe = in.integer();
-  if (nv < 3 || nt < 1 || nbe < 0) in.fail("bad header 'nv nt nbe'");
+Mesh read_mesh(TokenReader& in) {
+  // Counts checked against the file before anything is allocated: a vertex takes at least 6
+  // bytes ("x y l\n"), a triangle 8, an edge 6.
+  const long nv = in.count("vertices", 6), nt = in.count("triangles", 8),
+             nbe = in.count("boundary edges", 6);
+  if (nv < 3 || nt < 1) in.fail("bad header 'nv nt nbe': a mesh needs 3 vertices and a triangle");
+  if (static_cast<std::uint64_t>(6 * nv + 8 * nt + 6 * nbe) > in.bytes_left() + 6)
+    in.fail("the header announces " + std::to_string(nv) + " vertices, " + std::to_string(nt) +
+            " triangles and " + std::to_string(nbe) + " edges, more than the " +
+            std::to_string(in.bytes_left()) + " bytes left in the file hold");
 
   Mesh mesh;
   mesh.nodes.reserve(nv);
   for (long i = 0; i < nv; ++i) {
     const double x = in.real(), y = in.real();
     mesh.nodes.emplace_back(x, y);
-    mesh.vertex_ref.push_back(static_cast<int>(std::labs(in.integer())));
+    mesh.vertex_ref.push_back(label(in));
   }
   std::vector<int> triangle_lines;
   for (long t = 0; t < nt; ++t) {
@@ -36,7 +50,8 @@ Mesh read_freefem_msh(const std::filesystem::path& path) {
     for (int& v : tri)
       v = node_index(in, static_cast<int>(nv));
     const long region = in.integer();
-    if (region < 0) in.fail("negative region " + std::to_string(region));
+    if (region < 0 || region > std::numeric_limits<int>::max())
+      in.fail("region " + std::to_string(region) + " is out of range");
     mesh.triangles.push_back(tri);
     mesh.subdomain.push_back(region > 0 ? static_cast<int>(region) : 1); // as NOPO stores it
     triangle_lines.push_back(in.line());
@@ -45,9 +60,9 @@ Mesh read_freefem_msh(const std::filesystem::path& path) {
   for (long e = 0; e < nbe; ++e) {
     const int a = node_index(in, static_cast<int>(nv));
     const int b = node_index(in, static_cast<int>(nv));
-    const long label = std::labs(in.integer());
-    if (label == 0) continue; // no reference
-    mesh.edges.push_back({a, b, static_cast<int>(label)});
+    const int ref = label(in);
+    if (ref == 0) continue; // no reference
+    mesh.edges.push_back({a, b, ref});
     edge_lines.push_back(in.line());
   }
   if (!in.at_end()) {
@@ -55,16 +70,25 @@ Mesh read_freefem_msh(const std::filesystem::path& path) {
     in.fail("unexpected data after the " + std::to_string(nbe) + " boundary edges");
   }
 
-  if (const int flat = orient_counter_clockwise(mesh); flat >= 0)
-    throw InputError(in.file(), triangle_lines[flat], "",
-                     "triangle " + std::to_string(flat + 1) +
-                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
+  orient_triangles_of_file(mesh, in.file(), triangle_lines);
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "boundary edge with label " + std::to_string(mesh.edges[bad].ref) +
                          " is not a side of any triangle");
   check_mesh(mesh, in.file());
   return mesh;
+}
+
+} // namespace
+
+Mesh read_freefem_msh(const std::filesystem::path& path) {
+  TokenReader in(path);
+  return read_mesh(in);
+}
+
+Mesh parse_freefem_msh(const std::string& name, std::string contents) {
+  TokenReader in(name, std::move(contents));
+  return read_mesh(in);
 }
 
 } // namespace sig

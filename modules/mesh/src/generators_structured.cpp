@@ -83,7 +83,7 @@ Mesh ring(const Eigen::Vector2d& center, double r_in, double r_out, int N,
   return mesh;
 }
 
-Mesh rectangle(double lx, double ly, int nx, int ny, std::array<int, 4> refs) {
+Mesh rectangle(double lx, double ly, int nx, int ny, std::array<int, 4> refs, CellPattern pattern) {
   SIG_VERIFY(lx > 0 && ly > 0 && std::isfinite(lx) && std::isfinite(ly),
              "rectangle: sides " << lx << " x " << ly << " must be > 0");
   SIG_VERIFY(nx >= 1 && ny >= 1, "rectangle: " << nx << " x " << ny << " cells");
@@ -95,10 +95,20 @@ Mesh rectangle(double lx, double ly, int nx, int ny, std::array<int, 4> refs) {
     for (int i = 0; i <= nx; ++i)
       mesh.nodes.emplace_back(lx * i / nx, ly * j / ny);
   }
+  if (pattern == CellPattern::union_jack)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        mesh.nodes.emplace_back(lx * (i + 0.5) / nx, ly * (j + 0.5) / ny);
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
       const int a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
-      if ((i + j) % 2 == 0) {
+      if (pattern == CellPattern::union_jack) {
+        const int e = (nx + 1) * (ny + 1) + j * nx + i; // the centre
+        mesh.triangles.push_back({a, b, e});
+        mesh.triangles.push_back({b, c, e});
+        mesh.triangles.push_back({c, d, e});
+        mesh.triangles.push_back({d, a, e});
+      } else if ((i + j) % 2 == 0) {
         mesh.triangles.push_back({a, b, c});
         mesh.triangles.push_back({a, c, d});
       } else {

@@ -5,6 +5,9 @@
 #include "token_reader.hpp"
 
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -25,9 +28,11 @@ struct GmshElement {
 struct GmshContent {
   std::unordered_map<long, int> node_index; ///< gmsh node tag -> position in nodes
   std::vector<Eigen::Vector2d> nodes;
+  std::vector<long> node_tags; ///< per position, for messages
   std::vector<GmshElement> elements;
 };
 
+// P1 is the model: the 2D elements of another kind are named, so that the user can remesh.
 int nodes_per_element(TokenReader& in, long type) {
   switch (type) {
   case Line:
@@ -36,129 +41,220 @@ int nodes_per_element(TokenReader& in, long type) {
     return 3;
   case Point:
     return 1;
+  case 3:
+  case 10:
+  case 16:
+    in.fail("element type " + std::to_string(type) +
+            " is a quadrangle: the model is P1 triangles (mesh with triangles, or "
+            "Mesh.SubdivisionAlgorithm = 1 to split them)");
+  case 8:
+  case 9:
+  case 20:
+  case 21:
+  case 22:
+  case 23:
+  case 24:
+  case 25:
+    in.fail("element type " + std::to_string(type) +
+            " is of second or higher order: the model is P1 (mesh with Mesh.ElementOrder = 1)");
   default:
     in.fail("element type " + std::to_string(type) +
-            " is not supported: P1 meshes hold points (15), lines (1) and triangles (2) only");
+            " is not read: a 2D P1 mesh holds points (15), lines (1) and triangles (2) only");
   }
 }
 
 void add_node(TokenReader& in, GmshContent& content, long tag, double x, double y) {
+  if (!std::isfinite(x) || !std::isfinite(y))
+    in.fail("node tag " + std::to_string(tag) + " has a non-finite coordinate");
   const auto [it, fresh] = content.node_index.emplace(tag, static_cast<int>(content.nodes.size()));
   if (!fresh) in.fail("node tag " + std::to_string(tag) + " appears twice");
   content.nodes.emplace_back(x, y);
+  content.node_tags.push_back(tag);
 }
 
-long count(TokenReader& in, const char* what) {
-  const long n = in.integer();
-  if (n < 0) in.fail(std::string("negative number of ") + what);
-  return n;
-}
+/// Reads the numbers of a section as text or as binary words (format file-type 1): int is 4
+/// bytes, size_t the header's data size (8), double 8, all little-endian.
+class Numbers {
+public:
+  Numbers(TokenReader& in, bool binary) : in_(in), binary_(binary) {}
+  bool binary() const { return binary_; }
+  long integer(const char* what) {
+    return binary_ ? static_cast<long>(in_.binary<std::int32_t>(what)) : in_.integer();
+  }
+  long size(const char* what) {
+    if (!binary_) return in_.integer();
+    const auto n = in_.binary<std::uint64_t>(what);
+    if (n > static_cast<std::uint64_t>(std::numeric_limits<long>::max()))
+      in_.fail(std::string("binary ") + what + " " + std::to_string(n) + " is out of range");
+    return static_cast<long>(n);
+  }
+  double real(const char* what) {
+    if (!binary_) return in_.real();
+    const double x = in_.binary<double>(what);
+    if (!std::isfinite(x)) in_.fail(std::string("binary ") + what + " is not finite");
+    return x;
+  }
+  /// A count of items taking `text_bytes` (as text) or `binary_bytes` each, checked against
+  /// the rest of the file before anything is allocated.
+  long count(const std::string& what, std::uint64_t text_bytes, std::uint64_t binary_bytes) {
+    if (!binary_) return in_.count(what, text_bytes);
+    const long n = size(what.c_str());
+    if (n < 0) in_.fail("negative number of " + what);
+    return in_.checked_count(static_cast<std::uint64_t>(n), what, binary_bytes);
+  }
+  /// A count written as text even in a binary file (format 2.2), followed by binary data.
+  long text_count(const std::string& what, std::uint64_t text_bytes, std::uint64_t binary_bytes) {
+    const long n = in_.count(what, binary_ ? binary_bytes : text_bytes);
+    if (binary_) in_.end_of_line();
+    return n;
+  }
+  /// The end of binary data: a line end before $EndSection.
+  void end_section(std::string_view end) {
+    if (binary_) in_.end_of_line();
+    in_.expect(end);
+  }
+
+private:
+  TokenReader& in_;
+  bool binary_;
+};
 
 // ---- format 2.2 ---------------------------------------------------------------------------
 
-void read_nodes_v2(TokenReader& in, GmshContent& content) {
-  const long n = count(in, "nodes");
+void read_nodes_v2(TokenReader& in, Numbers& num, GmshContent& content) {
+  const long n = num.text_count("nodes", 8, 28); // "t x y z\n" / int + 3 doubles
   for (long i = 0; i < n; ++i) {
-    const long tag = in.integer();
-    const double x = in.real(), y = in.real();
-    in.real(); // z
+    const long tag = num.integer("node tag");
+    const double x = num.real("x"), y = num.real("y");
+    num.real("z");
     add_node(in, content, tag, x, y);
   }
-  in.expect("$EndNodes");
+  num.end_section("$EndNodes");
 }
 
-void read_elements_v2(TokenReader& in, GmshContent& content) {
-  const long n = count(in, "elements");
-  for (long i = 0; i < n; ++i) {
-    in.integer(); // element tag
-    GmshElement element{static_cast<int>(in.integer()), 0, {0, 0, 0}, in.line()};
-    const long ntags = count(in, "tags");
-    for (long k = 0; k < ntags; ++k) {
-      const long tag = in.integer();
-      if (k == 0) element.physical = tag; // then the elementary entity, partitions ...
+void read_elements_v2(TokenReader& in, Numbers& num, GmshContent& content) {
+  const long n = num.text_count("elements", 8, 12);
+  if (!num.binary()) {
+    for (long i = 0; i < n; ++i) {
+      in.integer(); // element tag
+      GmshElement element{static_cast<int>(in.integer()), 0, {0, 0, 0}, in.line()};
+      const long ntags = in.count("tags", 2);
+      for (long k = 0; k < ntags; ++k) {
+        const long tag = in.integer();
+        if (k == 0) element.physical = tag; // then the elementary entity, partitions ...
+      }
+      const int nv = nodes_per_element(in, element.type);
+      for (int k = 0; k < nv; ++k)
+        element.nodes[k] = in.integer();
+      content.elements.push_back(element);
     }
-    const int nv = nodes_per_element(in, element.type);
-    for (int k = 0; k < nv; ++k)
-      element.nodes[k] = in.integer();
-    content.elements.push_back(element);
+  } else {
+    // Groups: type, number of elements following, number of tags; then per element its number,
+    // its tags and its nodes, all 4-byte ints.
+    for (long read = 0; read < n;) {
+      const long type = num.integer("element type");
+      const long following = num.integer("element count");
+      const long ntags = num.integer("tag count");
+      const int nv = nodes_per_element(in, type);
+      if (following < 1 || following > n - read || ntags < 0 || ntags > 64)
+        in.fail("binary element group: " + std::to_string(following) + " elements with " +
+                std::to_string(ntags) + " tags, where " + std::to_string(n - read) + " remain");
+      in.checked_count(static_cast<std::uint64_t>(following), "elements",
+                       static_cast<std::uint64_t>(4 * (1 + ntags + nv)));
+      for (long i = 0; i < following; ++i, ++read) {
+        num.integer("element number");
+        GmshElement element{static_cast<int>(type), 0, {0, 0, 0}, in.line()};
+        for (long k = 0; k < ntags; ++k) {
+          const long tag = num.integer("element tag");
+          if (k == 0) element.physical = tag;
+        }
+        for (int k = 0; k < nv; ++k)
+          element.nodes[k] = num.integer("element node");
+        content.elements.push_back(element);
+      }
+    }
   }
-  in.expect("$EndElements");
+  num.end_section("$EndElements");
 }
 
 // ---- format 4.1 ---------------------------------------------------------------------------
 
 using EntityPhysical = std::map<std::pair<long, long>, long>; ///< (dim, tag) -> first physical
 
-void read_entities_v4(TokenReader& in, EntityPhysical& physical) {
+void read_entities_v4(Numbers& num, EntityPhysical& physical) {
   std::array<long, 4> counts{};
   for (long& c : counts)
-    c = count(in, "entities");
+    c = num.count("entities", 8, 36); // a point: tag, x y z, no physical tag
   for (int dim = 0; dim < 4; ++dim) {
     for (long e = 0; e < counts[dim]; ++e) {
-      const long tag = in.integer();
+      const long tag = num.integer("entity tag");
       for (int k = 0; k < (dim == 0 ? 3 : 6); ++k)
-        in.real(); // point, or bounding box
-      const long nphys = count(in, "physical tags");
+        num.real("entity coordinate"); // point, or bounding box
+      const long nphys = num.count("physical tags", 2, 4);
       for (long k = 0; k < nphys; ++k) {
-        const long p = in.integer();
+        const long p = num.integer("physical tag");
         if (k == 0) physical[{dim, tag}] = p;
       }
       if (dim > 0) {
-        const long nbound = count(in, "bounding entities");
+        const long nbound = num.count("bounding entities", 2, 4);
         for (long k = 0; k < nbound; ++k)
-          in.integer();
+          num.integer("bounding entity");
       }
     }
   }
-  in.expect("$EndEntities");
+  num.end_section("$EndEntities");
 }
 
-void read_nodes_v4(TokenReader& in, GmshContent& content) {
-  const long nblocks = count(in, "node blocks");
-  in.integer(); // total number of nodes
-  in.integer(); // min tag
-  in.integer(); // max tag
+void read_nodes_v4(TokenReader& in, Numbers& num, GmshContent& content) {
+  const long nblocks = num.count("node blocks", 8, 20);
+  num.size("total number of nodes");
+  num.size("min node tag");
+  num.size("max node tag");
   for (long b = 0; b < nblocks; ++b) {
-    const long dim = in.integer();
-    in.integer(); // entity tag
-    const long parametric = in.integer();
-    const long n = count(in, "nodes");
-    std::vector<long> tags(n);
+    const long dim = num.integer("entity dimension");
+    num.integer("entity tag");
+    const long parametric = num.integer("parametric flag");
+    if (dim < 0 || dim > 3 || (parametric != 0 && parametric != 1))
+      in.fail("node block with dimension " + std::to_string(dim) + " and parametric flag " +
+              std::to_string(parametric));
+    const long n = num.count("nodes", 8, 32); // tag + x y z
+    std::vector<long> tags(static_cast<std::size_t>(n));
     for (long& t : tags)
-      t = in.integer();
+      t = num.size("node tag");
     for (long i = 0; i < n; ++i) {
-      const double x = in.real(), y = in.real();
-      in.real(); // z
+      const double x = num.real("x"), y = num.real("y");
+      num.real("z");
       for (long k = 0; k < (parametric ? dim : 0); ++k)
-        in.real();
+        num.real("parametric coordinate");
       add_node(in, content, tags[i], x, y);
     }
   }
-  in.expect("$EndNodes");
+  num.end_section("$EndNodes");
 }
 
-void read_elements_v4(TokenReader& in, const EntityPhysical& physical, GmshContent& content) {
-  const long nblocks = count(in, "element blocks");
-  in.integer(); // total number of elements
-  in.integer(); // min tag
-  in.integer(); // max tag
+void read_elements_v4(TokenReader& in, Numbers& num, const EntityPhysical& physical,
+                      GmshContent& content) {
+  const long nblocks = num.count("element blocks", 8, 20);
+  num.size("total number of elements");
+  num.size("min element tag");
+  num.size("max element tag");
   for (long b = 0; b < nblocks; ++b) {
-    const long dim = in.integer();
-    const long entity = in.integer();
-    const long type = in.integer();
+    const long dim = num.integer("entity dimension");
+    const long entity = num.integer("entity tag");
+    const long type = num.integer("element type");
     const int nv = nodes_per_element(in, type);
-    const long n = count(in, "elements");
+    const long n = num.count("elements", 2 * (1 + nv), 8 * (1 + nv));
     const auto it = physical.find({dim, entity});
     const long phys = it == physical.end() ? 0 : it->second;
     for (long i = 0; i < n; ++i) {
-      in.integer(); // element tag
+      num.size("element tag");
       GmshElement element{static_cast<int>(type), phys, {0, 0, 0}, in.line()};
       for (int k = 0; k < nv; ++k)
-        element.nodes[k] = in.integer();
+        element.nodes[k] = num.size("element node");
       content.elements.push_back(element);
     }
   }
-  in.expect("$EndElements");
+  num.end_section("$EndElements");
 }
 
 // ---- both formats -------------------------------------------------------------------------
@@ -167,25 +263,38 @@ GmshContent read_content(TokenReader& in) {
   in.expect("$MeshFormat");
   const std::string version(in.word());
   const long file_type = in.integer();
-  in.integer(); // data size
-  if (file_type != 0) in.fail("binary .msh files are not supported: save them as ASCII");
-  const bool v2 = version.rfind("2.", 0) == 0;
+  const long data_size = in.integer();
+  if (file_type != 0 && file_type != 1)
+    in.fail("file-type " + std::to_string(file_type) + " is neither 0 (ASCII) nor 1 (binary)");
+  const bool binary = file_type == 1;
+  if (binary) {
+    if (data_size != 8) in.fail("binary data size " + std::to_string(data_size) + " is not 8");
+    in.end_of_line();
+    if (in.binary<std::int32_t>("endianness word") != 1)
+      in.fail("binary .msh written on a big-endian machine (the word after the format line is "
+              "not 1): save it as ASCII");
+  }
+  const bool v2 = version == "2.2" || version == "2.1" || version == "2.0" || version == "2";
   if (!v2 && version != "4.1")
     in.fail("unsupported .msh version " + version + " (2.2 and 4.1 are read)");
   in.expect("$EndMeshFormat");
 
   GmshContent content;
   EntityPhysical physical;
+  Numbers num(in, binary);
   while (!in.at_end()) {
     const std::string section(in.word());
     if (section.empty() || section[0] != '$')
       in.fail("expected a $Section, found '" + section + "'");
+    // Format 4.1 binary: the numbers of these sections start on the next line, in binary.
+    if (binary && !v2 && (section == "$Nodes" || section == "$Elements" || section == "$Entities"))
+      in.end_of_line();
     if (section == "$Nodes") {
-      v2 ? read_nodes_v2(in, content) : read_nodes_v4(in, content);
+      v2 ? read_nodes_v2(in, num, content) : read_nodes_v4(in, num, content);
     } else if (section == "$Elements") {
-      v2 ? read_elements_v2(in, content) : read_elements_v4(in, physical, content);
+      v2 ? read_elements_v2(in, num, content) : read_elements_v4(in, num, physical, content);
     } else if (section == "$Entities" && !v2) {
-      read_entities_v4(in, physical);
+      read_entities_v4(num, physical);
     } else {
       in.skip_past("$End" + section.substr(1)); // $PhysicalNames, $Periodic, ...
     }
@@ -201,10 +310,15 @@ int node_of(TokenReader& in, const GmshContent& content, const GmshElement& elem
   return it->second;
 }
 
-} // namespace
+// A tag that becomes a reference or a sub-domain number.
+int reference_of(TokenReader& in, const GmshElement& element) {
+  if (element.physical < 0 || element.physical > std::numeric_limits<int>::max())
+    throw InputError(in.file(), element.line, "",
+                     "physical tag " + std::to_string(element.physical) + " is out of range");
+  return static_cast<int>(element.physical);
+}
 
-Mesh read_gmsh(const std::filesystem::path& path) {
-  TokenReader in(path);
+Mesh read_mesh(TokenReader& in) {
   const GmshContent content = read_content(in);
 
   Mesh mesh;
@@ -212,18 +326,19 @@ Mesh read_gmsh(const std::filesystem::path& path) {
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
   std::vector<int> edge_lines, triangle_lines; // file line of each, for messages
   for (const GmshElement& element : content.elements) {
+    const int physical = reference_of(in, element);
     if (element.type == Triangle) {
       triangle_lines.push_back(element.line);
       mesh.triangles.push_back({node_of(in, content, element, 0), node_of(in, content, element, 1),
                                 node_of(in, content, element, 2)});
-      mesh.subdomain.push_back(element.physical >= 1 ? static_cast<int>(element.physical) : 1);
-    } else if (element.type == Line && element.physical > 0) {
-      mesh.edges.push_back({node_of(in, content, element, 0), node_of(in, content, element, 1),
-                            static_cast<int>(element.physical)});
+      mesh.subdomain.push_back(physical >= 1 ? physical : 1);
+    } else if (element.type == Line && physical > 0) {
+      mesh.edges.push_back(
+          {node_of(in, content, element, 0), node_of(in, content, element, 1), physical});
       edge_lines.push_back(element.line);
-    } else if (element.type == Point && element.physical > 0) {
+    } else if (element.type == Point && physical > 0) {
       int& ref = mesh.vertex_ref[node_of(in, content, element, 0)];
-      if (ref == 0) ref = static_cast<int>(element.physical);
+      if (ref == 0) ref = physical;
     }
   }
   if (mesh.triangles.empty())
@@ -231,17 +346,30 @@ Mesh read_gmsh(const std::filesystem::path& path) {
                      "no triangles (gmsh saves only the elements of physical groups when there "
                      "are any: is the surface in a Physical Surface?)");
 
-  if (const int flat = orient_counter_clockwise(mesh); flat >= 0)
-    throw InputError(in.file(), triangle_lines[flat], "",
-                     "triangle " + std::to_string(flat + 1) +
-                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
+  orient_triangles_of_file(mesh, in.file(), triangle_lines);
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "line element with physical tag " + std::to_string(mesh.edges[bad].ref) +
                          " is not a side of any triangle");
-  drop_unused_nodes(mesh);
+  const std::vector<int> renumber = drop_unused_nodes(mesh);
+  std::vector<long> dropped;
+  for (std::size_t i = 0; i < renumber.size(); ++i)
+    if (renumber[i] < 0) dropped.push_back(content.node_tags[i]);
+  warn_entities(in.file(), "node(s) that no triangle uses (node tags)", dropped, "dropped");
   check_mesh(mesh, in.file());
   return mesh;
+}
+
+} // namespace
+
+Mesh read_gmsh(const std::filesystem::path& path) {
+  TokenReader in(path);
+  return read_mesh(in);
+}
+
+Mesh parse_gmsh(const std::string& name, std::string contents) {
+  TokenReader in(name, std::move(contents));
+  return read_mesh(in);
 }
 
 } // namespace sig

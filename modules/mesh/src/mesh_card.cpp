@@ -5,11 +5,13 @@
 #include "mesh/generators.hpp"
 #include "mesh/gmsh.hpp"
 #include "mesh/nopo.hpp"
+#include "mesh/topology.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -22,28 +24,18 @@ const std::set<std::string>& fields_of(const std::string& generator) {
       {"half_disc", {"r", "n", "grading"}},
       {"disc", {"center", "r", "n", "grading", "arcs"}},
       {"ring", {"center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
-      {"rectangle", {"lx", "ly", "nx", "ny", "refs"}},
-      {"square", {"lx", "nx", "refs"}},
-      {"file", {}},
+      {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
+      {"square", {"lx", "nx", "refs", "pattern"}},
+      {"file", {"coincident"}},
   };
   return fields.at(generator);
 }
 
-double positive(const Card& card, const std::string& name) {
-  const double value = card.real(name);
-  if (!(value > 0) || !std::isfinite(value)) card.fail(name, "must be > 0");
-  return value;
-}
-
-int count(const Card& card, const std::string& name, int minimum) {
-  const long value = card.integer(name);
-  if (value < minimum || value > 1 << 24)
-    card.fail(name, "must be an integer >= " + std::to_string(minimum));
-  return static_cast<int>(value);
-}
+// Lengths > 0, counts >= 1 (N >= 4, layers >= 2), grading >= 0 are the card's ranges
+// (core/ranges.hpp), checked by Card::real and Card::integer.
 
 int even_count(const Card& card, const std::string& name, int multiple) {
-  const int value = count(card, name, 4);
+  const int value = static_cast<int>(card.integer(name));
   if (value % multiple != 0)
     card.fail(name, multiple == 2
                         ? std::string("must be even and >= 4")
@@ -51,10 +43,14 @@ int even_count(const Card& card, const std::string& name, int multiple) {
   return value;
 }
 
-double grading(const Card& card) {
-  const double value = card.real("grading");
-  if (!(value >= 0) || !std::isfinite(value)) card.fail("grading", "must be >= 0");
-  return value;
+// The nodes a generator would make, checked before it allocates them (nx=ny=100000 is 1e10).
+void verify_size(const Card& card, const std::string& field, double nodes) {
+  if (nodes > max_mesh_nodes) {
+    std::ostringstream what;
+    what << "the mesh would have about " << nodes << " nodes, more than the " << max_mesh_nodes
+         << " a mesh may have";
+    card.fail(field, what.str());
+  }
 }
 
 Eigen::Vector2d center(const Card& card) {
@@ -78,29 +74,66 @@ Mesh mesh_from_file(const Card& card, const std::filesystem::path& folder) {
     card.fail("file", "unknown mesh file extension '" + extension + "' (.nopo or .msh)");
   if (!std::filesystem::is_regular_file(path) || !std::ifstream(path))
     card.fail("file", "cannot read " + path.string());
-  return read_mesh_file(path);
+  Mesh mesh = read_mesh_file(path);
+  // Two nodes at one place that the triangles do not share leave an open crack: what the file
+  // meant is rarely that (gmsh without Coherence, meshes pasted together).
+  const auto pairs = coincident_nodes(mesh);
+  if (!pairs.empty()) {
+    std::vector<long> numbers;
+    for (const auto& [a, b] : pairs) {
+      numbers.push_back(a + 1);
+      numbers.push_back(b + 1);
+    }
+    std::ostringstream what;
+    what << path.string() << ": " << pairs.size() << " pair(s) of nodes at the same place (nodes "
+         << pairs.front().first + 1 << " and " << pairs.front().second + 1 << " at ("
+         << mesh.nodes[pairs.front().first].x() << ", " << mesh.nodes[pairs.front().first].y()
+         << ")): an open crack in the mesh";
+    if (card.choice("coincident", {"error", "allow"}) == "error")
+      card.fail("file", what.str() + "; merge the nodes, or give coincident=allow if the crack "
+                                     "is meant");
+    warn_entities(path.string(), "coincident node(s) (1-based, in pairs)", numbers,
+                  "kept apart (coincident=allow: an open crack)");
+  }
+  return mesh;
 }
 
 Mesh generate(const Card& card, const std::string& generator) {
-  if (generator == "half_disc")
-    return half_disc(positive(card, "r"), even_count(card, "n", 2), grading(card));
-  if (generator == "disc")
-    return disc(center(card), positive(card, "r"), even_count(card, "n", 4), grading(card),
-                card.choice("arcs", {"uniform", "graded"}, "uniform") == "graded");
+  if (generator == "half_disc" || generator == "disc") {
+    const double r = card.real("R");
+    const int n = even_count(card, "N", generator == "disc" ? 4 : 2);
+    // Uniform at the arc's size h = 2 pi R / N (disc) or pi R / N: N^2 / (4 pi) nodes at most.
+    verify_size(card, "N", static_cast<double>(n) * n / (4 * std::numbers::pi));
+    const double grading = card.real("grading");
+    return generator == "disc"
+               ? disc(center(card), r, n, grading,
+                      card.choice("arcs", {"uniform", "graded"}, "uniform") == "graded")
+               : half_disc(r, n, grading);
+  }
   if (generator == "ring") {
-    const double r_in = positive(card, "r_in"), r_out = positive(card, "r_out");
+    const double r_in = card.real("r_in"), r_out = card.real("r_out");
     if (r_in >= r_out) card.fail("r_in", "must be smaller than r_out");
-    const int n = even_count(card, "n", 2);
+    const int n = even_count(card, "N", 2);
     RingOptions options;
-    if (card.has("layers")) options.layers = count(card, "layers", 2);
+    if (card.has("layers")) options.layers = static_cast<int>(card.integer("layers"));
+    verify_size(card, card.has("layers") ? "layers" : "N",
+                static_cast<double>(n) *
+                    (options.layers > 0 ? options.layers : default_ring_layers(n)));
     if (card.has("gamma1_above")) options.gamma1_above = card.real("gamma1_above");
     if (card.has("gamma3_below")) options.gamma3_below = card.real("gamma3_below");
     return ring(center(card), r_in, r_out, n, options);
   }
-  if (generator == "rectangle")
-    return rectangle(positive(card, "lx"), positive(card, "ly"), count(card, "nx", 1),
-                     count(card, "ny", 1), refs(card));
-  return square(positive(card, "lx"), count(card, "nx", 1), refs(card));
+  const CellPattern pattern = card.choice("pattern", {"alternating", "union-jack"}) == "union-jack"
+                                  ? CellPattern::union_jack
+                                  : CellPattern::alternating;
+  const double lx = card.real("lx");
+  const int nx = static_cast<int>(card.integer("nx"));
+  const double ly = generator == "rectangle" ? card.real("ly") : lx;
+  const int ny = generator == "rectangle" ? static_cast<int>(card.integer("ny")) : nx;
+  // Union-jack cells have a centre node each.
+  verify_size(card, "nx",
+              (nx + 1.0) * (ny + 1.0) + (pattern == CellPattern::union_jack ? 1.0 * nx * ny : 0.0));
+  return rectangle(lx, ly, nx, ny, refs(card), pattern);
 }
 
 } // namespace

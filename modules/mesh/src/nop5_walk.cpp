@@ -4,6 +4,7 @@
 #include "mesh/topology.hpp"
 
 #include <cstdlib>
+#include <limits>
 #include <unordered_map>
 
 namespace sig {
@@ -30,6 +31,13 @@ ElementShape shape_of(std::int64_t ncge, const std::string& where) {
   }
 }
 
+/// A reference word: its absolute value, which must be an int.
+int reference(std::int64_t ref, const std::string& where) {
+  SIG_VERIFY(ref >= -std::numeric_limits<int>::max() && ref <= std::numeric_limits<int>::max(),
+             where << ": reference " << ref << " is out of range");
+  return static_cast<int>(ref < 0 ? -ref : ref);
+}
+
 /// Builds the Mesh while NOP5 is walked: references checked for consistency, edges kept once.
 class MeshBuilder {
 public:
@@ -40,7 +48,7 @@ public:
   }
 
   void vertex_ref(int v, std::int64_t ref, const std::string& where) {
-    const int r = static_cast<int>(std::llabs(ref));
+    const int r = reference(ref, where);
     if (r == 0) return;
     SIG_VERIFY(mesh.vertex_ref[v] == 0 || mesh.vertex_ref[v] == r,
                where << ": vertex " << v + 1 << " has reference " << r << " here but "
@@ -50,7 +58,7 @@ public:
 
   /// Edge (a, b) with reference `ref`, in this direction, kept once.
   void edge_ref(int a, int b, std::int64_t ref, const std::string& where) {
-    const int r = static_cast<int>(std::llabs(ref));
+    const int r = reference(ref, where);
     if (r == 0) return;
     const auto [it, fresh] = edge_refs_.emplace(edge_key(a, b), r);
     SIG_VERIFY(it->second == r, where << ": edge " << a + 1 << "-" << b + 1 << " has reference "
@@ -62,11 +70,14 @@ public:
   /// Triangle with the references of its sides (v0,v1), (v1,v2), (v2,v0); made
   /// counter-clockwise, the sides keeping the direction they have in it.
   void triangle(std::array<int, 3> v, std::array<std::int64_t, 3> side_ref, int subdomain,
-                const std::string& where) {
+                long element, const std::string& where) {
     mesh.triangles.push_back(v);
     mesh.subdomain.push_back(subdomain);
     const bool clockwise = signed_double_area(mesh, mesh.num_triangles() - 1) < 0;
-    if (clockwise) std::swap(mesh.triangles.back()[1], mesh.triangles.back()[2]);
+    if (clockwise) {
+      std::swap(mesh.triangles.back()[1], mesh.triangles.back()[2]);
+      flipped.push_back(element);
+    }
     for (int j = 0; j < 3; ++j) {
       const int a = v[j], b = v[(j + 1) % 3];
       clockwise ? edge_ref(b, a, side_ref[j], where) : edge_ref(a, b, side_ref[j], where);
@@ -74,6 +85,7 @@ public:
   }
 
   Mesh mesh;
+  std::vector<long> flipped; ///< NOP5 elements that were clockwise
 
 private:
   std::unordered_map<std::uint64_t, int> edge_refs_;
@@ -132,15 +144,15 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
       for (int j = 0; j < shape.vertices; ++j)
         build.vertex_ref(v[j], next(), where);
     }
-    SIG_VERIFY(ndsde >= 1 || ncge < 3,
+    SIG_VERIFY((ndsde >= 1 || ncge < 3) && ndsde <= std::numeric_limits<int>::max(),
                where << ": sub-domain NDSDE = " << ndsde << " (must be >= 1)");
     const int subdomain = static_cast<int>(ndsde);
     if (ncge == 3) {
-      build.triangle({v[0], v[1], v[2]}, {edge[0], edge[1], edge[2]}, subdomain, where);
+      build.triangle({v[0], v[1], v[2]}, {edge[0], edge[1], edge[2]}, subdomain, e, where);
       ++triangles;
     } else if (ncge == 4) { // split as FreeFem does: (1,2,3) + (3,4,1)
-      build.triangle({v[0], v[1], v[2]}, {edge[0], edge[1], 0}, subdomain, where);
-      build.triangle({v[2], v[3], v[0]}, {edge[2], edge[3], 0}, subdomain, where);
+      build.triangle({v[0], v[1], v[2]}, {edge[0], edge[1], 0}, subdomain, e, where);
+      build.triangle({v[2], v[3], v[0]}, {edge[2], edge[3], 0}, subdomain, e, where);
       ++quadrilaterals;
     } else if (ncge == 2) {
       build.edge_ref(v[0], v[1], edge[0], where); // oriented below, once the triangles exist
@@ -152,6 +164,7 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
              file << ": NOP2 announces " << nop2[word::NTRI] << " triangles and "
                   << nop2[word::NQUA] << " quadrilaterals, NOP5 holds " << triangles << " and "
                   << quadrilaterals);
+  warn_entities(file, "clockwise NOP5 element(s) (element numbers)", build.flipped, "reoriented");
   Mesh mesh = std::move(build.mesh);
   SIG_VERIFY(orient_boundary_edges(mesh) < 0,
              file << ": NOP5: a referenced segment is not a side of any triangle");

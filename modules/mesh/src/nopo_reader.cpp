@@ -1,4 +1,6 @@
+#include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/provenance.hpp"
 #include "fortran_records.hpp"
 #include "mesh/nopo.hpp"
 #include "nop5_walk.hpp"
@@ -91,20 +93,30 @@ std::string text_of_words(const std::string& raw, int int_bytes, int first, int 
   return end == std::string::npos ? std::string() : text.substr(0, end + 1);
 }
 
+// Read in one piece of the file's size (no stream copy): the records must tile the file, so the
+// whole of it is needed.
 std::string read_bytes(const std::filesystem::path& path) {
+  std::error_code error;
+  const auto size = std::filesystem::file_size(path, error);
+  SIG_VERIFY(!error, path.string() << ": cannot open the NOPO file: " << error.message());
   std::ifstream in(path, std::ios::binary);
   SIG_VERIFY(in, path.string() << ": cannot open the NOPO file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  SIG_VERIFY(!in.bad(), path.string() << ": read error");
-  return buffer.str();
+  std::string bytes(size, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(size));
+  SIG_VERIFY(in.gcount() == static_cast<std::streamsize>(size),
+             path.string() << ": read error (" << in.gcount() << " of " << size << " bytes)");
+  return bytes;
 }
 
 } // namespace
 
 NopoFile read_nopo_file(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  const std::string bytes = read_bytes(path);
+  NopoFile result = parse_nopo_file(path.string(), read_bytes(path));
+  note_case_input("NOPO", path, result.fingerprint, {}); // a stage's case.nopo: an input
+  return result;
+}
+
+NopoFile parse_nopo_file(const std::string& file, const std::string& bytes) {
   const FortranRecords records = split_fortran_records(bytes, file);
   NopoFile result;
   result.layout.marker_bytes = records.marker_bytes;
@@ -139,6 +151,17 @@ NopoFile read_nopo_file(const std::filesystem::path& path) {
   SIG_VERIFY(text_of_words(arrays.raw(), int_bytes, 28, 1) == "NOPO",
              file << ": NOP0 word 29 is '" << text_of_words(arrays.raw(), int_bytes, 28, 1)
                   << "', not 'NOPO'");
+  // Integrity, before the words are trusted: the fingerprint sig-mesh wrote (mesh/nopo.hpp).
+  result.fingerprint = nopo_fingerprint(records);
+  const std::string& creator = result.text.creator;
+  if (creator.size() == 24 && creator.starts_with("sig-") &&
+      creator.find_first_not_of("0123456789abcdef", 8) == std::string::npos)
+    SIG_VERIFY(creator.substr(8) == fingerprint_text(result.fingerprint),
+               file << ": the mesh (NOP2, NOP4, NOP5) does not match the fingerprint "
+                    << creator.substr(8) << " written with it (NOP0 creator; now "
+                    << fingerprint_text(result.fingerprint)
+                    << "): the file was changed or damaged after " << creator.substr(0, 8)
+                    << " wrote it; rerun sig-mesh");
   if (l1 > 0) {
     arrays.ints("NOP1", l1);
     arrays.skip_records(nop0[31], "the NTACM arrays"); // unverified layout (MODULEF.md 7)
@@ -160,7 +183,9 @@ NopoFile read_nopo_file(const std::filesystem::path& path) {
   SIG_VERIFY(n2[word::NTACOO] <= 1, file << ": NOP2: NTACOO = " << n2[word::NTACOO]
                                          << ", only Cartesian coordinates are read");
   SIG_VERIFY(n2[word::NSUP] == 0, file << ": NOP2: super-elements are not supported");
-  SIG_VERIFY(n2[word::NP] > 0 && l4 == 2 * n2[word::NP],
+  SIG_VERIFY(n2[word::NP] > 0 && n2[word::NP] <= max_mesh_nodes,
+             file << ": NOP2: NP = " << n2[word::NP] << " points, not in 1.." << max_mesh_nodes);
+  SIG_VERIFY(l4 == 2 * n2[word::NP],
              file << ": NOP4 holds " << l4
                   << " reals but NOP2 says NDIM * NP = " << 2 * n2[word::NP]);
   SIG_VERIFY(n2[word::NE] > 0, file << ": NOP2: no element (NE = " << n2[word::NE] << ")");

@@ -82,6 +82,17 @@ NopoLayout nopo_layout(NopoVariant variant) {
 }
 
 std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOptions& options) {
+  if (options.stamp_fingerprint) {
+    // The fingerprint leaves NOP0 out, so the file without it gives it.
+    NopoWriteOptions plain = options;
+    plain.stamp_fingerprint = false;
+    const std::string file = encode_nopo(mesh, variant, plain);
+    std::string creator = options.text.creator.substr(0, 8);
+    creator.resize(8, ' ');
+    plain.text.creator =
+        creator + fingerprint_text(nopo_fingerprint(split_fortran_records(file, "NOPO writer")));
+    return encode_nopo(mesh, variant, plain);
+  }
   check_mesh(mesh, "NOPO writer");
   const NopoLayout layout = nopo_layout(variant);
   const int wi = layout.int_bytes;
@@ -159,6 +170,7 @@ void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant
                 const std::string& title, const std::string& creator) {
   NopoWriteOptions options;
   options.text = {title, ds_date(), creator};
+  options.stamp_fingerprint = true;
   write_nopo(path, mesh, variant, options);
 }
 

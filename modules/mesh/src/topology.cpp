@@ -1,19 +1,40 @@
 #include "mesh/topology.hpp"
 
+#include "core/error.hpp"
+#include "core/log.hpp"
+
+#include <algorithm>
+#include <numeric>
+
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
 namespace sig {
 
-int orient_counter_clockwise(Mesh& mesh) {
+int orient_counter_clockwise(Mesh& mesh, std::vector<int>* flipped) {
   int degenerate = -1;
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     const double area = signed_double_area(mesh, t);
-    if (area < 0) std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+    if (area < 0) {
+      std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+      if (flipped != nullptr) flipped->push_back(t);
+    }
     if (area == 0 && degenerate < 0) degenerate = t;
   }
   return degenerate;
+}
+
+void orient_triangles_of_file(Mesh& mesh, const std::string& file, const std::vector<int>& lines) {
+  std::vector<int> flipped;
+  if (const int flat = orient_counter_clockwise(mesh, &flipped); flat >= 0)
+    throw InputError(file, lines[flat], "",
+                     "triangle " + std::to_string(flat + 1) +
+                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
+  std::vector<long> numbers;
+  for (int t : flipped)
+    numbers.push_back(t + 1);
+  warn_entities(file, "clockwise triangle(s) (1-based, in file order)", numbers, "reoriented");
 }
 
 int orient_boundary_edges(Mesh& mesh) {
@@ -72,6 +93,40 @@ std::vector<int> drop_unused_nodes(Mesh& mesh) {
     edge.b = renumber[edge.b];
   }
   return renumber;
+}
+
+std::vector<std::pair<int, int>> coincident_nodes(const Mesh& mesh) {
+  std::vector<std::pair<int, int>> pairs;
+  if (mesh.nodes.empty()) return pairs;
+  Eigen::Vector2d low = mesh.nodes.front(), high = low;
+  for (const Eigen::Vector2d& x : mesh.nodes) {
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
+  }
+  const double tolerance = 1e-10 * (high - low).norm();
+  // Sweep along x1: only nodes within the tolerance in x1 can coincide.
+  std::vector<int> order(mesh.nodes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return mesh.nodes[a].x() < mesh.nodes[b].x(); });
+  for (std::size_t i = 0; i < order.size(); ++i)
+    for (std::size_t j = i + 1;
+         j < order.size() && mesh.nodes[order[j]].x() - mesh.nodes[order[i]].x() <= tolerance; ++j)
+      if ((mesh.nodes[order[j]] - mesh.nodes[order[i]]).norm() <= tolerance)
+        pairs.emplace_back(std::min(order[i], order[j]), std::max(order[i], order[j]));
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+void warn_entities(const std::string& file, const std::string& what,
+                   const std::vector<long>& numbers, const std::string& action) {
+  if (numbers.empty()) return;
+  std::string list;
+  for (std::size_t k = 0; k < numbers.size() && k < 10; ++k)
+    list += (k ? ", " : "") + std::to_string(numbers[k]);
+  if (numbers.size() > 10) list += ", ...";
+  log_warning(file + ": " + action + " " + std::to_string(numbers.size()) + " " + what + ": " +
+              list);
 }
 
 } // namespace sig

@@ -13,7 +13,8 @@
 // the single state; summary.json and contact.csv are those of the final state as above.
 // A dynamic case (TIME card) reads case.hist instead of case.b and writes <stem>.pvd with one
 // <stem>_NNNN.vtu per state kept by sig-march (displacement, velocity, stress) and nothing else.
-// A solution holding NaN or inf is refused: a picture of garbage helps nobody.
+// A solution holding NaN or inf is refused (Ds::reals), and so is a field that overflows on its
+// way to the .vtu (the VTK writer checks every field): a picture of garbage helps nobody.
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
@@ -23,6 +24,7 @@
 #include "post/contact_table.hpp"
 #include "post/history_vtk.hpp"
 #include "post/load_step_vtk.hpp"
+#include "post/result_checks.hpp"
 #include "post/solution_fields.hpp"
 #include "post/stress.hpp"
 #include "post/summary.hpp"
@@ -74,16 +76,16 @@ int main(int argc, char** argv) {
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::Card* output = datafile.find("OUTPUT");
-    const bool write_vtk =
-        output == nullptr || output->choice("vtk", {"yes", "no"}) == "yes";
+    const bool write_vtk = output == nullptr || output->choice("vtk", {"yes", "no"}) == "yes";
 
     // 2. Mesh and materials. A dynamic case (TIME card) is shown as the states sig-march kept
     //    in case.hist, one .vtu each; its energies are in energy.csv already.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
-    const std::string stem = output ? output->text("name", datafile.stem()) : datafile.stem();
+    const std::string stem = output ? output->file_name("name", datafile.stem()) : datafile.stem();
     if (datafile.find("TIME") != nullptr) {
       const sig::Ds hist = sig::read_ds(args.ds_path("hist"), "HIST");
+      sig::verify_history_ds(hist, mesh);
       if (write_vtk)
         for (const auto& file :
              sig::write_history_vtk(args.outdir, stem, mesh, materials, hist,
@@ -92,22 +94,17 @@ int main(int argc, char** argv) {
       return;
     }
 
-    // 3. The static solution; refuse a displacement that is not finite.
+    // 3. The static solution.
     const auto b_path = args.ds_path("b");
     const sig::Ds solution = sig::read_ds(b_path, "B");
-    const std::vector<double> u = solution.reals("u");
-    SIG_VERIFY(u.size() == 2 * mesh.nodes.size(),
-               b_path.string() << ": array 'u' holds " << u.size() << " values, the mesh has "
-                               << mesh.num_nodes() << " nodes (" << 2 * mesh.num_nodes()
-                               << " dofs)");
-    sig::verify_finite(u, b_path.string(), "u");
+    sig::verify_solution_ds(solution, mesh);
+    const std::vector<double> u = solution.reals("u"); // of the mesh's size: checked above
 
     // 4. Contact elements joined with their final state (contact cases only).
     std::vector<sig::ContactRow> contact;
     sig::Ds cont;
     const bool contact_case = datafile.find("CONTACT") != nullptr;
     if (contact_case) {
-      sig::verify_finite(solution.reals("multiplier"), b_path.string(), "multiplier");
       cont = sig::read_ds(args.ds_path("cont"), "CONT");
       contact = sig::contact_rows(mesh, cont, solution);
     }

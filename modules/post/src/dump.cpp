@@ -33,7 +33,7 @@ std::string first_values(const Ds& ds, const DsArray& array, std::size_t max_val
     for (std::size_t i = 0; i < n; ++i)
       out << (i ? " " : "") << v[i];
   } else {
-    const auto v = ds.reals(array.name);
+    const auto v = ds.reals_any(array.name);
     for (std::size_t i = 0; i < n; ++i)
       out << (i ? " " : "") << v[i];
   }
@@ -48,7 +48,7 @@ Json array_values(const Ds& ds, const DsArray& array) {
     return Json::array_of(std::vector<long long>(v.begin(), v.end()));
   }
   case DsType::Float64:
-    return Json::array_of(ds.reals(array.name));
+    return Json::array_of(ds.reals_any(array.name));
   case DsType::Text:
     return Json(ds.text(array.name));
   }

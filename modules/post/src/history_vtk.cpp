@@ -1,28 +1,40 @@
 #include "post/history_vtk.hpp"
 
 #include "core/error.hpp"
+#include "ds_values.hpp"
 #include "post/solution_fields.hpp"
 #include "post/summary.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
+#include <utility>
 
 namespace sig {
 namespace {
 
-/// The contact pressure of every kept state on the mesh nodes (outputs x nodes, 0 off Gamma3),
-/// from the arrays contact_node (1-based) and pressure {outputs, p} of a march with contact;
-/// empty when the march had no contact.
-std::vector<double> nodal_pressure(const Ds& hist, std::size_t outputs, std::size_t nodes) {
-  if (!hist.has("contact_node") || !hist.has("pressure")) return {};
+/// A contact array of a march (one value per contact node of the 1-based array contact_node)
+/// spread on the mesh nodes of every kept state (outputs x nodes, 0 off Gamma3). Its shape is
+/// {outputs, p}, one row per kept state (pressure), or, with `per_step`, {steps + 1, p}, whose
+/// rows output_step are the kept states (the per-step arrays of a march in velocity). Empty when
+/// the HIST has no such array.
+std::vector<double> nodal_values(const Ds& hist, const std::string& name, std::size_t outputs,
+                                 std::size_t nodes, bool per_step = false) {
+  if (!hist.has("contact_node") || !hist.has(name)) return {};
   const std::vector<std::int64_t> contact_node = hist.ints("contact_node");
-  const std::vector<double> pressure = hist.reals("pressure");
-  const std::vector<std::int64_t>& shape = hist.shape("pressure");
+  const std::vector<double> values = numbers(hist, name);
+  const std::vector<std::int64_t>& shape = hist.shape(name);
   const std::size_t p = contact_node.size();
-  SIG_VERIFY(shape.size() == 2 && static_cast<std::size_t>(shape[0]) == outputs &&
-                 static_cast<std::size_t>(shape[1]) == p,
-             hist.source << ": array 'pressure' is not " << outputs << " states x " << p
-                         << " contact nodes");
-  verify_finite(pressure, hist.source, "pressure");
+  std::vector<std::int64_t> row(outputs);
+  for (std::size_t s = 0; s < outputs; ++s)
+    row[s] = static_cast<std::int64_t>(s);
+  if (per_step) row = hist.ints("output_step");
+  const auto rows = shape.empty() ? 0 : shape[0];
+  SIG_VERIFY(
+      shape.size() == 2 && static_cast<std::size_t>(shape[1]) == p && row.size() == outputs &&
+          std::all_of(row.begin(), row.end(), [&](std::int64_t r) { return r >= 0 && r < rows; }),
+      hist.source << ": array '" << name << "' is not " << (per_step ? "steps" : "states") << " x "
+                  << p << " contact nodes for the " << outputs << " kept states");
   std::vector<double> nodal(outputs * nodes, 0.0);
   for (std::size_t j = 0; j < p; ++j) {
     const std::int64_t node = contact_node[j];
@@ -30,7 +42,8 @@ std::vector<double> nodal_pressure(const Ds& hist, std::size_t outputs, std::siz
                hist.source << ": contact_node[" << j << "] = " << node << " is not a mesh node (1.."
                            << nodes << ")");
     for (std::size_t s = 0; s < outputs; ++s)
-      nodal[s * nodes + static_cast<std::size_t>(node - 1)] = pressure[s * p + j];
+      nodal[s * nodes + static_cast<std::size_t>(node - 1)] =
+          values[static_cast<std::size_t>(row[s]) * p + j];
   }
   return nodal;
 }
@@ -53,10 +66,25 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
                hist.source << ": array '" << name << "' is not " << outputs << " states x " << ndof
                            << " dofs (" << mesh.num_nodes() << " mesh nodes)");
   }
-  verify_finite(u, hist.source, "u");
-  verify_finite(v, hist.source, "v");
   const auto nodes = static_cast<std::size_t>(mesh.num_nodes());
-  const std::vector<double> pressure = nodal_pressure(hist, outputs, nodes);
+  // The contact pressure of every march with contact; a march in velocity also has per step the
+  // statuses and the tangential force (integrator/velocity_history_io.hpp).
+  std::vector<std::pair<std::string, std::vector<double>>> contact;
+  contact.emplace_back("contact_pressure", nodal_values(hist, "pressure", outputs, nodes));
+  for (const char* status : {"normal_status", "friction_status"})
+    contact.emplace_back(status, nodal_values(hist, status, outputs, nodes, true));
+  if (hist.has("force_t") && hist.has("weight")) {
+    std::vector<double> tangential = nodal_values(hist, "force_t", outputs, nodes, true);
+    const std::vector<double> weight = hist.reals("weight");
+    const std::vector<std::int64_t> contact_node = hist.ints("contact_node");
+    SIG_VERIFY(weight.size() == contact_node.size(),
+               hist.source << ": array 'weight' has " << weight.size() << " values for "
+                           << contact_node.size() << " contact nodes");
+    for (std::size_t s = 0; s < outputs; ++s)
+      for (std::size_t j = 0; j < contact_node.size(); ++j)
+        tangential[s * nodes + static_cast<std::size_t>(contact_node[j] - 1)] /= weight[j];
+    contact.emplace_back("tangential_pressure", std::move(tangential));
+  }
 
   return write_vtu_series(outdir, stem, mesh, outputs, [&](std::size_t s) {
     const std::vector<double> u_s(u.begin() + s * ndof, u.begin() + (s + 1) * ndof);
@@ -65,10 +93,11 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
     for (std::size_t i = 0; i < ndof; i += 2)
       velocity.values.insert(velocity.values.end(), {v[s * ndof + i], v[s * ndof + i + 1], 0.0});
     fields.point.push_back(std::move(velocity));
-    if (!pressure.empty())
-      fields.point.push_back(
-          {"contact_pressure", 1,
-           std::vector<double>(pressure.begin() + s * nodes, pressure.begin() + (s + 1) * nodes)});
+    for (const auto& [name, values] : contact)
+      if (!values.empty())
+        fields.point.push_back(
+            {name, 1,
+             std::vector<double>(values.begin() + s * nodes, values.begin() + (s + 1) * nodes)});
     return VtkState{times[s], std::move(fields.point), std::move(fields.cell), field_data, {}};
   });
 }

@@ -35,15 +35,6 @@ std::vector<std::pair<std::string, double>> gather_times(const std::vector<const
   return times;
 }
 
-void verify_finite(const std::vector<double>& values, const std::string& file,
-                   const std::string& name) {
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    SIG_VERIFY(std::isfinite(values[k]), file << ": array '" << name << "' holds "
-                                              << (std::isnan(values[k]) ? "NaN" : "inf")
-                                              << " at dof " << k + 1);
-  }
-}
-
 Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solution,
                    const std::vector<ContactRow>& contact,
                    const std::vector<std::pair<std::string, double>>& times) {

@@ -2,6 +2,7 @@
 
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/finite.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -19,7 +20,6 @@
 #include <cstdio>
 #include <sstream>
 #include <system_error>
-#include <unistd.h>
 
 namespace sig {
 namespace {
@@ -42,6 +42,11 @@ vtkSmartPointer<vtkDataArray> make_array(const VtkField& field, long tuples,
     }
     return array;
   }
+  // A result that overflowed on its way here (stresses of a huge load) is never written.
+  const std::string bad = first_non_finite(field.values);
+  SIG_VERIFY(bad.empty(), where << ": field '" << field.name << "': " << bad
+                                << ": a NaN or inf result is never written (check the loads "
+                                   "and the units of the deck)");
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(field.name.c_str());
   array->SetNumberOfComponents(field.components);
@@ -68,13 +73,6 @@ vtkNew<vtkUnstructuredGrid> make_grid(const Mesh& mesh) {
   grid->SetPoints(points);
   grid->SetCells(VTK_TRIANGLE, cells);
   return grid;
-}
-
-/// A name in the target's folder that no other process uses, so the rename is atomic.
-std::filesystem::path temporary_name(const std::filesystem::path& path) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp" + std::to_string(::getpid());
-  return tmp;
 }
 
 } // namespace
@@ -108,7 +106,8 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
     grid->GetFieldData()->AddArray(number);
   }
 
-  const auto tmp = temporary_name(path);
+  // The name every atomic write uses: a killed sig-post's leftover is found at the next start.
+  const auto tmp = temporary_path(path);
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetInputData(grid);
   writer->SetFileName(tmp.string().c_str());
@@ -122,6 +121,7 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
     throw Error(where + ": VTK could not write the file (error code " +
                 std::to_string(writer->GetErrorCode()) + ")");
   }
+  stop_point_for_tests(path);
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   SIG_VERIFY(!ec, where << ": cannot rename " << tmp.string() << ": " << ec.message());

@@ -15,6 +15,7 @@
 // in the tables).
 #include "assembly/initial.hpp"
 #include "assembly/loads.hpp"
+#include "assembly/rigid_motion.hpp"
 #include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
@@ -70,8 +71,10 @@ int main(int argc, char** argv) {
                            "(sig-march)");
     const sig::SolverCard card = sig::read_solver_card(datafile);
     for (const sig::Card* initial : datafile.all("INITIAL")) {
-      if (initial->has("v"))
-        initial->fail("v", "a static deck has no velocity (INITIAL v= is for TIME decks)");
+      for (const char* velocity : {"v", "omega"})
+        if (initial->has(velocity))
+          initial->fail(velocity, "a static deck has no velocity (INITIAL v=, omega= are for TIME "
+                                  "decks)");
       if (!has_contact)
         initial->fail("u", "a static deck without contact is one linear solve: it has no first "
                            "iterate to start from");
@@ -126,6 +129,8 @@ int main(int argc, char** argv) {
     // 4. Solve, from the INITIAL displacement (the first iterate of the contact Newton).
     sig::StaticSolution solution;
     if (method == "linear") {
+      sig::verify_rigid_motions_held(sig::read_nopo(args.ds_path("nopo")), system.dirichlet_dofs,
+                                     datafile.path);
       solution = sig::solve_linear_elasticity(system, backend);
     } else {
       const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));

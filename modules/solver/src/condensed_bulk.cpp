@@ -56,6 +56,22 @@ CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_n
   last_normal_force_ = Eigen::VectorXd::Zero(m);
 }
 
+void CondensedBulk::restart(Eigen::VectorXd f, Eigen::VectorXd gap, const Eigen::VectorXd& start) {
+  SIG_VERIFY(f.size() == p_.f.size() && gap.size() == p_.gap.size() &&
+                 (start.size() == 0 || start.size() == w_.size()),
+             "condensed bulk: a restart with a load of "
+                 << f.size() << ", " << gap.size() << " origins and a start of " << start.size()
+                 << " for " << p_.f.size() << " unknowns, " << p_.gap.size() << " nodes");
+  p_.f = std::move(f);
+  p_.gap = std::move(gap);
+  if (start.size() > 0) {
+    w_ = start;
+    Sw_.noalias() = p_.S.selfadjointView<Eigen::Lower>() * w_;
+  }
+  base_ = w_;
+  step_.setZero();
+}
+
 void CondensedBulk::order_nodes(const std::vector<int>& nodes) {
   // Far first: the unknowns of no contact node, then the nodes in the given order, each node's
   // unknowns together.
@@ -101,6 +117,7 @@ void CondensedBulk::factorize() {
   for (int k = 0; k < n; ++k)
     B_(k, k) += p_.regularization + default_stiffness_[order_[k]];
   L_ = B_;
+  ++factorizations_;
   SIG_VERIFY(cholesky_in_place(L_),
              "the condensed step matrix is not positive definite (a rigid mode that neither the "
              "bulk nor the proximal term holds)");
@@ -284,17 +301,26 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
     rhs[a] = right;
   }
   if (nu > 0) {
-    Eigen::VectorXd x;
-    if (!coupled) {
-      const Eigen::LLT<Eigen::MatrixXd> cholesky(A);
-      SIG_VERIFY(cholesky.info() == Eigen::Success,
-                 "the contact step matrix is not positive definite (" << nu << " free of " << tail
-                                                                      << " tail unknowns)");
-      x = cholesky.solve(rhs);
-    } else {
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
-      x = lu.solve(rhs);
+    // The factorization of the last A serves again when A repeats: the iteration that confirms
+    // a Newton's converged branches, and every step of a march whose statuses hold (the laws'
+    // springs and couplings depend on the branches only, not on the iterate).
+    const bool repeated =
+        A.rows() == tail_matrix_.rows() && coupled == tail_coupled_ && A == tail_matrix_;
+    if (!repeated) {
+      tail_matrix_ = std::move(A);
+      tail_coupled_ = coupled;
+      if (!coupled) {
+        tail_llt_.compute(tail_matrix_);
+        SIG_VERIFY(tail_llt_.info() == Eigen::Success,
+                   "the contact step matrix is not positive definite (" << nu << " free of " << tail
+                                                                        << " tail unknowns)");
+      } else {
+        tail_lu_.compute(tail_matrix_);
+      }
+      ++tail_factorizations_;
     }
+    const Eigen::VectorXd x =
+        coupled ? Eigen::VectorXd(tail_lu_.solve(rhs)) : Eigen::VectorXd(tail_llt_.solve(rhs));
     SIG_VERIFY(x.allFinite(), "the contact step matrix is singular");
     for (int a = 0; a < nu; ++a)
       z_tail[free[a]] = x[a];

@@ -12,10 +12,13 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <vector>
+
 namespace sig {
 
 struct Mesh;
 struct MaterialTable;
+enum class AlgorithmicStress; // material/algorithmic_stress.hpp
 
 /// Energy, internal force and tangent stiffness at one displacement.
 struct HyperelasticState {
@@ -23,6 +26,27 @@ struct HyperelasticState {
   Eigen::VectorXd internal_force;      ///< dE/du, dof = 2 node + component
   Eigen::SparseMatrix<double> tangent; ///< d2E/du2, symmetric, on the pattern's layout
 };
+
+/// The strain at the start of a time step (material/algorithmic_stress.hpp): per triangle
+/// F_{n-1} and W(F_{n-1}), computed once per step.
+struct PreviousStrain {
+  std::vector<Eigen::Matrix2d> F;
+  std::vector<double> energy;
+};
+
+/// F and W of every triangle at u_prev. Throws as assemble_hyperelastic.
+PreviousStrain previous_strain(const Mesh& mesh, const MaterialTable& table,
+                               const Eigen::VectorXd& u_prev);
+
+/// The internal force of a midpoint time step from `previous` to u (thesis (3.40)): G_a =
+/// sum_T |T| t Pi : grad(lambda_a), Pi the stress of the step (`stress`); its derivative in u
+/// into state.tangent when `with_tangent` (not symmetric for Gonzalez's stress; the pattern's
+/// layout, as assemble_hyperelastic), and the stored energy at u. Throws as
+/// assemble_hyperelastic.
+void assemble_hyperelastic_step(const Mesh& mesh, const MaterialTable& table,
+                                const SparsityPattern& pattern, const PreviousStrain& previous,
+                                AlgorithmicStress stress, const Eigen::VectorXd& u,
+                                HyperelasticState& state, bool with_tangent);
 
 /// The stored energy alone (for a line search). +infinity when a triangle is inverted
 /// (det F <= 0), so that a step that folds the mesh is refused rather than thrown. Every

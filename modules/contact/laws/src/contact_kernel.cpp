@@ -18,13 +18,24 @@ double clipped(const ContactLaw& law, double q_n) {
 double compliance_pressure(const ContactLaw& law, double q_n) {
   if (!law.has_compliance()) return 0.0;
   if (law.normal == NormalLaw::compliance_bilateral) return law.cn * q_n;
+  if (law.secant) return law.cn * specific_penalty(law.previous, clipped(law, q_n));
   return truncated_normal_compliance(clipped(law, q_n), law.cn, law.c3);
 }
 
 double d_compliance_pressure(const ContactLaw& law, double q_n) {
   if (!law.has_compliance() || (law.has_wall() && q_n >= law.depth)) return 0.0;
   if (law.normal == NormalLaw::compliance_bilateral) return law.cn;
+  if (law.secant) return law.cn * d_specific_penalty(law.previous, q_n);
   return d_truncated_normal_compliance(q_n, law.cn, law.c3);
+}
+
+double compliance_energy(const ContactLaw& law, double q_n) {
+  if (!law.has_compliance() || law.in_velocity()) return 0.0;
+  if (law.normal == NormalLaw::compliance_bilateral) return 0.5 * law.cn * q_n * q_n;
+  const double q = positive_part(clipped(law, q_n));
+  if (law.secant || law.cn * q <= law.c3) return 0.5 * law.cn * q * q;
+  const double knee = law.c3 / law.cn; // the truncation: P = c3 beyond it
+  return 0.5 * law.c3 * knee + law.c3 * (q - knee);
 }
 
 namespace {
@@ -58,15 +69,20 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
     break;
   case FrictionLaw::coulomb:
   case FrictionLaw::nonmonotone: // mu frozen for this convex solve (contact_law.hpp)
+  case FrictionLaw::mu1:         // mu of the penetration (8.3)
+  case FrictionLaw::mu2: {
+    const double mu = penetration_friction(law, x.q_n), d_mu = d_penetration_friction(law, x.q_n);
     if (law.bound == FrictionBound::normal) {
-      k.bound = law.mu * k.normal;
-      k.bound_slope = law.mu;
-      k.d_bound = law.mu * k.d_force.row(0);
+      k.bound = mu * k.normal;
+      k.bound_slope = mu;
+      k.d_bound = mu * k.d_force.row(0);
+      k.d_bound(kQn) += d_mu * k.normal;
     } else { // the compliance pressure only: mu p(g), Tresca's, on the wall
-      k.bound = law.mu * k.compliance;
-      k.d_bound(kQn) = law.mu * k.compliance_slope;
+      k.bound = mu * k.compliance;
+      k.d_bound(kQn) = mu * k.compliance_slope + d_mu * k.compliance;
     }
     break;
+  }
   }
   if (law.has_friction()) {
     const double z = x.t + r_t * x.q_t;

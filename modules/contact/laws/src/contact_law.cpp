@@ -35,6 +35,10 @@ std::string to_string(FrictionLaw law) {
     return "coulomb";
   case FrictionLaw::nonmonotone:
     return "nonmonotone";
+  case FrictionLaw::mu1:
+    return "mu1";
+  case FrictionLaw::mu2:
+    return "mu2";
   }
   return "?";
 }
@@ -57,8 +61,8 @@ NormalLaw normal_law_named(const std::string& name) {
 }
 
 FrictionLaw friction_law_named(const std::string& name) {
-  for (FrictionLaw law :
-       {FrictionLaw::none, FrictionLaw::tresca, FrictionLaw::coulomb, FrictionLaw::nonmonotone})
+  for (FrictionLaw law : {FrictionLaw::none, FrictionLaw::tresca, FrictionLaw::coulomb,
+                          FrictionLaw::nonmonotone, FrictionLaw::mu1, FrictionLaw::mu2})
     if (to_string(law) == name) return law;
   SIG_VERIFY(false, "friction law '" << name << "' is unknown; known: " << friction_law_names);
   return FrictionLaw::none;
@@ -88,10 +92,10 @@ NormalLaw normal_law_of_id(long id) {
 }
 
 FrictionLaw friction_law_of_id(long id) {
-  SIG_VERIFY(id >= 0 && id <= 3, "friction law id "
+  SIG_VERIFY(id >= 0 && id <= 5, "friction law id "
                                      << id
                                      << " is unknown; known: 0 = none, 1 = tresca, 2 = coulomb, "
-                                        "3 = nonmonotone");
+                                        "3 = nonmonotone, 4 = mu1, 5 = mu2");
   return static_cast<FrictionLaw>(id);
 }
 
@@ -121,6 +125,19 @@ double friction_coefficient(const ContactLaw& law, double r) {
 double d_friction_coefficient(const ContactLaw& law, double r) {
   if (law.friction != FrictionLaw::nonmonotone) return 0.0;
   return -law.alpha * (law.a - law.b) * std::exp(-law.alpha * r);
+}
+
+double penetration_friction(const ContactLaw& law, double q_n) {
+  if (!law.penetration_dependent()) return law.mu;
+  if (q_n <= 0) return 0.0;
+  if (q_n >= law.depth) return law.mu;
+  const double crushed = q_n / law.depth; // of the asperities
+  return law.friction == FrictionLaw::mu1 ? crushed * law.mu : (2.0 - crushed) * law.mu;
+}
+
+double d_penetration_friction(const ContactLaw& law, double q_n) {
+  if (!law.penetration_dependent() || q_n <= 0 || q_n >= law.depth) return 0.0;
+  return (law.friction == FrictionLaw::mu1 ? 1.0 : -1.0) * law.mu / law.depth;
 }
 
 std::optional<LawProblem> law_problem(const ContactLaw& law) {
@@ -158,6 +175,10 @@ std::optional<LawProblem> law_problem(const ContactLaw& law) {
   // An unused mu or threshold is 0: the ranges hold whatever the friction law (nonmonotone's
   // frozen mu after a, b, alpha, so that the card's a, from which it starts, is named).
   if (!(std::isfinite(law.mu) && law.mu >= 0)) return problem("mu", "must be >= 0, got ", law.mu);
+  // (8.3) measures the penetration against the asperities' depth g.
+  if (law.penetration_dependent() && !(law.depth > 0))
+    return problem("g", "must be > 0 for friction law=", to_string(law.friction),
+                   ": mu rises or falls over the penetration 0 < q_n < g (8.3), got ", law.depth);
   // Bounding by the compliance pressure needs one: signorini's bound would vanish everywhere.
   if (law.has_coefficient() && law.bound == FrictionBound::compliance && !law.has_compliance())
     return problem("bound", "compliance bounds the slip by mu p(q_n), and ", normal,
@@ -175,7 +196,7 @@ std::string describe(const ContactLaw& law) {
   }
   if (law.has_wall()) out << " g=" << law.depth;
   out << ", friction " << to_string(law.friction);
-  if (law.friction == FrictionLaw::coulomb) out << " mu=" << law.mu;
+  if (law.friction == FrictionLaw::coulomb || law.penetration_dependent()) out << " mu=" << law.mu;
   if (law.friction == FrictionLaw::nonmonotone)
     out << " a=" << law.a << " b=" << law.b << " alpha=" << law.alpha << " of " << to_string(law.of)
         << " (mu=" << law.mu << ")";

@@ -3,7 +3,10 @@
 // field names are case-insensitive, lists are written `0,-2`, a value with spaces is quoted.
 // `TITLE` takes the rest of its line as free text. Every card and field is declared once in the
 // card schema (cards.cpp); reading rejects unknown cards and fields, and every error thrown from a
-// Card names the file, the line and the field.
+// Card names the file, the line and the field. A field's number is checked against its range
+// (core/ranges.hpp) when read; an empty value is an error (`name= vtk=yes` never takes
+// 'vtk=yes' as the name). Lines end with LF, CR LF or CR; a UTF-8 byte order mark is skipped; a
+// TITLE that is not UTF-8 has its bad bytes replaced (with a warning), so outputs stay valid.
 #include <filesystem>
 #include <initializer_list>
 #include <optional>
@@ -35,11 +38,14 @@ public:
   std::vector<long> integers(const std::string& name) const;
   /// A file name (required field); a relative one is taken from the datafile's folder.
   std::filesystem::path path(const std::string& name) const;
+  /// A plain file name for an output (letters, digits, . _ + -, not starting with '.': no
+  /// folder, never hidden); `fallback` when the field is absent.
+  std::string file_name(const std::string& name, const std::string& fallback) const;
   /// One of `allowed` (case-insensitive, returned lower case).
   std::string choice(const std::string& name, std::initializer_list<const char*> allowed) const;
   std::string choice(const std::string& name, std::initializer_list<const char*> allowed,
                      const std::string& fallback) const;
-  /// Throw InputError(file, line, name, what).
+  /// Throw InputError(file, line, name, what), the field spelt as in the card schema.
   [[noreturn]] void fail(const std::string& name, const std::string& what) const;
 };
 

@@ -4,6 +4,19 @@
 // Every array carries a CRC-32 and every write goes to a temporary file renamed into place, so a
 // reader either sees a whole, checked DS or an error naming the file and the array.
 //
+// Distrust of what a DS holds lives here too, so that every stage and every new array gets it
+// without code of its own:
+//  - Finite values: write_ds refuses a Float64 array holding NaN or inf, and Ds::reals refuses to
+//    hand one out, each naming the file, the array and the value. An array that may hold them
+//    (none today) is put with Finite::not_required and read with reals_any.
+//  - Provenance: inside a stage (core/provenance.hpp) every DS of the case that read_ds reads,
+//    and the mesh, is an input with a fingerprint; write_ds records them all in the DS it writes
+//    (Text array "provenance", one line "KIND FINGERPRINT FILE" each, transitively), and read_ds
+//    refuses a DS whose recorded inputs are not the files this stage reads (another case's
+//    case.mili, a foreign case.nopo), naming both files.
+//  - Value ranges: readers check what a DS array means with the ranges of the card schema
+//    (core/ranges.hpp), the same ranges the datafile reader enforces.
+//
 // On disk (little-endian):
 //   "SIGDS\0\0\0" (8 bytes magic), uint32 format version, uint32 number of arrays after array 0,
 //   array 0: 32 x int32 words (title 20 words, date 2, creator 6, type 1, level, state, count),
@@ -20,6 +33,9 @@
 namespace sig {
 
 enum class DsType : std::uint32_t { Int64 = 1, Float64 = 2, Text = 3 };
+
+/// Whether a Float64 array must be finite: the rule for every result (write_ds checks it).
+enum class Finite { required, not_required };
 
 struct DsHeader {
   std::string title;   ///< up to 80 characters
@@ -39,7 +55,10 @@ struct DsArray {
   DsType type = DsType::Float64;
   std::vector<std::int64_t> shape; ///< product = number of values; rank 1 when not given
   std::vector<char> bytes;         ///< raw little-endian payload
-  std::size_t count() const;       ///< number of values (characters for Text)
+  /// In memory only: write_ds refuses NaN and inf in a Float64 array unless this is
+  /// Finite::not_required (readers choose with Ds::reals or Ds::reals_any).
+  Finite finite = Finite::required;
+  std::size_t count() const; ///< number of values (characters for Text)
 };
 
 class Ds {
@@ -49,10 +68,13 @@ public:
 
   DsHeader header;
   std::string source; ///< file it was read from; empty for a DS built in memory
+  /// Of the arrays (header excluded), set by read_ds: what a DS built from this one records in
+  /// its provenance. 0 for a DS built in memory.
+  std::uint64_t fingerprint = 0;
 
   // Writers replace an array of the same name. Shape empty = rank 1 of the data size.
   void put(const std::string& name, std::span<const double> values,
-           std::vector<std::int64_t> shape = {});
+           std::vector<std::int64_t> shape = {}, Finite finite = Finite::required);
   void put(const std::string& name, std::span<const std::int64_t> values,
            std::vector<std::int64_t> shape = {});
   void put_text(const std::string& name, const std::string& text);
@@ -63,7 +85,10 @@ public:
 
   bool has(const std::string& name) const;
   // Readers throw sig::Error naming the DS file and the array if it is missing or of another type.
+  /// The values, every one finite (else an error naming the file, the array and the value).
   std::vector<double> reals(const std::string& name) const;
+  /// The values, NaN and inf included: for arrays put with Finite::not_required.
+  std::vector<double> reals_any(const std::string& name) const;
   std::vector<std::int64_t> ints(const std::string& name) const;
   std::string text(const std::string& name) const;
   double scalar(const std::string& name) const;
@@ -77,11 +102,17 @@ private:
 };
 
 /// Write to `path` atomically: a temporary file in the same folder, flushed, then renamed.
+/// Refuses (writing nothing) a Float64 array holding NaN or inf unless put with
+/// Finite::not_required. Inside a stage, adds the array "provenance" (core/provenance.hpp).
 void write_ds(const std::filesystem::path& path, const Ds& ds);
 
 /// Read and check magic, version, every CRC and the trailer; if `expected_kind` is not empty the
-/// header type must match. Errors name the file and the array.
+/// header type must match. Errors name the file and the array. Inside a stage, a DS of the case
+/// is also checked against the other inputs of the stage (core/provenance.hpp).
 Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind = "");
+
+/// The same checks on the bytes of a file called `name` (tests, fuzzing); registers no input.
+Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind = "");
 
 /// Replace `path` with `contents` atomically (temporary file + rename); for text outputs
 /// (CSV, JSON, reports) so that a killed stage leaves the previous file intact.
@@ -89,5 +120,25 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 
 /// CRC-32 (IEEE 802.3, the zlib polynomial).
 std::uint32_t crc32(const void* data, std::size_t size, std::uint32_t crc = 0);
+
+/// 64-bit FNV-1a, continued from `hash` (fingerprints: of the mesh, of a DS's arrays).
+std::uint64_t fnv1a64(const void* data, std::size_t size,
+                      std::uint64_t hash = 0xcbf29ce484222325ull);
+/// A fingerprint as 16 lower-case hex digits.
+std::string fingerprint_text(std::uint64_t fingerprint);
+
+/// The hidden temporary name under which a file is written before it is renamed over `target`
+/// (".NAME.tmp.PID" in the same folder). Everything that writes atomically uses it, so that
+/// remove_stale_temporaries finds what a killed stage left.
+std::filesystem::path temporary_path(const std::filesystem::path& target);
+/// Remove the temporaries (temporary_path) in `folder` whose process no longer runs; returns
+/// their names. Stages call it when they start (parse_stage_args).
+std::vector<std::string> remove_stale_temporaries(const std::filesystem::path& folder);
+
+/// For the test suite: when $SIG_STOP_WRITING is the file name of `target`, the process stops
+/// itself (SIGSTOP) here, with the temporary of `target` half written, so that a test can kill it
+/// at a point known to be mid-write (tests/pipeline/killed_stage.sh). Writers call it once the
+/// temporary holds data but before it is renamed.
+void stop_point_for_tests(const std::filesystem::path& target);
 
 } // namespace sig

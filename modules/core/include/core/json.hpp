@@ -1,6 +1,6 @@
 #pragma once
 // A small JSON writer for summary.json and sig-dump --json: keys keep insertion order so the
-// output is stable for scripts and diffs.
+// output is stable for scripts and diffs; strings are written as valid UTF-8 whatever they hold.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -10,6 +10,10 @@
 #include <vector>
 
 namespace sig {
+
+/// `text` with every byte that is not part of a well-formed UTF-8 sequence replaced by U+FFFD;
+/// `replaced` (if given) counts them. JSON output is always valid UTF-8 this way.
+std::string valid_utf8(const std::string& text, std::size_t* replaced = nullptr);
 
 class Json {
 public:

@@ -45,12 +45,15 @@ struct StageArgs {
   std::filesystem::path ds_path(const std::string& extension) const;
 };
 
-/// Parse `DATAFILE [-o OUTDIR]` (after handle_help_and_version); creates OUTDIR. Throws
+/// Parse `DATAFILE [-o OUTDIR]` (after handle_help_and_version); creates OUTDIR, removes the
+/// temporaries killed stages left in it (remove_stale_temporaries) and opens the case: the DS
+/// files in OUTDIR the stage reads are checked to belong together (core/provenance.hpp). Throws
 /// sig::Error with the usage line.
 StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help);
 
 /// Run `body`, printing "stage: error: ..." and returning 1 on any exception, 0 otherwise
-/// (StageExit: its code). With SIG_CARD_TRACE=FILE in the environment (the test suite) it
+/// (StageExit: its code); a failed write to the standard output (a full disk, /dev/full) is an
+/// error too. With SIG_CARD_TRACE=FILE in the environment (the test suite) it
 /// appends "STAGE KEYWORD" to FILE for every card the stage looked up.
 int run_stage(const std::string& stage, const std::function<void()>& body);
 

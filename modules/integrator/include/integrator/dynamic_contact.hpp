@@ -13,6 +13,8 @@
 // scheme), Z takes p solves once, and a step costs one sparse solve plus dense p-sized work.
 // The work of the contact forces over the step is -lambda . (x_{n+1} - x_n), and the midpoint
 // rule's discrete energy obeys E_{n+1} - E_n = f_bar . (u_{n+1} - u_n) - lambda . (x_{n+1} - x_n).
+#include "solver/contact_newton.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -21,7 +23,6 @@
 namespace sig {
 
 struct ContactElements;
-struct ContactNormals;
 struct Mesh;
 struct ReducedSystem;
 class TimeScheme;
@@ -29,26 +30,22 @@ class TimeScheme;
 struct ContactBoundary {
   std::vector<int> nodes;        ///< 0-based mesh nodes, in CONT element order
   Eigen::SparseMatrix<double> B; ///< p x free dofs: (B u)_i = u_n,i
-  /// The unilateral bound on u_n: d_i + g, the CONT gap plus its depth (signorini, two-step
-  /// (a); for ipm g is the allowed penetration).
-  Eigen::VectorXd bound;
   /// d_i = distance of node i to the obstacle in the reference configuration (the CONT gap):
-  /// penetration [u_n - d]_+ and the compliance and specific penalty laws are measured from it.
+  /// the penetration q_n = u_n - d and every law are measured from it.
   Eigen::VectorXd geometric_gap;
-  Eigen::VectorXd weight; ///< tributary length x thickness: pressure = lambda / weight
+  /// The CONT laws (their wall depth g) and weights (tributary length x thickness: pressure =
+  /// force / weight).
+  ContactSetting setting;
 
   int size() const { return static_cast<int>(nodes.size()); }
   /// [u_n - d]_+ per node for the normal displacements x.
   Eigen::VectorXd penetration(const Eigen::VectorXd& x) const;
 };
 
-/// The boundary on the free dofs of `reduced`, B, gaps and weights as the CONT file has them;
-/// sig::Error if a contact node has a Dirichlet dof or is not a node of the mesh.
+/// The boundary on the free dofs of `reduced`, B, gaps, laws and weights as the CONT file has
+/// them; sig::Error if a contact node has a Dirichlet dof or is not a node of the mesh.
 ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& mesh,
                                  const ReducedSystem& reduced);
-
-/// The contact nodes and normals the Equivalent Mass Matrix needs (integrator/emm.hpp).
-ContactNormals contact_normals(const ContactElements& elements);
 
 /// Z and A of the header comment, for the step operator of `scheme`.
 struct CondensedContact {

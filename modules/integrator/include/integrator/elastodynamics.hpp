@@ -42,20 +42,15 @@ inline constexpr const char* mass_choice_names = "consistent|lumped|emm";
 MassChoice mass_choice_from_string(const std::string& name);
 std::string to_string(MassChoice choice);
 
-/// The contact nodes of Gamma3 and their unit outward normals (EMM input).
-struct ContactNormals {
-  std::vector<int> nodes;               ///< 0-based mesh nodes, no repetition
-  std::vector<Eigen::Vector2d> normals; ///< one per node
-};
-
 /// The diagonal matrix of a lumped mass vector.
 Eigen::SparseMatrix<double> diagonal_mass(const Eigen::VectorXd& lumped);
 
 /// The full-size mass of `choice`: system.M, diag(system.M_lumped), or the EMM built from the
-/// consistent mass with `contact` (ignored for the other choices). sig::Error if the system has
-/// no mass (every density 0).
+/// consistent mass with the 0-based nodes of Gamma3 `contact_nodes` (ignored for the other
+/// choices). sig::Error if the system has no mass (every density 0).
 Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice choice,
-                                        const Mesh& mesh, const ContactNormals& contact = {});
+                                        const Mesh& mesh,
+                                        const std::vector<int>& contact_nodes = {});
 
 /// The reduced problem: K_ff, M_ff of the full-size `mass`, the loads reduced_load(reduced).
 Elastodynamics reduced_elastodynamics(const ReducedSystem& reduced,

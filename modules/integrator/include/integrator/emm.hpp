@@ -1,28 +1,30 @@
 #pragma once
 // The Equivalent Mass Matrix (EMM, ch. 3.3.5, [80]): a mass Me under which the contact nodes of
-// Gamma3 carry no normal inertia,
+// Gamma3 carry no inertia, "n'aient plus d'inertie" (l.5477), so that in particular
 //     nu_i^T Me nu_j = 0   for all contact nodes i, j                          (3.54)
-// (nu_i the unit normal at node i, placed at the node's two dofs), while the total mass, the
-// centre of mass and the moments of inertia of the body are those of the standard mass M.
+// while the total mass, the centre of mass and the moment of inertia of the body are those of
+// the standard mass M (l.5488-5491). The thesis states these properties, not a construction.
 //
-// The thesis states these properties, not a construction. Ours is a kinematic substitution:
-// the normal velocity of a contact node is no longer its own but the one extrapolated from
-// nearby non-contact nodes ("receivers" R_i) by affine weights,
-//     nu_i . v_i  ->  nu_i . sum_{j in R_i} c_ij v_j,  sum_j c_ij = 1,  sum_j c_ij x_j = x_i,
-// which is the linear map T = I - sum_i nu_i nu_i^T [at (i, i)] + sum_{i, j} c_ij nu_i nu_i^T
-// [at (i, j)], and
-//     Me = T^T M T.
-// Then (a) Me nu_i = 0, because T nu_i = 0 (the (i, i) block of T is tau_i tau_i^T, tau_i the
-// unit tangent, and no receiver is a contact node): exactly for an axis normal such as the
-// plane foundation's (0, 1), to rounding for others; (b) Me is symmetric and positive
-// semidefinite; (c) T reproduces every field affine in x (v(x) = a + B x, since the weights are
-// affine), so for all such fields phi, psi: phi.Me psi = phi.M psi. The affine fields hold the
-// rigid motions and the fields x_a e_b, so the zeroth, first and second moments of the mass
-// (total mass, centre of mass, second moments and polar moment of inertia) are kept exactly.
-// The mass removed from the contact nodes is thus redistributed onto their receivers (with
-// couplings between receivers of the same node: the lumped mass becomes non-diagonal there).
-// The receivers of a node are its non-contact neighbours in the mesh (the ring grows until
-// they span the plane); the weights are the minimum-norm affine ones, c_i = A^+ (1, x_i, y_i).
+// Ours is the constrained projection of ALGORITHMS.md 4.3 (D) ([choice] C16), on the scalar mass:
+// a P1 mass (consistent or lumped) is M = m (x) I_2, m the nodes' scalar mass matrix, and
+//   1. m0 = m with every row and column of the Gamma3 nodes zeroed (full removal: (3.54) in
+//      both components);
+//   2. the affine fields phi_1 = 1, phi_2 = x1 - c1, phi_3 = x2 - c2 (c the centre of the nodes,
+//      for conditioning);
+//   3. me = m0 + sum_{a <= b} beta_ab Pi Sym_P(phi_a phi_b^T) Pi, Sym_P keeping m's nonzero
+//      pattern and symmetrizing, Pi zeroing the Gamma3 rows and columns;
+//   4. beta from the six conditions phi_a^T me phi_b = phi_a^T m phi_b, a <= b: the mass, its
+//      first moments (the centre of mass) and its three second moments (the moments of inertia
+//      about any point, the polar moment among them), a 6 x 6 linear system;
+//   5. Me = me (x) I_2. me restricted to the other nodes must be positive definite (a Cholesky
+//      checks it); otherwise the second moments are dropped (mass and centre only) with a
+//      warning.
+// D states its conditions with the three vector rigid modes r = e1, e2, e3 x x; every r_a^T M r_b
+// is a combination of the scalar moments kept here, so Me satisfies D's six conditions and
+// more, and, being me (x) I_2 with me symmetric, it leaves the angular momentum of the midpoint
+// rule exact as M does (sum_ab me_ab v_a x v_b = 0); D's vector form would couple the components
+// and lose that. The mass removed from Gamma3 is spread over m's pattern as a quadratic
+// function of position; Me keeps M's pattern (a hyperelastic step's Newton matrix has it).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -30,30 +32,15 @@
 
 namespace sig {
 
-struct ContactNormals;
 struct Mesh;
 
-/// The affine extrapolation of one contact node from its receivers.
-struct MassTransfer {
-  int node = 0;
-  Eigen::Vector2d normal; ///< unit
-  std::vector<int> receivers;
-  std::vector<double> weights; ///< sum 1, sum weights x_receiver = x_node
-};
-
-/// The transfer of every contact node; sig::Error for a node out of range, a repeated node, a
-/// zero normal, or a node whose receivers cannot span the plane (the mesh has too few
-/// non-contact nodes).
-std::vector<MassTransfer> mass_transfers(const Mesh& mesh, const ContactNormals& contact);
-
-/// T of the construction above, 2 n x 2 n (interleaved dofs, dof = 2 node + component).
-Eigen::SparseMatrix<double> emm_transfer_matrix(int num_nodes,
-                                                const std::vector<MassTransfer>& transfers);
-
-/// Me = T^T M T, symmetrized (exactly symmetric in floating point), for a consistent or lumped
-/// (diagonal) full-size mass M.
+/// Me of the construction above for a full-size consistent or lumped mass M (2 dofs per node,
+/// interleaved, M = m (x) I_2) and the 0-based nodes of Gamma3. sig::Error for a node out of
+/// range or given twice, a mass that is not m (x) I_2, or if even the mass and the centre alone
+/// cannot be kept with a positive definite Me.
 Eigen::SparseMatrix<double> equivalent_mass_matrix(const Eigen::SparseMatrix<double>& M,
-                                                   const Mesh& mesh, const ContactNormals& contact);
+                                                   const Mesh& mesh,
+                                                   const std::vector<int>& contact_nodes);
 
 /// The inertia of a mass matrix seen by the affine velocity fields.
 struct MassMoments {

@@ -27,7 +27,26 @@ struct EnergyRecord {
   /// Iterations of the step: 1 linear solve without contact (0 at step 0, the given state);
   /// with contact those of the strategy's Newton phases, summed (0 in free flight).
   int newton_iterations = 0;
+  // The split of the contact work (ALGORITHMS.md 4.4): contact_work = friction_work + the normal
+  // forces' work, and the normal work = -(interface - interface at step 0) + wall_work, so that
+  //     total + interface - external_work - friction_work - wall_work
+  // is constant. Each step's friction and wall work should be <= 0 (they only dissipate).
+  double interface = 0.0;     ///< energy stored by the compliance of the foundation now
+  double friction_work = 0.0; ///< work of the tangential forces since step 0: -sum T slip
+  double wall_work = 0.0;     ///< work of the normal forces not stored in the interface
+  /// The contact forces of the last step summed over the nodes, sum N and sum T (the momentum
+  /// they give the body over the step is k times their resultant, ALGORITHMS.md 4.8 check 6).
+  double normal_force = 0.0;
+  double tangential_force = 0.0;
 };
+
+/// The contact nodes' part of a step's record: the forces N, T over the step, the penetrations
+/// q_n before and after it, the slips over it and the interface energy after it, added to the
+/// work of the previous record `before`.
+void add_contact_step(EnergyRecord& record, const EnergyRecord& before, const Eigen::VectorXd& N,
+                      const Eigen::VectorXd& T, const Eigen::VectorXd& q_before,
+                      const Eigen::VectorXd& q_after, const Eigen::VectorXd& slip,
+                      double interface);
 
 /// 1/2 v.M v.
 double kinetic_energy(const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& v);

@@ -14,8 +14,10 @@ struct MarchHistory {
   std::vector<EnergyRecord> energy;  ///< steps 0 .. the last step done
   std::vector<DynamicState> outputs; ///< the initial state, then every output_every-th step
   DynamicState final_state;
-  // With contact (integrator/contact_march.hpp):
-  std::vector<Eigen::VectorXd> output_pressure; ///< lambda / weight at each kept state
+  // With contact (integrator/contact_march.hpp, finite_strain_march.hpp):
+  std::vector<Eigen::VectorXd> output_pressure; ///< N / weight at each kept state
+  /// T / weight at each kept state, with friction (empty otherwise).
+  std::vector<Eigen::VectorXd> output_tangential_pressure;
   bool converged = true; ///< false if a step's Newton failed: the march stopped before it
   std::string failure;   ///< names the step and why
 };

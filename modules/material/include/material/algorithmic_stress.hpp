@@ -48,9 +48,13 @@ struct StepResponse {
   double energy = 0.0;                               ///< W(F_n), per unit reference volume
 };
 
-/// Pi of the step from F_prev (whose energy is `energy_prev` = W(F_prev), computed once per step)
-/// to F, and its tangent when `with_tangent`. Throws sig::Error as HyperelasticLaw::response
-/// outside the law's domain (det F <= 0 at F or at the midpoint).
+/// W(F) as the step stress computes it (from the in-plane C): the energy a step starts from.
+double step_energy(const HyperelasticLaw& law, const Eigen::Matrix2d& F);
+
+/// Pi of the step from F_prev, whose energy is `energy_prev` = step_energy(F_prev) (computed once
+/// per step), to F, and its tangent when `with_tangent`; the energy is step_energy(F). Throws
+/// sig::Error as HyperelasticLaw::response outside the law's domain (det F <= 0 at F or at the
+/// midpoint).
 StepResponse step_response(const HyperelasticLaw& law, AlgorithmicStress kind,
                            const Eigen::Matrix2d& F_prev, double energy_prev,
                            const Eigen::Matrix2d& F, bool with_tangent = true);

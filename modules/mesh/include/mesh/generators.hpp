@@ -41,10 +41,18 @@ int default_ring_layers(int N);
 Mesh ring(const Eigen::Vector2d& center, double r_in, double r_out, int N,
           const RingOptions& options = {});
 
-/// Structured [0, lx] x [0, ly], nx x ny cells, each cut along a diagonal that alternates
-/// from cell to cell. refs = {bottom, right, top, left}; the corners get the vertex_ref of the
-/// bottom or top side.
-Mesh rectangle(double lx, double ly, int nx, int ny, std::array<int, 4> refs = {3, 4, 2, 1});
+/// How a rectangle's cells are cut: `alternating`, two triangles along a diagonal that alternates
+/// from cell to cell; `union_jack`, four triangles around a node at the cell's centre (the
+/// thesis's scene 5 mesh, ALGORITHMS.md 0.2: 64 x 12 cells, 3072 triangles). A union-jack mesh
+/// refined by halving nx and ny is nested in the coarse one (each coarse edge is a union of fine
+/// edges), so coarse P1 fields prolongate onto it exactly.
+enum class CellPattern { alternating, union_jack };
+
+/// Structured [0, lx] x [0, ly], nx x ny cells cut by `pattern`. refs = {bottom, right, top,
+/// left}; the corners get the vertex_ref of the bottom or top side. Nodes: the (nx + 1)(ny + 1)
+/// corners row by row from the bottom, then (union jack) the nx ny centres row by row.
+Mesh rectangle(double lx, double ly, int nx, int ny, std::array<int, 4> refs = {3, 4, 2, 1},
+               CellPattern pattern = CellPattern::alternating);
 /// rectangle(l, l, n, n, refs).
 Mesh square(double l, int n, std::array<int, 4> refs = {3, 4, 2, 1});
 

@@ -9,6 +9,10 @@
 
 namespace sig {
 
+/// The most nodes a mesh may have (generators and readers check it before allocating): beyond,
+/// a 2D P1 problem no longer fits in the memory of the machines this code runs on.
+inline constexpr double max_mesh_nodes = 1e8;
+
 struct BoundaryEdge {
   int a, b; ///< node indices, in the direction of the boundary (domain on the left)
   int ref;  ///< reference number (> 0)

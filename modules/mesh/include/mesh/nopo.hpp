@@ -13,6 +13,14 @@
 // The writer follows FreeFem's Write_nopo (MODULEF.md section 5.2): with the same text fields
 // and NDSR = 0 it reproduces a FreeFem file byte for byte. By default it writes the true
 // largest reference in NDSR (FreeFem always writes 0, and ignores it on reading).
+//
+// Integrity. The fingerprint of a NOPO file is the 64-bit FNV-1a hash of its records but NOP0
+// (descriptor, NOP1..NOP5: every word of the mesh, none of the text). sig-mesh writes case.nopo
+// with the fingerprint in NOP0's creator field ("sig-mesh" + 16 hex digits, the layout
+// unchanged, so other MODULEF readers still read it); the reader recomputes it and refuses a file
+// that no longer matches (a node moved, bytes damaged). Inside a stage the reader registers the
+// mesh as an input of the case (core/provenance.hpp): every DS built from it records its
+// fingerprint, and a DS of another mesh is refused.
 #include "mesh/mesh.hpp"
 
 #include <array>
@@ -49,11 +57,14 @@ struct NopoFile {
   Mesh mesh;
   NopoText text;
   NopoLayout layout;
+  std::uint64_t fingerprint = 0;       ///< of the records but NOP0 (see above)
   std::array<std::int64_t, 27> nop2{}; ///< NDIM, NDSR, NDSD, NCOPNP, NE, ... as on file
 };
 
 /// Read and check a NOPO file. Errors (sig::Error) name the file and the record or array.
 NopoFile read_nopo_file(const std::filesystem::path& path);
+/// The same from the bytes of a file called `name` (tests, fuzzing); registers no input.
+NopoFile parse_nopo_file(const std::string& name, const std::string& bytes);
 /// The mesh of a NOPO file, checked with check_mesh.
 Mesh read_nopo(const std::filesystem::path& path);
 
@@ -61,12 +72,15 @@ struct NopoWriteOptions {
   NopoText text; ///< written as given (date blank if empty)
   bool big_endian = false;
   std::optional<std::int64_t> ndsr; ///< NOP2 word 2; default: the largest reference
+  /// Write the fingerprint after the first 8 characters of text.creator (see above).
+  bool stamp_fingerprint = false;
 };
 
 /// The bytes of the NOPO file of `mesh`.
 std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOptions& options);
 
-/// Write `mesh` atomically (temporary file + rename) with today's date.
+/// Write `mesh` atomically (temporary file + rename) with today's date and its fingerprint after
+/// `creator` (its first 8 characters): the case.nopo of a stage.
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
                 const std::string& title, const std::string& creator);
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,

@@ -5,6 +5,8 @@
 #include "mesh/mesh.hpp"
 
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace sig {
@@ -16,10 +18,14 @@ inline std::uint64_t edge_key(int a, int b) {
   return (lo << 32) | hi;
 }
 
-/// Reverse every clockwise triangle (swap its last two nodes). Returns -1, or the index of the
-/// first degenerate (zero-area) triangle, which no orientation can mend: the readers report it
-/// with its line in the file.
-int orient_counter_clockwise(Mesh& mesh);
+/// Reverse every clockwise triangle (swap its last two nodes), listing them in `flipped` if
+/// given. Returns -1, or the index of the first degenerate (zero-area) triangle, which no
+/// orientation can mend: the readers report it with its line in the file.
+int orient_counter_clockwise(Mesh& mesh, std::vector<int>* flipped = nullptr);
+
+/// orient_counter_clockwise for the reader of a text mesh file: a degenerate triangle is an
+/// InputError naming `file` and its line (`lines[t]`), the reoriented ones a warning naming them.
+void orient_triangles_of_file(Mesh& mesh, const std::string& file, const std::vector<int>& lines);
 
 /// Point every referenced edge that is a side of exactly one triangle in the direction it has in
 /// that (counter-clockwise) triangle, so the domain lies on its left; an interface edge (two
@@ -32,5 +38,14 @@ int orient_boundary_edges(Mesh& mesh);
 /// renumber, keeping the order of the others. Returns the new index of each old node (-1 =
 /// removed). Edges must only use triangle nodes (see orient_boundary_edges).
 std::vector<int> drop_unused_nodes(Mesh& mesh);
+
+/// Pairs of distinct nodes closer than 1e-10 of the mesh's size (0-based, sorted): unless the
+/// triangles share them, an open crack where the file meant one node.
+std::vector<std::pair<int, int>> coincident_nodes(const Mesh& mesh);
+
+/// A reader's warning that it changed what the file said, naming the entities (at most 10, then
+/// "..."): "FILE: reoriented 3 clockwise triangle(s) (1-based): 4, 9, 12".
+void warn_entities(const std::string& file, const std::string& what,
+                   const std::vector<long>& numbers, const std::string& action);
 
 } // namespace sig

@@ -18,11 +18,6 @@ namespace sig {
 /// replaces a phase of an earlier one.
 std::vector<std::pair<std::string, double>> gather_times(const std::vector<const Ds*>& sources);
 
-/// Throw sig::Error "<file>: array '<name>' holds NaN at dof <k>" (k 1-based) at the first
-/// non-finite value.
-void verify_finite(const std::vector<double>& values, const std::string& file,
-                   const std::string& name);
-
 /// Keys, in this order: title, method, converged (bool), failure (why the solver stopped without
 /// converging, "" otherwise), iterations, dofs, multipliers,
 /// contact_elements, contact_nodes, nodes, triangles, backend, residual_history,

@@ -63,8 +63,19 @@ public:
   double displacement_step() const override { return (w_ - base_).norm(); }
   bool nonlinear() const override { return false; }
 
+  /// A new load f and new origins of the normal variables (gap: q_n = w_n - gap) on the same
+  /// matrix, from the iterate `start` (empty: the present one): the next step of a march
+  /// (integrator/linear_contact_march.hpp). The Cholesky factor and the tail's Schur complement
+  /// are kept. sig::Error for inconsistent sizes.
+  void restart(Eigen::VectorXd f, Eigen::VectorXd gap, const Eigen::VectorXd& start = {});
+
   /// The iterate w (all n unknowns).
   const Eigen::VectorXd& displacement() const { return w_; }
+  /// Cholesky factorizations of the default step matrix so far (1 + reorders(), once factorized).
+  int factorizations() const { return factorizations_; }
+  /// Factorizations of a step's tail system: a step whose tail system repeats the last one (the
+  /// same branches) reuses its factorization.
+  int tail_factorizations() const { return tail_factorizations_; }
   /// Times the nodes were reordered (and B factorized again) to shorten the tail.
   int reorders() const { return reorders_; }
 
@@ -86,6 +97,14 @@ private:
   Eigen::VectorXd Sw_, Sw_base_, S_step_, kept_Sw_; ///< S w_ and its pieces along the step
   Eigen::VectorXd last_normal_force_;               ///< N of the last solve, per contact node
   int reorders_ = 0;
+  int factorizations_ = 0;
+  /// The last tail system A of a step, kept with its factorization for the next step with the
+  /// same A.
+  Eigen::MatrixXd tail_matrix_;
+  bool tail_coupled_ = false;
+  Eigen::LLT<Eigen::MatrixXd> tail_llt_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> tail_lu_;
+  int tail_factorizations_ = 0;
 
   void order_nodes(const std::vector<int>& nodes);
   void reorder(const std::vector<char>& contact_zone);

@@ -44,13 +44,69 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
       SIG_VERIFY(!dirichlet_[2 * node(p) + a],
                  "contact node " << node(p) + 1 << " has a Dirichlet condition");
   }
-  solver_ =
-      make_linear_solver(backend, backend == "cholmod" ? MatrixKind::spd : MatrixKind::symmetric);
+  friction_ = contacts_ > 0 && any_friction(problem.contact->law);
+  if (dynamic()) {
+    SIG_VERIFY(problem.time_step > 0, "time step k = " << problem.time_step << " must be > 0");
+    mass_ = pattern_.zero_matrix();
+    SIG_VERIFY(problem.mass->rows() == ndof && problem.mass->cols() == ndof,
+               "mass is " << problem.mass->rows() << " x " << problem.mass->cols() << " for "
+                          << ndof << " dofs");
+    const int* outer = mass_.outerIndexPtr();
+    const int* inner = mass_.innerIndexPtr();
+    for (int j = 0; j < ndof; ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(*problem.mass, j); it; ++it) {
+        const int* slot = std::lower_bound(inner + outer[j], inner + outer[j + 1], it.row());
+        SIG_VERIFY(slot != inner + outer[j + 1] && *slot == it.row(),
+                   "mass entry (" << it.row() + 1 << ", " << j + 1
+                                  << ") is off the mesh's P1 pattern");
+        mass_.valuePtr()[slot - inner] += it.value();
+      }
+  }
+  // Gonzalez's tangent and the Coulomb coupling on the wall are not symmetric: LU.
+  const bool symmetric =
+      !friction_ && !(dynamic() && problem.stress == AlgorithmicStress::gonzalez);
+  solver_ = make_linear_solver(backend, !symmetric             ? MatrixKind::general
+                                        : backend == "cholmod" ? MatrixKind::spd
+                                                               : MatrixKind::symmetric);
   J_ = std::make_unique<NewtonMatrix>(pattern_, dirichlet_, contact_nodes);
   now_.u = Eigen::VectorXd::Zero(ndof);
-  SIG_VERIFY(evaluate(now_, true), "the reference configuration has an inverted triangle");
-  base_ = now_.u;
+  slip_origin_ = now_.u;
+  if (dynamic()) {
+    start_time_step(now_.u, now_.u);
+  } else {
+    SIG_VERIFY(evaluate(now_, true), "the reference configuration has an inverted triangle");
+    base_ = now_.u;
+  }
   step_ = Eigen::VectorXd::Zero(ndof);
+}
+
+void FiniteStrainBulk::start_time_step(const Eigen::VectorXd& u_prev,
+                                       const Eigen::VectorXd& v_prev) {
+  SIG_VERIFY(dynamic(), "a time step of a static problem (no mass)");
+  SIG_VERIFY(u_prev.size() == now_.u.size() && v_prev.size() == now_.u.size(),
+             "time step: " << u_prev.size() << " displacements and " << v_prev.size()
+                           << " velocities for " << now_.u.size() << " dofs");
+  u_prev_ = u_prev;
+  v_prev_ = v_prev;
+  previous_ = previous_strain(*problem_.mesh, *problem_.materials, u_prev);
+  slip_origin_ = u_prev;
+  // The predictor u_prev + k v_prev, shortened towards u_prev (always admissible) when a fast
+  // rotation's straight-line extrapolation would invert a triangle.
+  bool admissible = false;
+  for (double theta = 1; !admissible && theta >= 1.0 / 64; theta /= 2) {
+    now_.u = u_prev + theta * problem_.time_step * v_prev;
+    admissible = evaluate(now_, true);
+  }
+  if (!admissible) {
+    now_.u = u_prev;
+    SIG_VERIFY(evaluate(now_, true), "the state at the start of the time step has an inverted "
+                                     "triangle");
+  }
+  base_ = now_.u;
+}
+
+Eigen::VectorXd FiniteStrainBulk::velocity() const {
+  return (2.0 / problem_.time_step) * (now_.u - u_prev_) - v_prev_;
 }
 
 void FiniteStrainBulk::set_load_factor(double s) {
@@ -66,36 +122,50 @@ bool FiniteStrainBulk::evaluate(State& s, bool with_tangent) {
   ++evaluations_;
   // The assembly refuses an inverted triangle or a law without admissible state there.
   try {
-    if (with_tangent)
+    if (dynamic())
+      assemble_hyperelastic_step(*problem_.mesh, *problem_.materials, pattern_, previous_,
+                                 problem_.stress, s.u, s.bulk, with_tangent);
+    else if (with_tangent)
       assemble_hyperelastic(*problem_.mesh, *problem_.materials, pattern_, s.u, s.bulk);
     else
       assemble_hyperelastic_force(*problem_.mesh, *problem_.materials, s.u, s.bulk);
   } catch (const Error&) {
     return false;
   }
+  if (dynamic()) { // the inertia of the step: (2 / k^2) M (u - u_prev - k v_prev)
+    const double k = problem_.time_step, c = 2.0 / (k * k);
+    s.bulk.internal_force.noalias() += c * (mass_ * (s.u - u_prev_ - k * v_prev_));
+    s.inertia = c * (mass_ * (s.u - u_prev_)).norm();
+    if (with_tangent) s.bulk.tangent.coeffs() += c * mass_.coeffs();
+  }
   s.has_tangent = with_tangent;
   s.penetration.resize(contacts_);
+  s.slip.resize(contacts_);
   s.normal.resize(contacts_);
   for (int p = 0; p < contacts_; ++p) {
     const Eigen::Vector2d x = problem_.mesh->nodes[node(p)] + s.u.segment<2>(2 * node(p));
     s.penetration[p] = -problem_.obstacle->signed_distance(x);
     s.normal[p] = problem_.obstacle->normal(x);
+    s.slip[p] = contact_tangent(s.normal[p])
+                    .dot(s.u.segment<2>(2 * node(p)) - slip_origin_.segment<2>(2 * node(p)));
   }
   return true;
 }
 
 double FiniteStrainBulk::equilibrium_residual(const Eigen::VectorXd& N,
-                                              const Eigen::VectorXd&) const {
+                                              const Eigen::VectorXd& T) const {
   Eigen::VectorXd r = now_.bulk.internal_force - load();
-  for (int p = 0; p < contacts_; ++p)
+  for (int p = 0; p < contacts_; ++p) {
     r.segment<2>(2 * node(p)) -= N[p] * now_.normal[p];
+    if (friction_) r.segment<2>(2 * node(p)) += T[p] * contact_tangent(now_.normal[p]);
+  }
   for (Eigen::Index i = 0; i < r.size(); ++i)
     if (dirichlet_[i]) r[i] = 0;
   return r.norm();
 }
 
 double FiniteStrainBulk::force_scale() const {
-  return std::max({load().norm(), now_.bulk.internal_force.norm(), 1e-300});
+  return std::max({load().norm(), now_.bulk.internal_force.norm(), now_.inertia, 1e-300});
 }
 
 Eigen::Matrix2d FiniteStrainBulk::curvature_block(int p, double force) const {
@@ -125,7 +195,7 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   }
 
   // Imposed increments: the Dirichlet dofs towards their targets (never contact nodes) and the
-  // imposed normal components.
+  // imposed contact components; the others carry their force laws (contact_bulk.hpp).
   std::vector<std::pair<int, double>> imposed;
   for (std::size_t k = 0; k < problem_.dirichlet_dofs.size(); ++k) {
     const int dof = problem_.dirichlet_dofs[k];
@@ -142,6 +212,24 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
       r0[normal_dof] += c.force;
     }
   }
+  // Tangential rows: T = force + stiffness dw_t + coupling N + cross dw_n. With an imposed
+  // normal, N = -(r0_n + A_n dw) is its reaction, so the row r0_t + A_t dw + T = 0 becomes
+  // (r0_t - coupling r0_n) + (A_t - coupling A_n) dw + force + ... = 0.
+  for (int p = 0; p < contacts_ && friction_; ++p) {
+    const int tangential_dof = 2 * node(p), normal_dof = tangential_dof + 1;
+    const DofCondition& c = conditions[p].tangential;
+    if (c.imposed) {
+      imposed.emplace_back(tangential_dof, c.value);
+      continue;
+    }
+    if (c.coupling != 0.0) {
+      J_->add_row(tangential_dof, normal_dof, -c.coupling);
+      r0[tangential_dof] -= c.coupling * r0[normal_dof];
+    }
+    J_->diagonal(tangential_dof) += c.stiffness;
+    J_->entry(tangential_dof, normal_dof) += c.cross;
+    r0[tangential_dof] += c.force;
+  }
   std::sort(imposed.begin(), imposed.end());
   const Eigen::VectorXd dw = J_->solve(r0, imposed, *solver_);
 
@@ -156,6 +244,13 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
     s.normal_increment[p] = dw[normal_dof];
     s.normal_force[p] = c.imposed ? -(r0[normal_dof] + J_->normal_row_times(p, dw))
                                   : c.force + c.stiffness * dw[normal_dof];
+    const DofCondition& t = conditions[p].tangential;
+    const int tangential_dof = normal_dof - 1;
+    if (!friction_) continue;
+    s.tangential_force[p] = t.imposed
+                                ? -(r0[tangential_dof] + J_->row_times(tangential_dof, dw))
+                                : t.force + t.stiffness * dw[tangential_dof] +
+                                      t.coupling * s.normal_force[p] + t.cross * dw[normal_dof];
   }
   // du = Q dw.
   step_ = dw;

@@ -113,13 +113,45 @@ double NewtonMatrix::normal_row_times(int p, const Eigen::VectorXd& dw) const {
   return frames_->normal_row_times(full_, p, dw);
 }
 
-double& NewtonMatrix::value(int row, int column) {
+int NewtonMatrix::slot(int row, int column) const {
   const int* inner = full_.innerIndexPtr();
   const int* outer = full_.outerIndexPtr();
-  const int* slot = std::lower_bound(inner + outer[column], inner + outer[column + 1], row);
-  SIG_VERIFY(slot != inner + outer[column + 1] && *slot == row,
+  const int* at = std::lower_bound(inner + outer[column], inner + outer[column + 1], row);
+  return at != inner + outer[column + 1] && *at == row ? static_cast<int>(at - inner) : -1;
+}
+
+double& NewtonMatrix::value(int row, int column) {
+  const int k = slot(row, column);
+  SIG_VERIFY(k >= 0,
              "entry (" << row + 1 << ", " << column + 1 << ") is not on the Newton pattern");
-  return full_.valuePtr()[slot - inner];
+  return full_.valuePtr()[k];
+}
+
+void NewtonMatrix::add_row(int target, int source, double factor) {
+  // The pattern is structurally symmetric: the columns of row `source` are the rows of column
+  // `source`, and a node's two rows have the same columns.
+  const int* inner = full_.innerIndexPtr();
+  const int* outer = full_.outerIndexPtr();
+  double* v = full_.valuePtr();
+  for (int k = outer[source]; k < outer[source + 1]; ++k) {
+    const int column = inner[k];
+    const int from = slot(source, column), to = slot(target, column);
+    SIG_VERIFY(from >= 0 && to >= 0, "rows " << source + 1 << " and " << target + 1
+                                             << " do not share column " << column + 1);
+    v[to] += factor * v[from];
+  }
+}
+
+double NewtonMatrix::row_times(int dof, const Eigen::VectorXd& dw) const {
+  const int* inner = full_.innerIndexPtr();
+  const int* outer = full_.outerIndexPtr();
+  const double* v = full_.valuePtr();
+  double sum = 0;
+  for (int k = outer[dof]; k < outer[dof + 1]; ++k) {
+    const int column = inner[k];
+    sum += v[slot(dof, column)] * dw[column];
+  }
+  return sum;
 }
 
 } // namespace sig

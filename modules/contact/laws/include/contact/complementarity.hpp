@@ -51,6 +51,34 @@ inline double d_truncated_normal_compliance(double q, double cn, double c3) {
   return normal_compliance(q, cn) < c3 ? d_normal_compliance(q, cn) : 0.0;
 }
 
+// --- The specific penalty of [62] (thesis (3.51), (8.32)) -------------------------------------
+// The normal compliance over a time step from the penetration a at its start to b at its end is
+// c_n p(a, b), the secant of the potential [.]_+^2 / 2,
+//     p(a, b) = ([b]_+^2 - [a]_+^2) / (2 (b - a)),   p(a, a) = [a]_+ (the limit b -> a),
+// so its work over the step, c_n p(a, b) (b - a), is exactly the change of the potential
+// (c_n / 2)([b]_+^2 - [a]_+^2) and the midpoint rule conserves E + the foundation's energy (3.53).
+// Written by cases so that no branch divides by a small b - a: both positive gives the mean
+// (a + b) / 2; one positive value s and one non-positive t give s^2 / (2 (s - t)), whose
+// denominator is at least s. p is continuous, non-decreasing in b, and C1 except at a <= 0,
+// b = 0 (where it starts from 0 with slope 0 for a < 0, 1/2 for a = 0).
+
+/// p(a, b) of (3.51): a, b the penetrations at the start and at the end of the time step.
+inline double specific_penalty(double a, double b) {
+  if (a > 0 && b > 0) return 0.5 * (a + b);
+  if (b > 0) return b * b / (2 * (b - a)); // a <= 0 < b
+  if (a > 0) return a * a / (2 * (a - b)); // b <= 0 < a
+  return 0.0;
+}
+
+/// dp/db, >= 0: the generalized Jacobian of the force at the end of the step (b <= 0 with
+/// a <= 0 gives 0).
+inline double d_specific_penalty(double a, double b) {
+  if (a > 0 && b > 0) return 0.5;
+  if (b > 0) return b * (b - 2 * a) / (2 * (b - a) * (b - a));
+  if (a > 0) return a * a / (2 * (a - b) * (a - b));
+  return 0.0;
+}
+
 // --- Friction (2D: the ball of radius s is the interval [-s, s]) ------------------------------
 
 /// \f$ \mathrm{proj}_{[-s, s]}(z) \f$, s >= 0: the tangential pressure of a node whose trial

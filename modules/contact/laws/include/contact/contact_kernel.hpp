@@ -69,9 +69,14 @@ struct KernelBranch {
 };
 
 /// The compliance pressure P(q_n) of a law (0 for signorini) and its slope, with the kinks
-/// [q_n]_+ at 0 on the compliance side, the wall q_n = g and the truncation c3 on the flat side.
+/// [q_n]_+ at 0 on the compliance side, the wall q_n = g and the truncation c3 on the flat side;
+/// a secant law's P is its specific penalty from `previous` (contact_law.hpp).
 double compliance_pressure(const ContactLaw& law, double q_n);
 double d_compliance_pressure(const ContactLaw& law, double q_n);
+/// The potential of the compliance, int_0^q_n P (clipped at the wall as P is): the energy the
+/// foundation stores, per unit length (for a secant law, of the compliance it is the secant of;
+/// 0 for signorini and for the laws in velocity, which store none).
+double compliance_energy(const ContactLaw& law, double q_n);
 
 /// The kernel at x (header comment).
 ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t);

@@ -34,11 +34,21 @@
 //                           (of=slip-rate, ch. 6). Non-convex: one convex solve is Coulomb with
 //                           the coefficient `mu` frozen per node, which the convexification loop
 //                           (solver module) sets from the previous iterate's slip
-// The source of a Coulomb-type bound (coulomb, nonmonotone), `bound`:
+//   mu1, mu2                (8.3) s = mu(q_n) N, the coefficient a function of the penetration q_n
+//                           through the asperities of depth g (the wall depth: g > 0), with
+//                           mu0 = `mu`: mu1 rises from 0 to mu0 over 0 < q_n < g (mu0 q_n / g),
+//                           mu2 falls from 2 mu0 to mu0 ((2 - q_n / g) mu0); both are 0 for
+//                           q_n <= 0 and mu0 for q_n >= g, where the asperities are crushed
+// The source of a Coulomb-type bound (coulomb, nonmonotone, mu1, mu2), `bound`:
 //   normal                  s = mu N, N the whole normal pressure: classical Coulomb (1.35)
 //   compliance              s = mu p(min(q_n, g)), the compliance (or damper) pressure only, as
 //                           (4.6) and (5.6): the wall's reaction never enters the bound, so on the
 //                           wall it is Tresca's mu p(g) (l.5767)
+// A time step of sig-march may replace a displacement compliance by its secant over the step
+// (`secant`, the specific penalty of [62], (3.51), (8.32)): N = cn p_spe(previous, q_n), with
+// p_spe of complementarity.hpp and `previous` the penetration at the start of the step, whose
+// work over the step is exactly the change of the compliance's potential cn [q_n]_+^2 / 2. The
+// strategies of the march set it per step; it is never stored in CONT.
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -64,20 +74,21 @@ enum class NormalLaw {
   damped_unilateral = 5,
   compliance_bilateral = 6
 };
-enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2, nonmonotone = 3 };
+enum class FrictionLaw { none = 0, tresca = 1, coulomb = 2, nonmonotone = 3, mu1 = 4, mu2 = 5 };
 enum class FrictionBound { normal = 0, compliance = 1 };
 enum class SlipMeasure { slip = 0, slip_rate = 1 };
 
 inline constexpr const char* normal_law_names =
     "signorini | compliance | compliance-unilateral | damped | damped-unilateral | "
     "compliance-bilateral";
-inline constexpr const char* friction_law_names = "none | tresca | coulomb | nonmonotone";
+inline constexpr const char* friction_law_names =
+    "none | tresca | coulomb | nonmonotone | mu1 | mu2";
 /// The same names as a card field's choices (Card::choice).
 inline constexpr std::initializer_list<const char*> normal_law_choices = {
     "signorini", "compliance",        "compliance-unilateral",
     "damped",    "damped-unilateral", "compliance-bilateral"};
 inline constexpr std::initializer_list<const char*> friction_law_choices = {
-    "none", "tresca", "coulomb", "nonmonotone"};
+    "none", "tresca", "coulomb", "nonmonotone", "mu1", "mu2"};
 inline constexpr std::initializer_list<const char*> friction_bound_choices = {"normal",
                                                                               "compliance"};
 inline constexpr std::initializer_list<const char*> slip_measure_choices = {"slip", "slip-rate"};
@@ -101,10 +112,12 @@ struct ContactLaw {
   NormalLaw normal = NormalLaw::signorini;
   double cn = 0; ///< compliance slope, pressure per unit penetration (> 0 for compliance laws)
   double c3 = std::numeric_limits<double>::infinity(); ///< truncation pressure (ch. 6), > 0
-  double depth = 0; ///< g >= 0: the wall at q_n = g (signorini, compliance-unilateral)
+  double depth = 0;    ///< g >= 0: the wall at q_n = g (signorini, compliance-unilateral)
+  bool secant = false; ///< compliance, compliance-unilateral (c3 unused): the specific penalty
+  double previous = 0; ///< secant: the penetration at the start of the time step
   FrictionLaw friction = FrictionLaw::none;
   /// coulomb: the friction coefficient >= 0; nonmonotone: the coefficient of the present convex
-  /// solve, frozen per node (mu(0) = a until the convexification loop sets it)
+  /// solve, frozen per node (mu(0) = a until the convexification loop sets it); mu1, mu2: mu0
   double mu = 0;
   double threshold = 0;                        ///< tresca: slip bound, a traction >= 0
   FrictionBound bound = FrictionBound::normal; ///< coulomb, nonmonotone: what mu multiplies
@@ -123,9 +136,15 @@ struct ContactLaw {
     return normal == NormalLaw::damped || normal == NormalLaw::damped_unilateral;
   }
   bool has_friction() const { return friction != FrictionLaw::none; }
-  /// The bound is a coefficient times a pressure (coulomb, nonmonotone), not a given traction.
+  /// The bound is a coefficient times a pressure (coulomb, nonmonotone, mu1, mu2), not a given
+  /// traction.
   bool has_coefficient() const {
-    return friction == FrictionLaw::coulomb || friction == FrictionLaw::nonmonotone;
+    return friction == FrictionLaw::coulomb || friction == FrictionLaw::nonmonotone ||
+           penetration_dependent();
+  }
+  /// The coefficient is a function of the penetration (mu1, mu2 of (8.3)).
+  bool penetration_dependent() const {
+    return friction == FrictionLaw::mu1 || friction == FrictionLaw::mu2;
   }
   bool operator==(const ContactLaw&) const = default;
 };
@@ -135,6 +154,12 @@ struct ContactLaw {
 double friction_coefficient(const ContactLaw& law, double r);
 /// d/dr of friction_coefficient: -alpha (a - b) exp(-alpha r) for nonmonotone, else 0.
 double d_friction_coefficient(const ContactLaw& law, double r);
+
+/// The coefficient of mu1 or mu2 (8.3) at penetration q_n, and its derivative in q_n (the kinks
+/// at q_n = 0 and g belong to the flat sides: 0 at q_n <= 0, mu0 at q_n >= g); mu for coulomb and
+/// nonmonotone (slope 0).
+double penetration_friction(const ContactLaw& law, double q_n);
+double d_penetration_friction(const ContactLaw& law, double q_n);
 
 /// Some law of `laws` is a law in velocity (ContactLaw::in_velocity).
 inline bool any_in_velocity(const std::vector<ContactLaw>& laws) {

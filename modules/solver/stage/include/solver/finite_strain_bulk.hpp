@@ -21,6 +21,7 @@
 #include "assembly/pattern.hpp"
 #include "contact/contact_elements.hpp"
 #include "contact/obstacle.hpp"
+#include "material/algorithmic_stress.hpp"
 #include "solver/contact_bulk.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/newton_matrix.hpp"
@@ -44,6 +45,11 @@ struct FiniteStrainProblem {
   Eigen::VectorXd load;                     ///< external nodal force at the final step (or empty)
   const ContactElements* contact = nullptr; ///< may be null or empty: no contact
   const Obstacle* obstacle = nullptr;       ///< required when there are contact elements
+  /// Dynamics: the mass on the mesh's dofs (its entries on the P1 pattern), the time step k and
+  /// the stress of a step. Null: a static solve.
+  const Eigen::SparseMatrix<double>* mass = nullptr;
+  double time_step = 0;
+  AlgorithmicStress stress = AlgorithmicStress::gonzalez;
 };
 
 class FiniteStrainBulk final : public ContactBulk {
@@ -56,10 +62,18 @@ public:
   /// The load factor s of the next solves (the targets of the Dirichlet dofs become s u_D).
   void set_load_factor(double s);
 
+  /// Dynamics: the next time step starts from (u_prev, v_prev) (full dofs); the iterate becomes
+  /// the predictor u_prev + k v_prev (shortened towards u_prev if it inverts a triangle) and the
+  /// slips are measured from u_prev. sig::Error without a mass, or if u_prev has an inverted
+  /// triangle.
+  void start_time_step(const Eigen::VectorXd& u_prev, const Eigen::VectorXd& v_prev);
+  /// (2 / k)(u - u_prev) - v_prev at the iterate.
+  Eigen::VectorXd velocity() const;
+
   int contacts() const override { return contacts_; }
-  bool has_tangential() const override { return false; }
+  bool has_tangential() const override { return friction_; }
   Eigen::VectorXd penetration() const override { return now_.penetration; }
-  Eigen::VectorXd slip() const override { return Eigen::VectorXd::Zero(contacts_); }
+  Eigen::VectorXd slip() const override { return now_.slip; }
   double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const override;
   double force_scale() const override;
   StepSolution solve(const std::vector<NodeConditions>& conditions,
@@ -73,6 +87,8 @@ public:
   bool settled() const override;
 
   const Eigen::VectorXd& displacement() const { return now_.u; }
+  /// The stored energy sum_T |T| t W(F) at the iterate.
+  double strain_energy() const { return now_.bulk.energy; }
   /// Hyperelastic assemblies so far (line-search trials and completed tangents).
   int evaluations() const { return evaluations_; }
 
@@ -81,12 +97,15 @@ private:
     Eigen::VectorXd u;
     HyperelasticState bulk;
     Eigen::VectorXd penetration;         ///< q_n per contact node
+    Eigen::VectorXd slip;                ///< q_t per contact node (friction)
     std::vector<Eigen::Vector2d> normal; ///< obstacle normal at the current position
+    double inertia = 0;                  ///< ||(2 / k^2) M (u - u_prev)||: dynamics' force scale
     bool has_tangent = false;            ///< bulk.tangent belongs to u
   };
 
   const FiniteStrainProblem& problem_;
   int contacts_ = 0;
+  bool friction_ = false;
   double eps_;
   SparsityPattern pattern_;
   std::vector<char> dirichlet_;
@@ -96,11 +115,21 @@ private:
   State now_, kept_;
   Eigen::VectorXd base_, step_;
   int evaluations_ = 0;
+  // Dynamics (problem_.mass): the mass on the pattern's layout, the step's start.
+  Eigen::SparseMatrix<double> mass_;
+  PreviousStrain previous_;
+  Eigen::VectorXd u_prev_, v_prev_;
+  Eigen::VectorXd slip_origin_; ///< u at which the slips are 0
+
+  bool dynamic() const { return problem_.mass != nullptr; }
 
   int node(int p) const { return problem_.contact->node[p]; }
   Eigen::VectorXd load() const;
   /// Fill s at s.u, the tangent only `with_tangent`; false outside the law's domain.
   bool evaluate(State& s, bool with_tangent);
+  /// -N dn/dx at contact node p: the obstacle's curvature (0 for a plane). The friction force's
+  /// T dt/dx is left out: the driver hands the normal forces only, and every frictional scene
+  /// has a plane obstacle.
   Eigen::Matrix2d curvature_block(int p, double force) const;
 };
 

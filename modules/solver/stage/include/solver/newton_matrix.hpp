@@ -40,6 +40,11 @@ public:
   void rotate(const std::vector<Eigen::Vector2d>& normals);
   /// The diagonal entry of a dof, to add a spring after the rotation.
   double& diagonal(int dof) { return full_.valuePtr()[diagonal_[dof]]; }
+  /// Entry (row, column), which must be on the pattern (sig::Error otherwise).
+  double& entry(int row, int column) { return value(row, column); }
+  /// Row `target` += factor x row `source`, both dofs of one node (their rows share the pattern):
+  /// a force law coupled to another component's reaction, after the rotation.
+  void add_row(int target, int source, double factor);
 
   /// Solve A dw = -r0 with dw = value on the imposed dofs (sorted by dof: the problem's
   /// Dirichlet dofs and the held normal dofs); returns the whole dw, the imposed values exact.
@@ -47,12 +52,16 @@ public:
                         const std::vector<std::pair<int, double>>& imposed, LinearSolver& solver);
   /// (A dw)[b] on the normal dof b = 2 node + 1 of contact node p: its reaction.
   double normal_row_times(int p, const Eigen::VectorXd& dw) const;
+  /// (A dw)[dof] for any dof (a reaction of an imposed component).
+  double row_times(int dof, const Eigen::VectorXd& dw) const;
 
   /// A, the rotated matrix with the method's terms, on the full pattern (for tests).
   const Eigen::SparseMatrix<double>& matrix() const { return full_; }
 
 private:
   double& value(int row, int column);
+  /// The slot of (row, column) in full_, or -1 off the pattern.
+  int slot(int row, int column) const;
 
   Eigen::SparseMatrix<double> full_;      ///< Q^T K Q + the method's terms, K's pattern
   Eigen::SparseMatrix<double> reduced_;   ///< its free rows and columns: the factorized matrix

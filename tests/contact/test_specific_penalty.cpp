@@ -1,7 +1,7 @@
 // The specific penalty kernel p(a, b) of (3.51): its limit b -> a, the secant property (its work
 // is the change of the penalty energy), monotonicity and its derivative against finite
 // differences on both sides of every kink.
-#include "integrator/specific_penalty.hpp"
+#include "contact/complementarity.hpp"
 
 #include <gtest/gtest.h>
 

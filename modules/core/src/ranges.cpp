@@ -1,0 +1,120 @@
+#include "core/ranges.hpp"
+
+#include "core/error.hpp"
+#include "text_case.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace sig {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+// Counts that size arrays: beyond this a mesh or a history no longer fits in memory, and
+// indices leave the range of int (the error then says so instead of std::bad_alloc).
+constexpr double max_count = 1e8;
+
+constexpr ValueRange positive{0, inf, true, false, nullptr};
+constexpr ValueRange non_negative{0, inf, false, false, nullptr};
+constexpr ValueRange count_from_1{1, max_count, false, false, nullptr};
+constexpr ValueRange reference{1, 2147483647, false, false, nullptr};
+constexpr ValueRange poisson{-1, 0.5, true, true,
+                             "0.5 is the incompressible limit, where Hooke's law has no D"};
+
+struct FieldRange {
+  const char* keyword;
+  const char* field;
+  ValueRange range;
+};
+
+// One line per field with a range; fields not listed take any finite number. The contact laws'
+// parameters (cn, c3, g, mu, threshold) have theirs in contact/laws (law_problem), which the
+// CONTACT and FRICTION cards and the CONT reader share.
+constexpr FieldRange table[] = {
+    {"MESH", "R", positive},
+    {"MESH", "N", {4, max_count, false, false, nullptr}},
+    {"MESH", "r_in", positive},
+    {"MESH", "r_out", positive},
+    {"MESH", "layers", {2, max_count, false, false, nullptr}},
+    {"MESH", "lx", positive},
+    {"MESH", "ly", positive},
+    {"MESH", "nx", count_from_1},
+    {"MESH", "ny", count_from_1},
+    {"MESH", "refs", reference},
+    {"MESH", "grading", non_negative},
+    {"MATERIAL", "region", reference},
+    {"MATERIAL", "E", positive},
+    {"MATERIAL", "nu", poisson},
+    {"MATERIAL", "c1", positive},
+    {"MATERIAL", "c2", non_negative},
+    {"MATERIAL", "a", non_negative},
+    {"MATERIAL", "thickness", positive},
+    {"MATERIAL", "rho", non_negative},
+    {"MEMORY", "E", positive},
+    {"MEMORY", "nu", poisson},
+    {"DIRICHLET", "ref", reference},
+    {"TRACTION", "ref", reference},
+    {"PRESSURE", "ref", reference},
+    {"BODYFORCE", "region", reference},
+    {"CONTACT", "ref", reference},
+    {"CONTACT", "radius", positive},
+    {"CONTACT", "r", positive},
+    {"FRICTION", "ref", reference},
+    {"SOLVER", "r", positive},
+    {"SOLVER", "gamma", positive},
+    {"SOLVER", "c", positive},
+    {"SOLVER", "eps", positive},
+    {"SOLVER", "maxit", count_from_1},
+    {"LOADSTEPS", "n", count_from_1},
+    {"TIME", "T", positive},
+    {"TIME", "k", positive},
+    {"TIME", "output_every", count_from_1},
+    {"INITIAL", "region", reference},
+    {"COMPARE", "R", positive},
+    {"COMPARE", "f", positive},
+};
+
+std::string number(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+} // namespace
+
+bool ValueRange::contains(double x) const {
+  return (low_open ? x > low : x >= low) && (high_open ? x < high : x <= high);
+}
+
+std::string ValueRange::text() const {
+  if (high == inf) return (low_open ? "> " : ">= ") + number(low);
+  return "in " + std::string(low_open ? "(" : "[") + number(low) + ", " + number(high) +
+         (high_open ? ")" : "]");
+}
+
+const ValueRange* field_range(const std::string& keyword, const std::string& field) {
+  const std::string key = to_upper(keyword), name = to_lower(field);
+  for (const FieldRange& f : table)
+    if (key == f.keyword && name == to_lower(f.field)) return &f.range;
+  return nullptr;
+}
+
+std::vector<std::pair<std::string, std::string>> fields_with_ranges() {
+  std::vector<std::pair<std::string, std::string>> fields;
+  for (const FieldRange& f : table)
+    fields.emplace_back(f.keyword, f.field);
+  return fields;
+}
+
+void verify_in_range(double value, const std::string& keyword, const std::string& field,
+                     const std::string& file, const std::string& array, std::size_t row) {
+  const ValueRange* range = field_range(keyword, field);
+  SIG_VERIFY(range != nullptr, "verify_in_range: " << keyword << " " << field << " has no range");
+  SIG_VERIFY(std::isfinite(value) && range->contains(value),
+             file << ": array '" << array << "', row " << row << ": " << value << " is not "
+                  << range->text() << " (the range of " << keyword << " " << field << "=)");
+}
+
+} // namespace sig

@@ -1,0 +1,130 @@
+// The condensation of a linear bulk onto its contact components (contact_condensation.hpp).
+#include "solver/contact_condensation.hpp"
+
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "solver/nodal_frames.hpp"
+#include "solver/schur.hpp"
+
+#include <algorithm>
+
+namespace sig {
+
+namespace {
+
+/// Position of `dof` in the sorted `interface`.
+int position_in(const std::vector<int>& interface, int dof) {
+  return static_cast<int>(std::lower_bound(interface.begin(), interface.end(), dof) -
+                          interface.begin());
+}
+
+} // namespace
+
+ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K,
+                                         const std::vector<std::array<int, 2>>& node_dofs,
+                                         std::vector<Eigen::Vector2d> normals, bool tangential,
+                                         const std::string& backend, bool positive_definite)
+    : K_(std::move(K)), normals_(std::move(normals)), dofs_(node_dofs) {
+  const int m = static_cast<int>(dofs_.size());
+  SIG_VERIFY(static_cast<int>(normals_.size()) == m,
+             "contact condensation: " << normals_.size() << " normals for " << m << " nodes");
+  // 1. Nodal frames, so each normal displacement and slip is one unknown; applied in place, K
+  //    keeps its pattern.
+  const Stopwatch clock;
+  std::vector<int> first_dofs(m);
+  for (int p = 0; p < m; ++p) {
+    SIG_VERIFY(dofs_[p][1] == dofs_[p][0] + 1,
+               "contact node " << p + 1 << ": its dofs are not consecutive");
+    first_dofs[p] = dofs_[p][0];
+  }
+  K_.makeCompressed();
+  frames_ = std::make_unique<FrameRotation>(K_, std::move(first_dofs));
+  frames_->rotate(K_, normals_);
+
+  // 2. The Schur complement onto the normal unknowns (and the slips with friction): one sparse
+  //    factorization of the rest, the body with Gamma3 held, positive definite even when K is
+  //    not.
+  for (int p = 0; p < m; ++p) {
+    interface_.push_back(dofs_[p][1]);
+    if (tangential) interface_.push_back(dofs_[p][0]);
+  }
+  std::sort(interface_.begin(), interface_.end());
+  SIG_VERIFY(std::adjacent_find(interface_.begin(), interface_.end()) == interface_.end(),
+             "a node appears in two contact elements");
+  for (int p = 0; p < m; ++p) {
+    normal_dof_.push_back(position_in(interface_, dofs_[p][1]));
+    if (tangential) tangential_dof_.push_back(position_in(interface_, dofs_[p][0]));
+  }
+  try {
+    schur_ = std::make_unique<SchurComplement>(K_, interface_, backend, MatrixKind::spd,
+                                               positive_definite);
+  } catch (const Error& e) {
+    // With the contact components held the rest of the body must be fixed, whatever the method.
+    SIG_VERIFY(false, "the body with its contact nodes held cannot be factorized ("
+                          << e.what() << "); a singular or indefinite matrix here means that "
+                          << kUnheldRigidMotion);
+  }
+  seconds_frames_ = clock.seconds() - schur_->seconds_factorize() - schur_->seconds_schur();
+}
+
+ContactCondensation::~ContactCondensation() = default;
+
+double ContactCondensation::seconds_factorize() const {
+  return schur_->seconds_factorize();
+}
+
+double ContactCondensation::seconds_schur() const {
+  return schur_->seconds_schur();
+}
+
+CondensedProblem ContactCondensation::problem(const Eigen::VectorXd& f) {
+  CondensedProblem problem;
+  problem.S = schur_->matrix();
+  problem.f = condense(f);
+  problem.gap = Eigen::VectorXd::Zero(contacts());
+  problem.normal_dof = normal_dof_;
+  problem.tangential_dof = tangential_dof_;
+  problem.regularization = kRelativeRegularization * problem.S.diagonal().cwiseAbs().maxCoeff();
+  return problem;
+}
+
+Eigen::VectorXd ContactCondensation::condense(const Eigen::VectorXd& f) {
+  SIG_VERIFY(f.size() == K_.rows(),
+             "contact condensation: a load of size " << f.size() << " for " << K_.rows());
+  load_ = f;
+  frames_->to_frames(load_, normals_);
+  return schur_->condense(load_);
+}
+
+Eigen::VectorXd ContactCondensation::expand(const Eigen::VectorXd& w) {
+  SIG_VERIFY(load_.size() == K_.rows(), "contact condensation: expand() before any condense()");
+  Eigen::VectorXd u = schur_->expand(load_, w);
+  frames_->from_frames(u, normals_);
+  return u;
+}
+
+Eigen::VectorXd ContactCondensation::restrict(const Eigen::VectorXd& u) const {
+  SIG_VERIFY(u.size() == K_.rows(),
+             "contact condensation: a vector of size " << u.size() << " for " << K_.rows());
+  Eigen::VectorXd framed = u;
+  frames_->to_frames(framed, normals_);
+  Eigen::VectorXd w(static_cast<Eigen::Index>(interface_.size()));
+  for (std::size_t k = 0; k < interface_.size(); ++k)
+    w[static_cast<Eigen::Index>(k)] = framed[interface_[k]];
+  return w;
+}
+
+double ContactCondensation::relative_residual(const Eigen::VectorXd& u, const Eigen::VectorXd& N,
+                                              const Eigen::VectorXd& T) const {
+  SIG_VERIFY(load_.size() == K_.rows(), "contact condensation: no load condensed yet");
+  Eigen::VectorXd framed = u;
+  frames_->to_frames(framed, normals_);
+  Eigen::VectorXd r = K_ * framed - load_;
+  for (int p = 0; p < contacts(); ++p) {
+    r[dofs_[p][1]] += N[p];
+    if (tangential()) r[dofs_[p][0]] += T[p];
+  }
+  return r.norm() / std::max(load_.norm(), 1e-300);
+}
+
+} // namespace sig

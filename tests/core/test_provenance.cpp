@@ -1,0 +1,140 @@
+// The files of a case belong together: a DS records the inputs it was built from, and inside a
+// stage a DS of the case that disagrees with another input is refused, naming both files.
+#include "core/ds.hpp"
+#include "core/error.hpp"
+#include "core/provenance.hpp"
+#include "scratch_folder.hpp"
+
+#include <gtest/gtest.h>
+
+namespace sig {
+namespace {
+
+using sig::testing::ScratchFolder;
+
+Ds small(const std::string& kind, double value) {
+  Ds ds(kind, "t", "test");
+  ds.put_scalar("value", value);
+  return ds;
+}
+
+// Opens a case on `folder` for the test, closed whatever happens.
+struct CaseScope {
+  explicit CaseScope(const std::filesystem::path& folder) { open_case(folder); }
+  ~CaseScope() { close_case(); }
+};
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Provenance, ADsRecordsItsInputsAndTheirsTransitively) {
+  ScratchFolder dir;
+  const auto mili = dir / "case.mili", tae = dir / "case.tae", b = dir / "case.b";
+  write_ds(mili, small("MILI", 1)); // outside a stage: no provenance
+  EXPECT_FALSE(read_ds(mili).has("provenance"));
+  {
+    const CaseScope scope(dir.path());
+    note_case_input("NOPO", dir / "case.nopo", 0x1234, {});
+    const Ds m = read_ds(mili, "MILI");
+    write_ds(tae, small("TAE", 2));
+  }
+  const Ds t = read_ds(tae, "TAE");
+  const auto entries = parse_provenance(t.text("provenance"), t.source);
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].kind, "NOPO");
+  EXPECT_EQ(entries[0].fingerprint, 0x1234u);
+  EXPECT_EQ(entries[1].kind, "MILI");
+  EXPECT_EQ(entries[1].fingerprint, read_ds(mili).fingerprint);
+  EXPECT_EQ(entries[1].file, mili.string());
+  {
+    const CaseScope scope(dir.path());
+    read_ds(tae, "TAE");
+    write_ds(b, small("B", 3));
+  }
+  // B was built from TAE, and through it from MILI and NOPO.
+  const auto b_entries = parse_provenance(read_ds(b).text("provenance"), b.string());
+  std::vector<std::string> kinds;
+  for (const auto& e : b_entries)
+    kinds.push_back(e.kind);
+  EXPECT_EQ(kinds, (std::vector<std::string>{"TAE", "NOPO", "MILI"}));
+}
+
+TEST(Provenance, AForeignFileIsRefusedNamingBothFiles) {
+  ScratchFolder dir;
+  const auto mili = dir / "case.mili", tae = dir / "case.tae";
+  write_ds(mili, small("MILI", 1));
+  {
+    const CaseScope scope(dir.path());
+    read_ds(mili, "MILI");
+    write_ds(tae, small("TAE", 2));
+  }
+  write_ds(mili, small("MILI", 7)); // another case's laws
+  const CaseScope scope(dir.path());
+  read_ds(tae, "TAE");
+  const std::string message = error_of([&] { read_ds(mili, "MILI"); });
+  EXPECT_NE(message.find("do not belong together"), std::string::npos) << message;
+  EXPECT_NE(message.find(tae.string() + " was built from the MILI " + mili.string()),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find(mili.string() + " is the MILI with fingerprint"), std::string::npos)
+      << message;
+}
+
+TEST(Provenance, TwoRecordsOfOneKindMustAgree) {
+  ScratchFolder dir;
+  const auto cont = dir / "case.cont", tae = dir / "case.tae";
+  {
+    const CaseScope scope(dir.path());
+    note_case_input("NOPO", dir / "case.nopo", 1, {});
+    write_ds(cont, small("CONT", 1));
+  }
+  {
+    const CaseScope scope(dir.path());
+    note_case_input("NOPO", dir / "case.nopo", 2, {}); // another mesh
+    write_ds(tae, small("TAE", 1));
+  }
+  const CaseScope scope(dir.path());
+  read_ds(cont, "CONT");
+  const std::string message = error_of([&] { read_ds(tae, "TAE"); });
+  EXPECT_NE(message.find(cont.string() + " was built from the NOPO"), std::string::npos) << message;
+  EXPECT_NE(message.find(tae.string() + " was built from the NOPO"), std::string::npos) << message;
+}
+
+// Files outside the case's folder (a reference solution) are no inputs of the case; outside a
+// stage nothing is checked.
+TEST(Provenance, OnlyTheCaseFolderCounts) {
+  ScratchFolder dir;
+  std::filesystem::create_directories(dir / "case");
+  const auto mine = dir / "case" / "case.b", reference = dir / "case.b";
+  write_ds(mine, small("B", 1));
+  write_ds(reference, small("B", 2));
+  const CaseScope scope(dir / "case");
+  read_ds(mine, "B");
+  EXPECT_NO_THROW(read_ds(reference, "B"));
+  close_case();
+  EXPECT_NO_THROW(read_ds(mine, "B"));
+}
+
+TEST(Provenance, TextRoundTripsAndBadLinesAreRefused) {
+  const std::vector<ProvenanceEntry> entries = {
+      {"NOPO", 0xfedcba9876543210ull, "out/a b/case.nopo"}, {"TAE", 7, "case.tae"}};
+  const auto back = parse_provenance(provenance_text(entries), "x");
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[0].fingerprint, entries[0].fingerprint);
+  EXPECT_EQ(back[0].file, "out/a b/case.nopo");
+  EXPECT_EQ(back[1].kind, "TAE");
+  for (const char* bad : {"NOPO 12 case.nopo", "TOOLONG 0000000000000007 f",
+                          "NOPO 000000000000000g f", "NOPO 0000000000000007", ""})
+    EXPECT_NE(error_of([&] { parse_provenance(std::string(bad) + "\n", "x.ds"); }).find("x.ds"),
+              std::string::npos)
+        << bad;
+}
+
+} // namespace
+} // namespace sig
