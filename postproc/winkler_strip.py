@@ -19,6 +19,12 @@ numpy only (CI has no scipy). Prints JSON: the peak bottom and top deflections, 
 pressure cn d, its integral (= F sqrt(pi / psi)) and where the springs go into tension.
 
     winkler_strip.py --psi 50 [--E 100 --nu 0.3 --l 0.1 --cn 10 --F 10] [--profile FILE.csv]
+
+With --compare DECK RUN_DIR it compares a finished static run of a rail deck (MESH
+generator=rectangle, CONTACT law=compliance-bilateral, MOVINGLOAD at x0 on a node; the data are
+read from the deck) with the strip: the deflections of the bottom and top nodes at x0 (contact.csv
+and case.b's u, the rectangle's nodes numbered row by row from (0, 0)) and the spring pressure
+there; prints JSON and exits 1 if one differs by more than --tolerance (relative, default 0.01).
 """
 import argparse
 import json
@@ -76,6 +82,53 @@ def deflection(k, w, amplitude, x):
     return -np.cos(np.outer(x, k)) @ (w * amplitude)
 
 
+def compare(deck_path, run_dir):
+    """The FE run against the strip: {quantity: {"ours", "strip", "relative"}}."""
+    from pathlib import Path
+
+    from sigreport import ReportError, read_csv_columns, read_deck, read_ds
+
+    deck = read_deck(deck_path)
+    if deck.value("MESH", "generator") != "rectangle":
+        raise ReportError(f"{deck_path}: the comparison needs MESH generator=rectangle")
+    if deck.value("CONTACT", "law") != "compliance-bilateral":
+        raise ReportError(f"{deck_path}: the strip's springs are CONTACT law=compliance-bilateral")
+    nx, ny = int(deck.number("MESH", "nx")), int(deck.number("MESH", "ny"))
+    lx = deck.number("MESH", "lx")
+    E, nu = deck.number("MATERIAL", "E"), deck.number("MATERIAL", "nu")
+    cn = deck.number("CONTACT", "cn")
+    F, psi = deck.number("MOVINGLOAD", "F"), deck.number("MOVINGLOAD", "psi")
+    x0 = deck.number("MOVINGLOAD", "x0", 0.0)
+    column = round(x0 / lx * nx)
+    if abs(column * lx / nx - x0) > 1e-9 * lx:
+        raise ReportError(f"{deck_path}: the load's centre x0 = {x0} is on no node column")
+    run_dir = Path(run_dir)
+    rows = read_csv_columns(run_dir / "contact.csv", text_columns=("status", "normal_status",
+                                                                   "friction_status"))
+    at = [i for i, x in enumerate(rows["x1"]) if abs(x - x0) <= 1e-9 * lx]
+    if len(at) != 1:
+        raise ReportError(f"{run_dir}/contact.csv: no single contact node at x1 = {x0}")
+    i = at[0]
+    if int(rows["node"][i]) != column + 1:
+        raise ReportError(f"{run_dir}/contact.csv: node {rows['node'][i]} at x1 = {x0}, not the "
+                          f"rectangle's node {column + 1}: its numbering is not row by row")
+    u = read_ds(run_dir / "case.b", arrays=["u"])["u"]
+    top = ny * (nx + 1) + column
+    k, w, amp = solve(E, nu, deck.number("MESH", "ly"), cn, F, psi)
+    strip = {
+        "bottom_deflection": float(deflection(k, w, amp[:, 0], [0.0])[0]),
+        "top_deflection": float(deflection(k, w, amp[:, 1], [0.0])[0]),
+    }
+    strip["peak_pressure"] = cn * strip["bottom_deflection"]
+    ours = {
+        "bottom_deflection": -rows["u2"][i],
+        "top_deflection": -u[2 * top + 1],
+        "peak_pressure": rows["pressure"][i],
+    }
+    return {q: {"ours": ours[q], "strip": strip[q], "relative": ours[q] / strip[q] - 1}
+            for q in strip}
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--E", type=float, default=100.0)
@@ -83,9 +136,18 @@ def main(argv):
     parser.add_argument("--l", type=float, default=0.1)
     parser.add_argument("--cn", type=float, default=10.0)
     parser.add_argument("--F", type=float, default=10.0)
-    parser.add_argument("--psi", type=float, required=True)
+    parser.add_argument("--psi", type=float)
     parser.add_argument("--profile", help="write x, bottom and top deflection to this CSV")
+    parser.add_argument("--compare", nargs=2, metavar=("DECK", "RUN_DIR"))
+    parser.add_argument("--tolerance", type=float, default=0.01)
     a = parser.parse_args(argv)
+    if a.compare:
+        result = compare(*a.compare)
+        json.dump(result, sys.stdout, indent=1)
+        print()
+        return 0 if all(abs(r["relative"]) <= a.tolerance for r in result.values()) else 1
+    if a.psi is None:
+        parser.error("give --psi (or --compare DECK RUN_DIR)")
     k, w, amp = solve(a.E, a.nu, a.l, a.cn, a.F, a.psi)
     x = np.linspace(0.0, 2.0, 4001)
     bottom = deflection(k, w, amp[:, 0], x)
@@ -109,7 +171,8 @@ def main(argv):
                 out.write("%.6f,%.10g,%.10g\n" % row)
     json.dump(result, sys.stdout, indent=1)
     print()
+    return 0
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    sys.exit(main(sys.argv[1:]))

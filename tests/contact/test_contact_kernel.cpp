@@ -550,3 +550,27 @@ TEST(ContactKernel, NonmonotoneCoefficientAndItsSlope) {
 
 } // namespace
 } // namespace sig
+
+namespace sig {
+namespace {
+
+// The compliance's energy is the integral of its pressure: its central difference is P, on both
+// sides of the obstacle surface and of the truncation, up to the wall.
+TEST(ContactKernel, ComplianceEnergyIntegratesThePressure) {
+  ContactLaw truncated = law_of(NormalLaw::compliance, FrictionLaw::none);
+  truncated.c3 = 1.5; // the knee at q_n = 0.2
+  const ContactLaw unilateral = law_of(NormalLaw::compliance_unilateral, FrictionLaw::none);
+  const ContactLaw bilateral = law_of(NormalLaw::compliance_bilateral, FrictionLaw::none);
+  for (const ContactLaw& law : {truncated, unilateral, bilateral})
+    for (double q : {-0.3, -0.01, 0.05, 0.19, 0.21, 0.35, 0.39}) {
+      const double h = 1e-6;
+      const double slope =
+          (compliance_energy(law, q + h) - compliance_energy(law, q - h)) / (2 * h);
+      EXPECT_NEAR(slope, compliance_pressure(law, q), 1e-8) << describe(law) << " q_n " << q;
+    }
+  EXPECT_EQ(compliance_energy(law_of(NormalLaw::signorini, FrictionLaw::none), 0.3), 0.0);
+  EXPECT_EQ(compliance_energy(truncated, -0.1), 0.0);
+}
+
+} // namespace
+} // namespace sig

@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <string>
@@ -58,6 +59,13 @@ std::vector<std::string> remove_stale_temporaries(const std::filesystem::path& f
   return removed;
 }
 
+void stop_point_for_tests(const std::filesystem::path& target) {
+  const char* name = std::getenv("SIG_STOP_WRITING");
+  if (name == nullptr || target.filename() != name) return;
+  std::fflush(nullptr); // the half-written temporary is in the file when the test looks
+  ::raise(SIGSTOP);
+}
+
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
   temporary_ = temporary_path(target_);
   file_ = std::fopen(temporary_.c_str(), "wb");
@@ -77,6 +85,10 @@ void AtomicFile::write(const void* data, std::size_t size) {
   if (size == 0) return;
   SIG_VERIFY(std::fwrite(data, 1, size, file_) == size, target_.string()
                                                             << ": write failed: " << reason());
+  if (!stopped_) {
+    stopped_ = true;
+    stop_point_for_tests(target_);
+  }
 }
 
 void AtomicFile::commit() {

@@ -21,6 +21,7 @@ public:
 private:
   std::filesystem::path target_, temporary_;
   std::FILE* file_ = nullptr;
+  bool stopped_ = false; ///< stop_point_for_tests passed (once, at the first write)
 };
 
 } // namespace sig

@@ -219,8 +219,9 @@ const std::vector<CardSpec>& card_schema() {
       {"CONVEXIFICATION",
        false,
        "the convexification loop (4.110)-(4.112) of FRICTION law=nonmonotone in a static solve "
-       "(sig-solve): mu frozen per node at the previous iterate's slip, each convex problem "
-       "solved by the SOLVER method",
+       "(sig-solve), or in every step of a march (sig-march scheme=backward-euler, of=slip-rate): "
+       "mu frozen per node at the previous iterate's slip (rate), each convex problem solved by "
+       "the SOLVER method",
        {
            {"eps",
             "outer tolerance of the thesis's test (l.7601): ||u(m+1) - u(m)||_V <= eps "
@@ -231,7 +232,9 @@ const std::vector<CardSpec>& card_schema() {
             "theta in (0, 1]: mu(m+1) = theta mu(slip(m+1)) + (1 - theta) mu(m); 1: none, as "
             "the thesis",
             "1"},
-           {"start", "rest (u(0) = 0, mu = a) | slipped (mu = b, as after a long slip)", "rest"},
+           {"start", "rest (u(0) = 0, mu = a) | slipped (mu = b, as after a long slip) | "
+                     "previous (a march: mu of the previous step's slip rate, ALGORITHMS.md 3.3); "
+                     "default rest in a static solve, previous in a march"},
        }},
       {"LOADSTEPS",
        false,
@@ -243,18 +246,21 @@ const std::vector<CardSpec>& card_schema() {
       {"TIME",
        false,
        "time marching (stage sig-march): elastodynamics (with a CONTACT card, by its strategy), "
-       "or the quasistatic viscoelastic march in velocity of ch. 5",
+       "the quasistatic viscoelastic march in velocity of ch. 5, or the viscoelastodynamic one "
+       "of ch. 6",
        {
            {"scheme", "midpoint | newmark: implicit midpoint rule (3.39) or Newmark's average "
                       "acceleration; both conserve the discrete energy (8.33) without load | "
                       "quasistatic: backward Euler in velocity (5.62)-(5.64), no mass, contact "
-                      "laws in velocity (law=damped, damped-unilateral)"},
+                      "laws in velocity (law=damped, damped-unilateral) | backward-euler: backward "
+                      "Euler in velocity with mass (6.63)-(6.66), (M/k + C + k K) w = ..., "
+                      "contact laws of the displacement, friction of the slip rate"},
            {"T", "final time, > 0"},
            {"k", "time step, > 0; T / k must be a whole number of steps"},
            {"output_every", "keep the state every this many steps, >= 1", "1"},
            {"mass",
             "consistent | lumped | emm (Equivalent Mass Matrix (3.54), needs a CONTACT "
-            "card); not for scheme=quasistatic",
+            "card, midpoint and newmark only); not for scheme=quasistatic",
             "consistent"},
            {"stress",
             "hyperelastic bodies: gonzalez (Gonzalez's algorithmic stress (3.41), exact energy "

@@ -28,6 +28,7 @@
 #include "integrator/contact_card.hpp"
 #include "integrator/contact_march.hpp"
 #include "integrator/contact_strategy.hpp"
+#include "integrator/dynamic_stage.hpp"
 #include "integrator/finite_strain_march.hpp"
 #include "integrator/history_io.hpp"
 #include "integrator/march.hpp"
@@ -53,7 +54,11 @@ int main(int argc, char** argv) {
                  "the stress of TIME stress= (Gonzalez's by default), each step a Newton method "
                  "with the strategy's phases and friction; or (scheme=quasistatic) the quasistatic "
                  "Kelvin-Voigt march in velocity of ch. 5 with contact laws in velocity, its step "
-                 "matrix factorized and condensed once (case.hist, steps.csv). A step whose Newton "
+                 "matrix factorized and condensed once (case.hist, steps.csv); or "
+                 "(scheme=backward-euler) the viscoelastodynamic march in velocity of ch. 6, "
+                 "(M/k + C + k K) factorized and condensed once, contact laws of the displacement "
+                 "and friction of the slip rate, with the convexification loop in every step for "
+                 "FRICTION law=nonmonotone. A step whose Newton "
                  "fails stops the "
                  "march: the files hold the steps done, a warning is printed and the stage exits "
                  "0. A progress line shows the step, time steps per second and the time left.",
@@ -61,15 +66,17 @@ int main(int argc, char** argv) {
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
                 "OUTDIR/case.mili (sig-material: the laws, hyperelastic or not)",
                 "OUTDIR/case.cont (sig-contact; with a CONTACT card)"},
-      .writes = {"OUTDIR/case.hist (kept states, energies, contact pressures; quasistatic: "
-                 "per step the contact velocities, forces and statuses)",
-                 "OUTDIR/energy.csv (one row per step: energies, contact work and its split into "
-                 "interface, friction and wall work, penetration, active nodes, Newton "
-                 "iterations, the contact forces' sums)",
-                 "OUTDIR/steps.csv (quasistatic: one row per step: Newton iterations, status "
-                 "counts, largest velocity, normal displacement and pressure)"},
+      .writes =
+          {"OUTDIR/case.hist (kept states, energies, contact pressures; quasistatic: "
+           "per step the contact velocities, forces and statuses)",
+           "OUTDIR/energy.csv (one row per step: energies, contact work and its split into "
+           "interface, friction and wall work, penetration, active nodes, Newton "
+           "iterations, the contact forces' sums)",
+           "OUTDIR/steps.csv (quasistatic, backward-euler: one row per step: Newton iterations, "
+           "status counts, largest velocity, normal displacement and pressure; "
+           "backward-euler: the energies and the convexification counts)"},
       .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "CONVEXIFICATION",
-                "LOADSTEPS", "MATERIAL"}};
+                "LOADSTEPS", "MATERIAL", "MEMORY"}};
   return sig::run_stage("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
@@ -80,6 +87,10 @@ int main(int argc, char** argv) {
         sig::time_parameters(datafile.require("TIME"), contact != nullptr);
     if (time.scheme == "quasistatic") {
       sig::run_quasistatic_march(args, datafile, time);
+      return;
+    }
+    if (time.scheme == "backward-euler") {
+      sig::run_backward_euler_march(args, datafile, time);
       return;
     }
     const sig::Card* solver_card = datafile.find("SOLVER");

@@ -11,7 +11,7 @@ namespace sig {
 
 TimeParameters time_parameters(const Card& time, bool has_contact) {
   TimeParameters p;
-  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic"});
+  p.scheme = time.choice("scheme", {"midpoint", "newmark", "quasistatic", "backward-euler"});
   p.final_time = time.real("T"); // T, k > 0, output_every >= 1: core/ranges.hpp
   p.k = time.real("k");
   // A step count that is not whole would make the last step end before or after T.

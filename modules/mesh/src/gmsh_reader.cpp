@@ -346,13 +346,7 @@ Mesh read_mesh(TokenReader& in) {
                      "no triangles (gmsh saves only the elements of physical groups when there "
                      "are any: is the surface in a Physical Surface?)");
 
-  std::vector<int> flipped;
-  if (const int flat = orient_counter_clockwise(mesh, &flipped); flat >= 0)
-    throw InputError(in.file(), triangle_lines[flat], "",
-                     "triangle " + std::to_string(flat + 1) +
-                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
-  warn_entities(in.file(), "triangles were clockwise (1-based, in file order)",
-                {flipped.begin(), flipped.end()}, "reoriented");
+  orient_triangles_of_file(mesh, in.file(), triangle_lines);
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "line element with physical tag " + std::to_string(mesh.edges[bad].ref) +
@@ -361,7 +355,7 @@ Mesh read_mesh(TokenReader& in) {
   std::vector<long> dropped;
   for (std::size_t i = 0; i < renumber.size(); ++i)
     if (renumber[i] < 0) dropped.push_back(content.node_tags[i]);
-  warn_entities(in.file(), "nodes are used by no triangle (node tags)", dropped, "dropped");
+  warn_entities(in.file(), "node(s) that no triangle uses (node tags)", dropped, "dropped");
   check_mesh(mesh, in.file());
   return mesh;
 }

@@ -92,8 +92,8 @@ Mesh mesh_from_file(const Card& card, const std::filesystem::path& folder) {
     if (card.choice("coincident", {"error", "allow"}) == "error")
       card.fail("file", what.str() + "; merge the nodes, or give coincident=allow if the crack "
                                      "is meant");
-    warn_entities(path.string(), "nodes (1-based, in pairs) are coincident", numbers,
-                  "kept apart (coincident=allow): an open crack");
+    warn_entities(path.string(), "coincident node(s) (1-based, in pairs)", numbers,
+                  "kept apart (coincident=allow: an open crack)");
   }
   return mesh;
 }

@@ -164,8 +164,7 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
              file << ": NOP2 announces " << nop2[word::NTRI] << " triangles and "
                   << nop2[word::NQUA] << " quadrilaterals, NOP5 holds " << triangles << " and "
                   << quadrilaterals);
-  warn_entities(file, "NOP5 elements were clockwise (element numbers)", build.flipped,
-                "reoriented");
+  warn_entities(file, "clockwise NOP5 element(s) (element numbers)", build.flipped, "reoriented");
   Mesh mesh = std::move(build.mesh);
   SIG_VERIFY(orient_boundary_edges(mesh) < 0,
              file << ": NOP5: a referenced segment is not a side of any triangle");

@@ -121,6 +121,7 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
     throw Error(where + ": VTK could not write the file (error code " +
                 std::to_string(writer->GetErrorCode()) + ")");
   }
+  stop_point_for_tests(path);
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   SIG_VERIFY(!ec, where << ": cannot rename " << tmp.string() << ": " << ec.message());

@@ -77,10 +77,10 @@ ConvexificationResult convexify(ContactBulk& bulk, const ContactSetting& setting
     return measures.norm ? measures.norm(v) : v.norm();
   };
 
-  // mu(0): a at rest, b as if slipped far; the other laws keep theirs.
+  // mu(0): a at rest, b as if slipped far, or as given; the other laws keep theirs.
   ContactSetting frozen = setting;
   for (ContactLaw& law : frozen.law)
-    if (law.friction == FrictionLaw::nonmonotone)
+    if (law.friction == FrictionLaw::nonmonotone && options.start != ConvexificationStart::given)
       law.mu = options.start == ConvexificationStart::rest ? friction_coefficient(law, 0.0) : law.b;
 
   ConvexificationResult result;

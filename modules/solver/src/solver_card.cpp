@@ -5,7 +5,7 @@
 
 namespace sig {
 
-SolverCard read_solver_card(const Datafile& datafile) {
+SolverCard read_solver_card(const Datafile& datafile, bool march) {
   const bool has_contact = datafile.find("CONTACT") != nullptr;
   const Card* card = datafile.find("SOLVER");
   Card defaults; // no SOLVER card: every field takes the schema's default
@@ -21,6 +21,10 @@ SolverCard read_solver_card(const Datafile& datafile) {
                 "the datafile has a CONTACT card: choose alm, penalty, pdas or projection");
   if (p.method != "linear" && !has_contact)
     solver.fail("method", "method " + p.method + " needs a CONTACT card");
+  // Without a CONTACT card no stage reads FRICTION: refuse it rather than ignore it.
+  if (const Card* friction = datafile.find("FRICTION"); friction != nullptr && !has_contact)
+    friction->fail("ref", "friction needs a CONTACT card on the same reference (this deck has "
+                          "none, so no contact stage runs)");
   p.r = solver.real("r");
   p.gamma = solver.real("gamma");
   p.c = solver.real("c");
@@ -41,9 +45,15 @@ SolverCard read_solver_card(const Datafile& datafile) {
     if (o.max_iterations < 1) loop->fail("maxit", "must be at least 1");
     o.relaxation = loop->real("relaxation", o.relaxation);
     if (!(o.relaxation > 0 && o.relaxation <= 1)) loop->fail("relaxation", "must be in (0, 1]");
-    o.start = loop->choice("start", {"rest", "slipped"}, "rest") == "rest"
-                  ? ConvexificationStart::rest
-                  : ConvexificationStart::slipped;
+    // A march starts each step's loop from the previous step's slip rate (ALGORITHMS.md 3.3).
+    const std::string start =
+        loop->choice("start", {"rest", "slipped", "previous"}, march ? "previous" : "rest");
+    if (start == "previous" && !march)
+      loop->fail("start", "previous is the slip rate of a march's previous time step: a static "
+                          "solve has none (rest or slipped)");
+    o.start = start == "rest"      ? ConvexificationStart::rest
+              : start == "slipped" ? ConvexificationStart::slipped
+                                   : ConvexificationStart::given;
   }
   if (const Card* steps = datafile.find("LOADSTEPS"))
     result.load_steps = static_cast<int>(steps->integer("n"));

@@ -135,4 +135,10 @@ std::filesystem::path temporary_path(const std::filesystem::path& target);
 /// their names. Stages call it when they start (parse_stage_args).
 std::vector<std::string> remove_stale_temporaries(const std::filesystem::path& folder);
 
+/// For the test suite: when $SIG_STOP_WRITING is the file name of `target`, the process stops
+/// itself (SIGSTOP) here, with the temporary of `target` half written, so that a test can kill it
+/// at a point known to be mid-write (tests/pipeline/killed_stage.sh). Writers call it once the
+/// temporary holds data but before it is renamed.
+void stop_point_for_tests(const std::filesystem::path& target);
+
 } // namespace sig

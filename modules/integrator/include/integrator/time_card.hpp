@@ -6,6 +6,8 @@
 //                                      material/algorithmic_stress.hpp; default gonzalez)
 //   TIME scheme=quasistatic T= k= [output_every=1]   (ch. 5: no inertia, a march in velocity,
 //                                                      integrator/kelvin_voigt_scheme.hpp)
+//   TIME scheme=backward-euler T= k= [output_every=1] [mass=consistent|lumped]   (ch. 6: with
+//                           inertia, in velocity, integrator/backward_euler_scheme.hpp)
 //   INITIAL [u=ux,uy] [v=vx,vy] [region=...]   (repeatable; sets only the fields it gives)
 //
 // Every check names the file, the line and the field (sig::InputError), so that a bad deck is

@@ -14,7 +14,10 @@
 // towards the obstacle and the tangential one), displacement_n (sum of k velocity_n: the normal
 // displacement since t = 0), force_n, force_t (nodal forces), normal_status, friction_status
 // (contact/contact_status.hpp codes: free 0, RNI 1, CUV 2; none 0, S= 1, S+ 2, S- 3); and
-// pressure {outputs, p} (force_n / weight at the kept steps, as the dynamic HIST).
+// pressure {outputs, p} (force_n / weight at the kept steps, as the dynamic HIST). A scheme's own
+// per-step values (VelocityHistoryInfo::step_columns: the energies of the dynamic march, the
+// convexification counts) follow as arrays of one value per step 0 .. the last, and as the last
+// columns of steps.csv.
 #include "integrator/linear_contact_march.hpp"
 
 #include <Eigen/Core>
@@ -38,6 +41,12 @@ struct VelocityHistoryInfo {
   int dense_factorizations = 0;
   std::vector<int> contact_nodes; ///< 0-based mesh nodes, empty without contact
   Eigen::VectorXd weight;         ///< nodal weights of the contact nodes
+  /// Extra per-step arrays: a name and one value per step 0 .. the last step done or failed.
+  struct StepColumn {
+    std::string name;
+    std::vector<double> values;
+  };
+  std::vector<StepColumn> step_columns;
 };
 
 /// The header line of steps.csv.

@@ -23,6 +23,10 @@ inline std::uint64_t edge_key(int a, int b) {
 /// orientation can mend: the readers report it with its line in the file.
 int orient_counter_clockwise(Mesh& mesh, std::vector<int>* flipped = nullptr);
 
+/// orient_counter_clockwise for the reader of a text mesh file: a degenerate triangle is an
+/// InputError naming `file` and its line (`lines[t]`), the reoriented ones a warning naming them.
+void orient_triangles_of_file(Mesh& mesh, const std::string& file, const std::vector<int>& lines);
+
 /// Point every referenced edge that is a side of exactly one triangle in the direction it has in
 /// that (counter-clockwise) triangle, so the domain lies on its left; an interface edge (two
 /// triangles) keeps its direction. A repeated edge (same node pair) is kept once, the first
@@ -40,7 +44,7 @@ std::vector<int> drop_unused_nodes(Mesh& mesh);
 std::vector<std::pair<int, int>> coincident_nodes(const Mesh& mesh);
 
 /// A reader's warning that it changed what the file said, naming the entities (at most 10, then
-/// "..."): "FILE: 3 triangles were clockwise (1-based: 4, 9, 12): reoriented".
+/// "..."): "FILE: reoriented 3 clockwise triangle(s) (1-based): 4, 9, 12".
 void warn_entities(const std::string& file, const std::string& what,
                    const std::vector<long>& numbers, const std::string& action);
 

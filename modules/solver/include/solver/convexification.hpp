@@ -34,9 +34,10 @@
 
 namespace sig {
 
-/// Where the loop starts: mu(0) = a, the body at rest (u(0) = 0, ALGORITHMS.md 1.3, default), or
-/// mu = b, as if every node had slipped far.
-enum class ConvexificationStart { rest, slipped };
+/// Where the loop starts: mu(0) = a, the body at rest (u(0) = 0, ALGORITHMS.md 1.3, default),
+/// mu = b, as if every node had slipped far, or the coefficients the setting holds (a march in
+/// time: mu of the previous step's slip rate, ALGORITHMS.md 3.3).
+enum class ConvexificationStart { rest, slipped, given };
 
 struct ConvexificationOptions {
   double eps = 1e-5;        ///< outer tolerance of l.7601

@@ -1,0 +1,82 @@
+#pragma once
+// The dynamic backward Euler in velocity of ch. 6, (6.63)-(6.66) (ALGORITHMS.md 3.2), on the
+// linear-bulk march (integrator/linear_contact_march.hpp). The unknown of step n is the velocity
+// w_n of the free dofs; with M the mass, C the viscosity (Kelvin-Voigt's, 0 for a Hooke body)
+// and K the stiffness,
+//
+//   S   = M / k + C + k K                                             (constant)
+//   b_n = f(t_n) - K u_{n-1} + (M / k) w_{n-1}
+//   u_n = u_{n-1} + k w_n                                             (6.66)
+//
+// from u_0, w_0 = u_1 (INITIAL u=, v=; (6.65)). f(t) = f + change(t) holds the moving and ramped
+// loads of the TAE (assembly/time_loads.hpp).
+//
+// Contact laws in the displacement on the march in velocity. A node's penetration at step n is
+// u_n,n - d = k (w_n,n - o_n) with o_n = (d - u_{n-1},n) / k, u_n,n = -n . u the normal
+// displacement towards the obstacle and d the initial gap: so a law p(q) of the penetration is the
+// law p(k q') of q' = w_n,n - o_n, i.e. the same law with cn k in place of cn and a wall depth
+// g / k (velocity_setting), and o_n the march's normal origin (normal_origin). Its tangential
+// variable is the slip rate w_t, the variable of FRICTION of=slip-rate (ch. 6, (6.6)); the forces
+// stay forces. The methods' parameters are stiffnesses per unit displacement as in a static
+// solve (SOLVER r, gamma; c a compliance): per unit velocity they are r k, gamma k and c / k
+// (velocity_parameters), so that one SOLVER card means the same whatever k.
+//
+// Energy. Without load, viscosity and contact, E_n = 1/2 w_n.M w_n + 1/2 u_n.K u_n obeys
+//   E_n - E_{n-1} = -1/2 (w_n - w_{n-1}).M (w_n - w_{n-1}) - 1/2 (u_n - u_{n-1}).K (u_n - u_{n-1})
+//                   - k w_n.C w_n <= 0,
+// and a compliance adds its (convex) potential to E: backward Euler never gains energy
+// (ALGORITHMS.md 3.6 check 3); friction only takes more.
+#include "integrator/linear_contact_march.hpp"
+
+#include "assembly/dirichlet.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace sig {
+
+struct LinearSystem;
+
+class DynamicBackwardEuler final : public VelocityScheme {
+public:
+  /// The stiffness and loads of `reduced`, the viscosity V of `system` (empty: none) and the
+  /// full-size `mass` on the free dofs; k > 0; u0 and w0 on the free dofs (empty: 0); `gap` the
+  /// initial gap d of each contact node (CONT order; empty without contact). sig::Error if the
+  /// system has memory terms (ch. 6 has none) or for inconsistent sizes.
+  DynamicBackwardEuler(const LinearSystem& system, ReducedSystem reduced,
+                       const Eigen::SparseMatrix<double>& mass, double k, Eigen::VectorXd u0 = {},
+                       Eigen::VectorXd w0 = {}, Eigen::VectorXd gap = {});
+
+  std::string name() const override { return "backward-euler"; }
+  double time_step() const override { return k_; }
+  const Eigen::SparseMatrix<double>& step_matrix() const override { return S_; }
+  Eigen::VectorXd right_side(int n) const override;
+  void accept(int n, const Eigen::VectorXd& w) override;
+  const Eigen::VectorXd& displacement() const override { return u_; }
+  /// o_n = (d - u_{n-1},n) / k per contact node (header).
+  Eigen::VectorXd normal_origin(int n, const VelocityContact& contact) const override;
+
+  /// The laws of `setting` (of the displacement) as laws of w_n: cn k, g / k (header).
+  ContactSetting velocity_setting(ContactSetting setting) const;
+  /// The method's parameters per unit velocity: r k, gamma k, c / k (header).
+  ContactSolverParameters velocity_parameters(ContactSolverParameters parameters) const;
+
+  /// w after the last accepted step (w_0 before the first).
+  const Eigen::VectorXd& velocity() const { return w_; }
+  /// 1/2 w.M w and 1/2 u.K u at the last accepted step.
+  double kinetic_energy() const;
+  double elastic_energy() const;
+
+  const ReducedSystem& reduced() const { return reduced_; }
+  const Eigen::SparseMatrix<double>& mass() const { return M_; }
+
+private:
+  ReducedSystem reduced_; ///< K = reduced_.K, the loads
+  Eigen::SparseMatrix<double> M_;
+  double k_;
+  Eigen::SparseMatrix<double> S_;
+  Eigen::VectorXd u_, w_;
+  Eigen::VectorXd gap_;
+};
+
+} // namespace sig

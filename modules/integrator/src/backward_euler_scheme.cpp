@@ -1,0 +1,86 @@
+#include "integrator/backward_euler_scheme.hpp"
+
+#include "assembly/system.hpp"
+#include "core/error.hpp"
+#include "integrator/energy.hpp"
+
+#include <cmath>
+
+namespace sig {
+
+DynamicBackwardEuler::DynamicBackwardEuler(const LinearSystem& system, ReducedSystem reduced,
+                                           const Eigen::SparseMatrix<double>& mass, double k,
+                                           Eigen::VectorXd u0, Eigen::VectorXd w0,
+                                           Eigen::VectorXd gap)
+    : reduced_(std::move(reduced)), k_(k), u_(std::move(u0)), w_(std::move(w0)),
+      gap_(std::move(gap)) {
+  SIG_VERIFY(k_ > 0 && std::isfinite(k_), "backward Euler: time step k = " << k_);
+  SIG_VERIFY(system.memory.empty(),
+             "backward Euler: the dynamic march of ch. 6 has no memory term (MEMORY cards are "
+             "for the quasistatic march of ch. 5)");
+  const int n = reduced_.num_free();
+  if (u_.size() == 0) u_ = Eigen::VectorXd::Zero(n);
+  if (w_.size() == 0) w_ = Eigen::VectorXd::Zero(n);
+  SIG_VERIFY(u_.size() == n && w_.size() == n, "backward Euler: u0 of size "
+                                                   << u_.size() << " and w0 of size " << w_.size()
+                                                   << " for " << n << " free dofs");
+  M_ = reduced_.restrict_matrix(mass);
+  S_ = (1.0 / k_) * M_ + k_ * reduced_.K;
+  if (system.V.size() > 0) S_ += reduced_.restrict_matrix(system.V);
+}
+
+Eigen::VectorXd DynamicBackwardEuler::right_side(int n) const {
+  Eigen::VectorXd b = reduced_.load_at(n * k_);
+  b.noalias() -= reduced_.K * u_;
+  b.noalias() += (1.0 / k_) * (M_ * w_);
+  return b;
+}
+
+void DynamicBackwardEuler::accept(int, const Eigen::VectorXd& w) {
+  SIG_VERIFY(w.size() == u_.size(),
+             "backward Euler: a velocity of size " << w.size() << " for " << u_.size());
+  u_ += k_ * w;
+  w_ = w;
+}
+
+Eigen::VectorXd DynamicBackwardEuler::normal_origin(int, const VelocityContact& contact) const {
+  SIG_VERIFY(gap_.size() == contact.size(), "backward Euler: " << gap_.size() << " gaps for "
+                                                               << contact.size()
+                                                               << " contact nodes");
+  Eigen::VectorXd origin(contact.size());
+  for (int p = 0; p < contact.size(); ++p) {
+    const Eigen::Vector2d u(u_[contact.dofs[p][0]], u_[contact.dofs[p][1]]);
+    origin[p] = (gap_[p] + contact.normal[p].dot(u)) / k_; // (d - u_n) / k, u_n = -n . u
+  }
+  return origin;
+}
+
+ContactSetting DynamicBackwardEuler::velocity_setting(ContactSetting setting) const {
+  for (ContactLaw& law : setting.law) {
+    SIG_VERIFY(!law.in_velocity(),
+               "backward Euler: law=" << to_string(law.normal)
+                                      << " is a law in velocity; the dynamic march takes laws of "
+                                         "the displacement (compliance, ...)");
+    law.cn *= k_;
+    law.depth /= k_;
+  }
+  return setting;
+}
+
+ContactSolverParameters
+DynamicBackwardEuler::velocity_parameters(ContactSolverParameters parameters) const {
+  parameters.r *= k_;
+  parameters.gamma *= k_;
+  parameters.c /= k_;
+  return parameters;
+}
+
+double DynamicBackwardEuler::kinetic_energy() const {
+  return sig::kinetic_energy(M_, w_);
+}
+
+double DynamicBackwardEuler::elastic_energy() const {
+  return sig::elastic_energy(reduced_.K, u_);
+}
+
+} // namespace sig

@@ -1,0 +1,241 @@
+#include "integrator/dynamic_stage.hpp"
+
+#include "assembly/dirichlet.hpp"
+#include "assembly/initial.hpp"
+#include "assembly/system.hpp"
+#include "contact/contact_elements.hpp"
+#include "contact/contact_kernel.hpp"
+#include "core/datafile.hpp"
+#include "core/ds.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/stage.hpp"
+#include "integrator/backward_euler_scheme.hpp"
+#include "integrator/velocity_history_io.hpp"
+#include "material/mili.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/nopo.hpp"
+#include "solver/convexification.hpp"
+#include "solver/solver_card.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+namespace sig {
+
+namespace {
+
+// The cards a backward-Euler deck must not have, each refused on its line and field.
+void refuse_other_models(const Datafile& datafile, const TimeParameters& time) {
+  const Card& time_card = datafile.require("TIME");
+  if (time.mass == MassChoice::emm)
+    time_card.fail("mass", "mass=emm belongs to the midpoint strategies' Signorini contact; the "
+                           "backward-Euler march takes mass=consistent or lumped");
+  if (const Card* contact = datafile.find("CONTACT")) {
+    for (const char* dynamic : {"strategy", "r"})
+      if (contact->has(dynamic))
+        contact->fail(dynamic, "is a field of the midpoint strategies; the backward-Euler march "
+                               "takes its contact law from law= and its method from SOLVER");
+    const std::string law = contact->choice("law", normal_law_choices);
+    if (ContactLaw{normal_law_named(law)}.in_velocity())
+      contact->fail("law", "law=" + law +
+                               " is a law of the velocity (the quasistatic march of ch. 5); the "
+                               "dynamic march takes a law of the displacement: compliance, "
+                               "compliance-unilateral, signorini");
+  }
+  if (const Card* friction = datafile.find("FRICTION"))
+    if (friction->choice("law", friction_law_choices) == "nonmonotone" &&
+        friction->choice("of", slip_measure_choices) != "slip-rate")
+      friction->fail("of", "the backward-Euler march's tangential variable is the slip rate "
+                           "w_t: give of=slip-rate (ch. 6, (6.6))");
+  for (const Card* memory : datafile.all("MEMORY"))
+    memory->fail("", "a memory term belongs to the quasistatic march of ch. 5 (TIME "
+                     "scheme=quasistatic); the dynamic march of ch. 6 has none");
+}
+
+/// Per step 0 .. the last, the values the HIST and steps.csv add (VelocityHistoryInfo): the
+/// energies after each step, the convexification's counts of each step (step 0: none).
+struct StepRecords {
+  std::vector<double> kinetic, elastic, compliance, total;
+  std::vector<double> outer{0}, outer_converged{1}, cycle{0};
+};
+
+} // namespace
+
+void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
+                              const TimeParameters& time) {
+  // 1. Cards: what the march does not model, then SOLVER and CONVEXIFICATION.
+  refuse_other_models(datafile, time);
+  SolverCard solver = read_solver_card(datafile, /*march=*/true);
+
+  // 2. Mesh, laws, the assembled system (K, M, V, loads in time), the initial state.
+  const Mesh mesh = read_nopo(args.ds_path("nopo"));
+  for (const SubdomainMaterial& m : read_mili(args.ds_path("mili")).entries)
+    if (m.hyperelastic)
+      datafile.all("MATERIAL")
+          .front()
+          ->fail("law", "a hyperelastic law is large deformation; the backward-Euler march is "
+                        "small strain (law=hooke or kelvin-voigt)");
+  const LinearSystem system = read_tae(args.ds_path("tae"));
+  if (system.M.nonZeros() == 0) {
+    const std::string why = "every MATERIAL has density 0: the dynamic march needs a mass, give "
+                            "the MATERIAL cards rho > 0 (1e-6 GPa s^2/m^2 is 1000 kg/m^3 in GPa "
+                            "units)";
+    const auto materials = datafile.all("MATERIAL");
+    if (!materials.empty()) materials.front()->fail("rho", why);
+    throw InputError(datafile.path, 0, "rho", why);
+  }
+  ReducedSystem reduced = reduce(system);
+  const InitialFields initial = initial_fields(datafile, mesh);
+  Eigen::VectorXd u0 = reduced.restrict(initial.u), w0 = reduced.restrict(initial.v);
+
+  // 3. The contact boundary, its laws turned into laws of the velocity; the step matrix
+  //    factorized and condensed once by the march.
+  std::optional<ContactElements> elements;
+  std::optional<VelocityContact> contact;
+  Eigen::VectorXd gap;
+  if (datafile.find("CONTACT") != nullptr) {
+    elements = read_cont(args.ds_path("cont"));
+    contact = velocity_contact(*elements, reduced);
+    gap = elements->gap;
+  }
+  DynamicBackwardEuler scheme(system, std::move(reduced), mass_matrix(system, time.mass, mesh),
+                              time.k, std::move(u0), std::move(w0), gap);
+  if (contact) contact->setting = scheme.velocity_setting(contact->setting);
+  solver.parameters = scheme.velocity_parameters(solver.parameters);
+
+  // 4. The step solver: the one Newton driver, or the convexification loop around it.
+  StepRecords records;
+  StepSolver step_solver;
+  std::unique_ptr<ContactMethod> method;
+  if (contact && needs_convexification(contact->setting.law)) {
+    method = make_contact_method(solver.parameters);
+    const ContactNewtonOptions inner = newton_options(solver.parameters, contact->setting.law);
+    const ConvexificationOptions options = solver.convexification;
+    step_solver = [&, inner, options](ContactBulk& bulk, const ContactSetting& setting,
+                                      ContactIterate& iterate) {
+      // mu(0) of the previous step's slip rate: the bulk restarts from its velocity.
+      ContactSetting start = setting;
+      if (options.start == ConvexificationStart::given) {
+        const Eigen::VectorXd rate = bulk.slip().cwiseAbs();
+        for (int p = 0; p < start.size(); ++p)
+          start.law[p].mu = friction_coefficient(start.law[p], rate[p]);
+      }
+      const int n = static_cast<int>(records.outer.size()); // this step: one record per step before
+      const Eigen::VectorXd origin = scheme.normal_origin(n, *contact);
+      ConvexificationMeasures measures;
+      measures.displacement = [&origin](const ContactBulk& b) {
+        Eigen::VectorXd v(2 * origin.size());
+        v << b.penetration() + origin, b.slip();
+        return v;
+      };
+      ConvexificationResult r = convexify(bulk, start, *method, inner, options, measures, iterate);
+      records.outer.push_back(r.outer_iterations());
+      records.outer_converged.push_back(r.converged ? 1 : 0);
+      records.cycle.push_back(r.cycle);
+      ContactNewtonResult result = std::move(r.last);
+      result.converged = r.converged;
+      result.failure = r.failure;
+      result.history = std::move(r.inner_history);
+      return result;
+    };
+  }
+  LinearContactMarch march(scheme, contact ? &*contact : nullptr, solver.parameters, solver.backend,
+                           step_solver);
+
+  // 5. March: the energies after each step, and a progress line.
+  const auto record_energy = [&] {
+    double stored = 0;
+    if (contact) {
+      const Eigen::VectorXd& u = scheme.displacement();
+      for (int p = 0; p < contact->size(); ++p) {
+        const Eigen::Vector2d up(u[contact->dofs[p][0]], u[contact->dofs[p][1]]);
+        stored += elements->weight[p] *
+                  compliance_energy(elements->law[p], -contact->normal[p].dot(up) - gap[p]);
+      }
+    }
+    records.kinetic.push_back(scheme.kinetic_energy());
+    records.elastic.push_back(scheme.elastic_energy());
+    records.compliance.push_back(stored);
+    records.total.push_back(records.kinetic.back() + records.elastic.back() + stored);
+  };
+  record_energy();
+  const bool has_contact = contact.has_value();
+  const std::string label =
+      "backward-euler" + (has_contact ? " + " + solver.parameters.method : "");
+  Progress progress("sig-march " + label, time.steps, "time steps");
+  char detail[128] = "";
+  int iterations = 0, most = 0;
+  const auto observer = [&](const VelocityStep& s) {
+    record_energy();
+    iterations += s.contact.iterations();
+    most = std::max(most, s.contact.iterations());
+    std::snprintf(
+        detail, sizeof detail, "t = %.6g  E = %.6g  Newton %d%s", s.time, records.total.back(),
+        s.contact.iterations(),
+        records.outer.size() > 1
+            ? ("  outer " + std::to_string(static_cast<int>(records.outer.back()))).c_str()
+            : "");
+    progress.update(s.step, detail);
+  };
+  const VelocityHistory history =
+      march_in_velocity(march, scheme, time.steps, time.output_every, observer);
+  if (history.converged) {
+    progress.finish(detail);
+  } else {
+    progress.finish(std::string(detail) + "  STOPPED at step " +
+                    std::to_string(history.steps.back().step));
+    log_warning("sig-march stopped: " + history.failure);
+  }
+
+  // 6. case.hist and steps.csv (both atomic), and a summary line. A failed step has no energy
+  //    (its state was not accepted): it repeats the last one.
+  VelocityHistoryInfo info;
+  info.scheme = time.scheme;
+  info.backend = solver.backend;
+  info.method = has_contact ? solver.parameters.method : "linear";
+  info.k = time.k;
+  info.T = time.final_time;
+  info.steps = time.steps;
+  info.output_every = time.output_every;
+  info.seconds_factorize = march.seconds_factorize();
+  info.dense_factorizations = march.dense_factorizations();
+  if (elements) {
+    info.contact_nodes = elements->node;
+    info.weight = elements->weight;
+  }
+  const std::size_t rows = history.steps.size() + 1;
+  for (auto* column : {&records.kinetic, &records.elastic, &records.compliance, &records.total})
+    column->resize(rows, column->back());
+  info.step_columns = {{"kinetic", records.kinetic},
+                       {"elastic", records.elastic},
+                       {"compliance_energy", records.compliance},
+                       {"total", records.total}};
+  if (records.outer.size() > 1) {
+    info.step_columns.push_back({"outer_iterations", records.outer});
+    info.step_columns.push_back({"outer_converged", records.outer_converged});
+    info.step_columns.push_back({"status_cycle", records.cycle});
+  }
+  write_velocity_hist(args.ds_path("hist"), history, scheme.reduced(), info, datafile.title());
+  const auto csv_path = args.outdir / "steps.csv";
+  write_file_atomically(csv_path, velocity_steps_csv(history, info));
+  double outer_total = 0, outer_most = 0;
+  for (double n : records.outer) {
+    outer_total += n;
+    outer_most = std::max(outer_most, n);
+  }
+  std::printf("sig-march: %s (%s, mass %s), %d free dofs, %d contact nodes, %zu/%d steps of k = "
+              "%g, factorizations: %d sparse + %d dense, Newton iterations %d (at most %d a "
+              "step), convexification %.0f (at most %.0f a step), E0 = %.9g, E = %.9g, "
+              "factorize %.3f s, march %.3f s%s\n",
+              label.c_str(), solver.backend.c_str(), to_string(time.mass).c_str(),
+              scheme.reduced().num_free(), contact ? contact->size() : 0, history.steps.size(),
+              time.steps, time.k, march.sparse_factorizations(), march.dense_factorizations(),
+              iterations, most, outer_total, outer_most, records.total.front(),
+              records.total.back(), march.seconds_factorize(), history.seconds,
+              history.converged ? "" : " (STOPPED: a step failed)");
+  std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
+}
+
+} // namespace sig

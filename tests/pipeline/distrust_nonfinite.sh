@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Requirement (issue 16): NaN and inf never leave a stage with exit 0. A DS holding one (its CRC
+# valid: written so, or edited) is refused by the stage that reads it, naming the file, the array
+# and the value; a result that overflows on its way out (TRACTION f=0,-1e300: inf stresses) is
+# not written and the stage exits 1 naming the file and the field. No file of the case changes.
+set -euo pipefail
+name=distrust_nonfinite
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+source tests/pipeline/lib/distrust.sh
+
+# A static case: a NaN load in case.tae, a NaN displacement in case.b.
+static_deck "$work/block.dat"
+chain "$work/block.dat" "$work/block"
+$ds_edit "$work/block/case.tae" f --index 7 nan
+expect_refusal "NaN load in case.tae" solve "$work/block.dat" "$work/block" \
+  "block/case.tae: array 'f': value 8 of" "is NaN"
+drivers/chain.sh "$work/block.dat" -o "$work/block2" > /dev/null 2>&1
+$ds_edit "$work/block2/case.b" u --index 3 inf
+expect_refusal "inf displacement in case.b" post "$work/block.dat" "$work/block2" \
+  "block2/case.b: array 'u': value 4 of" "is inf"
+
+# A dynamic case: a NaN stiffness in case.tae used to give 'E = nan' and exit 0.
+dynamic_deck "$work/disc.dat"
+chain "$work/disc.dat" "$work/disc"
+$ds_edit "$work/disc/case.tae" K_val --index 0 nan
+expect_refusal "NaN stiffness in case.tae" march "$work/disc.dat" "$work/disc" \
+  "disc/case.tae: array 'K_val': value 1 of" "is NaN"
+chain "$work/disc.dat" "$work/disc3"
+$ds_edit "$work/disc3/case.hist" v --index 5 -inf
+expect_refusal "-inf velocity in case.hist" post "$work/disc.dat" "$work/disc3" \
+  "disc3/case.hist: array 'v': value 6 of" "is -inf"
+
+# A load whose stresses overflow: every stage but sig-post writes finite numbers; sig-post
+# refuses to write the .vtu.
+sed -e 's|f=0,-0.01|f=0,-1e300|' "$work/block.dat" > "$work/huge.dat"
+for stage in mesh material assemble solve; do
+  "$bin/sig-$stage" "$work/huge.dat" -o "$work/huge" > /dev/null 2>&1 || fail "sig-$stage failed on the huge load"
+done
+expect_refusal "TRACTION f=0,-1e300" post "$work/huge.dat" "$work/huge" \
+  "huge/huge_0000.vtu: field 'von_mises'" "is inf" "loads"
+[ ! -e "$work/huge/huge.pvd" ] || fail "a .pvd was written for inf stresses"
+finish
