@@ -89,12 +89,12 @@ void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
   const bool has_contact = c.contact.has_value();
   const std::optional<ContactElements>& elements = c.elements;
   const std::optional<VelocityContact>& contact = c.contact;
-  // The step matrix factorized and condensed here, once.
+  // 1. The scheme and the march: the step matrix factorized and condensed here, once.
   QuasistaticKelvinVoigt scheme(c.system, std::move(c.reduced), time.k, c.u0);
   LinearContactMarch march(scheme, contact ? &*contact : nullptr, solver.parameters,
                            solver.backend);
 
-  // 4. March, with a progress line.
+  // 2. March, with a progress line.
   const std::string label = "quasistatic" + (has_contact ? " + " + solver.parameters.method : "");
   Progress progress("sig-march " + label, time.steps, "time steps");
   char detail[96] = "";
@@ -115,7 +115,7 @@ void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
     log_warning("sig-march stopped: " + history.failure);
   }
 
-  // 5. case.hist and steps.csv (both atomic), and a summary line.
+  // 3. case.hist and steps.csv (both atomic), and a summary line.
   VelocityHistoryInfo info;
   info.scheme = time.scheme;
   info.backend = solver.backend;
