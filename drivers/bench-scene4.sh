@@ -35,27 +35,7 @@ EOF
 }
 
 invocation="drivers/bench-scene4.sh${*:+ $*}"
-out=out/bench-scene4
-repeat=5
-while [ $# -gt 0 ]; do
-  case $1 in
-    --repeat | -o)
-      [ $# -ge 2 ] || die "$1 needs a value"
-      [ "$1" = -o ] && out=$2 || repeat=$2
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    *)
-      usage >&2
-      die "unknown argument '$1'"
-      ;;
-  esac
-  shift
-done
-[[ $repeat =~ ^[0-9]+$ ]] && [ "$repeat" -ge 1 ] || die "--repeat must be a positive integer, got '$repeat'"
+parse_repeat_out out/bench-scene4 5 "$@"
 template=$root/datafiles/scene4/ball.dat
 [ -r "$template" ] || die "cannot read $template"
 require_stages mesh material contact assemble solve post

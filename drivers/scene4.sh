@@ -113,15 +113,6 @@ base() {
   progress_step "mesh $1"
 }
 
-# cards DECK KEYWORD...: the deck's lines of these cards (to tell which DS a variant changes).
-cards() {
-  local deck=$1
-  shift
-  local pattern
-  pattern=$(IFS='|'; echo "$*")
-  grep -iE "^[[:space:]]*($pattern)([[:space:]]|$)" "$deck" || true
-}
-
 # run NAME BASE_DECK_DIR EDIT...: the variant of BASE_DECK_DIR's deck with the edits in
 # OUTDIR/NAME: the DS files of the base where the variant keeps their cards, sig-contact and
 # sig-assemble where it changes them, then sig-solve and sig-post.
@@ -135,25 +126,19 @@ run() {
   mkdir -p "$dir"
   deck_variant "$base_deck" "$deck" "$@"
   link_ds "$base_dir" "$dir" nopo mili
-  if cmp -s <(cards "$deck" CONTACT FRICTION) <(cards "$base_deck" CONTACT FRICTION); then
+  if cmp -s <(deck_cards "$deck" CONTACT FRICTION) <(deck_cards "$base_deck" CONTACT FRICTION); then
     link_ds "$base_dir" "$dir" cont
   else
     run_stage contact "$deck" "$dir" || { failed+=("$dir"); progress_step "$name"; return 0; }
   fi
-  if cmp -s <(cards "$deck" DIRICHLET TRACTION PRESSURE BODYFORCE) \
-    <(cards "$base_deck" DIRICHLET TRACTION PRESSURE BODYFORCE); then
+  if cmp -s <(deck_cards "$deck" DIRICHLET TRACTION PRESSURE BODYFORCE) \
+    <(deck_cards "$base_deck" DIRICHLET TRACTION PRESSURE BODYFORCE); then
     link_ds "$base_dir" "$dir" tae
   else
     run_stage assemble "$deck" "$dir" || { failed+=("$dir"); progress_step "$name"; return 0; }
   fi
   run_stage solve "$deck" "$dir" && run_stage post "$deck" "$dir" || failed+=("$dir")
   progress_step "$name"
-}
-
-# error RUN REFERENCE: RUN/error.json, sig-error's ||u - u_ref||_V of run against reference.
-error() {
-  "$bin/sig-error" --json "$out/$1" "$out/$2" >"$out/$1/error.json" ||
-    { failed+=("$out/$1 (sig-error)"); rm -f "$out/$1/error.json"; }
 }
 
 # The runs, counted for the progress lines.
@@ -226,7 +211,7 @@ for rho in 20 10 2 0.01; do
   run "fig46/rho$rho" "$G" --add-card "BODYFORCE f=0,-$rho" \
     --set "TRACTION.f=-$("$python" -c "print(f'{4 + $rho:g}')"),0" \
     --set "CONTACT.cn=$("$python" -c "print(f'{10 + $rho:g}')")"
-  error "fig46/rho$rho" fig42/G
+  error_json "fig46/rho$rho" fig42/G
 done
 
 # Fig 4.7: nested squares against the finest.
@@ -239,7 +224,7 @@ for n in "${squares[@]}" "$square_reference"; do
   run "fig47/n$n" "$dir"
 done
 for n in "${squares[@]}"; do
-  error "fig47/n$n" "fig47/n$square_reference"
+  error_json "fig47/n$n" "fig47/n$square_reference"
 done
 
 # The stability map of the loop: alpha x (a - b) x mesh; Nv or cycling runs again relaxed.
@@ -288,7 +273,7 @@ for m in "${meshes[@]}"; do
     [ $method != penalty ] || extra=(--set SOLVER.search=yes)
     run "$name" "$out/mesh_$m/base" --drop SOLVER.gamma --set "SOLVER.method=$method" \
       --set "SOLVER.$(parameter_of "$method")=$value" --set OUTPUT.vtk=no "${extra[@]}"
-    error "$name" "fig42/$reference"
+    error_json "$name" "fig42/$reference"
   done
 done
 echo "scene4.sh: all runs done in $((SECONDS - start)) s"

@@ -92,34 +92,26 @@ base() {
   progress_step "mesh $name"
 }
 
-# cards DECK KEYWORD...: the deck's lines of these cards (to tell which DS a variant changes).
-cards() {
-  local deck=$1
-  shift
-  local pattern
-  pattern=$(IFS='|'; echo "$*")
-  grep -iE "^[[:space:]]*($pattern)([[:space:]]|$)" "$deck" | sed 's/#.*//' || true
-}
-
 # run NAME TEMPLATE MESH EDIT...: the variant of TEMPLATE on mesh MESH (its MESH and TIME cards:
-# h = k) with the edits in OUTDIR/NAME: the DS files of the mesh's base where the variant keeps their cards, sig-contact
-# and sig-assemble where it changes them, then sig-march, and sig-post when it writes VTK.
+# h = k) with the edits in OUTDIR/NAME: the DS files of the mesh's base where the variant keeps
+# their cards, sig-contact and sig-assemble where it changes them, then sig-march, and sig-post
+# when it writes VTK.
 run() {
   local name=$1 deck_template=$2 base_dir=$out/mesh_$3/base
   shift 3
   local dir=$out/$name deck=$out/$name/strip.dat base_deck=$base_dir/strip.dat
   rm -rf "$dir"
   mkdir -p "$dir"
-  deck_variant "$deck_template" "$deck" --replace-card MESH "$(cards "$base_deck" MESH)" \
-    --replace-card TIME "$(cards "$base_deck" TIME)" "$@"
+  deck_variant "$deck_template" "$deck" --replace-card MESH "$(deck_cards "$base_deck" MESH)" \
+    --replace-card TIME "$(deck_cards "$base_deck" TIME)" "$@"
   link_ds "$base_dir" "$dir" nopo mili
-  if cmp -s <(cards "$deck" CONTACT FRICTION) <(cards "$base_deck" CONTACT FRICTION); then
+  if cmp -s <(deck_cards "$deck" CONTACT FRICTION) <(deck_cards "$base_deck" CONTACT FRICTION); then
     link_ds "$base_dir" "$dir" cont
   else
     run_stage contact "$deck" "$dir" || { failed+=("$dir"); progress_step "$name"; return 0; }
   fi
-  if cmp -s <(cards "$deck" DIRICHLET TRACTION PRESSURE BODYFORCE) \
-    <(cards "$base_deck" DIRICHLET TRACTION PRESSURE BODYFORCE); then
+  if cmp -s <(deck_cards "$deck" DIRICHLET TRACTION PRESSURE BODYFORCE) \
+    <(deck_cards "$base_deck" DIRICHLET TRACTION PRESSURE BODYFORCE); then
     link_ds "$base_dir" "$dir" tae
   else
     run_stage assemble "$deck" "$dir" || { failed+=("$dir"); progress_step "$name"; return 0; }
@@ -132,12 +124,6 @@ run() {
     failed+=("$dir")
   fi
   progress_step "$name"
-}
-
-# error RUN REFERENCE: RUN/error.json, sig-error's ||u - u_ref||_V of run against reference.
-error() {
-  "$bin/sig-error" --json "$out/$1" "$out/$2" >"$out/$1/error.json" ||
-    { failed+=("$out/$1 (sig-error)"); rm -f "$out/$1/error.json"; }
 }
 
 # The two loads' templates, by label.
@@ -213,7 +199,7 @@ for L in P R; do
     mu=$("$python" -c "print(0.2 + $rho)")
     run "fig511/$L/rho$rho" "$deck" n16 --set "FRICTION.mu=$mu" --add-card "BODYFORCE f=$rho,$rho" \
       --add-card "TRACTION ref=2 f=$rho,$rho" "${novtk[@]}"
-    error "fig511/$L/rho$rho" "fig511/$L/rho0"
+    error_json "fig511/$L/rho$rho" "fig511/$L/rho0"
   done
 done
 
@@ -222,7 +208,7 @@ for n in "$reference" "${nested[@]}"; do
   run "fig512/n$n" "$template" "n$n" "${novtk[@]}"
 done
 for n in "${nested[@]}"; do
-  error "fig512/n$n" "fig512/n$reference"
+  error_json "fig512/n$n" "fig512/n$reference"
 done
 # The time error alone: h = 1/64, k = 1/16 and 1/64 against k = 1/256.
 for k in 256 16 64; do
@@ -230,7 +216,7 @@ for k in 256 16 64; do
     --set "TIME.output_every=$((k / 4))" "${novtk[@]}"
 done
 for k in 16 64; do
-  error "fig512/time/k$k" "fig512/time/k256"
+  error_json "fig512/time/k$k" "fig512/time/k256"
 done
 # The same meshes without contact or time: the clamped elastic strip under the load of t = 1.
 for n in "$reference" "${nested[@]}"; do
@@ -247,7 +233,7 @@ for n in "$reference" "${nested[@]}"; do
   progress_step "fig512/elastic/n$n"
 done
 for n in "${nested[@]}"; do
-  error "fig512/elastic/n$n" "fig512/elastic/n$reference"
+  error_json "fig512/elastic/n$n" "fig512/elastic/n$reference"
 done
 
 # Speed against accuracy: the other contact methods on the nested meshes (pdas: fig512).
@@ -258,7 +244,7 @@ for n in "${speed_meshes[@]}"; do
     name=speed/${method}_$value/n$n
     run "$name" "$template" "n$n" --drop SOLVER.gamma --set "SOLVER.method=$method" \
       --set "SOLVER.$(parameter_of "$method")=$value" "${novtk[@]}"
-    error "$name" "fig512/n$reference"
+    error_json "$name" "fig512/n$reference"
   done
 done
 

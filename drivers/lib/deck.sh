@@ -25,3 +25,13 @@ deck_value() {
 deck_has() {
   PYTHONPATH=$sigreport_path "${python:-/usr/bin/python3}" -m sigreport has "$@"
 }
+
+# deck_cards DECK KEYWORD...: the deck's lines of these cards, comments removed (to tell which DS
+# files a variant changes against its base).
+deck_cards() {
+  local deck=$1
+  shift
+  local pattern
+  pattern=$(IFS='|'; echo "$*")
+  grep -iE "^[[:space:]]*($pattern)([[:space:]]|$)" "$deck" | sed 's/#.*//' || true
+}

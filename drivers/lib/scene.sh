@@ -55,6 +55,34 @@ parse_quick_out() {
   done
 }
 
+# parse_repeat_out DEFAULT_OUTDIR DEFAULT_REPEAT "$@": a benchmark driver's options --repeat K
+# and -o OUTDIR, and -h, --help (the driver's usage); sets repeat (a positive integer) and out.
+parse_repeat_out() {
+  out=$1
+  repeat=$2
+  shift 2
+  while [ $# -gt 0 ]; do
+    case $1 in
+      --repeat | -o)
+        [ $# -ge 2 ] || die "$1 needs a value"
+        [ "$1" = -o ] && out=$2 || repeat=$2
+        shift
+        ;;
+      -h | --help)
+        usage
+        exit 0
+        ;;
+      *)
+        usage >&2
+        die "unknown argument '$1'"
+        ;;
+    esac
+    shift
+  done
+  [[ $repeat =~ ^[0-9]+$ ]] && [ "$repeat" -ge 1 ] ||
+    die "--repeat must be a positive integer, got '$repeat'"
+}
+
 # record_seconds START: append the wall seconds of the runs since START ($SECONDS then) to
 # command.txt, the "seconds" of the scene index entry (out/<scene>/scene.json).
 record_seconds() {

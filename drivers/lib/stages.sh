@@ -40,3 +40,10 @@ link_ds() {
     ln -s "$from/case.$ds" "$dir/case.$ds"
   done
 }
+
+# error_json RUN REFERENCE: $out/RUN/error.json, sig-error's ||u - u_ref||_V of the run against
+# the reference (folders under $out); a failure goes to the caller's array `failed`.
+error_json() {
+  "$bin/sig-error" --json "$out/$1" "$out/$2" >"$out/$1/error.json" ||
+    { failed+=("$out/$1 (sig-error)"); rm -f "$out/$1/error.json"; }
+}

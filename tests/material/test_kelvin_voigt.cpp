@@ -6,6 +6,7 @@
 #include "material/memory.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
+#include "two_subdomains.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,17 +18,8 @@
 namespace sig {
 namespace {
 
-Mesh two_subdomains() {
-  Mesh mesh;
-  mesh.nodes = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh.subdomain = {1, 3};
-  mesh.vertex_ref.assign(4, 0);
-  return mesh;
-}
-
 MaterialTable table_of(const std::string& deck) {
-  return material_table_from_cards(Datafile::parse(deck, "kv.dat"), two_subdomains());
+  return material_table_from_cards(Datafile::parse(deck, "kv.dat"), test::two_subdomains());
 }
 
 // The deck must fail on `line` and `field` (lower case) with `detail` in the message.

@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
+#include "two_subdomains.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,16 +16,6 @@
 
 namespace sig {
 namespace {
-
-// Two triangles of sub-domains 1 and 3: enough for the table, which only looks at sub-domains.
-Mesh two_subdomains() {
-  Mesh mesh;
-  mesh.nodes = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh.subdomain = {1, 3};
-  mesh.vertex_ref.assign(4, 0);
-  return mesh;
-}
 
 const Card& first_card(const Datafile& d) {
   return d.cards().front();
@@ -87,7 +78,7 @@ TEST(MaterialCard, RejectsOutOfRangeParameters) {
 }
 
 TEST(MaterialTable, OneLawPerSubdomain) {
-  const Mesh mesh = two_subdomains();
+  const Mesh mesh = test::two_subdomains();
   const Datafile d = Datafile::parse("MATERIAL region=3 E=2 nu=0.1\n"
                                      "MATERIAL region=1 E=1 nu=0.2 rho=5\n",
                                      "m.dat");
@@ -102,7 +93,7 @@ TEST(MaterialTable, OneLawPerSubdomain) {
 
 TEST(MaterialTable, CardWithoutRegionCoversEverySubdomain) {
   const Datafile d = Datafile::parse("MATERIAL E=4 nu=0.25\n", "m.dat");
-  const MaterialTable table = material_table_from_cards(d, two_subdomains());
+  const MaterialTable table = material_table_from_cards(d, test::two_subdomains());
   ASSERT_EQ(table.entries.size(), 2u);
   EXPECT_EQ(table.of(1).hooke.E, 4.0);
   EXPECT_EQ(table.of(3).hooke.E, 4.0);
@@ -110,7 +101,7 @@ TEST(MaterialTable, CardWithoutRegionCoversEverySubdomain) {
 }
 
 TEST(MaterialTable, MissingDuplicateOrUnknownSubdomainIsAnInputError) {
-  const Mesh mesh = two_subdomains();
+  const Mesh mesh = test::two_subdomains();
   const Datafile missing = Datafile::parse("MATERIAL region=1 E=1 nu=0.2\n", "m.dat");
   const InputError e1 = input_error([&] { material_table_from_cards(missing, mesh); });
   EXPECT_EQ(e1.line(), 1);

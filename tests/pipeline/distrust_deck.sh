@@ -76,12 +76,12 @@ python3 -c "import json,sys; t = json.loads(open(sys.argv[1], 'rb').read().decod
   "$work/latin/summary.json" || fail "summary.json of a Latin-1 TITLE is not valid UTF-8 JSON"
 echo "ok ($name): a Latin-1 TITLE gives valid UTF-8 JSON, with a warning"
 
-# SOLVER gamma= in a TIME deck is not used: sig-march says so.
+# SOLVER c= (projection's parameter) in a TIME deck is not used: sig-march says so.
 checks=$((checks + 1))
 dynamic_deck "$work/disc.dat"
-sed -i -e 's|^SOLVER linear=cholmod|SOLVER linear=cholmod gamma=100|' "$work/disc.dat"
+sed -i -e 's|^SOLVER linear=cholmod|SOLVER linear=cholmod c=100|' "$work/disc.dat"
 drivers/chain.sh "$work/disc.dat" -o "$work/disc" > "$work/disc.log" 2>&1 || fail "the dynamic deck failed"
-grep -q "disc.dat:6: SOLVER gamma=100 is not used by sig-march" "$work/disc.log" ||
-  fail "SOLVER gamma= of a TIME deck passed silently"
-echo "ok ($name): SOLVER gamma= in a TIME deck: $(grep -m1 'gamma=100' "$work/disc.log")"
+grep -q "disc.dat:6: SOLVER c=100 is not used by sig-march" "$work/disc.log" ||
+  fail "SOLVER c= of a TIME deck passed silently"
+echo "ok ($name): SOLVER c= in a TIME deck: $(grep -m1 'c=100' "$work/disc.log")"
 finish

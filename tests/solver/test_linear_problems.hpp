@@ -105,6 +105,16 @@ inline Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& 
 }
 
 /// The complement of a sorted index list in [0, n).
+/// The block of a dense matrix on the rows r and the columns s.
+inline Eigen::MatrixXd dense_block(const Eigen::MatrixXd& A, const std::vector<int>& r,
+                                   const std::vector<int>& s) {
+  Eigen::MatrixXd B(r.size(), s.size());
+  for (size_t p = 0; p < r.size(); ++p)
+    for (size_t q = 0; q < s.size(); ++q)
+      B(p, q) = A(r[p], s[q]);
+  return B;
+}
+
 inline std::vector<int> complement(const std::vector<int>& dofs, int n) {
   std::vector<int> rest;
   for (int d = 0; d < n; ++d)

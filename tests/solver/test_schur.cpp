@@ -1,6 +1,7 @@
 // Static condensation onto interface dofs: S against the dense formula, the semi-coercive case
 // (singular K, positive definite K_ii), and MUMPS's partial factorization against the generic
 // block solves.
+#include "solver/cholmod_split.hpp"
 #include "solver/schur.hpp"
 #include "test_linear_problems.hpp"
 
@@ -30,11 +31,7 @@ TEST_P(SchurTest, MatchesDenseFormulaOnSpdMatrix) {
   SchurComplement schur(K, c, GetParam());
   const Eigen::MatrixXd Kd(K);
   auto block = [&](const std::vector<int>& r, const std::vector<int>& s) {
-    Eigen::MatrixXd B(r.size(), s.size());
-    for (size_t p = 0; p < r.size(); ++p)
-      for (size_t q = 0; q < s.size(); ++q)
-        B(p, q) = Kd(r[p], s[q]);
-    return B;
+    return test::dense_block(Kd, r, s);
   };
   const Eigen::MatrixXd K_ii = block(i_dofs, i_dofs), K_ic = block(i_dofs, c);
   const Eigen::LLT<Eigen::MatrixXd> llt(K_ii);
@@ -153,6 +150,71 @@ TEST(Schur, MumpsSymmetricKindMatchesSpdKind) {
   SchurComplement lu(K, c, "umfpack", MatrixKind::general);
   EXPECT_LT((spd.matrix() - sym.matrix()).norm(), 1e-10 * spd.matrix().norm());
   EXPECT_LT((spd.matrix() - lu.matrix()).norm(), 1e-10 * spd.matrix().norm());
+}
+
+} // namespace
+} // namespace sig
+
+namespace sig {
+namespace {
+
+// The CHOLMOD split (solver/cholmod_split.hpp): K factorized whole with the interface last. S is
+// the factor's trailing block squared, the condensed load and the expansion of ANY interface
+// values are the dense formulas', and the pair solves K x = f when the interface values are
+// S^-1 of the condensed load; SchurComplement takes that path on request and agrees with the
+// interior one, and falls back to it for a K that is not positive definite.
+TEST(Schur, CholmodSplitMatchesTheDenseFormulas) {
+  const test::Grid g{9, 6};
+  const Eigen::SparseMatrix<double> K = test::clamped_stiffness(g);
+  const int n = static_cast<int>(K.rows());
+  std::vector<int> c;
+  for (int i = 1; i <= g.nx; ++i)
+    for (int a = 0; a < 2; ++a)
+      c.push_back(2 * (i - 1) + a); // the bottom edge, low numbers: the split must move them last
+  const std::vector<int> i_dofs = test::complement(c, n);
+  const Eigen::MatrixXd Kd(K);
+  auto block = [&](const std::vector<int>& r, const std::vector<int>& s) {
+    return test::dense_block(Kd, r, s);
+  };
+  const Eigen::MatrixXd K_ii = block(i_dofs, i_dofs), K_ic = block(i_dofs, c);
+  const Eigen::LLT<Eigen::MatrixXd> llt(K_ii);
+  const Eigen::MatrixXd S = block(c, c) - K_ic.transpose() * llt.solve(K_ic);
+
+  CholmodSplitSolver split(K, c);
+  EXPECT_LT((split.schur_complement() - S).norm(), 1e-12 * S.norm());
+  const Eigen::VectorXd f = K * test::manufactured(n);
+  Eigen::VectorXd f_i(i_dofs.size()), f_c(c.size());
+  for (size_t k = 0; k < i_dofs.size(); ++k)
+    f_i[k] = f[i_dofs[k]];
+  for (size_t k = 0; k < c.size(); ++k)
+    f_c[k] = f[c[k]];
+  const Eigen::VectorXd condensed = f_c - K_ic.transpose() * llt.solve(f_i);
+  EXPECT_LT((split.reduce(f) - condensed).norm(), 1e-12 * condensed.norm());
+  const Eigen::VectorXd u_c = test::manufactured(static_cast<int>(c.size()), 0.7);
+  const Eigen::VectorXd u = split.expand(u_c);
+  const Eigen::VectorXd u_i = llt.solve(f_i - K_ic * u_c);
+  for (size_t k = 0; k < c.size(); ++k)
+    EXPECT_EQ(u[c[k]], u_c[k]);
+  for (size_t k = 0; k < i_dofs.size(); ++k)
+    EXPECT_NEAR(u[i_dofs[k]], u_i[k], 1e-11 * u_i.norm());
+  EXPECT_THROW(split.expand(u_c), Error); // one expand per reduce
+
+  SchurComplement whole(K, c, "cholmod", MatrixKind::spd, true), apart(K, c, "cholmod");
+  EXPECT_LT((whole.matrix() - apart.matrix()).norm(), 1e-12 * S.norm());
+  const Eigen::VectorXd x = whole.expand(f, whole.matrix().llt().solve(whole.condense(f)));
+  EXPECT_LT((x - test::manufactured(n)).norm(), 1e-10 * x.norm());
+  // A second expansion of the same load (no condense between) redoes the forward substitution.
+  EXPECT_LT((whole.expand(f, u_c) - u).norm(), 1e-11 * u.norm());
+
+  // The free-floating body: K singular, K_ii (boundary held) positive definite.
+  const test::Grid h{6, 5};
+  const Eigen::SparseMatrix<double> floating = test::elasticity_stiffness(h);
+  const std::vector<int> boundary =
+      test::dofs_where(h, [&](int i, int j) { return h.on_boundary(i, j); });
+  EXPECT_THROW(CholmodSplitSolver(floating, boundary), Error);
+  SchurComplement fallback(floating, boundary, "cholmod", MatrixKind::spd, true);
+  SchurComplement interior(floating, boundary, "cholmod");
+  EXPECT_LT((fallback.matrix() - interior.matrix()).norm(), 1e-12 * interior.matrix().norm());
 }
 
 } // namespace

@@ -76,6 +76,29 @@ void put_contact(Ds& ds, const MarchHistory& history, const ContactHistoryInfo& 
 
 } // namespace
 
+void put_kept_states(Ds& ds, const ReducedSystem& reduced, const std::vector<KeptState>& kept) {
+  const auto ndof = static_cast<std::int64_t>(reduced.num_full());
+  ds.put_int("ndof", ndof);
+  // On the full dofs: a velocity is zero where the displacement is imposed.
+  std::vector<std::int64_t> output_step;
+  std::vector<double> output_time, u, v;
+  for (const KeptState& state : kept) {
+    output_step.push_back(state.step);
+    output_time.push_back(state.time);
+    const Eigen::VectorXd u_full = reduced.expand(*state.u);
+    Eigen::VectorXd v_full = Eigen::VectorXd::Zero(reduced.num_full());
+    for (int i = 0; i < reduced.num_free(); ++i)
+      v_full(reduced.free_dofs[i]) = (*state.v)(i);
+    u.insert(u.end(), u_full.data(), u_full.data() + u_full.size());
+    v.insert(v.end(), v_full.data(), v_full.data() + v_full.size());
+  }
+  const auto outputs = static_cast<std::int64_t>(kept.size());
+  ds.put("output_step", output_step);
+  ds.put("output_time", output_time);
+  ds.put("u", u, {outputs, ndof});
+  ds.put("v", v, {outputs, ndof});
+}
+
 void write_hist(const std::filesystem::path& path, const MarchHistory& history,
                 const ReducedSystem& reduced, const TimeParameters& time,
                 const std::string& linear_solver, double seconds, const std::string& title,
@@ -90,27 +113,10 @@ void write_hist(const std::filesystem::path& path, const MarchHistory& history,
   ds.put_scalar("time_march", seconds);
   ds.put_int("steps", time.steps);
   ds.put_int("output_every", time.output_every);
-  const auto ndof = static_cast<std::int64_t>(reduced.num_full());
-  ds.put_int("ndof", ndof);
-
-  // The kept states on the full dofs: a velocity is zero where the displacement is imposed.
-  std::vector<std::int64_t> output_step;
-  std::vector<double> output_time, u, v;
-  for (const DynamicState& state : history.outputs) {
-    output_step.push_back(std::llround(state.time / time.k));
-    output_time.push_back(state.time);
-    const Eigen::VectorXd u_full = reduced.expand(state.u);
-    Eigen::VectorXd v_full = Eigen::VectorXd::Zero(reduced.num_full());
-    for (int i = 0; i < reduced.num_free(); ++i)
-      v_full(reduced.free_dofs[i]) = state.v(i);
-    u.insert(u.end(), u_full.data(), u_full.data() + u_full.size());
-    v.insert(v.end(), v_full.data(), v_full.data() + v_full.size());
-  }
-  const auto outputs = static_cast<std::int64_t>(history.outputs.size());
-  ds.put("output_step", output_step);
-  ds.put("output_time", output_time);
-  ds.put("u", u, {outputs, ndof});
-  ds.put("v", v, {outputs, ndof});
+  std::vector<KeptState> kept;
+  for (const DynamicState& state : history.outputs)
+    kept.push_back({std::llround(state.time / time.k), state.time, &state.u, &state.v});
+  put_kept_states(ds, reduced, kept);
 
   std::vector<std::int64_t> step;
   std::vector<double> t, kinetic, elastic, total, work;

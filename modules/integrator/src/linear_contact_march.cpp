@@ -49,7 +49,8 @@ LinearContactMarch::LinearContactMarch(VelocityScheme& scheme, const VelocityCon
   method_ = make_contact_method(parameters);
   options_ = newton_options(parameters, c.setting.law);
   condensation_ =
-      std::make_unique<ContactCondensation>(S, c.dofs, c.normal, c.setting.has_friction(), backend);
+      std::make_unique<ContactCondensation>(S, c.dofs, c.normal, c.setting.has_friction(), backend,
+                                            true); // S is positive definite
   Eigen::VectorXd default_stiffness(c.size());
   for (int p = 0; p < c.size(); ++p)
     default_stiffness[p] = off_wall_stiffness(*method_, c.setting.law[p], c.setting.weight[p]);

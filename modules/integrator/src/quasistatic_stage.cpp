@@ -55,7 +55,7 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
   // 1. Cards: what the march does not model, then SOLVER (method, backend, Newton options).
   refuse_other_models(datafile);
   QuasistaticCase c;
-  c.solver = read_solver_card(datafile);
+  c.solver = read_solver_card(datafile, /*march=*/true);
 
   // 2. Mesh, laws, assembled system (elastic K, viscous V, memory terms, loads in time).
   const Mesh mesh = read_nopo(args.ds_path("nopo"));

@@ -1,5 +1,7 @@
 #include "integrator/velocity_history_io.hpp"
 
+#include "integrator/history_io.hpp"
+
 #include "assembly/dirichlet.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
@@ -108,27 +110,12 @@ void write_velocity_hist(const std::filesystem::path& path, const VelocityHistor
   ds.put_int("output_every", info.output_every);
   ds.put_int("sparse_factorizations", 1);
   ds.put_int("dense_factorizations", info.dense_factorizations);
-  const auto ndof = static_cast<std::int64_t>(reduced.num_full());
-  ds.put_int("ndof", ndof);
-
-  // The kept states on the full dofs: a velocity is zero where the displacement is imposed.
-  std::vector<std::int64_t> output_step;
-  std::vector<double> output_time, u, v;
-  for (std::size_t s = 0; s < history.output_step.size(); ++s) {
-    output_step.push_back(history.output_step[s]);
-    output_time.push_back(history.output_step[s] * info.k);
-    const Eigen::VectorXd u_full = reduced.expand(history.output_u[s]);
-    Eigen::VectorXd v_full = Eigen::VectorXd::Zero(reduced.num_full());
-    for (int i = 0; i < reduced.num_free(); ++i)
-      v_full(reduced.free_dofs[i]) = history.output_w[s](i);
-    u.insert(u.end(), u_full.data(), u_full.data() + u_full.size());
-    v.insert(v.end(), v_full.data(), v_full.data() + v_full.size());
-  }
-  const auto outputs = static_cast<std::int64_t>(output_step.size());
-  ds.put("output_step", output_step);
-  ds.put("output_time", output_time);
-  ds.put("u", u, {outputs, ndof});
-  ds.put("v", v, {outputs, ndof});
+  std::vector<KeptState> kept;
+  for (std::size_t s = 0; s < history.output_step.size(); ++s)
+    kept.push_back({history.output_step[s], history.output_step[s] * info.k, &history.output_u[s],
+                    &history.output_w[s]});
+  put_kept_states(ds, reduced, kept);
+  const auto outputs = static_cast<std::int64_t>(kept.size());
 
   std::vector<std::int64_t> step{0}, iterations{0}, converged{1};
   std::vector<double> time{0.0}, seconds{0.0}, seconds_right_side{0.0}, seconds_contact{0.0};
@@ -171,9 +158,10 @@ void write_velocity_hist(const std::filesystem::path& path, const VelocityHistor
     ds.put("normal_status", rows.normal_status, shape);
     ds.put("friction_status", rows.friction_status, shape);
     std::vector<double> pressure;
-    for (int kept : history.output_step)
+    for (int step_kept : history.output_step)
       for (std::int64_t i = 0; i < p; ++i)
-        pressure.push_back(rows.force_n[static_cast<std::size_t>(kept * p + i)] / info.weight[i]);
+        pressure.push_back(rows.force_n[static_cast<std::size_t>(step_kept * p + i)] /
+                           info.weight[i]);
     ds.put("pressure", pressure, {outputs, p});
   }
   write_ds(path, ds);

@@ -2,31 +2,13 @@
 
 #include "core/error.hpp"
 
+#include "cholmod_view.hpp"
+
 #include <cholmod.h>
 
 namespace sig {
 
 namespace {
-
-/// A view of a compressed Eigen matrix as a CHOLMOD matrix whose lower triangle is read
-/// (stype < 0): CHOLMOD ignores the upper part, so symmetric matrices are passed full.
-cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& A) {
-  cholmod_sparse s{};
-  s.nrow = static_cast<size_t>(A.rows());
-  s.ncol = static_cast<size_t>(A.cols());
-  s.nzmax = static_cast<size_t>(A.nonZeros());
-  // CHOLMOD reads through these pointers without writing (analyze, factorize).
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = -1;
-  s.itype = CHOLMOD_INT;
-  s.xtype = CHOLMOD_REAL;
-  s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 1;
-  s.packed = 1;
-  return s;
-}
 
 std::string status_text(int status) {
   switch (status) {

@@ -23,7 +23,7 @@ int position_in(const std::vector<int>& interface, int dof) {
 ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K,
                                          const std::vector<std::array<int, 2>>& node_dofs,
                                          std::vector<Eigen::Vector2d> normals, bool tangential,
-                                         const std::string& backend)
+                                         const std::string& backend, bool positive_definite)
     : K_(std::move(K)), normals_(std::move(normals)), dofs_(node_dofs) {
   const int m = static_cast<int>(dofs_.size());
   SIG_VERIFY(static_cast<int>(normals_.size()) == m,
@@ -56,7 +56,8 @@ ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K,
     if (tangential) tangential_dof_.push_back(position_in(interface_, dofs_[p][0]));
   }
   try {
-    schur_ = std::make_unique<SchurComplement>(K_, interface_, backend);
+    schur_ = std::make_unique<SchurComplement>(K_, interface_, backend, MatrixKind::spd,
+                                               positive_definite);
   } catch (const Error& e) {
     // With the contact components held the rest of the body must be fixed, whatever the method.
     SIG_VERIFY(false, "the body with its contact nodes held cannot be factorized ("

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "solver/cholmod_split.hpp"
 #include "solver/mumps_solver.hpp"
 
 #include <algorithm>
@@ -66,7 +67,7 @@ private:
 
 SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
                                  std::vector<int> interface_dofs, const std::string& backend,
-                                 MatrixKind kind)
+                                 MatrixKind kind, bool whole_positive_definite)
     : backend_(backend), interface_(std::move(interface_dofs)) {
   std::transform(backend_.begin(), backend_.end(), backend_.begin(),
                  [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
@@ -95,6 +96,23 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
       interior_.push_back(d);
     }
   const int ni = n - m;
+
+  // CHOLMOD on a positive definite K: the whole factor, the interface last (cholmod_split.hpp).
+  if (whole_positive_definite && backend_ == "cholmod" && kind == MatrixKind::spd) {
+    try {
+      const Stopwatch factor_clock;
+      Eigen::SparseMatrix<double> compressed = K;
+      compressed.makeCompressed();
+      split_ = std::make_unique<CholmodSplitSolver>(compressed, interface_);
+      S_ = split_->schur_complement();
+      seconds_factorize_ = factor_clock.seconds();
+      return;
+    } catch (const Error& e) {
+      log_warning(std::string("the whole step matrix could not be factorized (") + e.what() +
+                  "): its interior is factorized apart");
+      split_.reset();
+    }
+  }
 
   // MUMPS factorizes K itself; the other backends need K_ii apart.
   const bool split_interior = backend_ != "mumps";
@@ -169,8 +187,12 @@ Eigen::VectorXd SchurComplement::interface_part(const Eigen::VectorXd& v) const 
 Eigen::VectorXd SchurComplement::condense(const Eigen::VectorXd& f) {
   SIG_VERIFY(f.size() == size(),
              "Schur complement: load of size " << f.size() << ", expected " << size());
-  if (mumps_ != nullptr) {
+  if (mumps_ != nullptr || split_) {
     condensed_load_ = f;
+    if (split_) {
+      split_reduced_ = true;
+      return split_->reduce(f);
+    }
     return mumps_->reduce(f);
   }
   const Eigen::VectorXd y = interior_solver_->solve(interior_part(f)).col(0);
@@ -183,6 +205,15 @@ Eigen::VectorXd SchurComplement::expand(const Eigen::VectorXd& f, const Eigen::V
   SIG_VERIFY(u_c.size() == static_cast<Eigen::Index>(interface_.size()),
              "Schur complement: interface displacement of size " << u_c.size() << ", expected "
                                                                  << interface_.size());
+  if (split_) {
+    // The pair of substitutions; the forward one again when this load was not the last condensed.
+    if (!split_reduced_ || condensed_load_.size() != f.size() || condensed_load_ != f) {
+      split_->reduce(f);
+      condensed_load_ = f;
+    }
+    split_reduced_ = false;
+    return split_->expand(u_c);
+  }
   Eigen::VectorXd u(size());
   if (mumps_ != nullptr && condensed_load_.size() == f.size() && condensed_load_ == f) {
     u = mumps_->expand(u_c);

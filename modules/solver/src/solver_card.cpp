@@ -5,7 +5,7 @@
 
 namespace sig {
 
-SolverCard read_solver_card(const Datafile& datafile) {
+SolverCard read_solver_card(const Datafile& datafile, bool march) {
   const bool has_contact = datafile.find("CONTACT") != nullptr;
   const Card* card = datafile.find("SOLVER");
   Card defaults; // no SOLVER card: every field takes the schema's default
@@ -46,7 +46,6 @@ SolverCard read_solver_card(const Datafile& datafile) {
     o.relaxation = loop->real("relaxation", o.relaxation);
     if (!(o.relaxation > 0 && o.relaxation <= 1)) loop->fail("relaxation", "must be in (0, 1]");
     // A march starts each step's loop from the previous step's slip rate (ALGORITHMS.md 3.3).
-    const bool march = datafile.find("TIME") != nullptr;
     const std::string start =
         loop->choice("start", {"rest", "slipped", "previous"}, march ? "previous" : "rest");
     if (start == "previous" && !march)

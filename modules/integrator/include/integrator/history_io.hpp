@@ -20,12 +20,14 @@
 #include "integrator/march.hpp"
 #include "integrator/time_card.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace sig {
 
+class Ds;
 struct ReducedSystem;
 
 /// The header line of energy.csv; the contact columns are 0 without contact.
@@ -46,6 +48,18 @@ struct ContactHistoryInfo {
   double depth = 0;       ///< g: the wall at penetration g (contact_law.hpp)
   std::vector<int> nodes; ///< 0-based mesh nodes
 };
+
+/// One kept state of a march: its step, time, and u and v on the free dofs.
+struct KeptState {
+  std::int64_t step = 0;
+  double time = 0;
+  const Eigen::VectorXd* u = nullptr;
+  const Eigen::VectorXd* v = nullptr;
+};
+
+/// The arrays every HIST has for its kept states: ndof, output_step, output_time, and u and v
+/// {outputs, ndof} on the full dofs of `reduced` (imposed values, zero imposed velocity).
+void put_kept_states(Ds& ds, const ReducedSystem& reduced, const std::vector<KeptState>& kept);
 
 /// Write the DS HIST of a march on the Dirichlet-reduced problem `reduced` (atomic); `contact`
 /// is null for a march without contact; `hyperelastic` records the time step's stress.

@@ -33,10 +33,12 @@ public:
   /// (friction). backend: cholmod | umfpack | mumps. sig::Error when a node's dofs are not
   /// consecutive, a node appears twice, or the bulk with the contact components held cannot be
   /// factorized: then a rigid motion of the body is held by nothing (the message says so).
+  /// `positive_definite`: K itself is (a body held by Dirichlet conditions, the step matrix of a
+  /// march), which lets CHOLMOD factorize it whole and split its solves (solver/schur.hpp).
   ContactCondensation(Eigen::SparseMatrix<double> K,
                       const std::vector<std::array<int, 2>>& node_dofs,
                       std::vector<Eigen::Vector2d> normals, bool tangential,
-                      const std::string& backend);
+                      const std::string& backend, bool positive_definite = false);
   ~ContactCondensation();
   ContactCondensation(const ContactCondensation&) = delete;
   ContactCondensation& operator=(const ContactCondensation&) = delete;

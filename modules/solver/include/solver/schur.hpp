@@ -18,6 +18,7 @@
 
 namespace sig {
 
+class CholmodSplitSolver;
 class MumpsSolver;
 
 namespace detail {
@@ -31,8 +32,14 @@ public:
   /// 0-based, at least one and fewer than n. backend: cholmod|umfpack|mumps; "mumps" takes
   /// K_ii's factor and S from one partial factorization (ICNTL(19)), the others factorize K_ii
   /// and solve for the columns of K_ic in blocks. kind describes K_ii (spd for a clamped bulk).
+  /// `whole_positive_definite`: the caller knows K itself positive definite (the whole body
+  /// held by Dirichlet conditions); with "cholmod" K is then factorized whole, the interface
+  /// ordered last (solver/cholmod_split.hpp), S read off the factor and a condense/expand pair
+  /// costs one forward-backward substitution instead of two interior solves. If that
+  /// factorization fails the interior path above is taken.
   SchurComplement(const Eigen::SparseMatrix<double>& K, std::vector<int> interface_dofs,
-                  const std::string& backend, MatrixKind kind = MatrixKind::spd);
+                  const std::string& backend, MatrixKind kind = MatrixKind::spd,
+                  bool whole_positive_definite = false);
   ~SchurComplement();
   SchurComplement(const SchurComplement&) = delete;
   SchurComplement& operator=(const SchurComplement&) = delete;
@@ -43,7 +50,8 @@ public:
   Eigen::VectorXd condense(const Eigen::VectorXd& f);
   /// The full displacement: u_c on the interface, u_i = K_ii^{-1} (f_i - K_ic u_c) inside.
   /// With MUMPS, expanding the load of the last condense() continues its solve (the backward
-  /// substitution after condense()'s forward elimination, ICNTL(26)): the pair costs one solve.
+  /// substitution after condense()'s forward elimination, ICNTL(26)): the pair costs one solve;
+  /// so does the CHOLMOD split (constructor).
   Eigen::VectorXd expand(const Eigen::VectorXd& f, const Eigen::VectorXd& u_c);
 
   const std::vector<int>& interface_dofs() const { return interface_; }
@@ -62,7 +70,9 @@ private:
   Eigen::SparseMatrix<double> K_ic_;
   Eigen::MatrixXd S_;
   std::unique_ptr<detail::InteriorSolver> interior_solver_;
-  MumpsSolver* mumps_ = nullptr;   ///< the partial factorization, when the backend is MUMPS
+  MumpsSolver* mumps_ = nullptr; ///< the partial factorization, when the backend is MUMPS
+  std::unique_ptr<CholmodSplitSolver> split_; ///< K factorized whole (CHOLMOD, constructor)
+  bool split_reduced_ = false;                ///< split_ holds condense()'s forward substitution
   Eigen::VectorXd condensed_load_; ///< f of the last condense() that expand() can continue
   double seconds_factorize_ = 0;
   double seconds_schur_ = 0;

@@ -27,7 +27,9 @@ struct SolverCard {
 /// CONTACT card and to linear without; a contact method without a CONTACT card, linear with
 /// one, a non-positive r, gamma, c, eps or maxit, or n < 1 is a sig::Error naming the file,
 /// line and field. So is a CONVEXIFICATION card out of range or in a deck without a nonmonotone
-/// friction law.
-SolverCard read_solver_card(const Datafile& datafile);
+/// friction law. `march`: the deck is read by sig-march (a time step's convexification starts
+/// from the previous step's slip rate by default); the caller says so rather than the card
+/// reader looking up TIME, so that each stage reads only the cards its --help lists.
+SolverCard read_solver_card(const Datafile& datafile, bool march = false);
 
 } // namespace sig

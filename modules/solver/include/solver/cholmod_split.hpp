@@ -1,0 +1,49 @@
+#pragma once
+// A supernodal CHOLMOD LL^T of a symmetric positive definite K with a given set of unknowns
+// (the Schur variables) ordered last, and a solve split around them: the CHOLMOD counterpart of
+// MUMPS's Schur variables with ICNTL(26) (solver/mumps_solver.hpp). With P K P^T = L L^T and
+// L = [L_ii 0; L_ci L_cc] (interior first, by METIS, then the Schur variables in their order):
+//   - the Schur complement is S = K_cc - K_ci K_ii^-1 K_ic = L_cc L_cc^T, the factor's trailing
+//     block, read once after the factorization;
+//   - reduce(b): the forward substitution L z = P b; the condensed load is b_c - K_ci K_ii^-1 b_i
+//     = L_cc z_c;
+//   - expand(x_c): the backward substitution L^T y = z with z_c replaced by L_cc^T x_c, whose
+//     interface part is then x_c and whose interior part is K_ii^-1 (b_i - K_ic x_c).
+// So a load costs one forward and one backward substitution with the whole factor, as one
+// solve does, whatever the Schur problem in between. K itself must be positive definite (the
+// whole body held by its Dirichlet conditions): a semi-coercive K, whose rigid modes only the
+// Schur variables hold, is refused (SchurComplement then factorizes K_ii alone).
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include <memory>
+#include <vector>
+
+namespace sig {
+
+class CholmodSplitSolver {
+public:
+  /// K: n x n symmetric positive definite, stored full (its lower triangle is read); last: the
+  /// Schur variables, sorted, distinct, 0 < m < n. sig::Error if K is not positive definite.
+  CholmodSplitSolver(const Eigen::SparseMatrix<double>& K, const std::vector<int>& last);
+  ~CholmodSplitSolver();
+  CholmodSplitSolver(const CholmodSplitSolver&) = delete;
+  CholmodSplitSolver& operator=(const CholmodSplitSolver&) = delete;
+
+  /// S = L_cc L_cc^T (m x m, exactly symmetric), rows and columns in the order of `last`.
+  const Eigen::MatrixXd& schur_complement() const { return S_; }
+  /// The condensed load of b (size n): b_c - K_ci K_ii^-1 b_i, in the order of `last`. The
+  /// forward substitution is kept for the next expand().
+  Eigen::VectorXd reduce(const Eigen::VectorXd& b);
+  /// The solution of K x = b (b of the last reduce()) whose Schur variables are x_c: x_c on them,
+  /// K_ii^-1 (b_i - K_ic x_c) on the others. One expand() per reduce().
+  Eigen::VectorXd expand(const Eigen::VectorXd& x_c);
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+  Eigen::MatrixXd L_cc_; ///< the factor's trailing block, dense lower triangular
+  Eigen::MatrixXd S_;
+};
+
+} // namespace sig
