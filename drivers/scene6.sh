@@ -58,7 +58,7 @@ else
   alm_n=(4 8 16 32 64)
   winkler_ny=32
   stability_n=(16 64 128)
-  stability_k=(8 32 128)
+  stability_k=(8 32 128 512)
   stability_alpha=(2 20 200 2000 20000)
 fi
 quasistatic_t=(0.2 0.4 0.6 0.8)
