@@ -129,6 +129,12 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
       card.fail("ramp", "the time at which the ramped load reaches its value must be > 0");
     return {rate, 1.0 / ramp};
   };
+  // No card's load may overflow: the error names the card, where the TAE's would not.
+  const auto finite = [](const Card& card, const char* field, const Eigen::VectorXd& load) {
+    if (!load.allFinite())
+      card.fail(field, "the load it adds is not finite (a value near the largest double): "
+                       "check its magnitude and the deck's units");
+  };
   const auto traction_cards = datafile.all("TRACTION");
   const auto pressure_cards = datafile.all("PRESSURE");
   const auto moving_cards = datafile.all("MOVINGLOAD");
@@ -140,6 +146,7 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
           add_edge_load(mesh, table, owners, edge, traction, into);
+      finite(*card, "f", into);
     }
     for (const Card* card : pressure_cards) {
       const auto [into, scale] = target(*card);
@@ -147,6 +154,7 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
       for (int ref : card_references(*card, mesh, RefSupport::edges))
         for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
           add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), into);
+      finite(*card, "p", into);
     }
     for (const Card* card : moving_cards) {
       MovingLoad load = moving_load(*card, mesh, table, owners);
@@ -165,6 +173,7 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
       for (int i = 0; i < 3; ++i)
         into.segment<2>(2 * mesh.triangles[t][i]) += fe.segment<2>(2 * i);
     }
+    finite(*card, "f", into);
   }
   if (time_loads != nullptr && (rate.array() != 0).any()) time_loads->rate = std::move(rate);
   return f;

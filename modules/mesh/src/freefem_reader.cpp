@@ -70,15 +70,7 @@ Mesh read_mesh(TokenReader& in) {
     in.fail("unexpected data after the " + std::to_string(nbe) + " boundary edges");
   }
 
-  std::vector<int> flipped;
-  if (const int flat = orient_counter_clockwise(mesh, &flipped); flat >= 0)
-    throw InputError(in.file(), triangle_lines[flat], "",
-                     "triangle " + std::to_string(flat + 1) +
-                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
-  std::vector<long> numbers;
-  for (int t : flipped)
-    numbers.push_back(t + 1);
-  warn_entities(in.file(), "clockwise triangle(s) (1-based)", numbers, "reoriented");
+  orient_triangles_of_file(mesh, in.file(), triangle_lines);
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "boundary edge with label " + std::to_string(mesh.edges[bad].ref) +

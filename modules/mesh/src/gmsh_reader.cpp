@@ -346,15 +346,7 @@ Mesh read_mesh(TokenReader& in) {
                      "no triangles (gmsh saves only the elements of physical groups when there "
                      "are any: is the surface in a Physical Surface?)");
 
-  std::vector<int> flipped;
-  if (const int flat = orient_counter_clockwise(mesh, &flipped); flat >= 0)
-    throw InputError(in.file(), triangle_lines[flat], "",
-                     "triangle " + std::to_string(flat + 1) +
-                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
-  std::vector<long> numbers;
-  for (int t : flipped)
-    numbers.push_back(t + 1);
-  warn_entities(in.file(), "clockwise triangle(s) (1-based, in file order)", numbers, "reoriented");
+  orient_triangles_of_file(mesh, in.file(), triangle_lines);
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "line element with physical tag " + std::to_string(mesh.edges[bad].ref) +

@@ -1,5 +1,6 @@
 #include "mesh/topology.hpp"
 
+#include "core/error.hpp"
 #include "core/log.hpp"
 
 #include <algorithm>
@@ -22,6 +23,18 @@ int orient_counter_clockwise(Mesh& mesh, std::vector<int>* flipped) {
     if (area == 0 && degenerate < 0) degenerate = t;
   }
   return degenerate;
+}
+
+void orient_triangles_of_file(Mesh& mesh, const std::string& file, const std::vector<int>& lines) {
+  std::vector<int> flipped;
+  if (const int flat = orient_counter_clockwise(mesh, &flipped); flat >= 0)
+    throw InputError(file, lines[flat], "",
+                     "triangle " + std::to_string(flat + 1) +
+                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
+  std::vector<long> numbers;
+  for (int t : flipped)
+    numbers.push_back(t + 1);
+  warn_entities(file, "clockwise triangle(s) (1-based, in file order)", numbers, "reoriented");
 }
 
 int orient_boundary_edges(Mesh& mesh) {

@@ -23,6 +23,10 @@ inline std::uint64_t edge_key(int a, int b) {
 /// orientation can mend: the readers report it with its line in the file.
 int orient_counter_clockwise(Mesh& mesh, std::vector<int>* flipped = nullptr);
 
+/// orient_counter_clockwise for the reader of a text mesh file: a degenerate triangle is an
+/// InputError naming `file` and its line (`lines[t]`), the reoriented ones a warning naming them.
+void orient_triangles_of_file(Mesh& mesh, const std::string& file, const std::vector<int>& lines);
+
 /// Point every referenced edge that is a side of exactly one triangle in the direction it has in
 /// that (counter-clockwise) triangle, so the domain lies on its left; an interface edge (two
 /// triangles) keeps its direction. A repeated edge (same node pair) is kept once, the first
