@@ -46,7 +46,7 @@ scene = json.loads((out / "scene.json").read_text())
 check(scene["scene"] == "6", "scene.json is scene 6")
 for c in scene["checks"]:
     check(c["pass"] is not False, f"report check: {c['name']} ({c['detail']})")
-check(sum(c["pass"] is True for c in scene["checks"]) >= 9, "at least 9 checks evaluated and passed")
+check(sum(c["pass"] is True for c in scene["checks"]) >= 8, "at least 8 checks evaluated and passed")
 names = {c["name"] for c in scene["checks"]}
 for needed in ("Winkler strip at psi = 10 within 1 %", "Winkler strip at psi = 200 within 1 %"):
     check(needed in names, f"the report checks '{needed}'")
