@@ -130,14 +130,18 @@ for name, title in CASES.items():
     target = 0.2 * outer
     per_phase = {p: statistics.median(r["times"][p] for r in rs) for p in rs[0]["times"]}
     ok = all(r["converged"] for r in rs)
+    # The same measure against the run's own factorization (with the Schur complement).
+    own = per_phase["factorize"]
+    beyond_own = (phases - own) / own
     rows.append([title, rs[0]["dofs"], f"{outer} ({rs[0]['inner']})" if ok else "Nv",
                  f"{phases:.3f}", ", ".join(f"{p} {v:.3f}" for p, v in per_phase.items()),
-                 f"{phases / floor:.2f}", f"{beyond:.2f}", f"{target:.1f}",
-                 "PASS" if ok and beyond <= target else "FAIL"])
+                 f"{phases / floor:.2f}", f"{beyond:.2f}", f"{beyond_own:.2f}", f"{target:.1f}",
+                 "PASS" if ok and max(beyond, beyond_own) <= target else "FAIL"])
     result["cases"][name] = {"title": title, "outer": outer, "inner": rs[0]["inner"],
                              "phases_median": phases, "phases": per_phase,
-                             "beyond_floor_over_floor": beyond, "target": target,
-                             "pass": ok and beyond <= target}
+                             "beyond_floor_over_floor": beyond,
+                             "beyond_own_factorization": beyond_own, "target": target,
+                             "pass": ok and max(beyond, beyond_own) <= target}
 n = len(runs["fig42"])
 lines = [f"# Scene 4 benchmark: the convexification loop at the thesis's size", "",
          f"Produced by `{info['command']}` on {info['date']} ({info['host']}, revision "
@@ -146,10 +150,12 @@ lines = [f"# Scene 4 benchmark: the convexification loop at the thesis's size", 
          "matrix of the same mesh (Gamma3 held, no contact) by MUMPS and CHOLMOD, the faster "
          f"taken: {backend}, {floor:.3f} s (mumps {median['floor_mumps']:.3f} s, cholmod "
          f"{median['floor_cholmod']:.3f} s). Target (issue 11): (phases - floor) / floor <= 0.2 "
-         "x outer iterations.", "",
+         "x outer iterations; the same is shown against the run's own factorization (MUMPS with "
+         "the Schur complement onto Gamma3, its `factorize` phase), and both must hold.", "",
          "| case | dofs | outer (inner) | phases s | per phase s | phases / floor | "
-         "(phases - floor) / floor | target 0.2 x outer | result |",
-         "|---|---|---|---|---|---|---|---|---|"]
+         "(phases - floor) / floor | (phases - factorize) / factorize | target 0.2 x outer | "
+         "result |",
+         "|---|---|---|---|---|---|---|---|---|---|"]
 lines += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
 (out / "bench.md").write_text("\n".join(lines) + "\n")
 (out / "bench.json").write_text(json.dumps(result, indent=1) + "\n")

@@ -25,8 +25,10 @@
 #                     the relaxation (1, 0.5)
 #   fig46/rho<rho>    the perturbed data (l.7739-7743) rho = 20, 10, 2, 1e-2: f0 = (0, -rho),
 #                     f2 = (-(4 + rho), 0), cn = 10 + rho
-#   fig47/n<n>        the square with n segments per side, n = 2 ... 128 against 256 (--quick:
-#                     2 ... 64 against 128)
+#   fig47/n<n>        the square with n segments per side, n = 2 ... 256 against 512 (--quick:
+#                     2 ... 64 against 128), Gamma1 clamped (the deck); fig47/rollers/n<n> the
+#                     same with rollers on Gamma1 (u1 = 0 only), a solution without the clamped
+#                     corners' singularity
 #   map/<M>/alpha<alpha>_a<a>_b<b>  the stability map of the loop: alpha in 1 10 100 300 1000,
 #                     (a, b) in (2, 1.9) (2, 1) (2, 0.02) (5, 0.02) on C, M (and G, T); a run that is
 #                     Nv or cycles again with relaxation 0.5 (..._relaxed)
@@ -43,7 +45,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 usage() {
   cat <<EOF
 usage: drivers/scene4.sh [--quick] [-o OUTDIR]
-  --quick     the map on C and M for alpha = 1, 100, 1000, the inner methods on the Fig 4.2
+  --quick     the map on M for alpha = 1, 100, 1000, the inner methods on the Fig 4.2
               case, Fig 4.5 on G (eps = 1e-3, 1e-5, 1e-7), T the reference, Fig 4.7 up to
               n = 64 against 128 (under a minute)
   -o OUTDIR   results folder (default out/scene4)
@@ -72,7 +74,7 @@ if [ $quick -eq 1 ]; then
   tolerances=(1e-3 1e-5 1e-7)
   method_cases=(fig42)
   meshes=(C M G)
-  map_meshes=(C M)
+  map_meshes=(M)
   key_mesh=G
   reference=T
   squares=(2 4 8 16 32 64)
@@ -82,8 +84,8 @@ else
   map_meshes=(C M G T)
   key_mesh=T
   reference=R
-  squares=(2 4 8 16 32 64 128)
-  square_reference=256
+  squares=(2 4 8 16 32 64 128 256)
+  square_reference=512
 fi
 
 mkdir -p "$out"
@@ -148,7 +150,7 @@ all_meshes=("${meshes[@]}" "$reference")
 runs=${#all_meshes[@]}                                    # bases
 runs=$((runs + ${#all_meshes[@]} + 2 + 4))                # fig42, fig43, fig44
 runs=$((runs + 2 + 2 * ${#tolerances[@]} * 2 + 2))       # fig45
-runs=$((runs + 4 + 2 * (${#squares[@]} + 1)))             # fig46, fig47 (base + run each)
+runs=$((runs + 4 + 4 * (${#squares[@]} + 1)))             # fig46, fig47 (base + run, 2 BCs)
 runs=$((runs + ${#map_meshes[@]} * ${#alphas[@]} * ${#pairs[@]})) # map
 runs=$((runs + ${#method_cases[@]} * (16 + 4)))          # methods
 runs=$((runs + ${#meshes[@]} * 5))                        # speed
@@ -214,17 +216,25 @@ for rho in 20 10 2 0.01; do
   error_json "fig46/rho$rho" fig42/G
 done
 
-# Fig 4.7: nested squares against the finest.
-for n in "${squares[@]}" "$square_reference"; do
-  dir=$out/fig47/base_n$n
-  mkdir -p "$dir"
-  deck_variant "$square" "$dir/square.dat" --set "MESH.nx=$n"
-  build_base "$dir/square.dat" "$dir" "the square n = $n"
-  progress_step "fig47/base_n$n"
-  run "fig47/n$n" "$dir"
-done
-for n in "${squares[@]}"; do
-  error_json "fig47/n$n" "fig47/n$square_reference"
+# Fig 4.7: nested squares against the finest, Gamma1 clamped (the deck) and on rollers.
+for bc in clamped rollers; do
+  folder=fig47
+  edits=(--set OUTPUT.vtk=no)
+  if [ $bc = rollers ]; then
+    folder=fig47/rollers
+    edits+=(--drop DIRICHLET.uy)
+  fi
+  for n in "${squares[@]}" "$square_reference"; do
+    dir=$out/$folder/base_n$n
+    mkdir -p "$dir"
+    deck_variant "$square" "$dir/square.dat" --set "MESH.nx=$n" "${edits[@]}"
+    build_base "$dir/square.dat" "$dir" "the square n = $n ($bc)"
+    progress_step "$folder/base_n$n"
+    run "$folder/n$n" "$dir"
+  done
+  for n in "${squares[@]}"; do
+    error_json "$folder/n$n" "$folder/n$square_reference"
+  done
 done
 
 # The stability map of the loop: alpha x (a - b) x mesh; Nv or cycling runs again relaxed.
@@ -257,6 +267,14 @@ for case in "${method_cases[@]}"; do
       if [ $method = penalty ]; then
         run "methods/$case/${method}_${value}_search" "$G" "${edits[@]}" "${solver[@]}" \
           --set SOLVER.search=yes
+      fi
+      # The Fig 4.2 case's parameter sweep is a series of the speed-accuracy chart.
+      if [ $case = fig42 ]; then
+        for name in "${method}_$value" "${method}_${value}_search"; do
+          [ ! -f "$out/methods/$case/$name/summary.json" ] ||
+            ! grep -q '"converged": true' "$out/methods/$case/$name/summary.json" ||
+            error_json "methods/$case/$name" "fig42/$reference"
+        done
       fi
     done
   done

@@ -180,6 +180,22 @@ def methods_text(results):
     return " ".join(parts)
 
 
+def reference_corrected_rate(h, e, h_ref):
+    """The exponent p of ||u - u_h|| = C h^p from errors e measured against a reference of mesh
+    size h_ref, e ~ C (h^2p - h_ref^2p)^(1/2) (Galerkin orthogonality on nested spaces), by least
+    squares in log e over p (C in closed form)."""
+    import numpy as np
+    h, e = np.asarray(h, float), np.asarray(e, float)
+    best, best_p = math.inf, math.nan
+    for p in np.linspace(0.2, 2.5, 2301):
+        model = 0.5 * np.log(h ** (2 * p) - h_ref ** (2 * p))
+        logc = float(np.mean(np.log(e) - model))
+        residual = float(np.sum((np.log(e) - model - logc) ** 2))
+        if residual < best:
+            best, best_p = residual, float(p)
+    return best_p
+
+
 # --- Figures of the deformed ball -------------------------------------------------------------
 
 def draw_ball(ax, zoom, run, title, force_scale=None):
@@ -490,36 +506,44 @@ def main():
     checks.add("Fig 4.6: rho = 1e-2 within 5 % of rho = 0 in the norm of V",
                errors[-1][0] is not None and errors[-1][0] <= 0.05, ours=fmt(errors[-1][0], 3),
                target="<= 0.05")
+    per_rho = [e[1] / float(r) for e, r in zip(errors, rhos)]
     w("||.||_V = ||eps(.)||_L2 on the same mesh (sig-error). The perturbation is large: f0 acts on "
-      "the whole disc (pi R^2 = 314 m^2), so rho = 20 adds a vertical load a hundred times the "
-      "traction's; the difference falls about linearly with rho, and at rho = 1e-2 the solution "
-      "is within a few per cent of Fig 4.2's, the thesis's \"très proches\" (Remark 4.13: a "
-      "qualitative check).")
+      "the whole disc (pi R^2 = 314 m^2 against the 15.7 m of the loaded arc), so rho = 20 adds "
+      "a vertical load a hundred times the traction; ||u_rho - u||_V / rho is "
+      f"{', '.join(fmt(x, 3) for x in per_rho)} for rho = {', '.join(rhos)}: the difference "
+      f"falls with rho, about linearly, and at rho = 1e-2 it is {100 * errors[-1][0]:.2g} % of "
+      "||u||_V, the thesis's \"très proches\" (Remark 4.13: a qualitative check).")
     w("")
 
     # Fig 4.7.
     w("## Fig 4.7: ||u - u_h||_V against h on the square")
     w("")
     squares = info["squares"].split()
-    ref = info["square_reference"]
-    rows, hs, es = [], [], []
-    for n in squares:
-        r = Run(out, f"fig47/n{n}")
-        rel, e = r.error()
-        hs.append(1 / int(n))
-        es.append(e)
-        rows.append([f"1/{n}", fmt(e), fmt(rel), f"{r.cell()} ({r.inner})",
-                     counts_text(r.counts()), fmt(r.seconds, 3)])
-    for k in range(1, len(rows)):
-        rows[k].insert(3, f"{math.log2(es[k - 1] / es[k]):.2f}")
-    rows[0].insert(3, "")
-    w(markdown_table(["h", "||u_ref - P u_h||_V", "relative", "slope", "outer (inner)",
-                      "status counts", "solve s"], rows))
-    w("")
-    fit = slope_fit(hs[-3:], es[-3:])
-    fit_all = slope_fit(hs, es)
-    fig, ax = plt.subplots(figsize=(5.5, 4))
-    ax.loglog(hs, es, "o-", label=f"ours (slope {fit:.2f} on the finest three)")
+    ref = int(info["square_reference"])
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    rates = {}
+    for folder, title in (("fig47", "Gamma1 clamped (the deck, ALGORITHMS.md 1.4)"),
+                          ("fig47/rollers", "Gamma1 on rollers (u1 = 0 only)")):
+        rows, hs, es = [], [], []
+        for n in squares:
+            r = Run(out, f"{folder}/n{n}")
+            rel, e = r.error()
+            hs.append(1 / int(n))
+            es.append(e)
+            rows.append([f"1/{n}", fmt(e), fmt(rel), f"{r.cell()} ({r.inner})",
+                         counts_text(r.counts()), fmt(r.seconds, 3)])
+        local = [math.log2(es[k - 1] / es[k]) for k in range(1, len(es))]
+        for k in range(len(rows)):
+            rows[k].insert(3, f"{local[k - 1]:.2f}" if k else "")
+        raw = slope_fit(hs[-3:], es[-3:])
+        corrected = reference_corrected_rate(hs[-4:], es[-4:], 1 / ref)
+        rates[folder] = (raw, corrected, local)
+        w(f"{title}, against h = 1/{ref}:")
+        w("")
+        w(markdown_table(["h", "||u_ref - P u_h||_V", "relative", "local slope", "outer (inner)",
+                          "status counts", "solve s"], rows))
+        w("")
+        ax.loglog(hs, es, "o-", label=f"{title.split(' (')[0]}: rate {corrected:.2f}")
     ax.loglog(hs, [es[-1] * h / hs[-1] for h in hs], "k--", lw=0.8, label="slope 1")
     ax.set_xlabel("h")
     ax.set_ylabel(f"||u_ref - P u_h||_V (reference h = 1/{ref})")
@@ -532,19 +556,31 @@ def main():
     charts["fig4_7"] = "fig4_7.png"
     w("![Fig 4.7](fig4_7.png)")
     w("")
-    checks.add("Fig 4.7: slope 1 +- 0.15 (least squares over the finest three meshes)",
-               within(fit, 1, abs=0.15), ours=f"{fit:.3f}", target=1, tolerance="+-0.15")
-    local = [math.log2(es[k - 1] / es[k]) for k in range(1, len(es))]
-    growing = all(b >= a - 0.02 for a, b in zip(local, local[1:]))
-    w(f"Least-squares slope over the finest three meshes {fit:.2f}, over all {fit_all:.2f} "
-      f"(reference h = 1/{ref}; the meshes nest, so P u_h is u_h itself and the norm exact); the "
-      f"local slopes {' '.join(f'{x:.2f}' for x in local)} "
-      + ("grow as h falls: the coarse meshes are pre-asymptotic. " if growing else "do not grow "
-         "monotonically. ")
-      + "Two things hold the rate of these uniform meshes below 1: the clamped side meets the "
-      "loaded top side at (0, 1), a corner where the solution is not in H^2 (the thesis's "
-      "estimate assumes that regularity), and the error against a reference of finite h "
-      "underestimates the last meshes' (which steepens the last local slope).")
+    clamped, rollers = rates["fig47"], rates["fig47/rollers"]
+    checks.add("Fig 4.7, Gamma1 clamped (the deck): rate 1 +- 0.15", within(clamped[1], 1, abs=0.15),
+               ours=f"{clamped[1]:.3f} (raw least squares of the finest three {clamped[0]:.3f})",
+               target=1, tolerance="+-0.15")
+    checks.add("Fig 4.7, Gamma1 on rollers: rate 1 +- 0.15", within(rollers[1], 1, abs=0.15),
+               ours=f"{rollers[1]:.3f} (raw least squares of the finest three {rollers[0]:.3f})",
+               target=1, tolerance="+-0.15")
+    w("The meshes nest, so P u_h is u_h itself and the norm is exact. \"rate\" is the exponent "
+      "p of ||u - u_h||_V = C h^p fitted on the four finest meshes with the reference's own "
+      "error taken out: for a Galerkin approximation on nested spaces ||u - u_h||^2 is about "
+      "||u_ref - u_h||^2 + ||u - u_ref||^2, so the measured error is fitted as "
+      "C (h^2p - h_ref^2p)^(1/2). Without that, the last mesh's error is underestimated and its "
+      f"local slope steepened (raw least squares over the finest three: clamped "
+      f"{clamped[0]:.2f}, rollers {rollers[0]:.2f}).")
+    w("")
+    w(f"With Gamma1 clamped the rate is {clamped[1]:.2f}, not 1: the clamped side meets the "
+      "loaded top side at (0, 1) and the contact side at (0, 0), corners where the displacement is not in H^2 (at a corner where a clamped side meets "
+      "a free or loaded one the stresses grow like r^(lambda - 1) with lambda < 1, Williams's "
+      "wedge solutions), and uniform meshes then converge in the norm of V at the rate lambda. The thesis's "
+      "estimate (section 4.5) assumes the regularity that these corners take away. With rollers "
+      f"on Gamma1 (u1 = 0 only) the solution is a mirror-symmetric one without those corners' "
+      f"singularity, and the rate is {rollers[1]:.2f}: the discretization converges at the "
+      "order the thesis proves when the solution allows it. The thesis gives neither L nor the "
+      "data of its square, so its \"comportement linéairement asymptotique\" cannot be checked "
+      "against its own data; the clamped rate is reported as measured (FAIL), not tuned away.")
     w("")
 
     # Stability map of the loop.
@@ -576,7 +612,8 @@ def main():
                 row.append(MapCell(r.cell(), status, r.outer if r.converged else None))
                 rows.append([m, f"{alpha:g}", f"{float(a) - float(b):g} (a {a}, b {b})",
                              r.cell() + extra, r.inner, f"{contraction(r):.2f}",
-                             fmt(slip_range(r)[0], 2), fmt(r.seconds, 3)])
+                             int(sum(r.loop["status_changes"])), fmt(slip_range(r)[0], 2),
+                             fmt(r.seconds, 3)])
             cells.append(row)
         panels.append(MapPanel(f"mesh {m}: outer iterations", [f"alpha = {a:g}" for a in alphas],
                                [f"{float(a) - float(b):g}" for a, b in pairs], cells,
@@ -587,7 +624,7 @@ def main():
     w("![stability of the loop](stability_loop.png)")
     w("")
     w(markdown_table(["mesh", "alpha", "a - b", "outer", "inner", "contraction per step",
-                      "smallest slip (m)", "solve s"], rows))
+                      "status changes", "smallest slip (m)", "solve s"], rows))
     w("")
     failed = [(m, a, s_, r) for m, a, s_, r in map_runs if not r.converged]
     converged = [(m, a, s_, r) for m, a, s_, r in map_runs if r.converged]
@@ -596,8 +633,9 @@ def main():
     for m, alpha, spread, r in converged:
         peak[alpha] = max(peak.get(alpha, 0), r.outer)
     w("\"contraction per step\" is the geometric mean of ||u(m+1) - u(m)||_V / ||u(m) - "
-      "u(m-1)||_V over the loop; \"smallest slip\" the least |slip| of a slipping node at the "
-      f"end. {len(failed)} of {len(map_runs)} runs are Nv or cycle"
+      "u(m-1)||_V over the loop; \"status changes\" the node statuses that changed from one "
+      "convex solve to the next, summed over the loop; \"smallest slip\" the least |slip| of a "
+      f"slipping node at the end. {len(failed)} of {len(map_runs)} runs are Nv or cycle"
       + (f" ({', '.join(f'{m} alpha {a:g} a-b {s_:g}: {r.cell()}' for m, a, s_, r in failed)})"
          if failed else "") + ". "
       + (f"The slowest converging is mesh {worst[0]}, alpha {worst[1]:g}, a - b {worst[2]:g}: "
@@ -680,9 +718,25 @@ def main():
             rows.append([m, name, r.cell(), r.inner, fmt(r.seconds, 3), fmt(rel, 3)])
             if name.split("_")[0] != "penalty" and rel is not None:
                 exact.setdefault(m, []).append(rel)
+    # The inner methods' parameter sweep on G (the Fig 4.2 case): a point per parameter.
+    sweep = {}
+    if (out / "methods" / "fig42").is_dir():
+        for name in runs_under(out, "methods/fig42"):
+            r = Run(out, f"methods/fig42/{name}")
+            rel, e = r.error()
+            method = name.split("_")[0] + (" + search" if name.endswith("_search") else "")
+            parameter = f"{PARAMETER[name.split('_')[0]]}={name.split('_')[1]}"
+            sweep.setdefault(method, []).append(
+                Point(r.seconds, rel if r.converged else None, parameter))
+            rows.append(["G", f"{name} (sweep)", r.cell(), r.inner, fmt(r.seconds, 3),
+                         fmt(rel, 3)])
     speed_accuracy_chart(out / "speed_accuracy.png",
                          [Series(k, v, marker=markers.get(k.split("_")[0], "o"))
-                          for k, v in sorted(series.items())],
+                          for k, v in sorted(series.items())]
+                         + [Series(f"{k}, parameters on G", v,
+                                   marker=markers.get(k.split(" ")[0], "o"), line="",
+                                   alpha=0.5, markersize=5)
+                            for k, v in sorted(sweep.items())],
                          xlabel="sig-solve seconds (all phases but assembly)",
                          ylabel=f"||u - u_ref||_V / ||u_ref||_V (reference: mesh {reference})",
                          title="Scene 4 (Fig 4.2 case): speed against accuracy")
@@ -692,22 +746,46 @@ def main():
     w(markdown_table(["mesh", "method", "outer", "inner", "solve s", "relative error"], rows))
     w("")
     spread = max((max(v) - min(v)) / max(v) for v in exact.values()) if exact else math.nan
+    penalty = max((abs(p.y - min(exact[p.text])) / min(exact[p.text])
+                   for k, v in series.items() if k.startswith("penalty") for p in v
+                   if p.y is not None and p.text in exact), default=math.nan)
     w(f"The error is the norm of V against mesh {reference} ({MESH_NAMES[reference]}), P u_h "
       f"interpolated on it (the meshes do not nest: the interpolation error is part of it). "
-      f"pdas, alm and projection share the error of their mesh (within {100 * spread:.2g} % of "
-      "each other): the method changes the time, not the solution; penalty adds its "
-      "penetration and creep. Across meshes the error is set by the resolution of the whole "
-      "boundary, not of Gamma3 alone: the ends of Gamma1, where the imposed displacement meets "
-      "the free boundary, are singular points, so the meshes fine only along Gamma3 (C, M) "
-      "carry the largest errors although their statuses match (Fig 4.2's table).")
+      f"pdas, alm and projection reach the same error on each mesh (relative spread "
+      f"{spread:.1e}): the method changes the time, not the solution. Penalty's penetration and "
+      f"creep change it by at most {100 * penalty:.2g} % here, far below the mesh's own error. "
+      "Across meshes the error is set by the resolution of the whole boundary, not of Gamma3 "
+      "alone: the ends of Gamma1, where the imposed displacement meets the free boundary, are "
+      "singular points, so the meshes fine only along Gamma3 (C, M) carry the largest errors "
+      "although their statuses match (Fig 4.2's table). The deck's mesh G keeps the thesis's "
+      "512 boundary segments and coarsens inside.")
     w("")
-    bench = out.parent / "bench-scene4" / "bench.md"
+    bench = out.parent / "bench-scene4" / "bench.json"
     w("## Performance")
     w("")
     w("`drivers/bench-scene4.sh` times a solve at the thesis's size (mesh T, 21068 dofs, 128 "
-      "contact elements) against one factorization of its stiffness matrix; the target is at "
-      "most (outer iterations) x 0.2 factorizations beyond one factorization"
-      + (f": see `{bench}`." if bench.is_file() else " (not run with this report)."))
+      "contact elements) against one factorization of its stiffness matrix (the floor: analyze + "
+      "factorize + solve of the same mesh without contact, the faster of MUMPS and CHOLMOD) and "
+      "against the run's own factorization; the target is at most (outer iterations) x 0.2 "
+      "factorizations beyond one factorization. Every outer iteration reuses the one condensed "
+      "problem: its cost is the inner Newton steps on the dense Gamma3 problem and one interior "
+      "solve to take the norm of V of the whole body.")
+    w("")
+    if bench.is_file():
+        b = json.loads(bench.read_text())
+        rows = [[c["title"], c["outer"], c["inner"], fmt(c["phases_median"], 3),
+                 f"{c['beyond_floor_over_floor']:.2f}", f"{c['beyond_own_factorization']:.2f}",
+                 f"{c['target']:.1f}", "PASS" if c["pass"] else "FAIL"]
+                for c in b["cases"].values()]
+        w(f"From `../bench-scene4/bench.md` (medians; floor {b['floor_backend']} "
+          f"{b['floor_seconds']:.3f} s):")
+        w("")
+        w(markdown_table(["case", "outer", "inner", "phases s", "(phases - floor) / floor",
+                          "(phases - factorize) / factorize", "target 0.2 x outer", "result"],
+                         rows))
+    else:
+        w("(The benchmark was not run beside this report: `out/bench-scene4/bench.json` is "
+          "missing.)")
     w("")
 
     # Checks and the scene index entry.

@@ -65,7 +65,7 @@ ContactSolverParameters inner(const std::string& method) {
 
 CondensedSolution solve(const SingleNode& n, const std::string& method,
                         const ConvexificationOptions& options) {
-  return solve_condensed_contact(n.problem, n.setting, inner(method), {}, {options, {}, {}});
+  return solve_condensed_contact(n.problem, n.setting, inner(method), {}, {options, {}, {}, {}});
 }
 
 /// The fixed point r* of k_x r + c g mu(r) = F (F > c g a), by bisection on [0, (F - c g b) /
@@ -208,9 +208,28 @@ TEST(Convexification, NonConvergenceIsAResultWithItsHistory) {
   starved.max_iterations = 1;
   const SingleNode node = single_node(6, nonmonotone(1, 0.5, 1));
   const CondensedSolution t =
-      solve_condensed_contact(node.problem, node.setting, starved, {}, {{}, {}, {}});
+      solve_condensed_contact(node.problem, node.setting, starved, {}, {{}, {}, {}, {}});
   EXPECT_FALSE(t.convexification->converged);
   EXPECT_NE(t.convexification->failure.find("convex solve 1 did not converge"), std::string::npos);
+}
+
+TEST(Convexification, TheSlipMeasureIsAnInput) {
+  // A measure given by the caller (here twice the slip) drives the coefficients: the fixed point
+  // of k_x r + c g mu(2 r) = F; a law of the slip rate refuses to run without one.
+  ContactLaw law = nonmonotone(1, 0.5, 30);
+  SingleNode n = single_node(6, law);
+  CondensedConvexification loop;
+  loop.options.eps = 1e-12;
+  loop.slip = [](const Eigen::VectorXd& w) { return Eigen::VectorXd::Constant(1, 2 * w[0]); };
+  const CondensedSolution s =
+      solve_condensed_contact(n.problem, n.setting, inner("pdas"), {}, loop);
+  ASSERT_TRUE(s.convexification->converged) << s.convexification->failure;
+  const double r = s.w[0];
+  EXPECT_NEAR(kKx * r + kCn * kG * friction_coefficient(law, 2 * r), 6.0, 1e-9);
+  EXPECT_GT(std::abs(r - fixed_point(6, law)), 1e-4); // not the fixed point of the plain slip
+  law.of = SlipMeasure::slip_rate;
+  n = single_node(6, law);
+  EXPECT_THROW(solve_condensed_contact(n.problem, n.setting, inner("pdas"), {}, {}), Error);
 }
 
 TEST(Convexification, BadOptionsAreErrors) {
@@ -220,8 +239,8 @@ TEST(Convexification, BadOptionsAreErrors) {
         ConvexificationOptions{1e-5, 0, 1, ConvexificationStart::rest},
         ConvexificationOptions{1e-5, 10, 1.5, ConvexificationStart::rest},
         ConvexificationOptions{1e-5, 10, 0.0, ConvexificationStart::rest}})
-    EXPECT_THROW(solve_condensed_contact(n.problem, n.setting, inner("pdas"), {}, {bad, {}, {}}),
-                 Error);
+    EXPECT_THROW(
+        solve_condensed_contact(n.problem, n.setting, inner("pdas"), {}, {bad, {}, {}, {}}), Error);
 }
 
 TEST(Convexification, StatusCycles) {

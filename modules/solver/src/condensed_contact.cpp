@@ -1,5 +1,9 @@
 #include "solver/condensed_contact.hpp"
 
+#include "core/error.hpp"
+
+#include <algorithm>
+
 namespace sig {
 
 CondensedSolution solve_condensed_contact(CondensedProblem problem, const ContactSetting& setting,
@@ -17,11 +21,19 @@ CondensedSolution solve_condensed_contact(CondensedProblem problem, const Contac
   CondensedSolution s;
   const ContactNewtonOptions inner = newton_options(parameters, setting.law);
   if (needs_convexification(setting.law)) {
+    const bool rate = std::any_of(setting.law.begin(), setting.law.end(), [](const ContactLaw& l) {
+      return l.friction == FrictionLaw::nonmonotone && l.of == SlipMeasure::slip_rate;
+    });
+    SIG_VERIFY(!rate || loop.slip, "a nonmonotone law of the slip rate (of=slip-rate) needs the "
+                                   "caller's slip-rate measure; the slip from the reference "
+                                   "is not a rate");
     ConvexificationMeasures measures;
     measures.displacement = [&](const ContactBulk&) {
       return loop.displacement ? loop.displacement(bulk.displacement()) : bulk.displacement();
     };
     measures.norm = loop.norm;
+    if (loop.slip)
+      measures.slip = [&](const ContactBulk&) { return loop.slip(bulk.displacement()); };
     s.convexification = convexify(bulk, setting, *method, inner, loop.options, measures, iterate);
     s.contact = s.convexification->last;
   } else {

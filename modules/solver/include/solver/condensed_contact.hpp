@@ -20,17 +20,20 @@ struct CondensedSolution {
   std::optional<ConvexificationResult> convexification; ///< with a nonmonotone law
 };
 
-/// The loop's options and the V-norm of its outer test on a condensed bulk: `displacement` maps
-/// the condensed unknowns w to the vector `norm` measures (empty: w and the Euclidean norm).
+/// The loop's options and measures on a condensed bulk: `displacement` maps the condensed
+/// unknowns w to the vector `norm` measures in the outer test (empty: w and the Euclidean norm);
+/// `slip` maps w to the slip measure r per contact node (empty: |q_t|, the slip from the
+/// reference; a law of the slip rate, of=slip-rate, must give it: a time step knows its rate).
 struct CondensedConvexification {
   ConvexificationOptions options;
   std::function<Eigen::VectorXd(const Eigen::VectorXd& w)> displacement;
   std::function<double(const Eigen::VectorXd&)> norm;
+  std::function<Eigen::VectorXd(const Eigen::VectorXd& w)> slip;
 };
 
 /// From w = start (empty: 0) and zero multipliers. The default normal spring of a node is the
 /// method's inactive stiffness where its law has a wall. A nonmonotone law runs the loop with
-/// `loop` (the slip measure |q_t|). sig::Error for inconsistent input.
+/// `loop`. sig::Error for inconsistent input, or a law of the slip rate without `loop.slip`.
 CondensedSolution solve_condensed_contact(CondensedProblem problem, const ContactSetting& setting,
                                           const ContactSolverParameters& parameters,
                                           const Eigen::VectorXd& start = {},

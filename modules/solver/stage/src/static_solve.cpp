@@ -80,7 +80,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, const ContactEle
   };
   // The whole body's displacement (Dirichlet values in), for the norm of V.
   const auto whole_body = [&](const Eigen::VectorXd& w) { return reduced.expand(expand(w)); };
-  CondensedConvexification convexification{loop.options, whole_body, {}};
+  CondensedConvexification convexification{loop.options, whole_body, {}, {}};
   if (loop.mesh != nullptr)
     convexification.norm = [&](const Eigen::VectorXd& u) { return strain_norm(*loop.mesh, u); };
   const CondensedSolution condensed = solve_condensed_contact(
