@@ -525,6 +525,14 @@ def main():
         got = [g_rni[g] for g in expected_g]
         checks.add("R, Fig 5.5 g-series RNI equal ALGORITHMS.md 2.5's [check] 2/16/36/63",
                    got == list(expected_g.values()), ours="/".join(map(str, got)))
+    expected_c = {"0.01": 36, "5": 36, "8": 36, "12": 36, "15": 38, "20": 50}
+    if all(c in c_series for c in expected_c):
+        got = [run(f"fig57/R/c{c}").counts(run(f"fig57/R/c{c}").done())["RNI"] for c in expected_c]
+        checks.add("R, Fig 5.7 cn-series RNI equal ALGORITHMS.md 2.5's [check] 36/36/36/36/38/50",
+                   got == list(expected_c.values()), ours="/".join(map(str, got)))
+    else:
+        checks.add("R, Fig 5.7 cn-series RNI equal ALGORITHMS.md 2.5's [check] 36/36/36/36/38/50",
+                   None, detail="the quick variant runs three of the six cn")
     p50 = run("fig53/P/c10").counts(run("fig53/P/c10").step_of(0.5))
     checks.add("P: CUV dominates at t = 0.5 (ALGORITHMS.md 2.5 [check]: 53 of 63)",
                p50["CUV"] > p50["RNI"], ours=f"{p50['CUV']} CUV, {p50['RNI']} RNI")

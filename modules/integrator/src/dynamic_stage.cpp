@@ -11,7 +11,7 @@
 #include "core/log.hpp"
 #include "core/stage.hpp"
 #include "integrator/backward_euler_scheme.hpp"
-#include "integrator/velocity_history_io.hpp"
+#include "integrator/velocity_march_stage.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
@@ -161,50 +161,23 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
     records.total.push_back(records.kinetic.back() + records.elastic.back() + stored);
   };
   record_energy();
-  const bool has_contact = contact.has_value();
   const std::string label =
-      "backward-euler" + (has_contact ? " + " + solver.parameters.method : "");
-  Progress progress("sig-march " + label, time.steps, "time steps");
-  char detail[128] = "";
-  int iterations = 0, most = 0;
-  const auto observer = [&](const VelocityStep& s) {
-    record_energy();
-    iterations += s.contact.iterations();
-    most = std::max(most, s.contact.iterations());
-    std::snprintf(
-        detail, sizeof detail, "t = %.6g  E = %.6g  Newton %d%s", s.time, records.total.back(),
-        s.contact.iterations(),
-        records.outer.size() > 1
-            ? ("  outer " + std::to_string(static_cast<int>(records.outer.back()))).c_str()
-            : "");
-    progress.update(s.step, detail);
-  };
+      "backward-euler" + (contact ? " + " + solver.parameters.method : std::string());
   const VelocityHistory history =
-      march_in_velocity(march, scheme, time.steps, time.output_every, observer);
-  if (history.converged) {
-    progress.finish(detail);
-  } else {
-    progress.finish(std::string(detail) + "  STOPPED at step " +
-                    std::to_string(history.steps.back().step));
-    log_warning("sig-march stopped: " + history.failure);
-  }
+      march_with_progress(march, scheme, time, label, [&](const VelocityStep& s) {
+        record_energy();
+        char detail[96];
+        std::snprintf(detail, sizeof detail, "t = %.6g  E = %.6g  Newton %d", s.time,
+                      records.total.back(), s.contact.iterations());
+        return std::string(detail) +
+               (step_solver ? "  outer " + std::to_string(int(records.outer.back())) : "");
+      });
+  const auto [iterations, most] = newton_iterations(history);
 
   // 6. case.hist and steps.csv (both atomic), and a summary line. A failed step has no energy
   //    (its state was not accepted): it repeats the last one.
-  VelocityHistoryInfo info;
-  info.scheme = time.scheme;
-  info.backend = solver.backend;
-  info.method = has_contact ? solver.parameters.method : "linear";
-  info.k = time.k;
-  info.T = time.final_time;
-  info.steps = time.steps;
-  info.output_every = time.output_every;
-  info.seconds_factorize = march.seconds_factorize();
-  info.dense_factorizations = march.dense_factorizations();
-  if (elements) {
-    info.contact_nodes = elements->node;
-    info.weight = elements->weight;
-  }
+  VelocityHistoryInfo info =
+      velocity_history_info(time, solver, march, elements ? &*elements : nullptr);
   const std::size_t rows = history.steps.size() + 1;
   for (auto* column : {&records.kinetic, &records.elastic, &records.compliance, &records.total})
     column->resize(rows, column->back());

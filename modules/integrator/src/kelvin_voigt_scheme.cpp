@@ -19,11 +19,14 @@ QuasistaticKelvinVoigt::QuasistaticKelvinVoigt(const LinearSystem& system, Reduc
                                                 : Eigen::VectorXd::Zero(n);
   }
   S_ = k_ * reduced_.K;
+  // The right side's products read the lower triangles only: half the memory traffic.
+  elastic_lower_ = reduced_.K.triangularView<Eigen::Lower>();
   if (system.V.size() > 0) S_ += reduced_.restrict_matrix(system.V);
   // w_0 = 0 (ALGORITHMS.md C8): every history starts at P_1 = 0.
   for (const MemoryStiffness& term : system.memory) {
-    memory_stiffness_.push_back(reduced_.restrict_matrix(term.K));
-    S_ += (0.5 * k_) * memory_stiffness_.back();
+    const Eigen::SparseMatrix<double> K_m = reduced_.restrict_matrix(term.K);
+    S_ += (0.5 * k_) * K_m;
+    memory_lower_.push_back(K_m.triangularView<Eigen::Lower>());
     memory_.emplace_back(term.beta, k_, Eigen::VectorXd::Zero(n));
   }
 }
@@ -31,9 +34,9 @@ QuasistaticKelvinVoigt::QuasistaticKelvinVoigt(const LinearSystem& system, Reduc
 Eigen::VectorXd QuasistaticKelvinVoigt::right_side(int n) const {
   Eigen::VectorXd b =
       rate_.size() > 0 ? Eigen::VectorXd(reduced_.f + (n * k_) * rate_) : reduced_.load_at(n * k_);
-  b.noalias() -= reduced_.K * u_;
+  b.noalias() -= elastic_lower_.selfadjointView<Eigen::Lower>() * u_;
   for (std::size_t m = 0; m < memory_.size(); ++m)
-    b.noalias() -= k_ * (memory_stiffness_[m] * memory_[m].history());
+    b.noalias() -= memory_lower_[m].selfadjointView<Eigen::Lower>() * (k_ * memory_[m].history());
   return b;
 }
 

@@ -10,7 +10,7 @@
 #include "core/log.hpp"
 #include "core/stage.hpp"
 #include "integrator/kelvin_voigt_scheme.hpp"
-#include "integrator/velocity_history_io.hpp"
+#include "integrator/velocity_march_stage.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
@@ -89,47 +89,24 @@ void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
   const bool has_contact = c.contact.has_value();
   const std::optional<ContactElements>& elements = c.elements;
   const std::optional<VelocityContact>& contact = c.contact;
-  // The step matrix factorized and condensed here, once.
+  // 1. The scheme and the march: the step matrix factorized and condensed here, once.
   QuasistaticKelvinVoigt scheme(c.system, std::move(c.reduced), time.k, c.u0);
   LinearContactMarch march(scheme, contact ? &*contact : nullptr, solver.parameters,
                            solver.backend);
 
-  // 4. March, with a progress line.
+  // 2. March, with a progress line.
   const std::string label = "quasistatic" + (has_contact ? " + " + solver.parameters.method : "");
-  Progress progress("sig-march " + label, time.steps, "time steps");
-  char detail[96] = "";
-  int iterations = 0, most = 0;
-  const auto observer = [&](const VelocityStep& s) {
-    iterations += s.contact.iterations();
-    most = std::max(most, s.contact.iterations());
-    std::snprintf(detail, sizeof detail, "t = %.6g  Newton %d", s.time, s.contact.iterations());
-    progress.update(s.step, detail);
-  };
   const VelocityHistory history =
-      march_in_velocity(march, scheme, time.steps, time.output_every, observer);
-  if (history.converged) {
-    progress.finish(detail);
-  } else {
-    progress.finish(std::string(detail) + "  STOPPED at step " +
-                    std::to_string(history.steps.back().step));
-    log_warning("sig-march stopped: " + history.failure);
-  }
+      march_with_progress(march, scheme, time, label, [](const VelocityStep& s) {
+        char detail[96];
+        std::snprintf(detail, sizeof detail, "t = %.6g  Newton %d", s.time, s.contact.iterations());
+        return std::string(detail);
+      });
+  const auto [iterations, most] = newton_iterations(history);
 
-  // 5. case.hist and steps.csv (both atomic), and a summary line.
-  VelocityHistoryInfo info;
-  info.scheme = time.scheme;
-  info.backend = solver.backend;
-  info.method = has_contact ? solver.parameters.method : "linear";
-  info.k = time.k;
-  info.T = time.final_time;
-  info.steps = time.steps;
-  info.output_every = time.output_every;
-  info.seconds_factorize = march.seconds_factorize();
-  info.dense_factorizations = march.dense_factorizations();
-  if (elements) {
-    info.contact_nodes = elements->node;
-    info.weight = elements->weight;
-  }
+  // 3. case.hist and steps.csv (both atomic), and a summary line.
+  const VelocityHistoryInfo info =
+      velocity_history_info(time, solver, march, elements ? &*elements : nullptr);
   write_velocity_hist(args.ds_path("hist"), history, scheme.reduced(), info, datafile.title());
   const auto csv_path = args.outdir / "steps.csv";
   write_file_atomically(csv_path, velocity_steps_csv(history, info));

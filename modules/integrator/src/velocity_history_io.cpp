@@ -118,19 +118,23 @@ void write_velocity_hist(const std::filesystem::path& path, const VelocityHistor
   const auto outputs = static_cast<std::int64_t>(kept.size());
 
   std::vector<std::int64_t> step{0}, iterations{0}, converged{1};
-  std::vector<double> time{0.0}, seconds{0.0};
+  std::vector<double> time{0.0}, seconds{0.0}, seconds_right_side{0.0}, seconds_contact{0.0};
   for (const VelocityStep& s : history.steps) {
     step.push_back(s.step);
     time.push_back(s.time);
     iterations.push_back(s.contact.iterations());
     converged.push_back(s.converged() ? 1 : 0);
     seconds.push_back(s.seconds);
+    seconds_right_side.push_back(s.seconds_right_side);
+    seconds_contact.push_back(s.seconds_contact);
   }
   ds.put("step", step);
   ds.put("time", time);
   ds.put("newton_iterations", iterations);
   ds.put("step_converged", converged);
   ds.put("step_seconds", seconds);
+  ds.put("step_seconds_right_side", seconds_right_side);
+  ds.put("step_seconds_contact", seconds_contact);
   ds.put_int("converged", history.converged ? 1 : 0);
   ds.put_text("failure", history.failure);
   check_step_columns(history, info);

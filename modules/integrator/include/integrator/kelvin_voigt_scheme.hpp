@@ -48,8 +48,9 @@ private:
   Eigen::VectorXd rate_;
   double k_;
   Eigen::SparseMatrix<double> S_;
-  std::vector<Eigen::SparseMatrix<double>> memory_stiffness_; ///< K_m on the free dofs
-  std::vector<ExponentialMemory> memory_;                     ///< P_m
+  Eigen::SparseMatrix<double> elastic_lower_;             ///< K_B's lower triangle
+  std::vector<Eigen::SparseMatrix<double>> memory_lower_; ///< the K_m's lower triangles
+  std::vector<ExponentialMemory> memory_;                 ///< P_m
   Eigen::VectorXd u_;
 };
 

@@ -9,8 +9,9 @@
 // factorization, Schur complement and the condensed problem's Cholesky); sparse_factorizations,
 // dense_factorizations (integers: 1 and 1 unless the condensed bulk reordered); per step
 // 0 .. the last step done or failed: step, time, newton_iterations, step_converged,
-// step_seconds. With contact: contact_node (1-based mesh nodes, CONT order), weight; per step
-// {rows, p} (row 0 the initial state, zeros): velocity_n, velocity_t (the normal velocity
+// step_seconds, and of it step_seconds_right_side (the scheme's b_n) and step_seconds_contact
+// (the contact problem). With contact: contact_node (1-based mesh nodes, CONT order), weight; per
+// step {rows, p} (row 0 the initial state, zeros): velocity_n, velocity_t (the normal velocity
 // towards the obstacle and the tangential one), displacement_n (sum of k velocity_n: the normal
 // displacement since t = 0), force_n, force_t (nodal forces), normal_status, friction_status
 // (contact/contact_status.hpp codes: free 0, RNI 1, CUV 2; none 0, S= 1, S+ 2, S- 3); and

@@ -1,0 +1,177 @@
+#!/usr/bin/env bash
+# drivers/scene6.sh [--quick] [-o OUTDIR]: the viscoelastodynamic rail of thesis ch. 6.4 (scene 6,
+# ../shared/SCENES.md, ../shared/ALGORITHMS.md 3, datafiles/scene6/rail.dat): a clamped strip with
+# inertia on a compliant foundation under a moving Gaussian load, friction of the slip rate by the
+# convexification loop in every step of the dynamic backward Euler; then its report
+# (postproc/scene6_report.py: Figs 6.2-6.5, the checks, speed against accuracy, the stability map).
+#
+# Runs (each a folder of OUTDIR with its deck, the DS files of its chain and the stages' logs):
+#   winkler/psi<psi>      ALGORITHMS.md 3.6 check 2: static, bilateral springs, load at x0 = 1,
+#                         against postproc/winkler_strip.py (psi = 10, 50, 200)
+#   figs/friction         the deck: h = 1/64, k = 0.01, friction; every other state for ParaView
+#                         (Figs 6.2, 6.3, the statuses per node)
+#   figs/frictionless     the same without friction (Fig 6.3 beside it; the quasi-static check)
+#   figs/psi10, psi200    frictionless, psi = 10 and 200 (Fig 6.4, t = 0.5)
+#   quasistatic/t<t>      static solves with the load held at x0 = 2 t, frictionless (ALGORITHMS.md
+#                         3.6 check 1: the dynamic rail must equal them)
+#   viscosity/kv          figs/friction with a small Kelvin-Voigt viscosity (the thesis neglects it)
+#   convergence/n<N>      h = k = 1/N with friction, N = 2 ... 128, and the reference N = 256
+#                         (Fig 6.5 by sig-error); pdas, and alm for speed against accuracy
+#   stability/n<n>_k<K>_a<alpha>   the map: mesh x k x alpha -> outer and Newton counts per step, Nv
+# --quick: figures at h = 1/32, N = 2 ... 16 against N = 32, a smaller map (about a minute).
+#
+# Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
+
+usage() {
+  cat <<EOF
+usage: drivers/scene6.sh [--quick] [-o OUTDIR]
+  --quick     figures at h = 1/32, Fig 6.5 for h = k = 1/2 ... 1/16 against 1/32, a smaller map
+  -o OUTDIR   results folder (default out/scene6)
+  -h, --help  this message
+Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
+EOF
+}
+
+invocation="drivers/scene6.sh${*:+ $*}"
+template=$root/datafiles/scene6/rail.dat
+winkler_template=$root/datafiles/scene6/winkler.dat
+parse_quick_out out/scene6 "$@"
+require_stages mesh material contact assemble solve march post error
+[ -r "$template" ] || die "cannot read the deck $template"
+require_charts
+
+if [ $quick -eq 1 ]; then
+  figure_n=32
+  convergence_n=(2 4 8 16)
+  reference_n=32
+  alm_n=(4 8 16)
+  winkler_ny=16
+  stability_n=(16 32)
+  stability_k=(8 32)
+  stability_alpha=(20 2000)
+else
+  figure_n=64
+  convergence_n=(2 4 8 16 32 64 128)
+  reference_n=256
+  alm_n=(4 8 16 32 64)
+  winkler_ny=32
+  stability_n=(16 64 128)
+  stability_k=(8 32 128 512)
+  stability_alpha=(2 20 200 2000 20000)
+fi
+quasistatic_t=(0.2 0.4 0.6 0.8)
+# [choice] the viscosity of the labelled variant: eta1 = 0.001, eta2 = 0.002 GPa s: viscous stresses
+# of eta / (E tau) ~ 4e-4 of the elastic ones at the load's time scale tau = 0.05 s.
+viscosity="eta1=0.001 eta2=0.002"
+
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+rm -rf "$out/winkler" "$out/figs" "$out/quasistatic" "$out/viscosity" "$out/convergence" \
+  "$out/stability"
+{
+  provenance
+  echo "quick: $quick"
+  echo "figure_n: $figure_n"
+  echo "convergence_n: ${convergence_n[*]}"
+  echo "reference_n: $reference_n"
+  echo "alm_n: ${alm_n[*]}"
+  echo "winkler_ny: $winkler_ny"
+  echo "stability: n ${stability_n[*]}; k 1/${stability_k[*]}; alpha ${stability_alpha[*]}"
+  echo "viscosity: $viscosity"
+} >"$out/command.txt"
+cp "$template" "$out/rail.template.dat"
+
+# A run whose stage fails (a crash: a Newton or convexification failure is a result, "Nv") is
+# listed here; the other runs and the report go on, and the script exits 1 at the end.
+failed=()
+
+# run DIR TEMPLATE EDIT...: the deck TEMPLATE with the edits (deck_variant) in DIR/rail.dat, and
+# its chain of stages in DIR (sig-march for a deck with a TIME card, else sig-solve), each stage's
+# output in DIR/<stage>.log.
+run() {
+  local dir=$1 deck_template=$2 stage solve=solve
+  shift 2
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  deck_variant "$deck_template" "$dir/rail.dat" "$@"
+  deck_has "$dir/rail.dat" TIME && solve=march
+  for stage in mesh material contact assemble "$solve" post; do
+    run_stage "$stage" "$dir/rail.dat" "$dir" || { failed+=("$dir"); break; }
+  done
+  progress_step "${dir#"$out"/}"
+}
+
+# march_edits N K EVERY VTK: the mesh, step and output of a march.
+march_edits() {
+  echo --set MESH.nx=$1 --set MESH.ny=$1 --set TIME.k=$2 --set TIME.output_every=$3 \
+    --set OUTPUT.vtk=$4
+}
+frictionless=(--drop-card FRICTION --drop-card CONVEXIFICATION)
+inverse() { "$python" -c "print(repr(1 / $1))"; }
+
+runs=$((3 + 4 + ${#quasistatic_t[@]} + 1 + ${#convergence_n[@]} + 1 + ${#alm_n[@]} +
+  ${#stability_n[@]} * ${#stability_k[@]} * ${#stability_alpha[@]}))
+progress_begin $runs
+start=$SECONDS
+
+# 1. The Winkler strip (static, bilateral springs).
+for psi in 10 50 200; do
+  run "$out/winkler/psi$psi" "$winkler_template" --set MESH.ny=$winkler_ny \
+    --set MOVINGLOAD.psi=$psi
+done
+
+# 2. The figures: h = 1/figure_n, k = 0.01 (t = 0.2 ... 0.8 and 0.5 are steps).
+run "$out/figs/friction" "$template" $(march_edits $figure_n 0.01 2 yes)
+run "$out/figs/frictionless" "$template" $(march_edits $figure_n 0.01 10 no) "${frictionless[@]}"
+for psi in 10 200; do
+  run "$out/figs/psi$psi" "$template" $(march_edits $figure_n 0.01 50 yes) "${frictionless[@]}" \
+    --set MOVINGLOAD.psi=$psi
+done
+
+# 3. The quasi-static limit: static solves with the load held where it is at t.
+for t in "${quasistatic_t[@]}"; do
+  run "$out/quasistatic/t$t" "$template" --set MESH.nx=$figure_n --set MESH.ny=$figure_n \
+    --drop-card TIME "${frictionless[@]}" --set MOVINGLOAD.c=0 \
+    --set MOVINGLOAD.x0="$("$python" -c "print(2 * $t)")" --set OUTPUT.vtk=no
+done
+
+# 4. A small viscosity, which the thesis neglects.
+run "$out/viscosity/kv" "$template" $(march_edits $figure_n 0.01 10 no) \
+  --replace-card MATERIAL "MATERIAL law=kelvin-voigt E=100 nu=0.3 $viscosity plane=strain rho=1e-6"
+
+# 5. Fig 6.5: h = k = 1/N against N = reference_n; states kept at multiples of 1/16 (or every
+#    step below N = 16), so that the maximum over the coarse time levels is taken at shared times.
+every() { [ "$1" -ge 16 ] && echo $(($1 / 16)) || echo 1; }
+for n in "${convergence_n[@]}" "$reference_n"; do
+  run "$out/convergence/n$n" "$template" $(march_edits "$n" "$(inverse "$n")" "$(every "$n")" no) \
+    --set SOLVER.linear=mumps
+done
+for n in "${alm_n[@]}"; do
+  run "$out/convergence/alm_n$n" "$template" $(march_edits "$n" "$(inverse "$n")" "$(every "$n")" no) \
+    --set SOLVER.linear=mumps --set SOLVER.method=alm
+done
+for dir in "$out"/convergence/*; do
+  [ "$dir" = "$out/convergence/n$reference_n" ] && continue
+  [ -e "$dir/case.hist" ] || continue
+  "$bin/sig-error" --json "$dir" "$out/convergence/n$reference_n" >"$dir/error.json" \
+    2>"$dir/error.log" || failed+=("$dir (sig-error)")
+done
+
+# 6. The stability map of the loop: mesh x k x alpha.
+for n in "${stability_n[@]}"; do
+  for kk in "${stability_k[@]}"; do
+    for alpha in "${stability_alpha[@]}"; do
+      run "$out/stability/n${n}_k${kk}_a$alpha" "$template" \
+        $(march_edits "$n" "$(inverse "$kk")" "$kk" no) --set FRICTION.alpha=$alpha
+    done
+  done
+done
+echo "scene6.sh: all runs done in $((SECONDS - start)) s"
+record_seconds $start
+
+"$python" "$root/postproc/scene6_report.py" "$out"
+if [ ${#failed[@]} -gt 0 ]; then
+  die "${#failed[@]} run(s) failed: ${failed[*]}"
+fi
