@@ -64,8 +64,7 @@ struct Ring {
   void with_emm() {
     std::vector<int> gamma3;
     for (int i = 0; i < mesh.num_nodes(); ++i)
-      if (std::abs((mesh.nodes[i] - centre).norm() - 10.0) < 1e-9)
-        gamma3.push_back(i);
+      if (std::abs((mesh.nodes[i] - centre).norm() - 10.0) < 1e-9) gamma3.push_back(i);
     ASSERT_EQ(gamma3.size(), 32u); // the outer circle's nodes
     mass = equivalent_mass_matrix(mass, mesh, gamma3);
   }
@@ -248,8 +247,8 @@ class ImpactOfEveryStrategy
 
 TEST_P(ImpactOfEveryStrategy, BalancesEnergyAndMomentumThroughTheImpact) {
   const auto [strategy, mu, friction, emm] = GetParam();
-  const ImpactRun r = impact(
-      strategy, coulomb(mu, std::string(strategy) == "ipm" ? 0.002 : 0.0, friction), emm);
+  const ImpactRun r =
+      impact(strategy, coulomb(mu, std::string(strategy) == "ipm" ? 0.002 : 0.0, friction), emm);
   ASSERT_TRUE(r.history.converged) << r.history.failure << strategy;
   const auto& E = r.history.energy;
   const double e0 = E[0].total;
