@@ -37,7 +37,7 @@ EOF
 invocation="drivers/bench-scene4.sh${*:+ $*}"
 parse_repeat_out out/bench-scene4 5 "$@"
 template=$root/datafiles/scene4/ball.dat
-[ -r "$template" ] || die "cannot read $template"
+require_decks "$template"
 require_stages mesh material contact assemble solve post
 
 mkdir -p "$out"
