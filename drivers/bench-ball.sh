@@ -27,18 +27,9 @@ EOF
 out=out/bench-ball
 repeat=3
 steps=2000
-while [ $# -gt 0 ]; do
-  case $1 in
-    --repeat) [ $# -ge 2 ] || die "--repeat needs a number"; repeat=$2; shift ;;
-    --steps) [ $# -ge 2 ] || die "--steps needs a number"; steps=$2; shift ;;
-    -o) [ $# -ge 2 ] || die "-o needs a folder"; out=$2; shift ;;
-    -h | --help) usage; exit 0 ;;
-    *) usage >&2; die "unknown argument '$1'" ;;
-  esac
-  shift
-done
-[[ $repeat =~ ^[1-9][0-9]*$ ]] || die "--repeat $repeat is not a positive whole number"
-[[ $steps =~ ^[1-9][0-9]*$ ]] || die "--steps $steps is not a positive whole number"
+parse_options --repeat=repeat --steps=steps -o=out -- "$@"
+require_positive --repeat "$repeat"
+require_positive --steps "$steps"
 require_stages mesh material contact assemble march
 gmsh=${GMSH:-gmsh}
 command -v "$gmsh" >/dev/null || die "no gmsh ($gmsh)"

@@ -49,34 +49,11 @@ repeat=5
 grading=
 getfem=1
 friction=1
-while [ $# -gt 0 ]; do
-  case $1 in
-    --n | --grading | --repeat | -o)
-      [ $# -ge 2 ] || die "$1 needs a value"
-      case $1 in
-        --n) n=$2 ;;
-        --grading) grading=$2 ;;
-        --repeat) repeat=$2 ;;
-        -o) out=$2 ;;
-      esac
-      shift
-      ;;
-    --no-getfem) getfem=0 ;;
-    --no-friction) friction=0 ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    *)
-      usage >&2
-      die "unknown argument '$1'"
-      ;;
-  esac
-  shift
-done
+parse_options --n=n --grading=grading --repeat=repeat -o=out --no-getfem:getfem=0 \
+  --no-friction:friction=0 -- "$@"
 [[ $n =~ ^[0-9]+$ ]] && [ "$n" -ge 4 ] && [ $((n % 2)) -eq 0 ] || die "--n must be an even integer >= 4, got '$n'"
 [ -z "$grading" ] || [[ $grading =~ ^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$ ]] || die "--grading must be a number >= 0, got '$grading'"
-[[ $repeat =~ ^[0-9]+$ ]] && [ "$repeat" -ge 1 ] || die "--repeat must be a positive integer, got '$repeat'"
+require_positive --repeat "$repeat"
 require_stages mesh material contact assemble solve post
 
 # Per problem: its template deck, its methods with their parameter values.
@@ -88,7 +65,7 @@ declare -A value=([hertz_pdas]=1e2 [hertz_projection]=1e2 [hertz_alm]=1e2 [hertz
 problems=(hertz)
 [ $friction -eq 0 ] || problems+=(coulomb)
 for problem in "${problems[@]}"; do
-  [ -r "${template[$problem]}" ] || die "cannot read the template deck ${template[$problem]}"
+  require_decks "${template[$problem]}"
 done
 
 mkdir -p "$out"
@@ -169,12 +146,9 @@ if [ $getfem -eq 1 ]; then
 fi
 
 {
-  echo "command: $invocation"
+  bench_provenance
   echo "outdir: $out"
   echo "grading: $(deck_value "$out/hertz/base/hertz.dat" MESH grading)"
-  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
   echo "problems: ${problems[*]}"
   echo "getfem_hertz: ${getfem_json[hertz]:-}"
   echo "getfem_coulomb: ${getfem_json[coulomb]:-}"

@@ -41,7 +41,7 @@ template=$root/datafiles/friction/hertz_coulomb.dat
 parse_quick_out out/friction_hertz "$@"
 
 require_stages mesh material contact assemble solve post
-[ -r "$template" ] || die "cannot read the template deck $template"
+require_decks "$template"
 require_charts
 
 if [ $quick -eq 1 ]; then

@@ -60,9 +60,7 @@ square=$root/datafiles/scene4/square.dat
 parse_quick_out out/scene4 "$@"
 
 require_stages mesh material contact assemble solve post error
-for deck in "$template" "$square"; do
-  [ -r "$deck" ] || die "cannot read the deck $deck"
-done
+require_decks "$template" "$square"
 require_charts
 
 alphas=(1 10 100 300 1000)
@@ -127,18 +125,7 @@ run() {
   rm -rf "$dir"
   mkdir -p "$dir"
   deck_variant "$base_deck" "$deck" "$@"
-  link_ds "$base_dir" "$dir" nopo mili
-  if cmp -s <(deck_cards "$deck" CONTACT FRICTION) <(deck_cards "$base_deck" CONTACT FRICTION); then
-    link_ds "$base_dir" "$dir" cont
-  else
-    run_stage contact "$deck" "$dir" || { failed+=("$dir"); progress_step "$name"; return 0; }
-  fi
-  if cmp -s <(deck_cards "$deck" DIRICHLET TRACTION PRESSURE BODYFORCE) \
-    <(deck_cards "$base_deck" DIRICHLET TRACTION PRESSURE BODYFORCE); then
-    link_ds "$base_dir" "$dir" tae
-  else
-    run_stage assemble "$deck" "$dir" || { failed+=("$dir"); progress_step "$name"; return 0; }
-  fi
+  variant_ds "$base_deck" "$dir" "$deck" || { failed+=("$dir"); progress_step "$name"; return 0; }
   run_stage solve "$deck" "$dir" && run_stage post "$deck" "$dir" || failed+=("$dir")
   progress_step "$name"
 }

@@ -48,9 +48,7 @@ rescaled=$root/datafiles/scene5/strip_rescaled.dat
 parse_quick_out out/scene5 "$@"
 
 require_stages mesh material contact assemble march post error
-for deck in "$template" "$rescaled"; do
-  [ -r "$deck" ] || die "cannot read the deck $deck"
-done
+require_decks "$template" "$rescaled"
 require_charts
 
 if [ $quick -eq 1 ]; then
@@ -104,18 +102,7 @@ run() {
   mkdir -p "$dir"
   deck_variant "$deck_template" "$deck" --replace-card MESH "$(deck_cards "$base_deck" MESH)" \
     --replace-card TIME "$(deck_cards "$base_deck" TIME)" "$@"
-  link_ds "$base_dir" "$dir" nopo mili
-  if cmp -s <(deck_cards "$deck" CONTACT FRICTION) <(deck_cards "$base_deck" CONTACT FRICTION); then
-    link_ds "$base_dir" "$dir" cont
-  else
-    run_stage contact "$deck" "$dir" || { failed+=("$dir"); progress_step "$name"; return 0; }
-  fi
-  if cmp -s <(deck_cards "$deck" DIRICHLET TRACTION PRESSURE BODYFORCE) \
-    <(deck_cards "$base_deck" DIRICHLET TRACTION PRESSURE BODYFORCE); then
-    link_ds "$base_dir" "$dir" tae
-  else
-    run_stage assemble "$deck" "$dir" || { failed+=("$dir"); progress_step "$name"; return 0; }
-  fi
+  variant_ds "$base_deck" "$dir" "$deck" || { failed+=("$dir"); progress_step "$name"; return 0; }
   if run_stage march "$deck" "$dir"; then
     if [ "$(deck_value "$deck" OUTPUT vtk || echo yes)" != no ]; then
       run_stage post "$deck" "$dir" || failed+=("$dir")

@@ -42,7 +42,7 @@ template=$root/datafiles/scene7a/hertz.dat
 parse_quick_out out/scene7a "$@"
 
 require_stages mesh material contact assemble solve post
-[ -r "$template" ] || die "cannot read the template deck $template"
+require_decks "$template"
 require_charts
 
 # The error study keeps its N = 512 reference in the quick variant too: against a reference

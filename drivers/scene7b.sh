@@ -1,19 +1,21 @@
 #!/usr/bin/env bash
 # drivers/scene7b.sh [--quick | --full] [-o OUTDIR]: the hyperelastic ring of thesis ch. 7.4.2
-# (scene 7b, ../shared/SCENES.md) with the methods and parameters of Tables 7.4 and 7.5, then its
-# report.
+# (scene 7b, ../shared/SCENES.md) with the methods and parameters of Tables 7.4 and 7.5, in one
+# load step as the thesis ran it, and the same runs in 14 load steps beside them; then its report.
 #
-#   default: N = 128 256       (about 70 s on the shared 2 cores)
-#   --quick: N = 128           (about 13 s)
-#   --full:  N = 128 256 512   (about 5.5 min: the projection method at c = 1e2 needs ~100 Newton
-#                               iterations per load step)
+#   default: N = 128 256       (about 1.5 min on the shared 2 cores)
+#   --quick: N = 128           (about 20 s)
+#   --full:  N = 128 256 512   (about 7 min: the projection method at c = 1e2 in 14 load steps
+#                               needs ~100 Newton iterations per load step)
 #
 # Per N the bulk stages (sig-mesh, sig-material, sig-contact, sig-assemble) run once into
 # OUTDIR/N<N>/base/; each method and parameter then gets OUTDIR/N<N>/<method>[_<value>]/ with
 # symlinks to the base DS files, its own deck (datafiles/scene7b/ring.dat with N, method and
-# parameter replaced), the case.b of sig-solve (large deformation: 14 load steps) and the
-# summary.json + contact.csv of sig-post. The runs of Figs 7.13-7.16 (pdas and projection at
-# 1e4, alm) also get ring.pvd with one ring_NNNN.vtu per load step (time = load factor).
+# parameter replaced: one load step, the deck's reading of the thesis), the case.b of sig-solve
+# and the summary.json + contact.csv of sig-post; the same runs in the labelled variant
+# LOADSTEPS n=14 go to OUTDIR/loadsteps14/N<N>/<method>[_<value>]/ (the robust path a user would
+# take for a harder crush: what load stepping costs and buys). The runs of Figs 7.13-7.16 (pdas
+# and projection at 1e4, alm) also get ring.pvd with one ring_NNNN.vtu per load step.
 #
 #   pdas        gamma in 1 10 1e2 1e3 1e4 1e5 1e6   (Table 7.5, and gamma = 1)
 #   projection  c     in 1 10 1e2 1e3 1e4 1e5 1e6   (Table 7.4, and c = 1)
@@ -21,10 +23,13 @@
 #                                                    not print its r)
 # Every run is bounded by the deck's maxit (Newton iterations per load step, 200): a run that
 # does not converge within it stops at that step as "Nv", the later steps are not attempted.
-# The accuracy of each run is measured against OUTDIR/reference: PDAS gamma = 1e4 on the next
-# finer ring, N = 2 x (largest N) (512 by default, 256 quick, 1024 full), whose Gamma3 nodes
-# include those of every coarser ring (the grid is halved exactly): error of the vertical reaction
-# on AB and of the final pressure at the shared nodes, charted against the solve time.
+# When /usr/bin/python3 imports getfem, postproc/getfem_ring.py solves the one-step crush on the
+# same mesh per N (OUTDIR/N<N>/getfem.json: its Newton iterations and reaction beside ours).
+# The accuracy of each run is measured against OUTDIR/reference: PDAS gamma = 1e4 in one load
+# step on the next finer ring, N = 2 x (largest N) (512 by default, 256 quick, 1024 full), whose
+# Gamma3 nodes include those of every coarser ring (the grid is halved exactly): error of the
+# vertical reaction on AB and of the final pressure at the shared nodes, charted against the
+# solve time.
 # Then postproc/scene7b_report.py OUTDIR writes OUTDIR/report.md, its PNG charts and
 # OUTDIR/scene.json (the scene index entry; OUTDIR/command.txt says how the runs were made).
 #
@@ -61,57 +66,81 @@ template=$root/datafiles/scene7b/ring.dat
 require_stages mesh material contact assemble solve post
 require_charts
 
-# deck TEMPLATE OUTPUT N METHOD FIELD VALUE VTK: the template with MESH N= and the SOLVER card's
-# method and parameter replaced (any r=, gamma=, c= of the template dropped), OUTPUT vtk=VTK.
+# deck TEMPLATE OUTPUT N METHOD FIELD VALUE VTK STEPS: the template with MESH N= and the SOLVER
+# card's method and parameter replaced (any r=, gamma=, c= of the template dropped), OUTPUT
+# vtk=VTK, LOADSTEPS n=STEPS.
 deck() {
   deck_variant "$1" "$2" --set "MESH.N=$3" --drop SOLVER.gamma --drop SOLVER.c --drop SOLVER.r \
-    --set "SOLVER.method=$4" --set "SOLVER.$5=$6" --set "OUTPUT.vtk=$7"
+    --set "SOLVER.method=$4" --set "SOLVER.$5=$6" --set "OUTPUT.vtk=$7" --set "LOADSTEPS.n=$8"
 }
 
 declare -A field=([pdas]=gamma [projection]=c [alm]=r)
 declare -A values=([pdas]="1 10 1e2 1e3 1e4 1e5 1e6" [projection]="1 10 1e2 1e3 1e4 1e5 1e6" [alm]="1e3")
+steps=$(deck_value "$template" LOADSTEPS n) || die "$template: no LOADSTEPS n="
+variant_steps=14
+[ "$steps" != "$variant_steps" ] || die "$template: LOADSTEPS n=$steps is already the variant's"
+getfem=0
+if /usr/bin/python3 -c 'import getfem' 2>/dev/null; then getfem=1; fi
 rm -rf "$out"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 {
   provenance
   echo "sizes: ${sizes[*]}"
+  echo "load steps: $steps (variant $variant_steps in loadsteps$variant_steps/)"
 } >"$out/command.txt"
 start=$SECONDS
-# Runs: per mesh a base, 7 pdas, 7 projection and 1 alm; then the reference.
-progress_begin $((16 * ${#sizes[@]} + 1))
+
+# sweep ROOT N STEPS BASE: every method and parameter at N in STEPS load steps, into ROOT/N<N>/.
+sweep() {
+  local root_dir=$1 n=$2 nsteps=$3 base=$4 method value dir vtk
+  for method in pdas alm projection; do
+    for value in ${values[$method]}; do
+      if [ "$method" = alm ]; then dir=$root_dir/N$n/alm; else dir=$root_dir/N$n/${method}_$value; fi
+      mkdir -p "$dir"
+      for ds in nopo mili cont tae; do ln -s "$base/case.$ds" "$dir/case.$ds"; done
+      vtk=no
+      if [ "$method" = alm ] || [ "$value" = 1e4 ]; then vtk=yes; fi
+      deck "$template" "$dir/ring.dat" "$n" "$method" "${field[$method]}" "$value" "$vtk" "$nsteps"
+      "$bin/sig-solve" "$dir/ring.dat" -o "$dir" >"$dir/solve.log" 2>&1 ||
+        die "sig-solve failed for N = $n $method $value, $nsteps load steps (see $dir/solve.log)"
+      "$bin/sig-post" "$dir/ring.dat" -o "$dir" >"$dir/post.log" 2>&1 ||
+        die "sig-post failed for N = $n $method $value, $nsteps load steps (see $dir/post.log)"
+      echo "N=$n $method ${field[$method]}=$value: $(grep -o '[0-9/]* load steps.*' "$dir/solve.log" | sed 's/, solve.*//')"
+      progress_step "${dir#"$out"/}"
+    done
+  done
+}
+
+# Runs: per mesh a base, 15 runs in one step, 15 in the variant, GetFEM; then the reference.
+progress_begin $((32 * ${#sizes[@]} + 1))
 for n in "${sizes[@]}"; do
   base=$out/N$n/base
   mkdir -p "$base"
-  deck "$template" "$base/ring.dat" "$n" pdas gamma 1e3 no
+  deck "$template" "$base/ring.dat" "$n" pdas gamma 1e3 no "$steps"
   for stage in mesh material contact assemble; do
     "$bin/sig-$stage" "$base/ring.dat" -o "$base" >"$base/$stage.log" 2>&1 ||
       die "sig-$stage failed at N = $n (see $base/$stage.log)"
   done
   progress_step "N$n/base"
-  for method in pdas alm projection; do
-    for value in ${values[$method]}; do
-      if [ "$method" = alm ]; then dir=$out/N$n/alm; else dir=$out/N$n/${method}_$value; fi
-      mkdir -p "$dir"
-      for ds in nopo mili cont tae; do ln -s "$base/case.$ds" "$dir/case.$ds"; done
-      vtk=no
-      if [ "$method" = alm ] || [ "$value" = 1e4 ]; then vtk=yes; fi
-      deck "$template" "$dir/ring.dat" "$n" "$method" "${field[$method]}" "$value" "$vtk"
-      "$bin/sig-solve" "$dir/ring.dat" -o "$dir" >"$dir/solve.log" 2>&1 ||
-        die "sig-solve failed for N = $n $method $value (see $dir/solve.log)"
-      "$bin/sig-post" "$dir/ring.dat" -o "$dir" >"$dir/post.log" 2>&1 ||
-        die "sig-post failed for N = $n $method $value (see $dir/post.log)"
-      echo "N=$n $method ${field[$method]}=$value: $(grep -o '[0-9/]* load steps.*' "$dir/solve.log" | sed 's/, solve.*//')"
-      progress_step "${dir#"$out"/}"
-    done
-  done
+  sweep "$out" "$n" "$steps" "$base"
+  sweep "$out/loadsteps$variant_steps" "$n" "$variant_steps" "$base"
+  if [ $getfem -eq 1 ]; then
+    /usr/bin/python3 "$root/postproc/getfem_ring.py" --deck "$base/ring.dat" --repeat 1 \
+      --json "$out/N$n/getfem.json" >"$out/N$n/getfem.log" 2>&1 ||
+      die "postproc/getfem_ring.py failed at N = $n (see $out/N$n/getfem.log)"
+    tail -1 "$out/N$n/getfem.log"
+  else
+    echo "scene7b.sh: /usr/bin/python3 cannot import getfem: no GetFEM comparison at N = $n"
+  fi
+  progress_step "N$n/getfem"
 done
 
 # The reference for the accuracy: PDAS on the ring with twice the largest N.
 n_ref=$((2 * sizes[${#sizes[@]} - 1]))
 reference=$out/reference
 mkdir -p "$reference"
-deck "$template" "$reference/ring.dat" "$n_ref" pdas gamma 1e4 no
+deck "$template" "$reference/ring.dat" "$n_ref" pdas gamma 1e4 no "$steps"
 for stage in mesh material contact assemble solve post; do
   "$bin/sig-$stage" "$reference/ring.dat" -o "$reference" >"$reference/$stage.log" 2>&1 ||
     die "sig-$stage failed for the reference N = $n_ref (see $reference/$stage.log)"

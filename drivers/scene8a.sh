@@ -49,7 +49,7 @@ gmsh=${GMSH:-gmsh}
 parse_quick_out out/scene8a "$@"
 
 require_stages mesh material contact assemble march post
-[ -r "$template" ] || die "cannot read the deck $template"
+require_decks "$template"
 require_charts
 
 r=1e12

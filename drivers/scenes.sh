@@ -26,25 +26,7 @@ EOF
 
 out=out
 names=()
-while [ $# -gt 0 ]; do
-  case $1 in
-    -o)
-      [ $# -ge 2 ] || die "-o needs a folder"
-      out=$2
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    -*)
-      usage >&2
-      die "unknown argument '$1'"
-      ;;
-    *) names+=("$1") ;;
-  esac
-  shift
-done
+parse_options -o=out @names -- "$@"
 
 driver_dir=${SIG_SCENE_DRIVERS:-$root/drivers}
 drivers=()

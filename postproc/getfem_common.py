@@ -1,7 +1,7 @@
 """What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py, getfem_friction.py) share:
 a deck's cards (through the report library's deck reader), the version of Debian's
-python3-getfem, the gmsh half disc, the node coordinates of sig-mesh's case.nopo and the nodal
-weights of the contact nodes."""
+python3-getfem, the gmsh half disc, our plane-strain elasticity as a GetFEM model, the node
+coordinates of sig-mesh's case.nopo and the nodal weights of the contact nodes."""
 import math
 import subprocess
 
@@ -38,6 +38,24 @@ def gmsh_half_disc(geo, workdir, R, n, grading):
     if done.returncode != 0 or not msh.is_file():
         raise RuntimeError(f"gmsh failed ({' '.join(cmd)}):\n{done.stdout}{done.stderr}")
     return msh
+
+
+def plane_strain_elasticity(m, E, nu, traction, region):
+    """Our P1 plane-strain elasticity on the GetFEM mesh m: GetFEM's 2D isotropic linearized
+    elasticity with the 3D Lame coefficients, the traction (a pair) on the boundary `region`.
+    Returns (model with the variable "u", its MeshFem, its MeshIm)."""
+    import getfem as gf  # only the scripts that run GetFEM need it
+    mfu = gf.MeshFem(m, 2)
+    mfu.set_classical_fem(1)
+    mim = gf.MeshIm(m, gf.Integ("IM_TRIANGLE(2)"))
+    md = gf.Model("real")
+    md.add_fem_variable("u", mfu)
+    md.add_initialized_data("lambda", [E * nu / ((1 + nu) * (1 - 2 * nu))])
+    md.add_initialized_data("mu", [E / (2 * (1 + nu))])
+    md.add_isotropic_linearized_elasticity_brick(mim, "u", "lambda", "mu")
+    md.add_initialized_data("F", list(traction))
+    md.add_source_term_brick(mim, "u", "F", region)
+    return md, mfu, mim
 
 
 def nopo_coordinates(path):

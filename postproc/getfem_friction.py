@@ -73,8 +73,8 @@ from pathlib import Path
 
 import numpy as np
 
-from getfem_common import (deck_cards, getfem_version, gmsh_half_disc, nopo_coordinates, snap_arc,
-                           tributary_lengths)
+from getfem_common import (deck_cards, getfem_version, gmsh_half_disc, nopo_coordinates,
+                           plane_strain_elasticity, snap_arc, tributary_lengths)
 
 try:
     import getfem as gf
@@ -235,17 +235,8 @@ def main():
     mesh_check = check_mesh(m, args.nopo) if args.nopo else None
 
     # 2. P1 plane-strain elasticity with the traction on the top edge.
-    mfu = gf.MeshFem(m, 2)
-    mfu.set_classical_fem(1)
-    mim = gf.MeshIm(m, gf.Integ("IM_TRIANGLE(2)"))
+    elastic, mfu, mim = plane_strain_elasticity(m, E, nu, d["f"], TOP)
     nbdof = mfu.nbdof()
-    elastic = gf.Model("real")
-    elastic.add_fem_variable("u", mfu)
-    elastic.add_initialized_data("lambda", [E * nu / ((1 + nu) * (1 - 2 * nu))])
-    elastic.add_initialized_data("mu", [E / (2 * (1 + nu))])
-    elastic.add_isotropic_linearized_elasticity_brick(mim, "u", "lambda", "mu")
-    elastic.add_initialized_data("F", list(d["f"]))
-    elastic.add_source_term_brick(mim, "u", "F", TOP)
 
     # 3. The contact nodes (dof order, as GetFEM's multipliers), their geometry and weights.
     dofs = np.sort(np.asarray(mfu.basic_dof_on_region(GAMMA3)).ravel())

@@ -32,7 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
-from getfem_common import deck_cards, getfem_version, gmsh_half_disc, tributary_lengths
+from getfem_common import (deck_cards, getfem_version, gmsh_half_disc, plane_strain_elasticity,
+                           tributary_lengths)
 
 try:
     import getfem as gf
@@ -105,19 +106,8 @@ def main():
         workdir.mkdir(parents=True, exist_ok=True)
         m = mesh(workdir, R, args.n, args.grading)
 
-    mfu = gf.MeshFem(m, 2)
-    mfu.set_classical_fem(1)
-    mim = gf.MeshIm(m, gf.Integ("IM_TRIANGLE(2)"))
+    md, mfu, mim = plane_strain_elasticity(m, E, nu, (0.0, -f), TOP)
     nbdof = mfu.nbdof()
-
-    md = gf.Model("real")
-    md.add_fem_variable("u", mfu)
-    # Plane strain: GetFEM's 2D isotropic linearized elasticity with the 3D Lame coefficients.
-    md.add_initialized_data("lambda", [E * nu / ((1 + nu) * (1 - 2 * nu))])
-    md.add_initialized_data("mu", [E / (2 * (1 + nu))])
-    md.add_isotropic_linearized_elasticity_brick(mim, "u", "lambda", "mu")
-    md.add_initialized_data("F", [0.0, -f])
-    md.add_source_term_brick(mim, "u", "F", TOP)
 
     # u1 = 0 at the top centre (0, R): a one-row constraint on the x dof of that node.
     nodes = mfu.basic_dof_nodes()

@@ -217,22 +217,13 @@ def section_tables_71_72(runs, thesis, meshes):
     text.append(t71.markdown())
     text += ["", "**Table 7.2** — primal-dual active set vs gamma, and the augmented Lagrangian (r = 1e2):", ""]
     text.append(t72.markdown())
-    rows = []
-    for n in meshes:
-        row = [n]
-        for r in SWEEP:
-            row.append(iterations_cell(runs.get((n, "alm", r))))
-        rows.append(row)
-    text += ["", "The augmented Lagrangian's own sweep (the thesis gives no r):", ""]
-    text.append(markdown_table(["N"] + [f"r = {r}" for r in SWEEP], rows))
-    rows = []
-    for n in meshes:
-        row = [n]
-        for r in PENALTY_SWEEP:
-            row.append(iterations_cell(runs.get((n, "penalty", r))))
-        rows.append(row)
-    text += ["", "Penalty (Remark 3.2; not in the thesis's tables), iterations vs r:", ""]
-    text.append(markdown_table(["N"] + [f"r = {r}" for r in PENALTY_SWEEP], rows))
+    for method, sweep, caption in (
+            ("alm", SWEEP, "The augmented Lagrangian's own sweep (the thesis gives no r):"),
+            ("penalty", PENALTY_SWEEP,
+             "Penalty (Remark 3.2; not in the thesis's tables), iterations vs r:")):
+        rows = [[n] + [iterations_cell(runs.get((n, method, r))) for r in sweep] for n in meshes]
+        text += ["", caption, ""]
+        text.append(markdown_table(["N"] + [f"r = {r}" for r in sweep], rows))
     return "\n".join(text), t71
 
 

@@ -313,7 +313,9 @@ def main():
                         row.append(MapCell("no run", "missing"))
                         continue
                     status = stability_status(run)
-                    text = (status if status == "Nv" else
+                    # A run that stopped: the step it stopped at and what it had lost by then.
+                    text = (f"Nv at step {run['steps'] + 1}\n{run['change']:+.2f}% before"
+                            if status == "Nv" else
                             f"{run['change']:+.2f}%\npen {run['penetration']:.2g}\n{status}")
                     row.append(MapCell(text, status))
                 cells.append(row)

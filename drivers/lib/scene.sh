@@ -22,65 +22,78 @@ require_stages() {
   done
 }
 
+# require_decks DECK...: each deck is readable.
+require_decks() {
+  local deck
+  for deck; do
+    [ -r "$deck" ] || die "cannot read the deck $deck"
+  done
+}
+
 # require_charts: the Python of the reports has matplotlib and numpy.
 require_charts() {
   "$python" -c 'import matplotlib, numpy' 2>/dev/null ||
     die "$python lacks matplotlib or numpy (Debian: python3-matplotlib python3-numpy)"
 }
 
-# parse_quick_out DEFAULT_OUTDIR "$@": a scene driver's options --quick and -o OUTDIR, and -h,
-# --help (the driver's usage); sets quick (0 or 1) and out.
-parse_quick_out() {
-  out=$1
-  shift
-  quick=0
-  while [ $# -gt 0 ]; do
+# parse_options SPEC... -- "$@": a driver's options by SPEC, and -h, --help (the driver's usage).
+# A SPEC "OPTION=VAR" takes a value ("-o=out": -o DIR sets out); "OPTION:VAR=VALUE" is a flag
+# ("--quick:quick=1"); "@VAR" collects the arguments that do not start with - into the array VAR
+# (without it they are unknown arguments). VAR is the caller's variable: set its default first.
+parse_options() {
+  local -A parse_value=() parse_flag=()
+  local parse_rest=
+  while [ "$1" != -- ]; do
     case $1 in
-      --quick) quick=1 ;;
-      -o)
-        [ $# -ge 2 ] || die "-o needs a folder"
-        out=$2
-        shift
-        ;;
-      -h | --help)
-        usage
-        exit 0
-        ;;
-      *)
-        usage >&2
-        die "unknown argument '$1'"
-        ;;
+      @*) parse_rest=${1#@} ;;
+      *:*) parse_flag[${1%%:*}]=${1#*:} ;;
+      *=*) parse_value[${1%%=*}]=${1#*=} ;;
     esac
+    shift
+  done
+  shift
+  while [ $# -gt 0 ]; do
+    if [ -n "$1" ] && [ -n "${parse_value[$1]:-}" ]; then
+      [ $# -ge 2 ] || die "$1 needs a value"
+      printf -v "${parse_value[$1]}" '%s' "$2"
+      shift
+    elif [ -n "$1" ] && [ -n "${parse_flag[$1]:-}" ]; then
+      printf -v "${parse_flag[$1]%%=*}" '%s' "${parse_flag[$1]#*=}"
+    elif [ "$1" = -h ] || [ "$1" = --help ]; then
+      usage
+      exit 0
+    elif [ -n "$parse_rest" ] && [[ $1 != -* ]]; then
+      eval "$parse_rest+=(\"\$1\")"
+    else
+      usage >&2
+      die "unknown argument '$1'"
+    fi
     shift
   done
 }
 
+# require_positive OPTION VALUE: VALUE is a positive integer, else die naming OPTION.
+require_positive() {
+  [[ $2 =~ ^[0-9]+$ ]] && [ "$2" -ge 1 ] || die "$1 must be a positive integer, got '$2'"
+}
+
+# parse_quick_out DEFAULT_OUTDIR "$@": a scene driver's options --quick and -o OUTDIR; sets quick
+# (0 or 1) and out.
+parse_quick_out() {
+  out=$1
+  quick=0
+  shift
+  parse_options -o=out --quick:quick=1 -- "$@"
+}
+
 # parse_repeat_out DEFAULT_OUTDIR DEFAULT_REPEAT "$@": a benchmark driver's options --repeat K
-# and -o OUTDIR, and -h, --help (the driver's usage); sets repeat (a positive integer) and out.
+# and -o OUTDIR; sets repeat (a positive integer) and out.
 parse_repeat_out() {
   out=$1
   repeat=$2
   shift 2
-  while [ $# -gt 0 ]; do
-    case $1 in
-      --repeat | -o)
-        [ $# -ge 2 ] || die "$1 needs a value"
-        [ "$1" = -o ] && out=$2 || repeat=$2
-        shift
-        ;;
-      -h | --help)
-        usage
-        exit 0
-        ;;
-      *)
-        usage >&2
-        die "unknown argument '$1'"
-        ;;
-    esac
-    shift
-  done
-  [[ $repeat =~ ^[0-9]+$ ]] && [ "$repeat" -ge 1 ] ||
-    die "--repeat must be a positive integer, got '$repeat'"
+  parse_options -o=out --repeat=repeat -- "$@"
+  require_positive --repeat "$repeat"
 }
 
 # record_seconds START: append the wall seconds of the runs since START ($SECONDS then) to
@@ -99,6 +112,15 @@ provenance() {
   echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
   echo "SIG_BIN: $bin"
   echo "template: $template"
+}
+
+# bench_provenance: the lines of a benchmark's command.txt that say how it was made (the driver's
+# $invocation; the date, host with its load average, which the timings depend on, and revision).
+bench_provenance() {
+  echo "command: $invocation"
+  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
 }
 
 # Progress of a long driver: `progress_begin N` before its N runs (a run: any unit of work of

@@ -41,6 +41,27 @@ link_ds() {
   done
 }
 
+# variant_ds BASE_DECK DIR DECK: DIR's DS files up to the system for DECK, a variant of BASE_DECK
+# (in the folder of its DS files): case.nopo and case.mili link to the base's, and so do case.cont
+# and case.tae where DECK keeps the cards they are made of; sig-contact and sig-assemble run on
+# DECK where it changes them. Status 1 when a stage fails.
+variant_ds() {
+  local base_dir
+  base_dir=$(dirname "$1")
+  link_ds "$base_dir" "$2" nopo mili
+  if cmp -s <(deck_cards "$3" CONTACT FRICTION) <(deck_cards "$1" CONTACT FRICTION); then
+    link_ds "$base_dir" "$2" cont
+  else
+    run_stage contact "$3" "$2" || return 1
+  fi
+  if cmp -s <(deck_cards "$3" DIRICHLET TRACTION PRESSURE BODYFORCE) \
+    <(deck_cards "$1" DIRICHLET TRACTION PRESSURE BODYFORCE); then
+    link_ds "$base_dir" "$2" tae
+  else
+    run_stage assemble "$3" "$2"
+  fi
+}
+
 # error_json RUN REFERENCE: $out/RUN/error.json, sig-error's ||u - u_ref||_V of the run against
 # the reference (folders under $out); a failure goes to the caller's array `failed`.
 error_json() {

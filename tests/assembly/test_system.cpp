@@ -5,7 +5,9 @@
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "input_error.hpp"
 #include "material/mili.hpp"
+#include "scratch_folder.hpp"
 #include "test_meshes.hpp"
 
 #include <gtest/gtest.h>
@@ -13,20 +15,11 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 namespace sig {
 namespace {
 
-template <class F> InputError input_error(F&& body) {
-  try {
-    body();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return InputError("", 0, "", "");
-}
+using testing::input_error;
 
 LinearSystem assemble(const Mesh& mesh, const std::string& deck) {
   const Datafile datafile = Datafile::parse(deck, "case.dat");
@@ -196,13 +189,12 @@ TEST(Tae, RoundTrip) {
                                         "BODYFORCE f=0,-9.81\n"
                                         "DIRICHLET ref=4 ux=0 uy=0.125\n");
   ASSERT_GT(s.M.nonZeros(), 0);
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_tae_" + std::to_string(::getpid()) + ".tae");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.tae";
   write_tae(path, s, "round trip");
   const LinearSystem back = read_tae(path);
   // The file holds 1-based CSR, as a Fortran reader wants it.
   const Ds ds = read_ds(path, "TAE");
-  std::filesystem::remove(path);
   EXPECT_EQ(ds.ints("K_rowptr").front(), 1);
   EXPECT_EQ(ds.ints("dirichlet_dof").front(), s.dirichlet_dofs.front() + 1);
   EXPECT_EQ(ds.integer("ndof"), s.num_dofs());
@@ -227,11 +219,10 @@ TEST(Tae, ViscoelasticRoundTrip) {
                      "MEMORY region=1 E=1 nu=0.3 beta=10\nMEMORY E=3 nu=0.2 beta=0.5\n"
                      "TRACTION ref=3 f=0,-10 ramp=1\nTRACTION ref=2 f=1,0\n"
                      "DIRICHLET ref=4 ux=0 uy=0\n");
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_tae_kv_" + std::to_string(::getpid()) + ".tae");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.tae";
   write_tae(path, s, "viscoelastic round trip");
   const LinearSystem back = read_tae(path);
-  std::filesystem::remove(path);
   EXPECT_EQ((back.V - s.V).norm(), 0.0);
   ASSERT_EQ(back.memory.size(), 2u);
   for (std::size_t j = 0; j < 2; ++j) {
@@ -250,11 +241,10 @@ TEST(Tae, NoMassWithoutDensity) {
   EXPECT_EQ(s.M.size(), 0);
   EXPECT_EQ(s.M_lumped.size(), s.num_dofs());
   EXPECT_EQ(s.M_lumped.norm(), 0.0);
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_tae_nomass_" + std::to_string(::getpid()) + ".tae");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.tae";
   write_tae(path, s, "no mass");
   const LinearSystem back = read_tae(path);
-  std::filesystem::remove(path);
   EXPECT_EQ(back.M.size(), 0);
   EXPECT_EQ((back.K - s.K).norm(), 0.0);
 }

@@ -7,6 +7,7 @@
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "material/mili.hpp"
+#include "scratch_folder.hpp"
 #include "test_meshes.hpp"
 
 #include <gtest/gtest.h>
@@ -15,7 +16,6 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
-#include <unistd.h>
 
 namespace sig {
 namespace {
@@ -129,11 +129,10 @@ TEST(MovingLoad, TaeRoundTrip) {
   const LinearSystem s = assemble(mesh, kMaterials + "MOVINGLOAD ref=3 F=10 psi=50 c=2\n"
                                                      "MOVINGLOAD ref=1 F=-1 psi=200 c=-1 x0=1\n");
   ASSERT_EQ(s.time_loads.moving.size(), 2u);
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_tae_moving_" + std::to_string(::getpid()) + ".tae");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.tae";
   write_tae(path, s, "moving");
   const LinearSystem back = read_tae(path);
-  std::filesystem::remove(path);
   EXPECT_EQ(back.f, s.f);
   for (double t : {0.0, 0.3, 0.7})
     EXPECT_EQ(back.load_at(t), s.load_at(t));

@@ -9,6 +9,7 @@
 #include "material/ciarlet_geymonat.hpp"
 #include "material/mili.hpp"
 #include "material/saint_venant_kirchhoff.hpp"
+#include "scratch_folder.hpp"
 
 #include <Eigen/LU>
 #include <gtest/gtest.h>
@@ -19,7 +20,6 @@
 #include <numbers>
 #include <random>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace sig {
@@ -292,11 +292,10 @@ TEST(HyperelasticCard, MiliRoundTripKeepsTheLaws) {
                    SubdomainMaterial{}};
   for (int i = 0; i < 3; ++i)
     table.entries[i].subdomain = i + 1;
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_hyper_mili_" + std::to_string(::getpid()) + ".mili");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.mili";
   write_mili(path, table, "hyperelastic round trip");
   const MaterialTable back = read_mili(path);
-  std::filesystem::remove(path);
   ASSERT_EQ(back.entries.size(), 3u);
   const Eigen::Matrix2d F{{1.3, 0.2}, {-0.1, 0.8}};
   for (int i = 0; i < 2; ++i) {

@@ -6,6 +6,7 @@
 #include "material/memory.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
+#include "scratch_folder.hpp"
 #include "two_subdomains.hpp"
 
 #include <gtest/gtest.h>
@@ -13,7 +14,6 @@
 #include <cmath>
 #include <filesystem>
 #include <random>
-#include <unistd.h>
 
 namespace sig {
 namespace {
@@ -96,11 +96,10 @@ TEST(KelvinVoigt, MiliRoundTrip) {
       table_of("MATERIAL region=1 law=kelvin-voigt E=100 nu=0.3 eta1=0.25 eta2=0.5\n"
                "MATERIAL region=3 E=7 nu=0.1\n"
                "MEMORY region=1 E=20 nu=0.3 beta=10\nMEMORY region=1 E=3 nu=0.2 beta=0.5\n");
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_kv_" + std::to_string(::getpid()) + ".mili");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.mili";
   write_mili(path, table, "kelvin-voigt");
   const MaterialTable back = read_mili(path);
-  std::filesystem::remove(path);
   ASSERT_TRUE(back.of(1).kelvin_voigt);
   EXPECT_FALSE(back.of(3).kelvin_voigt);
   EXPECT_EQ(back.of(1).kelvin_voigt->viscosity.eta2, 0.5);

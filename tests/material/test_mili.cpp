@@ -2,8 +2,10 @@
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "input_error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
+#include "scratch_folder.hpp"
 #include "two_subdomains.hpp"
 
 #include <gtest/gtest.h>
@@ -12,7 +14,6 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 namespace sig {
 namespace {
@@ -21,16 +22,7 @@ const Card& first_card(const Datafile& d) {
   return d.cards().front();
 }
 
-// Run `body`, expect an InputError and return it.
-template <class F> InputError input_error(F&& body) {
-  try {
-    body();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return InputError("", 0, "", "");
-}
+using testing::input_error;
 
 TEST(MaterialCard, ReadsLawThicknessAndDensity) {
   const Datafile d = Datafile::parse(
@@ -135,11 +127,10 @@ TEST(Mili, RoundTrip) {
   b.thickness = 0.125;
   b.density = 1000.0;
   table.entries = {a, b};
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_mili_" + std::to_string(::getpid()) + ".mili");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.mili";
   write_mili(path, table, "round trip");
   const MaterialTable back = read_mili(path);
-  std::filesystem::remove(path);
   ASSERT_EQ(back.entries.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
     const SubdomainMaterial& x = table.entries[i];
@@ -154,19 +145,18 @@ TEST(Mili, RoundTrip) {
 }
 
 TEST(Mili, WrongKindIsRejected) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_mili_kind_" + std::to_string(::getpid()) + ".tae");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.tae";
   write_ds(path, Ds("TAE", "not a mili", "test"));
   EXPECT_THROW(read_mili(path), Error);
-  std::filesystem::remove(path);
 }
 
 // sig-assemble took a case.mili with nu = NaN, 0.5, E < 0 or thickness 0 and wrote a NaN
 // stiffness: the MATERIAL card's ranges hold for the file (core/ranges.hpp), each refusal naming
 // the file, the array and the row.
 TEST(Mili, ValuesOutOfTheCardsRangesAreRefused) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("sig_test_mili_range_" + std::to_string(::getpid()) + ".mili");
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.mili";
   MaterialTable table;
   SubdomainMaterial a;
   a.hooke = {200.0, 0.3, PlaneMode::strain};
@@ -194,7 +184,6 @@ TEST(Mili, ValuesOutOfTheCardsRangesAreRefused) {
           << e.what();
     }
   }
-  std::filesystem::remove(path);
 }
 
 } // namespace

@@ -1,9 +1,10 @@
 #pragma once
-// Helpers shared by the mesh tests: a scratch folder, the reference files, and an independent
+// Helpers shared by the mesh tests: the reference files, and an independent
 // raw parse of FreeFem .msh files (so NOPO is compared with what FreeFem wrote, not with our
 // own .msh reader).
 #include "mesh/mesh.hpp"
 #include "mesh/topology.hpp"
+#include "scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,6 @@
 #include <map>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 namespace sig::testing {
 
@@ -31,37 +31,6 @@ inline bool have_gmsh() {
   const std::string command =
       std::string("command -v ") + (binary ? binary : "gmsh") + " > /dev/null 2>&1";
   return std::system(command.c_str()) == 0;
-}
-
-/// A fresh folder removed at scope exit.
-class ScratchFolder {
-public:
-  ScratchFolder() {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "sig-mesh-test-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-  const std::filesystem::path& path() const { return path_; }
-
-private:
-  std::filesystem::path path_;
-};
-
-inline std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
-
-inline void write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
 }
 
 /// What a FreeFem .msh says, 1-based as written.

@@ -17,10 +17,10 @@ bool have_freefem() {
 }
 
 void run_freefem(const ScratchFolder& dir, const std::string& script) {
-  testing::write_file(dir / "x.edp", script);
+  testing::spit(dir / "x.edp", script);
   const std::string command =
       "cd '" + dir.path().string() + "' && FreeFem++ -nw -v 0 x.edp > freefem.log 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << testing::read_file(dir / "freefem.log");
+  ASSERT_EQ(std::system(command.c_str()), 0) << testing::slurp(dir / "freefem.log");
 }
 
 TEST(FreeFemInterop, FreeFemNopoEqualsItsMsh) {
@@ -43,7 +43,7 @@ savemesh(Td, "disc.nopo"); savemesh(Td, "disc.msh");
     same.ndsr = file.nop2[1];
     EXPECT_TRUE(encode_nopo(file.mesh,
                             file.layout.marker_bytes == 8 ? NopoVariant::ff64 : NopoVariant::i4r4,
-                            same) == testing::read_file(dir / (name + ".nopo")));
+                            same) == testing::slurp(dir / (name + ".nopo")));
   }
 }
 

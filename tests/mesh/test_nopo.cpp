@@ -14,9 +14,9 @@ namespace sig {
 namespace {
 
 using testing::legacy_mesh;
-using testing::read_file;
 using testing::ScratchFolder;
 using testing::shared_nopo;
+using testing::slurp;
 
 struct Sample {
   const char* name;
@@ -105,7 +105,7 @@ TEST(NopoSamples, RewriteIsByteIdenticalToFreeFem) {
       options.ndsr = 0; // FreeFem's bug (MODULEF.md section 6)
       EXPECT_EQ(file.nop2[1], 0);
       const std::string bytes = encode_nopo(file.mesh, NopoVariant::ff64, options);
-      EXPECT_TRUE(bytes == read_file(path)) << "re-encoded file differs";
+      EXPECT_TRUE(bytes == slurp(path)) << "re-encoded file differs";
     }
   }
 }
@@ -144,7 +144,7 @@ TEST(NopoSamples, I4r4WriterReproducesTheLegacyFileFromTheMsh) {
   NopoWriteOptions options;
   options.text = {"from square3.msh", "", "nopo_decode.py"};
   const std::string bytes = encode_nopo(mesh, NopoVariant::i4r4, options);
-  EXPECT_TRUE(bytes == read_file(shared_nopo("square3_i4r4.nopo")));
+  EXPECT_TRUE(bytes == slurp(shared_nopo("square3_i4r4.nopo")));
 }
 
 /// A rectangle cut into two sub-domains with a labelled interface, at coordinates that no
@@ -262,7 +262,7 @@ std::string join_records4(const std::vector<std::string>& records) {
 
 TEST(Nopo, ArraySplitOverTwoRecordsIsJoined) {
   const ScratchFolder dir;
-  const std::string bytes = read_file(shared_nopo("square3_i4r4.nopo"));
+  const std::string bytes = slurp(shared_nopo("square3_i4r4.nopo"));
   auto records = split_records4(bytes);
   ASSERT_EQ(records.size(), 5u);
   // NOP5 = [220][220 words] becomes [100][100 words] + [120][120 words] (Simail style).
@@ -272,7 +272,7 @@ TEST(Nopo, ArraySplitOverTwoRecordsIsJoined) {
   };
   records[4] = with_count(100, nop5.substr(4, 400));
   records.push_back(with_count(120, nop5.substr(404)));
-  testing::write_file(dir / "split.nopo", join_records4(records));
+  testing::spit(dir / "split.nopo", join_records4(records));
   expect_same_mesh(read_nopo(shared_nopo("square3_i4r4.nopo")), read_nopo(dir / "split.nopo"),
                    true);
 }
@@ -292,23 +292,23 @@ std::string error_of(const std::filesystem::path& path) {
 
 TEST(Nopo, DamagedFilesAreRejectedWithAMessage) {
   const ScratchFolder dir;
-  const std::string bytes = read_file(shared_nopo("square3.nopo"));
+  const std::string bytes = slurp(shared_nopo("square3.nopo"));
   const auto path = dir / "bad.nopo";
 
-  testing::write_file(path, bytes.substr(0, bytes.size() - 10)); // cut inside NOP5
+  testing::spit(path, bytes.substr(0, bytes.size() - 10)); // cut inside NOP5
   EXPECT_NE(error_of(path).find("not a Fortran sequential file"), std::string::npos);
 
-  testing::write_file(path, bytes.substr(0, 800)); // cut after NOP4: NOP5 missing
+  testing::spit(path, bytes.substr(0, 800)); // cut after NOP4: NOP5 missing
   EXPECT_NE(error_of(path).find("NOP5"), std::string::npos);
 
   std::string wrong_ne = bytes; // NOP2 word 5 (NE) = 17 instead of 18 (byte map, 4.4)
   wrong_ne[424 + 4 * 8] = 17;
-  testing::write_file(path, wrong_ne);
+  testing::spit(path, wrong_ne);
   EXPECT_NE(error_of(path).find("NOP5"), std::string::npos);
 
   std::string wrong_type = bytes; // NOP0 word 29 'NOPO' -> 'XOPO'
   wrong_type[368] = 'X';
-  testing::write_file(path, wrong_type);
+  testing::spit(path, wrong_type);
   EXPECT_NE(error_of(path).find("'NOPO'"), std::string::npos);
 }
 
@@ -318,7 +318,7 @@ TEST(Nopo, FingerprintRefusesAMovedNodeOrDamagedBytes) {
   const ScratchFolder dir;
   const auto path = dir / "case.nopo";
   write_nopo(path, two_region_mesh(), NopoVariant::i8r8, "integrity", "sig-mesh");
-  const std::string bytes = read_file(path);
+  const std::string bytes = slurp(path);
   const std::uint64_t fingerprint = read_nopo_file(path).fingerprint;
 
   // i8r8: descriptor record 4 + 112 + 4, NOP0 4 + 8 + 32 * 8 + 4, NOP2 4 + 8 + 27 * 8 + 4, then
@@ -328,7 +328,7 @@ TEST(Nopo, FingerprintRefusesAMovedNodeOrDamagedBytes) {
   std::memcpy(&x, moved.data() + 636, 8);
   x += 0.5;
   std::memcpy(moved.data() + 636, &x, 8);
-  testing::write_file(path, moved);
+  testing::spit(path, moved);
   const std::string error = error_of(path);
   EXPECT_NE(error.find("does not match the fingerprint " + fingerprint_text(fingerprint)),
             std::string::npos)
@@ -336,12 +336,12 @@ TEST(Nopo, FingerprintRefusesAMovedNodeOrDamagedBytes) {
 
   std::string damaged = bytes; // a byte in the middle of NOP5
   damaged[bytes.size() - 100] ^= 0x10;
-  testing::write_file(path, damaged);
+  testing::spit(path, damaged);
   EXPECT_NE(error_of(path).find("does not match the fingerprint"), std::string::npos);
 
   std::string retitled = bytes; // NOP0's title is not the mesh
   retitled[4 + 112 + 4 + 4 + 8] = 'X';
-  testing::write_file(path, retitled);
+  testing::spit(path, retitled);
   EXPECT_EQ(read_nopo_file(path).fingerprint, fingerprint);
 }
 

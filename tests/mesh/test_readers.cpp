@@ -11,7 +11,7 @@ namespace sig {
 namespace {
 
 using testing::ScratchFolder;
-using testing::write_file;
+using testing::spit;
 
 // The unit square cut into 4 triangles around its centre; node 60 is a geometry point that no
 // element uses, triangle 5 is clockwise, the bottom line runs backwards, the top line is listed
@@ -116,13 +116,13 @@ void expect_square(const Mesh& mesh) {
 
 TEST(GmshReader, Format22) {
   const ScratchFolder dir;
-  write_file(dir / "square.msh", square_v22);
+  spit(dir / "square.msh", square_v22);
   expect_square(read_gmsh(dir / "square.msh"));
 }
 
 TEST(GmshReader, Format41) {
   const ScratchFolder dir;
-  write_file(dir / "square.msh", square_v41);
+  spit(dir / "square.msh", square_v41);
   expect_square(read_gmsh(dir / "square.msh"));
 }
 
@@ -133,7 +133,7 @@ InputError gmsh_error(const std::string& from, const std::string& to) {
   EXPECT_NE(at, std::string::npos) << from;
   text.replace(at, from.size(), to);
   const ScratchFolder dir;
-  write_file(dir / "bad.msh", text);
+  spit(dir / "bad.msh", text);
   try {
     read_gmsh(dir / "bad.msh");
   } catch (const InputError& e) {
@@ -163,9 +163,9 @@ TEST(GmshReader, ErrorsNameTheLine) {
 TEST(FreeFemReader, SmallMesh) {
   const ScratchFolder dir;
   // Two triangles, the second clockwise; labels negative or 0 as FreeFem allows.
-  write_file(dir / "two.msh", "4 2 3\n0 0 1\n1 0 -2\n1 1 0\n0 1 0\n"
-                              "1 2 3 0\n1 4 3 5\n"
-                              "2 1 1\n2 3 3\n3 4 0\n");
+  spit(dir / "two.msh", "4 2 3\n0 0 1\n1 0 -2\n1 1 0\n0 1 0\n"
+                        "1 2 3 0\n1 4 3 5\n"
+                        "2 1 1\n2 3 3\n3 4 0\n");
   const Mesh mesh = read_freefem_msh(dir / "two.msh");
   ASSERT_EQ(mesh.num_triangles(), 2);
   EXPECT_GT(signed_double_area(mesh, 1), 0);
@@ -176,7 +176,7 @@ TEST(FreeFemReader, SmallMesh) {
   EXPECT_EQ(mesh.edges[0].b, 1);
   EXPECT_EQ(mesh.edges[1].ref, 3);
 
-  write_file(dir / "bad.msh", "4 2 0\n0 0 1\n1 0 -2\n1 1 0\n0 1 0\n1 2 3 0\n1 4 9 5\n");
+  spit(dir / "bad.msh", "4 2 0\n0 0 1\n1 0 -2\n1 1 0\n0 1 0\n1 2 3 0\n1 4 9 5\n");
   try {
     read_freefem_msh(dir / "bad.msh");
     ADD_FAILURE() << "vertex 9 accepted";
@@ -185,7 +185,7 @@ TEST(FreeFemReader, SmallMesh) {
   }
 
   // Node 3 moved to (2, 0): triangle 1 2 3 (line 6) has its three nodes on the x axis.
-  write_file(dir / "flat.msh", "4 2 0\n0 0 1\n1 0 -2\n2 0 0\n0 1 0\n1 2 3 0\n1 4 3 5\n");
+  spit(dir / "flat.msh", "4 2 0\n0 0 1\n1 0 -2\n2 0 0\n0 1 0\n1 2 3 0\n1 4 3 5\n");
   try {
     read_freefem_msh(dir / "flat.msh");
     ADD_FAILURE() << "degenerate triangle accepted";
@@ -197,7 +197,7 @@ TEST(FreeFemReader, SmallMesh) {
 
 TEST(MeshFile, DispatchesOnExtensionAndContent) {
   const ScratchFolder dir;
-  write_file(dir / "g.msh", square_v22);
+  spit(dir / "g.msh", square_v22);
   EXPECT_EQ(read_mesh_file(dir / "g.msh").num_nodes(), 5);
   EXPECT_EQ(read_mesh_file(testing::shared_nopo("square3.msh")).num_nodes(), 16);
   EXPECT_EQ(read_mesh_file(testing::shared_nopo("square3.nopo")).num_nodes(), 16);
@@ -254,7 +254,7 @@ TEST(GmshReader, BinaryFilesReadAsTheirAsciiTwins) {
 // A damaged binary file is refused with the file named, wherever it is cut.
 TEST(GmshReader, TruncatedBinaryFilesAreRefused) {
   for (const char* name : {"gmsh/square_v22_binary.msh", "gmsh/square_v41_binary.msh"}) {
-    const std::string bytes = testing::read_file(corpus(name));
+    const std::string bytes = testing::slurp(corpus(name));
     for (std::size_t cut = 0; cut + 1 < bytes.size(); cut += 7)
       EXPECT_NE(error_of([&] { parse_gmsh("cut.msh", bytes.substr(0, cut)); }).find("cut.msh"),
                 std::string::npos)

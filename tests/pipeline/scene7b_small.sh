@@ -21,7 +21,15 @@
 #  - the report's accuracy measure (scene7b_report.accuracy) against a finer ring, N = 128: every
 #    Gamma3 node of N = 64 is a node of it, its error against itself is 0, and N = 64's errors
 #    are positive and below 100 % (N = 64 has 4 layers through the thickness: P1 triangles are
-#    far too stiff in bending there, its reaction is 67 % above N = 128's).
+#    far too stiff in bending there, its reaction is 67 % above N = 128's);
+#  - the same crush in ONE load step (the deck's reading of the thesis): PDAS, ALM and projection
+#    c = 1e4 converge to the 3-step state (reactions within 1e-6: the problem is path-independent
+#    here), and the finite-strain history is per iteration: active(k) - active(k-1) =
+#    entered(k) - left(k), one step length alpha in (0, 1] per iteration;
+#  - the report end to end on a tree laid out as drivers/scene7b.sh lays it out (the one-step
+#    runs, their 3-step variant in loadsteps14/, the N = 128 reference): report.md with the
+#    claims, the histories, the Nv histories and the load-stepping sections, its charts, and
+#    scene.json whose same-reaction checks pass.
 # Run from the repository root with SIG_BIN set (ctest does both); exit 77 (skipped) when the
 # executables are missing.
 set -euo pipefail
@@ -43,25 +51,26 @@ die() {
   exit 1
 }
 
-# deck METHOD FIELD VALUE [N] [UX]
+# deck METHOD FIELD VALUE [N] [UX] [STEPS]
 deck() {
   cat <<EOF
 TITLE small hyperelastic ring ($1)
 MESH generator=ring center=0,10 r_in=9 r_out=10 N=${4:-64} gamma1_above=19.9 gamma3_below=17.08
 MATERIAL law=ciarlet-geymonat c1=0.5 c2=0.005 a=0.35 plane=strain
 DIRICHLET ref=1 ux=${5:-0} uy=-6
-LOADSTEPS n=3
+LOADSTEPS n=${6:-3}
 CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=signorini gap=0
 SOLVER method=$1 $2=$3 eps=1e-8 maxit=100 linear=umfpack
 EOF
 }
 
-for run in "pdas gamma 1e3" "alm r 1e3" "projection c 10" "projection c 1e4" "pdas gamma 1e3 128" \
-  "pdas gamma 1e3 64 1.5"; do
-  read -r method field value n ux <<<"$run"
-  dir=$work/${method}_$value${n:+_N$n}${ux:+_ux$ux}
+for run in "pdas gamma 1e4" "alm r 1e3" "projection c 10" "projection c 1e4" "pdas gamma 1e3 128" \
+  "pdas gamma 1e3 64 1.5" "pdas gamma 1e4 64 0 1" "alm r 1e3 64 0 1" "projection c 1e4 64 0 1" \
+  "projection c 10 64 0 1"; do
+  read -r method field value n ux steps <<<"$run"
+  dir=$work/${method}_$value${n:+_N$n}${ux:+_ux$ux}${steps:+_steps$steps}
   mkdir -p "$dir"
-  deck "$method" "$field" "$value" "$n" "$ux" >"$dir/ring.dat"
+  deck "$method" "$field" "$value" "$n" "$ux" "$steps" >"$dir/ring.dat"
   for stage in mesh material contact assemble solve post; do
     "$bin/sig-$stage" "$dir/ring.dat" -o "$dir" >"$dir/$stage.log" 2>&1 ||
       { cat "$dir/$stage.log" >&2; die "sig-$stage exited with $? for $method"; }
@@ -83,7 +92,7 @@ def check(ok, what):
     if not ok:
         failures.append(what)
 
-runs = {"pdas": "pdas_1e3", "alm": "alm_1e3", "projection": "projection_10",
+runs = {"pdas": "pdas_1e4", "alm": "alm_1e3", "projection": "projection_10",
         "projection c = 1e4": "projection_1e4"}
 b = {m: read_ds(f"{work}/{d}/case.b") for m, d in runs.items()}
 check(b["pdas"].get("finite_strain") == [1], "case.b: solved in finite strain")
@@ -122,7 +131,7 @@ check(abs(moment) > 1e-3 * abs(ry) * 10 and abs(moment + contact_moment) <= 1e-6
 check(abs(rx) <= 1e-8 * abs(ry), f"AB moved sideways: horizontal reaction {rx:.3g} = 0 "
       "(frictionless)")
 # One state per load step, the last one the final state.
-cont = read_ds(f"{work}/pdas_1e3/case.cont")
+cont = read_ds(f"{work}/pdas_1e4/case.cont")
 m, ndof = len(cont["weight"]), len(b["pdas"]["u"])
 check(b["pdas"].shape("step_u") == [3, ndof] and b["pdas"].shape("step_pressure") == [3, m],
       f"pdas: step_u {b['pdas'].shape('step_u')}, step_pressure {b['pdas'].shape('step_pressure')}")
@@ -147,6 +156,62 @@ reaction_error, pressure_error = accuracy(b["pdas"], reference)  # raises if a n
 check(0 < reaction_error < 1 and 0 < pressure_error < 1,
       f"accuracy of N = 64 against N = 128: reaction {reaction_error:.2e}, "
       f"pressure {pressure_error:.2e}, both in (0, 1)")
+# One load step: the same state as three.
+for m, three in (("pdas_1e4", "pdas"), ("alm_1e3", "alm"), ("projection_1e4", "projection c = 1e4")):
+    one = read_ds(f"{work}/{m}_N64_ux0_steps1/case.b")
+    ry, ry3 = one["reaction_y"][0], b[three]["reaction_y"][0]
+    d = abs(ry - ry3) / abs(ry3)
+    check(one["converged"] == [1] and one["load_steps"] == [1] and d <= 1e-6,
+          f"{m} in one load step: {one['iterations'][0]} iterations, reaction {ry:.9g} against "
+          f"{ry3:.9g} in 3 steps ({d:.1e} <= 1e-6)")
+    k = one["iterations"][0]
+    active, entered, left = one["history_active"], one["history_entered"], one["history_left"]
+    alpha = one["history_step_length"]
+    consistent = all(active[i] - active[i - 1] == entered[i] - left[i] for i in range(1, k))
+    check(len(active) == len(entered) == len(left) == len(alpha) == k and consistent
+          and all(0 < a <= 1 for a in alpha),
+          f"{m}: history per iteration ({k}), active(k) - active(k-1) = entered - left, "
+          f"alpha in (0, 1]")
+sys.exit(1 if failures else 0)
+EOF
+
+# The report on the driver's layout: one step in N64/, the 3-step runs as the variant.
+tree=$work/tree
+mkdir -p "$tree/N64" "$tree/loadsteps14/N64" "$tree/reference"
+for run in pdas_1e4 alm_1e3 projection_1e4 projection_10; do
+  name=$run
+  [ "$run" = alm_1e3 ] && name=alm
+  ln -s "$work/${run}_N64_ux0_steps1" "$tree/N64/$name"
+  ln -s "$work/$run" "$tree/loadsteps14/N64/$name"
+done
+for f in "$work"/pdas_1e3_N128/*; do ln -s "$f" "$tree/reference/"; done
+echo "command: tests/pipeline/scene7b_small.sh" >"$tree/command.txt"
+PYTHONDONTWRITEBYTECODE=1 "$python" "$root/postproc/scene7b_report.py" "$tree" ||
+  die "scene7b_report.py failed on the small tree"
+PYTHONDONTWRITEBYTECODE=1 "$python" - "$tree" <<'EOF' || die "the report on the small tree"
+import json
+import sys
+from pathlib import Path
+
+tree = Path(sys.argv[1])
+report = (tree / "report.md").read_text()
+failures = []
+for section in ("## The thesis's claims on Tables 7.4 / 7.5, one load step",
+                "## Where the iterations go", "## Runs that do not converge (Nv)",
+                "## Load stepping: one step beside 3 load steps", "![history](newton_history.png)"):
+    if section not in report:
+        failures.append(f"report.md lacks '{section}'")
+scene = json.loads((tree / "scene.json").read_text())
+for chart in scene["charts"].values():
+    if not (tree / chart).is_file():
+        failures.append(f"scene.json names {chart}, not written")
+same = [c for c in scene["checks"] if "the same reaction" in c["name"]]
+if len(same) != 3 or not all(c["pass"] for c in same):
+    failures.append(f"same-reaction checks: {same}")
+nv = [c for c in scene["checks"] if "projection c = 10 does not converge" in c["name"]]
+if len(nv) != 1 or nv[0]["pass"] is not True:
+    failures.append(f"projection c = 10 in one step: {nv}")
+print("\n".join(f"FAIL  {f}" for f in failures) or "ok    the report on the small tree")
 sys.exit(1 if failures else 0)
 EOF
 echo "scene7b_small: ok"

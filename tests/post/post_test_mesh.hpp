@@ -1,9 +1,17 @@
 #pragma once
-// Small meshes for the post tests, built by hand so the tests need no mesh reader.
+// Small meshes, materials and files for the post tests, built by hand so the tests need no mesh
+// reader.
 #include "core/ds.hpp"
+#include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
 #include <cstdint>
+#include <filesystem>
 #include <vector>
 
 namespace sig::test {
@@ -36,6 +44,26 @@ inline Ds bottom_contact() {
   cont.put("weight", std::vector<double>{0.5, 1.0, 0.5});
   cont.put("law", std::vector<std::int64_t>{1, 1, 1});
   return cont;
+}
+
+/// Hooke, plane strain, E = 100 and this nu, on both sub-domains of small_mesh.
+inline MaterialTable two_materials(double nu) {
+  MaterialTable table;
+  for (int s : {1, 2}) {
+    SubdomainMaterial m;
+    m.subdomain = s;
+    m.hooke = {100.0, nu, PlaneMode::strain};
+    table.entries.push_back(m);
+  }
+  return table;
+}
+
+/// The .vtu at `path` read through VTK's own reader (not through our writer's code).
+inline vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::filesystem::path& path) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader->GetOutput();
 }
 
 } // namespace sig::test

@@ -5,13 +5,13 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "post_test_mesh.hpp"
+#include "scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <unistd.h>
 
 namespace sig {
 namespace {
@@ -27,8 +27,7 @@ Ds sample_ds() {
 }
 
 TEST(Dump, DsFileIsRecognisedByItsMagic) {
-  const fs::path dir = fs::temp_directory_path() / ("sig_post_dump_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const testing::ScratchFolder dir;
   write_ds(dir / "case.tae", sample_ds());
   std::ofstream(dir / "case.nopo", std::ios::binary) << std::string("\0\0\0\x80 NOPO", 9);
   EXPECT_TRUE(is_ds_file(dir / "case.tae"));
@@ -36,7 +35,6 @@ TEST(Dump, DsFileIsRecognisedByItsMagic) {
 
   const Ds back = read_ds(dir / "case.tae");
   const std::string json = dump_ds_json(back).dump(-1);
-  fs::remove_all(dir);
   EXPECT_EQ(json.find("{\"kind\":\"TAE\",\"title\":\"assembled operators\","
                       "\"creator\":\"sig-assemble\",\"date\":"),
             0u);

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "post_test_mesh.hpp"
+#include "scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 #include <vtkDataArray.h>
@@ -19,23 +20,11 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
-#include <unistd.h>
 
 namespace sig {
 namespace {
 
 namespace fs = std::filesystem;
-
-MaterialTable two_materials() {
-  MaterialTable table;
-  SubdomainMaterial left;
-  left.subdomain = 1;
-  left.hooke = {100.0, 0.35, PlaneMode::strain};
-  SubdomainMaterial right = left;
-  right.subdomain = 2;
-  table.entries = {left, right};
-  return table;
-}
 
 // Two states of the small mesh: state s has u = s (0.1 x, -0.2 y) and v = (s + 1, 2 s - 1).
 Ds two_states(const Mesh& mesh) {
@@ -56,19 +45,14 @@ Ds two_states(const Mesh& mesh) {
 
 class HistoryVtk : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("sig_post_hist_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  const testing::ScratchFolder scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 TEST_F(HistoryVtk, OneVtuPerStateWithDisplacementAndVelocity) {
   const Mesh mesh = test::small_mesh();
-  const auto files =
-      write_history_vtk(dir_, "disc", mesh, two_materials(), two_states(mesh), {{"title", "t"}});
+  const auto files = write_history_vtk(dir_, "disc", mesh, test::two_materials(0.35),
+                                       two_states(mesh), {{"title", "t"}});
   ASSERT_EQ(files.size(), 3u);
   EXPECT_EQ(files[0], dir_ / "disc.pvd");
   std::stringstream pvd;
@@ -77,10 +61,7 @@ TEST_F(HistoryVtk, OneVtuPerStateWithDisplacementAndVelocity) {
   EXPECT_NE(pvd.str().find("disc_0001.vtu"), std::string::npos);
   EXPECT_NE(pvd.str().find("0.25"), std::string::npos);
   for (int s = 0; s < 2; ++s) {
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(files[s + 1].c_str());
-    reader->Update();
-    vtkUnstructuredGrid* grid = reader->GetOutput();
+    const auto grid = test::read_vtu(files[s + 1]);
     ASSERT_EQ(grid->GetNumberOfPoints(), mesh.num_nodes());
     vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
     vtkDataArray* v = grid->GetPointData()->GetArray("velocity");
@@ -102,12 +83,12 @@ TEST_F(HistoryVtk, RefusesWrongShapesAndNaN) {
   const Mesh mesh = test::small_mesh();
   Ds hist = two_states(mesh);
   hist.put("output_time", std::vector<double>{0.0}); // two states in u, one time
-  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, test::two_materials(0.35), hist, {}), Error);
   hist = two_states(mesh);
   std::vector<double> v = hist.reals("v");
   v[3] = std::numeric_limits<double>::quiet_NaN();
   hist.put("v", v, hist.shape("u"));
-  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, test::two_materials(0.35), hist, {}), Error);
 }
 
 // Contact on the bottom edge (nodes 1, 5, 2 in the 1-based numbering of the DS): state s has
@@ -120,17 +101,16 @@ Ds with_contact(const Mesh& mesh) {
 }
 
 double point_value(const fs::path& vtu, const char* name, int node) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(vtu.c_str());
-  reader->Update();
-  vtkDataArray* array = reader->GetOutput()->GetPointData()->GetArray(name);
+  const auto grid = test::read_vtu(vtu);
+  vtkDataArray* array = grid->GetPointData()->GetArray(name);
   if (array == nullptr) return std::numeric_limits<double>::quiet_NaN();
   return array->GetComponent(node, 0);
 }
 
 TEST_F(HistoryVtk, ContactPressureOnGamma3ZeroElsewhere) {
   const Mesh mesh = test::small_mesh();
-  const auto files = write_history_vtk(dir_, "ball", mesh, two_materials(), with_contact(mesh), {});
+  const auto files =
+      write_history_vtk(dir_, "ball", mesh, test::two_materials(0.35), with_contact(mesh), {});
   ASSERT_EQ(files.size(), 3u);
   for (int s = 0; s < 2; ++s) {
     // 0-based nodes 0, 4, 1 carry the DS's 1-based contact nodes 1, 5, 2.
@@ -145,7 +125,8 @@ TEST_F(HistoryVtk, ContactPressureOnGamma3ZeroElsewhere) {
 
 TEST_F(HistoryVtk, NoContactPressureWithoutContactArrays) {
   const Mesh mesh = test::small_mesh();
-  const auto files = write_history_vtk(dir_, "disc", mesh, two_materials(), two_states(mesh), {});
+  const auto files =
+      write_history_vtk(dir_, "disc", mesh, test::two_materials(0.35), two_states(mesh), {});
   EXPECT_TRUE(std::isnan(point_value(files[1], "contact_pressure", 0)));
 }
 
@@ -153,14 +134,14 @@ TEST_F(HistoryVtk, RefusesBadContactArrays) {
   const Mesh mesh = test::small_mesh();
   Ds hist = with_contact(mesh);
   hist.put("contact_node", std::vector<std::int64_t>{1, 6, 2}); // the mesh has 5 nodes
-  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, test::two_materials(0.35), hist, {}), Error);
   hist = with_contact(mesh);
   hist.put("pressure", std::vector<double>{1, 2, 3}, {1, 3}); // one state of two
-  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, test::two_materials(0.35), hist, {}), Error);
   hist = with_contact(mesh);
   hist.put("pressure",
            std::vector<double>{1, 2, 3, 11, std::numeric_limits<double>::infinity(), 13}, {2, 3});
-  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, two_materials(), hist, {}), Error);
+  EXPECT_THROW(write_history_vtk(dir_, "x", mesh, test::two_materials(0.35), hist, {}), Error);
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "mesh/nopo.hpp"
 #include "post_test_mesh.hpp"
+#include "scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 #include <vtkDataArray.h>
@@ -22,23 +23,11 @@
 #include <limits>
 #include <regex>
 #include <sstream>
-#include <unistd.h>
 
 namespace sig {
 namespace {
 
 namespace fs = std::filesystem;
-
-MaterialTable hooke_table() {
-  MaterialTable table;
-  for (int s : {1, 2}) {
-    SubdomainMaterial m;
-    m.subdomain = s;
-    m.hooke = {100.0, 0.3, PlaneMode::strain};
-    table.entries.push_back(m);
-  }
-  return table;
-}
 
 // `steps` load steps of which the first `kept` converged: state s (0-based) has
 // u = (s + 1) (0.1 x, -0.2 y), multipliers (s + 1) (1, 2, 3) and node 5 alone in contact.
@@ -79,13 +68,8 @@ std::vector<std::pair<double, std::string>> pvd_entries(const fs::path& pvd) {
 
 class LoadStepVtk : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("sig_post_steps_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  const testing::ScratchFolder scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 TEST_F(LoadStepVtk, StatesWrittenAreStatesRead) {
@@ -93,7 +77,7 @@ TEST_F(LoadStepVtk, StatesWrittenAreStatesRead) {
   const Ds cont = test::bottom_contact();
   const Ds b = load_stepped(mesh, 3, 3);
   const auto files =
-      write_load_step_vtk(dir_, "ring", mesh, hooke_table(), b, &cont, {{"title", "t"}});
+      write_load_step_vtk(dir_, "ring", mesh, test::two_materials(0.3), b, &cont, {{"title", "t"}});
   ASSERT_EQ(files.size(), 4u);
   const auto entries = pvd_entries(files[0]);
   ASSERT_EQ(entries.size(), 3u);
@@ -101,10 +85,7 @@ TEST_F(LoadStepVtk, StatesWrittenAreStatesRead) {
   for (int s = 0; s < 3; ++s) {
     EXPECT_DOUBLE_EQ(entries[s].first, (s + 1) / 3.0); // pseudo-time = load factor
     EXPECT_EQ(dir_ / entries[s].second, files[s + 1]);
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(files[s + 1].c_str());
-    reader->Update();
-    vtkUnstructuredGrid* grid = reader->GetOutput();
+    const auto grid = test::read_vtu(files[s + 1]);
     ASSERT_EQ(grid->GetNumberOfPoints(), mesh.num_nodes());
     vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
     vtkDataArray* pressure = grid->GetPointData()->GetArray("contact_pressure");
@@ -139,16 +120,15 @@ TEST_F(LoadStepVtk, FailedLastStepIsLeftOutAndNoContactMeansNoPressure) {
   const Mesh mesh = test::small_mesh();
   const Ds b = load_stepped(mesh, 4, 2); // steps 3 and 4 never converged
   EXPECT_EQ(load_step_count(b, mesh), 2u);
-  const auto files = write_load_step_vtk(dir_, "ring", mesh, hooke_table(), b, nullptr, {});
+  const auto files =
+      write_load_step_vtk(dir_, "ring", mesh, test::two_materials(0.3), b, nullptr, {});
   ASSERT_EQ(files.size(), 3u);
   const auto entries = pvd_entries(files[0]);
   ASSERT_EQ(entries.size(), 2u);
   EXPECT_DOUBLE_EQ(entries[1].first, 0.5);
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(files[2].c_str());
-  reader->Update();
-  EXPECT_EQ(reader->GetOutput()->GetPointData()->GetArray("contact_pressure"), nullptr);
-  EXPECT_NE(reader->GetOutput()->GetPointData()->GetArray("displacement"), nullptr);
+  const auto grid = test::read_vtu(files[2]);
+  EXPECT_EQ(grid->GetPointData()->GetArray("contact_pressure"), nullptr);
+  EXPECT_NE(grid->GetPointData()->GetArray("displacement"), nullptr);
 }
 
 TEST_F(LoadStepVtk, RefusesWrongShapesAndNaN) {
@@ -156,15 +136,15 @@ TEST_F(LoadStepVtk, RefusesWrongShapesAndNaN) {
   const Ds cont = test::bottom_contact();
   Ds b = load_stepped(mesh, 2, 2);
   b.put("step_load", std::vector<double>{1.0}); // two states, one load step
-  EXPECT_THROW(write_load_step_vtk(dir_, "x", mesh, hooke_table(), b, &cont, {}), Error);
+  EXPECT_THROW(write_load_step_vtk(dir_, "x", mesh, test::two_materials(0.3), b, &cont, {}), Error);
   b = load_stepped(mesh, 2, 2);
   b.put("step_normal_status", std::vector<std::int64_t>{0, 2, 0, 0, 2}, {1, 5}); // not 2 x 3
-  EXPECT_THROW(write_load_step_vtk(dir_, "x", mesh, hooke_table(), b, &cont, {}), Error);
+  EXPECT_THROW(write_load_step_vtk(dir_, "x", mesh, test::two_materials(0.3), b, &cont, {}), Error);
   b = load_stepped(mesh, 2, 2);
   std::vector<double> u = b.reals("step_u");
   u[7] = std::numeric_limits<double>::quiet_NaN();
   b.put("step_u", u, b.shape("step_u"));
-  EXPECT_THROW(write_load_step_vtk(dir_, "x", mesh, hooke_table(), b, &cont, {}), Error);
+  EXPECT_THROW(write_load_step_vtk(dir_, "x", mesh, test::two_materials(0.3), b, &cont, {}), Error);
   EXPECT_TRUE(fs::is_empty(dir_)); // refused before any file was written
 }
 
@@ -174,7 +154,7 @@ TEST_F(LoadStepVtk, SigPostWritesOneStatePerLoadStep) {
   const Mesh mesh = test::small_mesh();
   std::ofstream(dir_ / "block.dat") << "TITLE stepped block\nOUTPUT vtk=yes\n";
   write_nopo(dir_ / "case.nopo", mesh, NopoVariant::i8r8, "block", "test");
-  write_mili(dir_ / "case.mili", hooke_table(), "block");
+  write_mili(dir_ / "case.mili", test::two_materials(0.3), "block");
   Ds b = load_stepped(mesh, 3, 3);
   b.put_text("linear", "umfpack");
   b.put_int("converged", 1);

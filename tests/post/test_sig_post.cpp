@@ -4,6 +4,7 @@
 #include "material/mili.hpp"
 #include "mesh/nopo.hpp"
 #include "post_test_mesh.hpp"
+#include "scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace sig {
 namespace {
@@ -24,22 +24,9 @@ protected:
   void SetUp() override {
     exe_ = fs::path(SIG_BINARY_DIR) / "bin" / "sig-post";
     if (!fs::exists(exe_)) GTEST_SKIP() << "no " << exe_;
-    dir_ = fs::temp_directory_path() / ("sig_post_stage_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
     std::ofstream(dir_ / "block.dat") << "TITLE three triangles\nOUTPUT vtk=yes\n";
     write_nopo(dir_ / "case.nopo", test::small_mesh(), NopoVariant::i8r8, "block", "test");
-    MaterialTable table;
-    for (int s : {1, 2}) {
-      SubdomainMaterial m;
-      m.subdomain = s;
-      m.hooke = {100.0, 0.3, PlaneMode::strain};
-      table.entries.push_back(m);
-    }
-    write_mili(dir_ / "case.mili", table, "block");
-  }
-  void TearDown() override {
-    if (!dir_.empty()) fs::remove_all(dir_);
+    write_mili(dir_ / "case.mili", test::two_materials(0.3), "block");
   }
   void write_solution(const std::vector<double>& u) {
     Ds b("B", "block", "test");
@@ -62,7 +49,9 @@ protected:
     output = text.str();
     return status;
   }
-  fs::path exe_, dir_;
+  const testing::ScratchFolder scratch_;
+  const fs::path dir_ = scratch_.path();
+  fs::path exe_;
 };
 
 TEST_F(SigPost, WritesParaViewFilesAndSummary) {

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "post_test_mesh.hpp"
+#include "scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 #include <vtkCellArray.h>
@@ -20,7 +21,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace sig {
 namespace {
@@ -29,13 +29,8 @@ namespace fs = std::filesystem;
 
 class VtkWriter : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("sig_post_vtk_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  const testing::ScratchFolder scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 TEST_F(VtkWriter, RoundTripThroughVtkReader) {
@@ -52,10 +47,7 @@ TEST_F(VtkWriter, RoundTripThroughVtkReader) {
   write_vtu(path, mesh, point, cell, {{"title", "two-sub-domain rectangle, E = 2 GPa"}},
             {{"load_factor", 0.25}});
 
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(path.string().c_str());
-  reader->Update();
-  vtkUnstructuredGrid* grid = reader->GetOutput();
+  const auto grid = test::read_vtu(path);
   ASSERT_EQ(grid->GetNumberOfPoints(), mesh.num_nodes());
   ASSERT_EQ(grid->GetNumberOfCells(), mesh.num_triangles());
   for (int i = 0; i < mesh.num_nodes(); ++i) {

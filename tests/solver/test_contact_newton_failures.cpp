@@ -1,6 +1,7 @@
 // The driver where a step fails: a scripted bulk whose linear solve throws, or whose residual is
 // not finite along part of the step. The driver must report the failure with the statuses of the
 // last test (the writers index them per node), and never take a step of non-finite residual.
+#include "along_step_bulk.hpp"
 #include "core/error.hpp"
 #include "solver/contact_newton.hpp"
 
@@ -14,20 +15,15 @@ namespace {
 
 /// Two contact nodes penetrating by 1, whose multiplier rows the step leaves as they are: the
 /// residual's change along the step is `residual_at(alpha)`, alpha the step length of the move.
-class ScriptedBulk final : public ContactBulk {
+class ScriptedBulk final : public test::AlongStepBulk {
 public:
   bool throw_on_solve = false;
-  bool is_nonlinear = false;
   double (*residual_at)(double alpha) = [](double alpha) { return 1.0 - 0.5 * alpha; };
 
-  int contacts() const override { return 2; }
-  bool has_tangential() const override { return false; }
   Eigen::VectorXd penetration() const override { return Eigen::VectorXd::Ones(2); }
-  Eigen::VectorXd slip() const override { return Eigen::VectorXd::Zero(2); }
   double equilibrium_residual(const Eigen::VectorXd&, const Eigen::VectorXd&) const override {
     return residual_at(alpha_);
   }
-  double force_scale() const override { return 1; }
   StepSolution solve(const std::vector<NodeConditions>& conditions,
                      const Eigen::VectorXd&) override {
     if (throw_on_solve) SIG_VERIFY(false, "scripted: singular step matrix");
@@ -38,18 +34,6 @@ public:
     s.tangential_force = Eigen::VectorXd::Zero(2);
     return s;
   }
-  bool move(double alpha) override {
-    alpha_ = alpha;
-    return true;
-  }
-  void keep() override { kept_ = alpha_; }
-  void restore() override { alpha_ = kept_; }
-  double displacement_norm() const override { return 1; }
-  double displacement_step() const override { return alpha_; }
-  bool nonlinear() const override { return is_nonlinear; }
-
-private:
-  double alpha_ = 0, kept_ = 0;
 };
 
 ContactSetting two_signorini_nodes() {

@@ -3,6 +3,7 @@
 // off the wall (the next test puts that node on the wall) is taken whatever the augmentation r,
 // and the step length does not depend on the method's parameter. A scripted bulk whose residual
 // is the Newton step's linear model makes the full step exact for the held system.
+#include "along_step_bulk.hpp"
 #include "solver/contact_newton.hpp"
 
 #include <gtest/gtest.h>
@@ -15,20 +16,14 @@ namespace {
 /// Two contact nodes: node 0 on the obstacle surface (tested on the wall), node 1 off it by
 /// 0.01, which the step moves by +0.02 (penetrating 0.01 at the full step). The equilibrium
 /// residual falls linearly to 0 along the step: alpha = 1 solves the held system exactly.
-class OvershootingBulk final : public ContactBulk {
+class OvershootingBulk final : public test::AlongStepBulk {
 public:
-  bool is_nonlinear = true;
-
-  int contacts() const override { return 2; }
-  bool has_tangential() const override { return false; }
   Eigen::VectorXd penetration() const override {
     return Eigen::Vector2d(0.0, -0.01 + 0.02 * alpha_);
   }
-  Eigen::VectorXd slip() const override { return Eigen::VectorXd::Zero(2); }
   double equilibrium_residual(const Eigen::VectorXd&, const Eigen::VectorXd&) const override {
     return 1.0 - alpha_;
   }
-  double force_scale() const override { return 1; }
   StepSolution solve(const std::vector<NodeConditions>& conditions,
                      const Eigen::VectorXd&) override {
     EXPECT_TRUE(conditions[0].normal.imposed);
@@ -39,18 +34,6 @@ public:
     s.tangential_force = Eigen::VectorXd::Zero(2);
     return s;
   }
-  bool move(double alpha) override {
-    alpha_ = alpha;
-    return true;
-  }
-  void keep() override { kept_ = alpha_; }
-  void restore() override { alpha_ = kept_; }
-  double displacement_norm() const override { return 1; }
-  double displacement_step() const override { return alpha_; }
-  bool nonlinear() const override { return is_nonlinear; }
-
-private:
-  double alpha_ = 0, kept_ = 0;
 };
 
 double first_step_length(const std::string& method, double parameter, bool nonlinear) {

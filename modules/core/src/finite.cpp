@@ -1,7 +1,5 @@
 #include "core/finite.hpp"
 
-#include "core/error.hpp"
-
 #include <cmath>
 
 namespace sig {
@@ -14,12 +12,6 @@ std::string first_non_finite(std::span<const double> values) {
               : values[k] > 0       ? "inf"
                                     : "-inf");
   return "";
-}
-
-void verify_finite(std::span<const double> values, const std::string& file,
-                   const std::string& name) {
-  const std::string bad = first_non_finite(values);
-  SIG_VERIFY(bad.empty(), file << ": array '" << name << "': " << bad);
 }
 
 } // namespace sig

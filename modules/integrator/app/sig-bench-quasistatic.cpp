@@ -10,6 +10,7 @@
 //  - the counts: sparse and dense factorizations, the tail systems factorized by the condensed
 //    bulk, Newton iterations.
 // The runs and the floor go round robin, so that load bursts on a shared machine fall on both.
+#include "core/bench.hpp"
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
@@ -27,16 +28,6 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-} // namespace
-
 int main(int argc, char** argv) {
   const sig::StageHelp help{
       .name = "sig-bench-quasistatic",
@@ -51,20 +42,8 @@ int main(int argc, char** argv) {
       .usage = "DATAFILE [-o OUTDIR] [--repeat K]",
       .options = {{"--repeat K", "timed marches (default 3)"}}};
   return sig::run_stage("bench-quasistatic", [&] {
-    sig::handle_help_and_version(argc, argv, help);
-    int repeat = 3;
-    std::vector<char*> rest{argv[0]};
-    for (int i = 1; i < argc; ++i) {
-      if (std::string(argv[i]) == "--repeat") {
-        SIG_VERIFY(i + 1 < argc, "--repeat needs a count");
-        repeat = std::stoi(argv[++i]);
-        SIG_VERIFY(repeat >= 1, "--repeat must be >= 1, not " << repeat);
-      } else {
-        rest.push_back(argv[i]);
-      }
-    }
-    const sig::StageArgs args =
-        sig::parse_stage_args(static_cast<int>(rest.size()), rest.data(), help);
+    const sig::BenchArgs args = sig::parse_bench_args(argc, argv, help);
+    const int repeat = args.repeat;
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
     const sig::TimeParameters time = sig::time_parameters(datafile.require("TIME"), true);
     SIG_VERIFY(time.scheme == "quasistatic",
@@ -126,14 +105,14 @@ int main(int argc, char** argv) {
     json.set("repeat", repeat);
     json.set("setup_seconds", sig::Json::array_of(setup));
     json.set("march_seconds", sig::Json::array_of(march));
-    json.set("setup_seconds_median", median(setup));
-    json.set("march_seconds_median", median(march));
-    json.set("step_seconds_median", median(step));
-    json.set("right_side_seconds_median", median(right_side));
-    json.set("contact_seconds_median", median(contact_solve));
-    json.set("condense_expand_seconds_median", median(rest_of_step));
-    json.set("floor_solve_seconds_median", median(floor));
-    json.set("step_over_solve", median(step) / median(floor));
+    json.set("setup_seconds_median", sig::median(setup));
+    json.set("march_seconds_median", sig::median(march));
+    json.set("step_seconds_median", sig::median(step));
+    json.set("right_side_seconds_median", sig::median(right_side));
+    json.set("contact_seconds_median", sig::median(contact_solve));
+    json.set("condense_expand_seconds_median", sig::median(rest_of_step));
+    json.set("floor_solve_seconds_median", sig::median(floor));
+    json.set("step_over_solve", sig::median(step) / sig::median(floor));
     const std::filesystem::path path = args.outdir / "bench.json";
     sig::write_file_atomically(path, json.dump() + "\n");
     std::cout << json.dump() << "\n" << path.string() << "\n";

@@ -2,6 +2,7 @@
 
 #include "assembly/dirichlet.hpp"
 #include "core/ds.hpp"
+#include "core/ds_columns.hpp"
 #include "core/error.hpp"
 
 #include <cmath>
@@ -26,55 +27,49 @@ std::string energy_csv(const std::vector<EnergyRecord>& energy) {
 
 namespace {
 
+/// Array `name` {states, p}: the states one after the other, each of p values.
+void put_rows(Ds& ds, const std::string& name, const std::vector<Eigen::VectorXd>& states,
+              std::int64_t p) {
+  std::vector<double> rows;
+  for (const Eigen::VectorXd& state : states) {
+    SIG_VERIFY(state.size() == p, "HIST: a " << name << " of " << state.size() << " values for "
+                                             << p << " contact nodes");
+    rows.insert(rows.end(), state.data(), state.data() + state.size());
+  }
+  ds.put(name, rows, {static_cast<std::int64_t>(states.size()), p});
+}
+
 void put_contact(Ds& ds, const MarchHistory& history, const ContactHistoryInfo& contact,
                  int steps) {
   ds.put_text("strategy", contact.strategy);
   ds.put_scalar("r", contact.r);
   ds.put_scalar("depth", contact.depth);
+  put_contact_nodes(ds, contact.nodes);
   const auto p = static_cast<std::int64_t>(contact.nodes.size());
-  std::vector<std::int64_t> node;
-  for (int i : contact.nodes)
-    node.push_back(i + 1);
-  ds.put("contact_node", node);
-  std::vector<double> pressure;
-  for (const Eigen::VectorXd& state : history.output_pressure) {
-    SIG_VERIFY(state.size() == p,
-               "HIST: a pressure of " << state.size() << " values for " << p << " contact nodes");
-    pressure.insert(pressure.end(), state.data(), state.data() + state.size());
-  }
-  ds.put("pressure", pressure, {static_cast<std::int64_t>(history.output_pressure.size()), p});
-  if (!history.output_tangential_pressure.empty()) {
-    std::vector<double> tangential;
-    for (const Eigen::VectorXd& state : history.output_tangential_pressure)
-      tangential.insert(tangential.end(), state.data(), state.data() + state.size());
-    ds.put("tangential_pressure", tangential,
-           {static_cast<std::int64_t>(history.output_tangential_pressure.size()), p});
-  }
+  put_rows(ds, "pressure", history.output_pressure, p);
+  if (!history.output_tangential_pressure.empty())
+    put_rows(ds, "tangential_pressure", history.output_tangential_pressure, p);
   std::vector<std::int64_t> converged(static_cast<std::size_t>(steps) + 1, 0);
   for (const EnergyRecord& r : history.energy)
     converged[static_cast<std::size_t>(r.step)] = 1;
   ds.put("step_converged", converged);
-  std::vector<double> work, penetration, interface, friction, wall;
-  std::vector<std::int64_t> active, iterations;
-  for (const EnergyRecord& r : history.energy) {
-    work.push_back(r.contact_work);
-    penetration.push_back(r.max_penetration);
-    active.push_back(r.active_nodes);
-    iterations.push_back(r.newton_iterations);
-    interface.push_back(r.interface);
-    friction.push_back(r.friction_work);
-    wall.push_back(r.wall_work);
-  }
-  ds.put("contact_work", work);
-  ds.put("interface", interface);
-  ds.put("friction_work", friction);
-  ds.put("wall_work", wall);
-  ds.put("max_penetration", penetration);
-  ds.put("active_nodes", active);
-  ds.put("newton_iterations", iterations);
+  put_column(ds, "contact_work", history.energy, &EnergyRecord::contact_work);
+  put_column(ds, "interface", history.energy, &EnergyRecord::interface);
+  put_column(ds, "friction_work", history.energy, &EnergyRecord::friction_work);
+  put_column(ds, "wall_work", history.energy, &EnergyRecord::wall_work);
+  put_column(ds, "max_penetration", history.energy, &EnergyRecord::max_penetration);
+  put_column(ds, "active_nodes", history.energy, &EnergyRecord::active_nodes);
+  put_column(ds, "newton_iterations", history.energy, &EnergyRecord::newton_iterations);
 }
 
 } // namespace
+
+void put_contact_nodes(Ds& ds, const std::vector<int>& nodes) {
+  std::vector<std::int64_t> node;
+  for (int i : nodes)
+    node.push_back(i + 1);
+  ds.put("contact_node", node);
+}
 
 void put_kept_states(Ds& ds, const ReducedSystem& reduced, const std::vector<KeptState>& kept) {
   const auto ndof = static_cast<std::int64_t>(reduced.num_full());
@@ -118,22 +113,12 @@ void write_hist(const std::filesystem::path& path, const MarchHistory& history,
     kept.push_back({std::llround(state.time / time.k), state.time, &state.u, &state.v});
   put_kept_states(ds, reduced, kept);
 
-  std::vector<std::int64_t> step;
-  std::vector<double> t, kinetic, elastic, total, work;
-  for (const EnergyRecord& r : history.energy) {
-    step.push_back(r.step);
-    t.push_back(r.time);
-    kinetic.push_back(r.kinetic);
-    elastic.push_back(r.elastic);
-    total.push_back(r.total);
-    work.push_back(r.external_work);
-  }
-  ds.put("step", step);
-  ds.put("time", t);
-  ds.put("kinetic", kinetic);
-  ds.put("elastic", elastic);
-  ds.put("total", total);
-  ds.put("external_work", work);
+  put_column(ds, "step", history.energy, &EnergyRecord::step);
+  put_column(ds, "time", history.energy, &EnergyRecord::time);
+  put_column(ds, "kinetic", history.energy, &EnergyRecord::kinetic);
+  put_column(ds, "elastic", history.energy, &EnergyRecord::elastic);
+  put_column(ds, "total", history.energy, &EnergyRecord::total);
+  put_column(ds, "external_work", history.energy, &EnergyRecord::external_work);
   ds.put_int("converged", history.converged ? 1 : 0);
   ds.put_text("failure", history.failure);
   if (contact) put_contact(ds, history, *contact, time.steps);

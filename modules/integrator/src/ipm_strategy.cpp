@@ -35,10 +35,8 @@ ContactStepSolution ImprovedPenaltyStrategy::phases(ContactBulk& bulk, const Con
 
   const ContactSetting b{secant_compliance(first, start, p_.r, NormalLaw::compliance_unilateral),
                          first.weight};
-  ContactStepSolution s = a;
-  s.iterations = 0;
+  ContactStepSolution s = a; // phase() adds its iterations to the first phase's
   phase(bulk, b, iterate, s, "phase (b), bounded by g");
-  s.iterations += a.iterations;
   return s;
 }
 

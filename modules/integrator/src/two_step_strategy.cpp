@@ -45,10 +45,8 @@ ContactStepSolution TwoStepStrategy::phases(ContactBulk& bulk, const ContactSett
       law.depth += 0.5 * start.time_step * start.normal_velocity[p];
   }
   if (!any) return a;
-  ContactStepSolution s = a;
-  s.iterations = 0;
+  ContactStepSolution s = a; // phase() adds its iterations to the first phase's
   phase(bulk, b, iterate, s, "step (b), persistency");
-  s.iterations += a.iterations;
   return s;
 }
 

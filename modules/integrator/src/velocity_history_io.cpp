@@ -143,10 +143,7 @@ void write_velocity_hist(const std::filesystem::path& path, const VelocityHistor
 
   const auto p = static_cast<std::int64_t>(info.contact_nodes.size());
   if (p > 0) {
-    std::vector<std::int64_t> node;
-    for (int i : info.contact_nodes)
-      node.push_back(i + 1);
-    ds.put("contact_node", node);
+    put_contact_nodes(ds, info.contact_nodes);
     ds.put("weight", std::span<const double>(info.weight.data(), info.weight.size()));
     const ContactRows rows = contact_rows(history, info);
     const std::vector<std::int64_t> shape{static_cast<std::int64_t>(step.size()), p};

@@ -8,7 +8,7 @@
 //  - the floor of a Newton method on this mesh: the bulk tangent at the final state of the last
 //    run, its Dirichlet dofs eliminated (the pattern the Newton matrix is factorized on), with
 //    the same backend: one symbolic analysis, then K x (numeric factorization + one solve);
-//    floor = median(factorize + solve) x iterations. The analysis, done once per solve, is
+//    floor = sig::median(factorize + solve) x iterations. The analysis, done once per solve, is
 //    reported apart;
 //  - one assembly of the hyperelastic force and tangent (median of K) and the number of bulk
 //    assemblies of the solve (line-search trials), for the breakdown.
@@ -18,6 +18,7 @@
 #include "assembly/pattern.hpp"
 #include "assembly/system.hpp"
 #include "contact/contact_elements.hpp"
+#include "core/bench.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
@@ -38,12 +39,6 @@
 #include <vector>
 
 namespace {
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 std::string json_list(const std::vector<double>& values) {
   std::ostringstream out;
@@ -71,21 +66,9 @@ int main(int argc, char** argv) {
       .usage = "DATAFILE [-o OUTDIR] [--repeat K]",
       .options = {{"--repeat K", "timed runs of the solve and of the floor (default 3)"}}};
   return sig::run_stage("bench-finite-strain", [&] {
-    sig::handle_help_and_version(argc, argv, help);
     // 1. Arguments: --repeat K, the rest as every stage.
-    int repeat = 3;
-    std::vector<char*> rest{argv[0]};
-    for (int i = 1; i < argc; ++i) {
-      if (std::string(argv[i]) == "--repeat") {
-        SIG_VERIFY(i + 1 < argc, "--repeat needs a count");
-        repeat = std::stoi(argv[++i]);
-        SIG_VERIFY(repeat >= 1, "--repeat must be >= 1, not " << repeat);
-      } else {
-        rest.push_back(argv[i]);
-      }
-    }
-    const sig::StageArgs args =
-        sig::parse_stage_args(static_cast<int>(rest.size()), rest.data(), help);
+    const sig::BenchArgs args = sig::parse_bench_args(argc, argv, help);
+    const int repeat = args.repeat;
     const sig::Datafile datafile = sig::Datafile::read(args.datafile);
 
     // 2. The SOLVER and LOADSTEPS cards, as sig-solve reads them.
@@ -145,7 +128,7 @@ int main(int argc, char** argv) {
       factor_solve_seconds.push_back(clock.seconds());
       SIG_VERIFY(x.allFinite(), "the floor solve gave a non-finite solution");
     }
-    const double floor = median(factor_solve_seconds) * iterations;
+    const double floor = sig::median(factor_solve_seconds) * iterations;
 
     // 5. Report.
     const std::filesystem::path json = args.outdir / "bench.json";
@@ -161,19 +144,19 @@ int main(int argc, char** argv) {
         << ",\n  \"reaction_y\": " << result->reaction_y
         << ",\n  \"reaction_moment\": " << result->reaction_moment
         << ",\n  \"solve_seconds\": " << json_list(solve_seconds)
-        << ",\n  \"solve_seconds_median\": " << median(solve_seconds)
+        << ",\n  \"solve_seconds_median\": " << sig::median(solve_seconds)
         << ",\n  \"analyze_seconds\": " << analyze_seconds
         << ",\n  \"factor_solve_seconds\": " << json_list(factor_solve_seconds)
-        << ",\n  \"factor_solve_seconds_median\": " << median(factor_solve_seconds)
-        << ",\n  \"assembly_seconds_median\": " << median(assembly_seconds)
+        << ",\n  \"factor_solve_seconds_median\": " << sig::median(factor_solve_seconds)
+        << ",\n  \"assembly_seconds_median\": " << sig::median(assembly_seconds)
         << ",\n  \"floor_seconds\": " << floor << "\n}\n";
     SIG_VERIFY(out.good(), json.string() << ": cannot write");
     std::cout << "sig-bench-finite-strain: " << options.contact.method << " (" << options.backend
               << "), " << solution.unknowns << " dofs, "
               << (solution.converged() ? "converged" : "NOT converged (Nv)") << " in " << iterations
-              << " iterations; solve median " << median(solve_seconds) << " s; floor "
-              << median(factor_solve_seconds) << " s x " << iterations << " = " << floor
+              << " iterations; solve median " << sig::median(solve_seconds) << " s; floor "
+              << sig::median(factor_solve_seconds) << " s x " << iterations << " = " << floor
               << " s (analysis " << analyze_seconds << " s); ratio "
-              << median(solve_seconds) / floor << " -> " << json.string() << "\n";
+              << sig::median(solve_seconds) / floor << " -> " << json.string() << "\n";
   });
 }

@@ -10,8 +10,4 @@ namespace sig {
 /// "value 3 of 10 is NaN" for the first value that is not finite, or "" if all are.
 std::string first_non_finite(std::span<const double> values);
 
-/// Throw sig::Error "FILE: array 'NAME': value K of N is NaN|inf|-inf" if a value is not finite.
-void verify_finite(std::span<const double> values, const std::string& file,
-                   const std::string& name);
-
 } // namespace sig

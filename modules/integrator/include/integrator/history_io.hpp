@@ -49,6 +49,9 @@ struct ContactHistoryInfo {
   std::vector<int> nodes; ///< 0-based mesh nodes
 };
 
+/// The array contact_node: `nodes` (0-based mesh nodes, CONT order) numbered from 1.
+void put_contact_nodes(Ds& ds, const std::vector<int>& nodes);
+
 /// One kept state of a march: its step, time, and u and v on the free dofs.
 struct KeptState {
   std::int64_t step = 0;

@@ -6,6 +6,7 @@
 #include "solver/nodal_frames.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace sig {
 
@@ -275,6 +276,15 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   }
   base_ = now_.u;
   return s;
+}
+
+void FiniteStrainBulk::swap_states() {
+  Eigen::SparseMatrix<double> now_tangent, kept_tangent;
+  now_tangent.swap(now_.bulk.tangent); // O(1): the States keep empty tangents while swapped
+  kept_tangent.swap(kept_.bulk.tangent);
+  std::swap(now_, kept_);
+  now_.bulk.tangent.swap(kept_tangent);
+  kept_.bulk.tangent.swap(now_tangent);
 }
 
 bool FiniteStrainBulk::move(double alpha) {

@@ -1,6 +1,7 @@
 #include "solver/solution_ds.hpp"
 
 #include "core/ds.hpp"
+#include "core/ds_columns.hpp"
 #include "core/error.hpp"
 
 #include <cmath>
@@ -30,55 +31,31 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
 }
 
 void put_history(Ds& ds, const std::vector<IterationRecord>& history) {
-  std::vector<std::int64_t> active, entered, left, stick, slip;
-  std::vector<double> residual, increment, step_norm;
-  for (const IterationRecord& h : history) {
-    active.push_back(h.active);
-    entered.push_back(h.entered);
-    left.push_back(h.left);
-    stick.push_back(h.stick);
-    slip.push_back(h.slip);
-    residual.push_back(h.residual);
-    increment.push_back(h.increment);
-    step_norm.push_back(h.step);
-  }
-  ds.put("history_active", std::span<const std::int64_t>(active));
-  ds.put("history_entered", std::span<const std::int64_t>(entered));
-  ds.put("history_left", std::span<const std::int64_t>(left));
-  ds.put("history_stick", std::span<const std::int64_t>(stick));
-  ds.put("history_slip", std::span<const std::int64_t>(slip));
-  ds.put("history_residual", std::span<const double>(residual));
-  ds.put("history_increment", std::span<const double>(increment));
-  ds.put("history_step_norm", std::span<const double>(step_norm));
+  put_column(ds, "history_active", history, &IterationRecord::active);
+  put_column(ds, "history_entered", history, &IterationRecord::entered);
+  put_column(ds, "history_left", history, &IterationRecord::left);
+  put_column(ds, "history_stick", history, &IterationRecord::stick);
+  put_column(ds, "history_slip", history, &IterationRecord::slip);
+  put_column(ds, "history_residual", history, &IterationRecord::residual);
+  put_column(ds, "history_increment", history, &IterationRecord::increment);
+  put_column(ds, "history_step_norm", history, &IterationRecord::step);
 }
 
 void put_convexification(Ds& ds, const ConvexificationResult& loop) {
-  std::vector<std::int64_t> inner, changes, wall, compliance, stick, slip;
-  std::vector<double> du, dxi, dmu;
-  for (const OuterRecord& r : loop.history) {
-    inner.push_back(r.inner_iterations);
-    changes.push_back(r.status_changes);
-    wall.push_back(r.wall);
-    compliance.push_back(r.compliance);
-    stick.push_back(r.stick);
-    slip.push_back(r.slip);
-    du.push_back(r.displacement_change);
-    dxi.push_back(r.force_change);
-    dmu.push_back(r.mu_change);
-  }
   ds.put_int("outer_converged", loop.converged ? 1 : 0);
   ds.put_int("outer_iterations", loop.outer_iterations());
   ds.put_int("outer_cycle", loop.cycle);
   ds.put_text("outer_failure", loop.failure);
-  ds.put("outer_inner_iterations", std::span<const std::int64_t>(inner));
-  ds.put("outer_u_change", std::span<const double>(du));
-  ds.put("outer_xi_change", std::span<const double>(dxi));
-  ds.put("outer_mu_change", std::span<const double>(dmu));
-  ds.put("outer_status_changes", std::span<const std::int64_t>(changes));
-  ds.put("outer_wall", std::span<const std::int64_t>(wall));
-  ds.put("outer_compliance", std::span<const std::int64_t>(compliance));
-  ds.put("outer_stick", std::span<const std::int64_t>(stick));
-  ds.put("outer_slip", std::span<const std::int64_t>(slip));
+  const std::vector<OuterRecord>& outer = loop.history;
+  put_column(ds, "outer_inner_iterations", outer, &OuterRecord::inner_iterations);
+  put_column(ds, "outer_u_change", outer, &OuterRecord::displacement_change);
+  put_column(ds, "outer_xi_change", outer, &OuterRecord::force_change);
+  put_column(ds, "outer_mu_change", outer, &OuterRecord::mu_change);
+  put_column(ds, "outer_status_changes", outer, &OuterRecord::status_changes);
+  put_column(ds, "outer_wall", outer, &OuterRecord::wall);
+  put_column(ds, "outer_compliance", outer, &OuterRecord::compliance);
+  put_column(ds, "outer_stick", outer, &OuterRecord::stick);
+  put_column(ds, "outer_slip", outer, &OuterRecord::slip);
   ds.put("friction_coefficient", std::span<const double>(loop.mu.data(), loop.mu.size()));
 }
 

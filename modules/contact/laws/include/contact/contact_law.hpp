@@ -166,11 +166,6 @@ double d_friction_coefficient(const ContactLaw& law, double r);
 double penetration_friction(const ContactLaw& law, double q_n);
 double d_penetration_friction(const ContactLaw& law, double q_n);
 
-/// Some law of `laws` is a law in velocity (ContactLaw::in_velocity).
-inline bool any_in_velocity(const std::vector<ContactLaw>& laws) {
-  return std::any_of(laws.begin(), laws.end(), [](const ContactLaw& l) { return l.in_velocity(); });
-}
-
 /// Some law of `laws` has friction (the problem then has tangential unknowns).
 inline bool any_friction(const std::vector<ContactLaw>& laws) {
   return std::any_of(laws.begin(), laws.end(),

@@ -1,30 +1,39 @@
 #pragma once
-// A fresh folder per test under the system temporary directory, removed afterwards.
+// Files for the unit tests of every module: a fresh folder per use under the system temporary
+// directory, named after the running test and removed afterwards, and whole-file reads and writes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <gtest/gtest.h>
 #include <iterator>
+#include <stdexcept>
 #include <string>
-#include <unistd.h>
 
 namespace sig::testing {
 
 class ScratchFolder {
 public:
   ScratchFolder() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("sig_core_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-             std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
+    std::string name = "sig_test";
+    if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info())
+      name += std::string("_") + info->test_suite_name() + "_" + info->name();
+    std::replace(name.begin(), name.end(), '/', '_'); // parameterized tests: "Name/0"
+    std::string pattern = (std::filesystem::temp_directory_path() / (name + "_XXXXXX")).string();
+    if (::mkdtemp(pattern.data()) == nullptr)
+      throw std::runtime_error("cannot create the folder " + pattern);
+    path_ = pattern;
   }
+  // Write permission back first: some tests take it away to make a write fail.
   ~ScratchFolder() {
     std::error_code ignored;
     std::filesystem::permissions(path_, std::filesystem::perms::owner_all,
                                  std::filesystem::perm_options::add, ignored);
     std::filesystem::remove_all(path_, ignored);
   }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 
