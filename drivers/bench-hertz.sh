@@ -146,12 +146,9 @@ if [ $getfem -eq 1 ]; then
 fi
 
 {
-  echo "command: $invocation"
+  bench_provenance
   echo "outdir: $out"
   echo "grading: $(deck_value "$out/hertz/base/hertz.dat" MESH grading)"
-  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
   echo "problems: ${problems[*]}"
   echo "getfem_hertz: ${getfem_json[hertz]:-}"
   echo "getfem_coulomb: ${getfem_json[coulomb]:-}"

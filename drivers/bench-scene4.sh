@@ -94,12 +94,7 @@ for k in $(seq 1 "$repeat"); do
   echo "bench-scene4.sh: round $k of $repeat timed"
 done
 
-{
-  echo "command: $invocation"
-  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
-} >"$out/command.txt"
+bench_provenance >"$out/command.txt"
 
 "$python" - "$out" <<'EOF'
 import csv, json, statistics, sys

@@ -114,6 +114,15 @@ provenance() {
   echo "template: $template"
 }
 
+# bench_provenance: the lines of a benchmark's command.txt that say how it was made (the driver's
+# $invocation; the date, host with its load average, which the timings depend on, and revision).
+bench_provenance() {
+  echo "command: $invocation"
+  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+}
+
 # Progress of a long driver: `progress_begin N` before its N runs (a run: any unit of work of
 # roughly even cost, e.g. sig-solve + sig-post of one variant), `progress_step WHAT` after each.
 # Prints "[k/N] WHAT: 1m02s elapsed, about 3m10s left", the rest estimated from the mean time

@@ -45,8 +45,6 @@ States read_states(const std::filesystem::path& dir) {
                                                         << " values, not " << times.size()
                                                         << " states of " << ndof << " dofs ("
                                                         << s.mesh.num_nodes() << " mesh nodes)");
-  for (double v : u)
-    SIG_VERIFY(std::isfinite(v), ds.source << ": array 'u' holds a value that is not finite");
   s.time = times;
   for (std::size_t k = 0; k < times.size(); ++k)
     s.u.push_back(
