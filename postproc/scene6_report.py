@@ -341,7 +341,6 @@ def main():
     def section(title):
         md.extend(["", f"## {title}", ""])
 
-    template = read_deck(out / "rail.template.dat")
     md += [f"# Scene 6: viscoelastodynamic rail under a moving load{' (quick)' if quick else ''}",
            "",
            f"Command: `{info['command']}` ({info.get('seconds', '?')} s of runs); report: "
