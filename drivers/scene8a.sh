@@ -112,16 +112,6 @@ base() {
   progress_step "$1/base"
 }
 
-# run_stage STAGE DECK DIR: one stage, its output in DIR/<stage>.log and shown on failure.
-run_stage() {
-  local stage=$1 deck=$2 dir=$3
-  if ! "$bin/sig-$stage" "$deck" -o "$dir" >"$dir/$stage.log" 2>&1; then
-    tail -n 20 "$dir/$stage.log" >&2
-    echo "sig-$stage failed for $deck (log: $dir/$stage.log)" >&2
-    return 1
-  fi
-}
-
 # A run whose stage fails (a crash; a Newton failure is a result, "Nv") is listed here; the
 # other runs and the report go on, and the script exits 1 at the end.
 failed=()
@@ -132,9 +122,7 @@ run() {
   local dir=$1 mesh=$2 plane=$3 method=$4 T=$5 k=$6 gap=${7:-} steps every vtk=no t0 t1
   rm -rf "$dir"
   mkdir -p "$dir"
-  for ds in nopo mili tae; do
-    ln -s "$out/$mesh/base/case.$ds" "$dir/case.$ds"
-  done
+  link_ds "$out/$mesh/base" "$dir" nopo mili tae
   steps=$("$python" -c "print(round($T / $k))")
   every=$steps
   if [ "${keep:-no}" = yes ]; then
