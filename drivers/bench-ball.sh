@@ -55,9 +55,7 @@ deck() {
 }
 
 deck "$out/base/ball.dat" "" consistent
-for stage in mesh material assemble; do
-  run_stage "$stage" "$out/base/ball.dat" "$out/base" || die "cannot build the base case"
-done
+build_base "$out/base/ball.dat" "$out/base" "the base case" mesh material assemble
 nodes=$(grep -m1 -oE '[0-9]+ nodes' "$out/base/mesh.log" | cut -d' ' -f1)
 
 r=1e12

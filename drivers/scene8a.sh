@@ -106,9 +106,7 @@ base() {
   local dir=$out/$1/base
   mkdir -p "$dir"
   write_deck "$dir/ball.dat" "$2" 0 signorini 2 1e-3 1 no
-  for stage in mesh material assemble; do
-    run_stage "$stage" "$dir/ball.dat" "$dir" || die "cannot build the base case of mesh $1"
-  done
+  build_base "$dir/ball.dat" "$dir" "the base case of mesh $1" mesh material assemble
   progress_step "$1/base"
 }
 
