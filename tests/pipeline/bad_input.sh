@@ -68,11 +68,12 @@ expect solve     's/^TRACTION ref=2 .*/& ramp=1/'             "bad.dat:" "'ramp'
 expect material  's/^MATERIAL .*/MATERIAL law=kelvin-voigt E=150 nu=0.3 eta1=-1/' "bad.dat:" "'eta1'" ">= 0"
 expect material  '$a MEMORY E=1 nu=0.3 beta=1'                 "bad.dat:" "'region'" "kelvin-voigt"
 # Scene 6 (issue 13): the moving load's psi > 0, the truncation c3 > 0, and friction of the slip
-# rate only in a march in time.
-expect assemble  '$a MOVINGLOAD ref=2 F=10 psi=0 c=2'        "bad.dat:" "'psi'" "> 0"
-expect assemble  '$a MOVINGLOAD ref=2 F=10 psi=-50 c=2'      "bad.dat:" "'psi'" "> 0"
-expect contact   's/law=signorini gap=0/law=compliance cn=10 c3=0/' "bad.dat:" "'c3'" "> 0"
-expect solve     "$nm a=1 b=0.5 alpha=2000 of=slip-rate"       "bad.dat:" "'of'" "march in time"
+# rate only in a march in time, each on its line (the appended card is the deck's last).
+last=$(($(grep -c '' "$good") + 1)) contact_line=$(grep -n '^CONTACT' "$good" | cut -d: -f1)
+expect assemble  '$a MOVINGLOAD ref=2 F=10 psi=0 c=2'        "bad.dat:$last:" "'psi'" "> 0"
+expect assemble  '$a MOVINGLOAD ref=2 F=10 psi=-50 c=2'      "bad.dat:$last:" "'psi'" "> 0"
+expect contact   's/law=signorini gap=0/law=compliance cn=10 c3=0/' "bad.dat:$contact_line:" "'c3'" "> 0"
+expect solve     "$nm a=1 b=0.5 alpha=2000 of=slip-rate"       "bad.dat:$last:" "'of'" "march in time"
 
 # Friction in large deformation is refused on the FRICTION card, before any solve.
 hyper=$work/hyper.dat

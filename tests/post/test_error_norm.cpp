@@ -76,6 +76,22 @@ TEST(StrainError, SlopeOneForTheInterpolantsOfASmoothField) {
   }
 }
 
+TEST(StrainError, AWindowIntegratesItsTrianglesOnly) {
+  const Mesh coarse = square(1.0, 4), fine = square(1.0, 16);
+  const Eigen::VectorXd u_ref = nodal(fine, kSmooth), u_h = nodal(coarse, kSmooth);
+  const StrainError whole = strain_error(fine, u_ref, coarse, u_h);
+  const StrainError all = strain_error(fine, u_ref, coarse, u_h, Window{-1, 2, -1, 2});
+  EXPECT_NEAR(all.error, whole.error, 1e-14 * whole.error);
+  EXPECT_NEAR(all.reference_norm, whole.reference_norm, 1e-14 * whole.reference_norm);
+  // A reference field that differs from u_h only on x > 0.5: no error on the left half.
+  Eigen::VectorXd u_right = prolongate(coarse, u_h, fine);
+  for (int i = 0; i < fine.num_nodes(); ++i)
+    if (fine.nodes[i].x() > 0.5) u_right.segment<2>(2 * i) += Eigen::Vector2d(0.1, -0.2);
+  EXPECT_LT(strain_error(fine, u_right, coarse, u_h, Window{0, 0.45, 0, 1}).error, 1e-14);
+  EXPECT_GT(strain_error(fine, u_right, coarse, u_h, Window{0, 0.55, 0, 1}).error, 1e-3);
+  EXPECT_THROW(strain_error(fine, u_ref, coarse, u_h, Window{2, 3, 2, 3}), Error);
+}
+
 TEST(StrainError, AffineExtensionPastTheCoarseBoundary) {
   // Reference nodes up to 2 % outside the coarse square (a curved boundary's situation): an
   // affine field is carried exactly by the nearest coarse triangle's extension.

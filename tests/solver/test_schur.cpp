@@ -1,6 +1,7 @@
 // Static condensation onto interface dofs: S against the dense formula, the semi-coercive case
 // (singular K, positive definite K_ii), and MUMPS's partial factorization against the generic
 // block solves.
+#include "solver/cholmod_simplicial.hpp"
 #include "solver/cholmod_split.hpp"
 #include "solver/schur.hpp"
 #include "test_linear_problems.hpp"
@@ -215,6 +216,18 @@ TEST(Schur, CholmodSplitMatchesTheDenseFormulas) {
   SchurComplement fallback(floating, boundary, "cholmod", MatrixKind::spd, true);
   SchurComplement interior(floating, boundary, "cholmod");
   EXPECT_LT((fallback.matrix() - interior.matrix()).norm(), 1e-12 * interior.matrix().norm());
+}
+
+// The benchmark's floor (sig-bench-quasistatic): a plain solve with the simplicial factor.
+TEST(Schur, CholmodSimplicialSolvesTheClampedBody) {
+  const test::Grid g{9, 6};
+  const Eigen::SparseMatrix<double> K = test::clamped_stiffness(g);
+  const Eigen::VectorXd u = test::manufactured(static_cast<int>(K.rows()));
+  CholmodSimplicialSolver simplicial(K);
+  EXPECT_LT((simplicial.solve(K * u) - u).norm(), 1e-10 * u.norm());
+  EXPECT_LT((simplicial.solve(K * (2 * u)) - 2 * u).norm(), 2e-10 * u.norm()); // reused workspace
+  const test::Grid h{6, 5};
+  EXPECT_THROW(CholmodSimplicialSolver(test::elasticity_stiffness(h)), Error); // singular
 }
 
 } // namespace

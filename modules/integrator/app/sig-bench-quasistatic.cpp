@@ -5,8 +5,9 @@
 //    matrix, the condensed problem's Cholesky) and the steps apart, every step's wall time, and
 //    its parts: the scheme's right side, the contact problem on the condensed bulk, the rest (the
 //    right side's condensation and the velocity's expansion: with MUMPS one solve split in two);
-//  - the floor: one forward-backward solve with the step matrix factorized by the same backend,
-//    the median of many;
+//  - the floors: one forward-backward solve with the step matrix factorized by the same backend
+//    (the project's solver: supernodal for CHOLMOD) and, for CHOLMOD, by a simplicial LL^T (the
+//    faster of the two on these 2D meshes, solver/cholmod_simplicial.hpp), the medians of many;
 //  - the counts: sparse and dense factorizations, the tail systems factorized by the condensed
 //    bulk, Newton iterations.
 // The runs and the floor go round robin, so that load bursts on a shared machine fall on both.
@@ -20,6 +21,7 @@
 #include "integrator/kelvin_voigt_scheme.hpp"
 #include "integrator/linear_contact_march.hpp"
 #include "integrator/quasistatic_stage.hpp"
+#include "solver/cholmod_simplicial.hpp"
 #include "solver/linear_solver.hpp"
 
 #include <algorithm>
@@ -51,7 +53,8 @@ int main(int argc, char** argv) {
     const sig::QuasistaticCase c = sig::read_quasistatic_case(args, datafile);
     const sig::VelocityContact* contact = c.contact ? &*c.contact : nullptr;
 
-    std::vector<double> setup, march, step, right_side, contact_solve, rest_of_step, floor;
+    std::vector<double> setup, march, step, right_side, contact_solve, rest_of_step, floor,
+        simplicial_floor;
     int iterations = 0, dense = 0, tail = 0, steps_done = 0;
     bool converged = true;
     for (int r = 0; r < repeat; ++r) {
@@ -87,6 +90,17 @@ int main(int argc, char** argv) {
         floor.push_back(clock.seconds());
         SIG_VERIFY(x.allFinite(), "the floor solve gave a non-finite solution");
       }
+      if (c.solver.backend == "cholmod") {
+        Eigen::SparseMatrix<double> S = scheme.step_matrix();
+        S.makeCompressed();
+        sig::CholmodSimplicialSolver simplicial(S);
+        for (int k = 0; k < 20; ++k) {
+          const sig::Stopwatch clock;
+          const Eigen::VectorXd x = simplicial.solve(b);
+          simplicial_floor.push_back(clock.seconds());
+          SIG_VERIFY(x.allFinite(), "the simplicial floor solve gave a non-finite solution");
+        }
+      }
     }
 
     sig::Json json = sig::Json::object();
@@ -113,6 +127,10 @@ int main(int argc, char** argv) {
     json.set("condense_expand_seconds_median", sig::median(rest_of_step));
     json.set("floor_solve_seconds_median", sig::median(floor));
     json.set("step_over_solve", sig::median(step) / sig::median(floor));
+    if (!simplicial_floor.empty()) {
+      json.set("simplicial_floor_solve_seconds_median", sig::median(simplicial_floor));
+      json.set("step_over_simplicial_solve", sig::median(step) / sig::median(simplicial_floor));
+    }
     const std::filesystem::path path = args.outdir / "bench.json";
     sig::write_file_atomically(path, json.dump() + "\n");
     std::cout << json.dump() << "\n" << path.string() << "\n";

@@ -55,10 +55,13 @@ void refuse_other_models(const Datafile& datafile, const TimeParameters& time) {
 }
 
 /// Per step 0 .. the last, the values the HIST and steps.csv add (VelocityHistoryInfo): the
-/// energies after each step, the convexification's counts of each step (step 0: none).
+/// energies after each step, the convexification's counts of each step (step 0: none), the
+/// seconds of the scheme's products K u_n, M w_n that the next right side reads (inside the
+/// step's clock; step 0: 0, formed with the scheme).
 struct StepRecords {
   std::vector<double> kinetic, elastic, compliance, total;
   std::vector<double> outer{0}, outer_converged{1}, cycle{0};
+  std::vector<double> products{0};
 };
 
 } // namespace
@@ -166,6 +169,7 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   const VelocityHistory history =
       march_with_progress(march, scheme, time, label, [&](const VelocityStep& s) {
         record_energy();
+        records.products.push_back(scheme.products_seconds());
         char detail[96];
         std::snprintf(detail, sizeof detail, "t = %.6g  E = %.6g  Newton %d", s.time,
                       records.total.back(), s.contact.iterations());
@@ -181,10 +185,12 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   const std::size_t rows = history.steps.size() + 1;
   for (auto* column : {&records.kinetic, &records.elastic, &records.compliance, &records.total})
     column->resize(rows, column->back());
+  records.products.resize(rows, 0.0);
   info.step_columns = {{"kinetic", records.kinetic},
                        {"elastic", records.elastic},
                        {"compliance_energy", records.compliance},
-                       {"total", records.total}};
+                       {"total", records.total},
+                       {"step_seconds_products", records.products}};
   if (records.outer.size() > 1) {
     info.step_columns.push_back({"outer_iterations", records.outer});
     info.step_columns.push_back({"outer_converged", records.outer_converged});

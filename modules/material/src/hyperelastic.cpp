@@ -87,13 +87,24 @@ HyperelasticResponse HyperelasticLaw::response(const Eigen::Matrix2d& F) const {
 }
 
 HyperelasticResponse HyperelasticLaw::plane_strain(const Eigen::Matrix2d& F) const {
-  const Response3d r = response_3d(*this, embedded(F, 1.0));
+  // F3 = diag(F, 1): only the in-plane entries of first_piola_tangent's A are needed, and for
+  // in-plane i, k they contract CC over in-plane I, K alone (F3 has no in-plane row reaching
+  // index 3): A(iJ, kL) = F_iI CC(IJ, KL) F_kK + delta_ik S_JL, 64 multiply-adds instead of the
+  // 486 of the 9 x 9 A (this runs once per triangle and Newton iteration).
+  const Eigen::Matrix3d F3 = embedded(F, 1.0);
+  const MaterialPoint3d point = at(F3.transpose() * F3);
   HyperelasticResponse out;
-  out.energy = r.energy;
-  out.stress = r.P.topLeftCorner<2, 2>();
+  out.energy = point.energy;
+  out.stress = (F3 * point.S).topLeftCorner<2, 2>();
   for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b)
-      out.tangent(a, b) = r.A(in_plane_index[a], in_plane_index[b]);
+    for (int b = 0; b < 4; ++b) {
+      const int i = a / 2, J = a % 2, k = b / 2, L = b % 2;
+      double sum = i == k ? point.S(J, L) : 0.0;
+      for (int I = 0; I < 2; ++I)
+        for (int K = 0; K < 2; ++K)
+          sum += F(i, I) * point.CC(3 * I + J, 3 * K + L) * F(k, K);
+      out.tangent(a, b) = sum;
+    }
   out.stretch33 = 1.0;
   return out;
 }

@@ -31,10 +31,10 @@ struct CholmodSplitSolver::State {
     if (L) cholmod_free_factor(&L, &c);
     cholmod_finish(&c);
   }
-  /// x := L^-1 x (sys CHOLMOD_L) or L^-T x (CHOLMOD_Lt) in place of z, reusing the workspace.
-  void substitute(int sys, cholmod_dense* b) {
+  /// z := L^-1 z (sys CHOLMOD_L) or L^-T z (CHOLMOD_Lt), reusing the workspace.
+  void substitute(int sys) {
     cholmod_dense* x = nullptr;
-    const int ok = cholmod_solve2(sys, L, b, nullptr, &x, nullptr, &y, &e, &c);
+    const int ok = cholmod_solve2(sys, L, z, nullptr, &x, nullptr, &y, &e, &c);
     SIG_VERIFY(ok && x, "CHOLMOD: substitution failed: status " << c.status);
     std::copy_n(static_cast<double*>(x->x), n, static_cast<double*>(z->x));
     cholmod_free_dense(&x, &c);
@@ -56,46 +56,57 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   std::vector<char> is_last(s.n, 0);
   for (int d : last)
     is_last[d] = 1;
-  std::vector<int> interior;
-  for (int d = 0; d < s.n; ++d)
-    if (!is_last[d]) interior.push_back(d);
   const int ni = s.n - s.m;
 
-  // 1. A fill-reducing order of the interior (METIS, AMD without it), then the Schur variables.
-  std::vector<Eigen::Triplet<double>> entries;
-  std::vector<int> position(s.n, -1);
-  for (int k = 0; k < ni; ++k)
-    position[interior[k]] = k;
-  for (int j = 0; j < K.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
-      if (position[it.row()] >= 0 && position[j] >= 0)
-        entries.emplace_back(position[it.row()], position[j], it.value());
-  Eigen::SparseMatrix<double> K_ii(ni, ni);
-  K_ii.setFromTriplets(entries.begin(), entries.end());
-  K_ii.makeCompressed();
+  // 1. A fill-reducing order constrained to put the Schur variables last: CSYMAMD on the whole
+  //    K with two constraint sets, whose factor is sparser than a free order of the interior
+  //    (METIS) followed by the Schur variables (the interior's order knows nothing of them).
+  //    AMD on the interior where CHOLMOD lacks CSYMAMD (no Partition module).
   cholmod_common& c = s.c;
-  c.nmethods = 1;
-  c.method[0].ordering = CHOLMOD_METIS;
-  c.postorder = 1;
-  cholmod_sparse view = view_lower(K_ii);
-  cholmod_factor* symbolic = cholmod_analyze(&view, &c);
-  if (!symbolic) {
+  std::vector<int> member(s.n), order(s.n);
+  for (int d = 0; d < s.n; ++d)
+    member[d] = is_last[d];
+  cholmod_sparse full = view_lower(K);
+  if (cholmod_csymamd(&full, member.data(), order.data(), &c)) {
+    for (int d : order)
+      if (!is_last[d]) s.perm.push_back(d);
+  } else {
+    std::vector<int> interior, position(s.n, -1);
+    for (int d = 0; d < s.n; ++d)
+      if (!is_last[d]) {
+        position[d] = static_cast<int>(interior.size());
+        interior.push_back(d);
+      }
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int j = 0; j < K.outerSize(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
+        if (position[it.row()] >= 0 && position[j] >= 0)
+          entries.emplace_back(position[it.row()], position[j], it.value());
+    Eigen::SparseMatrix<double> K_ii(ni, ni);
+    K_ii.setFromTriplets(entries.begin(), entries.end());
+    K_ii.makeCompressed();
+    c.nmethods = 1;
     c.method[0].ordering = CHOLMOD_AMD;
-    symbolic = cholmod_analyze(&view, &c);
+    c.postorder = 1;
+    cholmod_sparse view = view_lower(K_ii);
+    cholmod_factor* symbolic = cholmod_analyze(&view, &c);
+    SIG_VERIFY(symbolic, "CHOLMOD split: analysis of the interior failed: status " << c.status);
+    const int* interior_perm = static_cast<const int*>(symbolic->Perm);
+    for (int k = 0; k < ni; ++k)
+      s.perm.push_back(interior[interior_perm[k]]);
+    cholmod_free_factor(&symbolic, &c);
   }
-  SIG_VERIFY(symbolic, "CHOLMOD split: analysis of the interior failed: status " << c.status);
-  const int* interior_perm = static_cast<const int*>(symbolic->Perm);
-  for (int k = 0; k < ni; ++k)
-    s.perm.push_back(interior[interior_perm[k]]);
-  cholmod_free_factor(&symbolic, &c);
   s.perm.insert(s.perm.end(), last.begin(), last.end());
 
-  // 2. The whole K in that order, supernodal LL^T; no postorder, so the Schur variables stay last.
+  // 2. The whole K in that order, simplicial LL^T (its substitutions cost about half the
+  //    supernodal ones on these 2D meshes: drivers/bench-scene5.sh); no postorder, so the Schur
+  //    variables stay last.
   c.nmethods = 1;
   c.method[0].ordering = CHOLMOD_GIVEN;
   c.postorder = 0;
-  c.supernodal = CHOLMOD_SUPERNODAL;
-  view = view_lower(K);
+  c.supernodal = CHOLMOD_SIMPLICIAL;
+  c.final_ll = 1;
+  cholmod_sparse view = view_lower(K);
   s.L = cholmod_analyze_p(&view, s.perm.data(), nullptr, 0, &c);
   SIG_VERIFY(s.L, "CHOLMOD split: analysis failed: status " << c.status);
   const int* used = static_cast<const int*>(s.L->Perm);
@@ -105,22 +116,25 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   SIG_VERIFY(c.status == CHOLMOD_OK && s.L->minor == static_cast<size_t>(s.n),
              "CHOLMOD split: K is not positive definite (status " << c.status << ", minor "
                                                                   << s.L->minor << ")");
-  SIG_VERIFY(s.L->is_super && s.L->is_ll, "CHOLMOD split: expected a supernodal LL^T");
+  SIG_VERIFY(!s.L->is_super && s.L->is_ll, "CHOLMOD split: expected a simplicial LL^T");
 
-  // 3. The trailing block L_cc of the supernodal factor, and S = L_cc L_cc^T.
-  L_cc_ = Eigen::MatrixXd::Zero(s.m, s.m);
-  const auto* super = static_cast<const int*>(s.L->super);
-  const auto* pi = static_cast<const int*>(s.L->pi);
-  const auto* px = static_cast<const int*>(s.L->px);
-  const auto* rows = static_cast<const int*>(s.L->s);
-  const auto* x = static_cast<const double*>(s.L->x);
-  for (size_t k = 0; k < s.L->nsuper; ++k) {
-    const int k1 = super[k], k2 = super[k + 1], nrows = pi[k + 1] - pi[k];
-    for (int j = std::max(k1, ni); j < k2; ++j)
-      for (int r = j - k1; r < nrows; ++r)
-        L_cc_(rows[pi[k] + r] - ni, j - ni) = x[px[k] + r + (j - k1) * nrows];
+  // 3. The trailing block L_cc, and S = L_cc L_cc^T. Then L_cc is made the identity in the
+  //    factor (its columns cut to their diagonal 1), so the substitutions skip it: the forward
+  //    one leaves z_c = b_c - L_ci z_i, the condensed load L_cc z_c itself, and the backward one
+  //    takes x_c as it is.
+  auto* Lp = static_cast<const int*>(s.L->p);
+  auto* Li = static_cast<const int*>(s.L->i);
+  auto* Lnz = static_cast<int*>(s.L->nz);
+  auto* Lx = static_cast<double*>(s.L->x);
+  Eigen::MatrixXd L_cc = Eigen::MatrixXd::Zero(s.m, s.m);
+  for (int j = ni; j < s.n; ++j) {
+    for (int q = Lp[j]; q < Lp[j] + Lnz[j]; ++q)
+      L_cc(Li[q] - ni, j - ni) = Lx[q];
+    SIG_VERIFY(Li[Lp[j]] == j, "CHOLMOD split: a column's diagonal is not its first entry");
+    Lx[Lp[j]] = 1;
+    Lnz[j] = 1;
   }
-  S_ = L_cc_.triangularView<Eigen::Lower>() * L_cc_.transpose();
+  S_ = L_cc.triangularView<Eigen::Lower>() * L_cc.transpose();
   S_ = 0.5 * (S_ + S_.transpose()).eval();
   s.z = cholmod_allocate_dense(s.n, 1, s.n, CHOLMOD_REAL, &c);
   SIG_VERIFY(s.z, "CHOLMOD split: out of memory");
@@ -134,10 +148,9 @@ Eigen::VectorXd CholmodSplitSolver::reduce(const Eigen::VectorXd& b) {
   auto* z = static_cast<double*>(s.z->x);
   for (int k = 0; k < s.n; ++k)
     z[k] = b[s.perm[k]];
-  s.substitute(CHOLMOD_L, s.z);
+  s.substitute(CHOLMOD_L);
   s.reduced = true;
-  const Eigen::Map<const Eigen::VectorXd> z_c(z + (s.n - s.m), s.m);
-  return L_cc_.triangularView<Eigen::Lower>() * z_c;
+  return Eigen::Map<const Eigen::VectorXd>(z + (s.n - s.m), s.m);
 }
 
 Eigen::VectorXd CholmodSplitSolver::expand(const Eigen::VectorXd& x_c) {
@@ -145,15 +158,12 @@ Eigen::VectorXd CholmodSplitSolver::expand(const Eigen::VectorXd& x_c) {
   SIG_VERIFY(s.reduced && x_c.size() == s.m,
              "CHOLMOD split: expand needs a reduce() before it and " << s.m << " values");
   auto* z = static_cast<double*>(s.z->x);
-  Eigen::Map<Eigen::VectorXd>(z + (s.n - s.m), s.m) =
-      L_cc_.triangularView<Eigen::Lower>().transpose() * x_c;
-  s.substitute(CHOLMOD_Lt, s.z);
+  Eigen::Map<Eigen::VectorXd>(z + (s.n - s.m), s.m) = x_c;
+  s.substitute(CHOLMOD_Lt);
   s.reduced = false;
   Eigen::VectorXd u(s.n);
   for (int k = 0; k < s.n; ++k)
     u[s.perm[k]] = z[k];
-  for (int k = 0; k < s.m; ++k)
-    u[s.perm[s.n - s.m + k]] = x_c[k];
   return u;
 }
 

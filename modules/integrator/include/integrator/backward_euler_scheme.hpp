@@ -21,6 +21,12 @@
 // solve (SOLVER r, gamma; c a compliance): per unit velocity they are r k, gamma k and c / k
 // (velocity_parameters), so that one SOLVER card means the same whatever k.
 //
+// Cost. accept() forms K u_n and M w_n once: the next step's right side and the energies of the
+// state read them, so a step holds one product with K and one with M (pruned of the stored zeros
+// of its x-y couplings) beside its solve. They are the right side's work done at the end of the
+// previous step: products_seconds() times them, so that a benchmark counts them with the right
+// side, never with the solve.
+//
 // Energy. Without load, viscosity and contact, E_n = 1/2 w_n.M w_n + 1/2 u_n.K u_n obeys
 //   E_n - E_{n-1} = -1/2 (w_n - w_{n-1}).M (w_n - w_{n-1}) - 1/2 (u_n - u_{n-1}).K (u_n - u_{n-1})
 //                   - k w_n.C w_n <= 0,
@@ -63,6 +69,8 @@ public:
 
   /// w after the last accepted step (w_0 before the first).
   const Eigen::VectorXd& velocity() const { return w_; }
+  /// Wall seconds of the products K u and M w formed by the last accept() (header).
+  double products_seconds() const { return seconds_products_; }
   /// 1/2 w.M w and 1/2 u.K u at the last accepted step.
   double kinetic_energy() const;
   double elastic_energy() const;
@@ -71,11 +79,15 @@ public:
   const Eigen::SparseMatrix<double>& mass() const { return M_; }
 
 private:
+  void update_products();
+
   ReducedSystem reduced_; ///< K = reduced_.K, the loads
   Eigen::SparseMatrix<double> M_;
   double k_;
   Eigen::SparseMatrix<double> S_;
   Eigen::VectorXd u_, w_;
+  Eigen::VectorXd Ku_, Mw_; ///< K u_ and M_ w_
+  double seconds_products_ = 0;
   Eigen::VectorXd gap_;
 };
 

@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include <optional>
+
 namespace sig {
 
 /// P u: the coarse P1 field `u` (2 values per coarse node) at the nodes of `fine`.
@@ -23,9 +25,20 @@ struct StrainError {
   double relative() const { return reference_norm > 0 ? error / reference_norm : error; }
 };
 
-/// The error of u_h (on `coarse`) against u_ref (on `reference`), header. sig::Error for sizes
-/// that do not match the meshes.
+/// A sub-domain [x0, x1] x [y0, y1]: the norms integrate the reference triangles whose centroid
+/// lies in it. An error away from the corners where the solution leaves H^2 (a clamped side
+/// meeting a loaded one) shows the rate the discretisation has where the solution is smooth.
+struct Window {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  bool contains(const Eigen::Vector2d& x) const {
+    return x.x() >= x0 && x.x() <= x1 && x.y() >= y0 && x.y() <= y1;
+  }
+};
+
+/// The error of u_h (on `coarse`) against u_ref (on `reference`), header; on the whole domain,
+/// or on `window`'s triangles. sig::Error for sizes that do not match the meshes, or a window
+/// that holds no reference triangle.
 StrainError strain_error(const Mesh& reference, const Eigen::VectorXd& u_ref, const Mesh& coarse,
-                         const Eigen::VectorXd& u_h);
+                         const Eigen::VectorXd& u_h, const std::optional<Window>& window = {});
 
 } // namespace sig

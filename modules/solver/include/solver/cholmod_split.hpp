@@ -1,18 +1,21 @@
 #pragma once
-// A supernodal CHOLMOD LL^T of a symmetric positive definite K with a given set of unknowns
+// A simplicial CHOLMOD LL^T of a symmetric positive definite K with a given set of unknowns
 // (the Schur variables) ordered last, and a solve split around them: the CHOLMOD counterpart of
 // MUMPS's Schur variables with ICNTL(26) (solver/mumps_solver.hpp). With P K P^T = L L^T and
-// L = [L_ii 0; L_ci L_cc] (interior first, by METIS, then the Schur variables in their order):
+// L = [L_ii 0; L_ci L_cc] (interior first, in a fill-reducing order constrained to put the Schur
+// variables last, then those in their order):
 //   - the Schur complement is S = K_cc - K_ci K_ii^-1 K_ic = L_cc L_cc^T, the factor's trailing
-//     block, read once after the factorization;
-//   - reduce(b): the forward substitution L z = P b; the condensed load is b_c - K_ci K_ii^-1 b_i
-//     = L_cc z_c;
-//   - expand(x_c): the backward substitution L^T y = z with z_c replaced by L_cc^T x_c, whose
-//     interface part is then x_c and whose interior part is K_ii^-1 (b_i - K_ic x_c).
-// So a load costs one forward and one backward substitution with the whole factor, as one
-// solve does, whatever the Schur problem in between. K itself must be positive definite (the
-// whole body held by its Dirichlet conditions): a semi-coercive K, whose rigid modes only the
-// Schur variables hold, is refused (SchurComplement then factorizes K_ii alone).
+//     block, read once after the factorization; the factor then keeps the identity in its place;
+//   - reduce(b): the forward substitution with L_ii, z_i = L_ii^-1 (P b)_i, and the condensed
+//     load b_c - K_ci K_ii^-1 b_i = (P b)_c - L_ci z_i;
+//   - expand(x_c): the backward substitution z_i := L_ii^-T (z_i - L_ci^T x_c), the interior part
+//     K_ii^-1 (b_i - K_ic x_c) of the solution whose interface part is x_c.
+// So a load costs one forward and one backward substitution with the factor's interior columns,
+// fewer than one solve with the whole factor, whatever the Schur problem in between. The factor
+// is simplicial: on the 2D meshes of the quasistatic march its substitutions cost about half the
+// supernodal ones (drivers/bench-scene5.sh). K itself must be positive definite (the whole body
+// held by its Dirichlet conditions): a semi-coercive K, whose rigid modes only the Schur
+// variables hold, is refused (SchurComplement then factorizes K_ii alone).
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
@@ -42,7 +45,6 @@ public:
 private:
   struct State;
   std::unique_ptr<State> state_;
-  Eigen::MatrixXd L_cc_; ///< the factor's trailing block, dense lower triangular
   Eigen::MatrixXd S_;
 };
 
