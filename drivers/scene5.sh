@@ -23,6 +23,10 @@
 #   fig512/time/k<K>     h = 1/64, k = 1/16, 1/64 against 1/256: the time error alone
 #   fig512/elastic/n<N>  the clamped strip alone (Hooke, the load of t = 1, no contact, sig-solve)
 #                        on the same meshes: the rate the geometry allows
+#   fig512/rollers/n<N>  the labelled variant with rollers on Gamma1 (u1 = 0 only, no clamped
+#                        corner) against its own reference; for the march, the elastic strip and
+#                        the rollers also the error on [1, 4] x [0, 1], away from the corners
+#                        (error_interior.json)
 #   speed/<method>_<value>/n<N>  alm r = 100, projection c = 1 and c = 0.01 on the nested meshes
 #                        against the same reference (pdas gamma = 100: fig512)
 #   map/k<K>_c<c>_g<g>   the stability map: k x cn x g -> Newton iterations per step, Nv
@@ -113,6 +117,14 @@ run() {
   progress_step "$name"
 }
 
+# window_error_json RUN REFERENCE WINDOW: $out/RUN/error_interior.json, sig-error's error on the
+# sub-domain WINDOW (X0,X1,Y0,Y1) only.
+window_error_json() {
+  "$bin/sig-error" --json --window "$3" "$out/$1" "$out/$2" >"$out/$1/error_interior.json" ||
+    { failed+=("$out/$1 (sig-error --window)"); rm -f "$out/$1/error_interior.json"; }
+}
+interior=1,4,0,1
+
 # The two loads' templates, by label.
 declare -A load_deck=([P]=$template [R]=$rescaled)
 frictionless=(--replace-card FRICTION "FRICTION ref=3 law=none")
@@ -120,7 +132,7 @@ novtk=(--set OUTPUT.vtk=no)
 
 runs=$((1 + ${#nested[@]} + 1))                                        # bases
 runs=$((runs + 2 * (1 + 2 + ${#g_series[@]} + ${#c_series[@]} + ${#mu_series[@]}))) # figs 5.2-5.10
-runs=$((runs + 2 * (1 + ${#rhos[@]}) + 2 * (${#nested[@]} + 1) + 3))   # figs 5.11, 5.12
+runs=$((runs + 2 * (1 + ${#rhos[@]}) + 3 * (${#nested[@]} + 1) + 3))   # figs 5.11, 5.12
 runs=$((runs + 3 * ${#speed_meshes[@]} + ${#map_k[@]} * ${#map_c[@]} * ${#map_g[@]}))
 progress_begin $runs
 
@@ -221,6 +233,22 @@ for n in "$reference" "${nested[@]}"; do
 done
 for n in "${nested[@]}"; do
   error_json "fig512/elastic/n$n" "fig512/elastic/n$reference"
+done
+# Away from the corners: the same errors on the sub-domain [1, 4] x [0, 1] (sig-error --window,
+# error_interior.json), the march's and the clamped elastic strip's. And the labelled variant
+# with rollers on Gamma1 (u1 = 0 only: no clamped corner; the foundation alone holds the
+# vertical motion, so the step matrix is condensed with its interior factorized apart).
+for n in "${nested[@]}"; do
+  window_error_json "fig512/n$n" "fig512/n$reference" "$interior"
+  window_error_json "fig512/elastic/n$n" "fig512/elastic/n$reference" "$interior"
+done
+for n in "$reference" "${nested[@]}"; do
+  run "fig512/rollers/n$n" "$template" "n$n" --drop-card DIRICHLET \
+    --add-card "DIRICHLET ref=1 ux=0" --add-card "DIRICHLET ref=4 ux=0" "${novtk[@]}"
+done
+for n in "${nested[@]}"; do
+  error_json "fig512/rollers/n$n" "fig512/rollers/n$reference"
+  window_error_json "fig512/rollers/n$n" "fig512/rollers/n$reference" "$interior"
 done
 
 # Speed against accuracy: the other contact methods on the nested meshes (pdas: fig512).
