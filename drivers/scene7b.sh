@@ -4,8 +4,8 @@
 # load step as the thesis ran it, and the same runs in 14 load steps beside them; then its report.
 #
 #   default: N = 128 256       (about 1.5 min on the shared 2 cores)
-#   --quick: N = 128           (about 20 s)
-#   --full:  N = 128 256 512   (about 7 min: the projection method at c = 1e2 in 14 load steps
+#   --quick: N = 128           (about 10 s)
+#   --full:  N = 128 256 512   (about 5 min: the projection method at c = 1e2 in 14 load steps
 #                               needs ~100 Newton iterations per load step)
 #
 # Per N the bulk stages (sig-mesh, sig-material, sig-contact, sig-assemble) run once into

@@ -308,9 +308,9 @@ def loadstep_section(runs, variant, checks):
                   "load stepping costs on this crush. What it buys: the path (one state per "
                   "load step in ring.pvd), a start close to each step's solution (a few "
                   "iterations per step, no active set far from the final one), and runs that "
-                  "converge only that way: "
-                  + (", ".join(only_variant) if only_variant else "none here") + "; converged "
-                  "in one step only: " + (", ".join(only_one) if only_one else "none") + ".",
+                  "converge on the symmetric branch only that way: "
+                  + (", ".join(only_variant) if only_variant else "none here") + "; in one step "
+                  "only: " + (", ".join(only_one) if only_one else "none") + ".",
                   ""]
     return lines
 
