@@ -86,7 +86,8 @@ private:
   double k_;
   Eigen::SparseMatrix<double> S_;
   Eigen::VectorXd u_, w_;
-  Eigen::VectorXd Ku_, Mw_; ///< K u_ and M_ w_
+  Eigen::SparseMatrix<double> K_lower_, M_lower_; ///< the lower triangles of K and M_
+  Eigen::VectorXd Ku_, Mw_;                       ///< K u_ and M_ w_
   double seconds_products_ = 0;
   Eigen::VectorXd gap_;
 };
