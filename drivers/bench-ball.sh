@@ -55,10 +55,7 @@ deck() {
 }
 
 deck "$out/base/ball.dat" "" consistent
-for stage in mesh material assemble; do
-  "$bin/sig-$stage" "$out/base/ball.dat" -o "$out/base" >"$out/base/$stage.log" 2>&1 ||
-    die "sig-$stage failed (see $out/base/$stage.log)"
-done
+build_base "$out/base/ball.dat" "$out/base" "the base case" mesh material assemble
 nodes=$(grep -m1 -oE '[0-9]+ nodes' "$out/base/mesh.log" | cut -d' ' -f1)
 
 r=1e12
@@ -78,12 +75,11 @@ methods=(no-contact signorini compliance specific-penalty emm two-step ipm ipm-e
 for method in "${methods[@]}"; do
   dir=$out/runs/$method
   mkdir -p "$dir"
-  for ds in nopo mili tae; do ln -s "$out/base/case.$ds" "$dir/case.$ds"; done
+  link_ds "$out/base" "$dir" nopo mili tae
   f=${fields[$method]}
   deck "$dir/ball.dat" "${f%|*}" "${f#*|}"
   if [ -n "${f%|*}" ]; then
-    "$bin/sig-contact" "$dir/ball.dat" -o "$dir" >"$dir/contact.log" 2>&1 ||
-      die "sig-contact failed for $method (see $dir/contact.log)"
+    run_stage contact "$dir/ball.dat" "$dir" || die "cannot build the contact elements of $method"
   fi
 done
 

@@ -106,20 +106,8 @@ base() {
   local dir=$out/$1/base
   mkdir -p "$dir"
   write_deck "$dir/ball.dat" "$2" 0 signorini 2 1e-3 1 no
-  for stage in mesh material assemble; do
-    run_stage "$stage" "$dir/ball.dat" "$dir" || die "cannot build the base case of mesh $1"
-  done
+  build_base "$dir/ball.dat" "$dir" "the base case of mesh $1" mesh material assemble
   progress_step "$1/base"
-}
-
-# run_stage STAGE DECK DIR: one stage, its output in DIR/<stage>.log and shown on failure.
-run_stage() {
-  local stage=$1 deck=$2 dir=$3
-  if ! "$bin/sig-$stage" "$deck" -o "$dir" >"$dir/$stage.log" 2>&1; then
-    tail -n 20 "$dir/$stage.log" >&2
-    echo "sig-$stage failed for $deck (log: $dir/$stage.log)" >&2
-    return 1
-  fi
 }
 
 # A run whose stage fails (a crash; a Newton failure is a result, "Nv") is listed here; the
@@ -132,9 +120,7 @@ run() {
   local dir=$1 mesh=$2 plane=$3 method=$4 T=$5 k=$6 gap=${7:-} steps every vtk=no t0 t1
   rm -rf "$dir"
   mkdir -p "$dir"
-  for ds in nopo mili tae; do
-    ln -s "$out/$mesh/base/case.$ds" "$dir/case.$ds"
-  done
+  link_ds "$out/$mesh/base" "$dir" nopo mili tae
   steps=$("$python" -c "print(round($T / $k))")
   every=$steps
   if [ "${keep:-no}" = yes ]; then

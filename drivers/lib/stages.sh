@@ -22,12 +22,15 @@ run_stage() {
   fi
 }
 
-# build_base DECK DIR WHAT: sig-mesh, sig-material, sig-contact and sig-assemble of DECK in DIR,
-# the DS files the runs of one mesh share; dies naming WHAT when a stage fails.
+# build_base DECK DIR WHAT [STAGE...]: the stages (default mesh material contact assemble) on DECK
+# in DIR, the DS files the runs of one mesh share; dies naming WHAT when a stage fails.
 build_base() {
-  local stage
-  for stage in mesh material contact assemble; do
-    run_stage "$stage" "$1" "$2" || die "cannot build $3"
+  local deck=$1 dir=$2 what=$3 stage stages
+  shift 3
+  stages=("$@")
+  [ $# -gt 0 ] || stages=(mesh material contact assemble)
+  for stage in "${stages[@]}"; do
+    run_stage "$stage" "$deck" "$dir" || die "cannot build $what"
   done
 }
 
