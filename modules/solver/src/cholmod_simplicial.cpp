@@ -10,24 +10,7 @@
 
 namespace sig {
 
-struct CholmodSimplicialSolver::State {
-  cholmod_common c{};
-  cholmod_factor* L = nullptr;
-  cholmod_dense* b = nullptr; ///< the right side, n x 1
-  cholmod_dense* y = nullptr; ///< solve2's workspace
-  cholmod_dense* e = nullptr;
-  State() {
-    cholmod_start(&c);
-    c.print = 0;
-  }
-  ~State() {
-    cholmod_free_dense(&b, &c);
-    cholmod_free_dense(&y, &c);
-    cholmod_free_dense(&e, &c);
-    if (L) cholmod_free_factor(&L, &c);
-    cholmod_finish(&c);
-  }
-};
+struct CholmodSimplicialSolver::State : CholmodFactor {};
 
 CholmodSimplicialSolver::CholmodSimplicialSolver(const Eigen::SparseMatrix<double>& A)
     : state_(std::make_unique<State>()) {
@@ -50,8 +33,7 @@ CholmodSimplicialSolver::CholmodSimplicialSolver(const Eigen::SparseMatrix<doubl
   cholmod_factorize(&view, s.L, &c);
   SIG_VERIFY(c.status == CHOLMOD_OK && s.L->minor == s.L->n,
              "CHOLMOD simplicial: the matrix is not positive definite (status " << c.status << ")");
-  s.b = cholmod_allocate_dense(s.L->n, 1, s.L->n, CHOLMOD_REAL, &c);
-  SIG_VERIFY(s.b, "CHOLMOD simplicial: out of memory");
+  s.allocate();
 }
 
 CholmodSimplicialSolver::~CholmodSimplicialSolver() = default;
@@ -61,13 +43,9 @@ Eigen::VectorXd CholmodSimplicialSolver::solve(const Eigen::VectorXd& b) {
   const auto n = static_cast<Eigen::Index>(s.L->n);
   SIG_VERIFY(b.size() == n,
              "CHOLMOD simplicial: a right side of size " << b.size() << " for " << n);
-  std::copy_n(b.data(), n, static_cast<double*>(s.b->x));
-  cholmod_dense* x = nullptr;
-  const int ok = cholmod_solve2(CHOLMOD_A, s.L, s.b, nullptr, &x, nullptr, &s.y, &s.e, &s.c);
-  SIG_VERIFY(ok && x, "CHOLMOD simplicial: solve failed: status " << s.c.status);
-  Eigen::VectorXd u = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(x->x), n);
-  cholmod_free_dense(&x, &s.c);
-  return u;
+  std::copy_n(b.data(), n, s.values());
+  s.solve(CHOLMOD_A);
+  return Eigen::Map<const Eigen::VectorXd>(s.values(), n);
 }
 
 } // namespace sig

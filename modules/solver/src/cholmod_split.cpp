@@ -11,34 +11,10 @@
 namespace sig {
 
 struct CholmodSplitSolver::State {
-  cholmod_common c{};
-  cholmod_factor* L = nullptr;
+  CholmodFactor f;       ///< its b: the last forward substitution
   std::vector<int> perm; ///< P: row k of P K P^T is row perm[k] of K
   int n = 0, m = 0;
-  cholmod_dense* z = nullptr; ///< the last forward substitution, n x 1
-  cholmod_dense* y = nullptr; ///< solve2's workspace
-  cholmod_dense* e = nullptr;
   bool reduced = false;
-
-  State() {
-    cholmod_start(&c);
-    c.print = 0;
-  }
-  ~State() {
-    cholmod_free_dense(&z, &c);
-    cholmod_free_dense(&y, &c);
-    cholmod_free_dense(&e, &c);
-    if (L) cholmod_free_factor(&L, &c);
-    cholmod_finish(&c);
-  }
-  /// z := L^-1 z (sys CHOLMOD_L) or L^-T z (CHOLMOD_Lt), reusing the workspace.
-  void substitute(int sys) {
-    cholmod_dense* x = nullptr;
-    const int ok = cholmod_solve2(sys, L, z, nullptr, &x, nullptr, &y, &e, &c);
-    SIG_VERIFY(ok && x, "CHOLMOD: substitution failed: status " << c.status);
-    std::copy_n(static_cast<double*>(x->x), n, static_cast<double*>(z->x));
-    cholmod_free_dense(&x, &c);
-  }
 };
 
 CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
@@ -62,7 +38,7 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   //    K with two constraint sets, whose factor is sparser than a free order of the interior
   //    (METIS) followed by the Schur variables (the interior's order knows nothing of them).
   //    AMD on the interior where CHOLMOD lacks CSYMAMD (no Partition module).
-  cholmod_common& c = s.c;
+  cholmod_common& c = s.f.c;
   std::vector<int> member(s.n), order(s.n);
   for (int d = 0; d < s.n; ++d)
     member[d] = is_last[d];
@@ -107,25 +83,25 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   c.supernodal = CHOLMOD_SIMPLICIAL;
   c.final_ll = 1;
   cholmod_sparse view = view_lower(K);
-  s.L = cholmod_analyze_p(&view, s.perm.data(), nullptr, 0, &c);
-  SIG_VERIFY(s.L, "CHOLMOD split: analysis failed: status " << c.status);
-  const int* used = static_cast<const int*>(s.L->Perm);
+  s.f.L = cholmod_analyze_p(&view, s.perm.data(), nullptr, 0, &c);
+  SIG_VERIFY(s.f.L, "CHOLMOD split: analysis failed: status " << c.status);
+  const int* used = static_cast<const int*>(s.f.L->Perm);
   SIG_VERIFY(std::equal(s.perm.begin(), s.perm.end(), used),
              "CHOLMOD split: the factor's order is not the given one");
-  cholmod_factorize(&view, s.L, &c);
-  SIG_VERIFY(c.status == CHOLMOD_OK && s.L->minor == static_cast<size_t>(s.n),
+  cholmod_factorize(&view, s.f.L, &c);
+  SIG_VERIFY(c.status == CHOLMOD_OK && s.f.L->minor == static_cast<size_t>(s.n),
              "CHOLMOD split: K is not positive definite (status " << c.status << ", minor "
-                                                                  << s.L->minor << ")");
-  SIG_VERIFY(!s.L->is_super && s.L->is_ll, "CHOLMOD split: expected a simplicial LL^T");
+                                                                  << s.f.L->minor << ")");
+  SIG_VERIFY(!s.f.L->is_super && s.f.L->is_ll, "CHOLMOD split: expected a simplicial LL^T");
 
   // 3. The trailing block L_cc, and S = L_cc L_cc^T. Then L_cc is made the identity in the
   //    factor (its columns cut to their diagonal 1), so the substitutions skip it: the forward
   //    one leaves z_c = b_c - L_ci z_i, the condensed load L_cc z_c itself, and the backward one
   //    takes x_c as it is.
-  auto* Lp = static_cast<const int*>(s.L->p);
-  auto* Li = static_cast<const int*>(s.L->i);
-  auto* Lnz = static_cast<int*>(s.L->nz);
-  auto* Lx = static_cast<double*>(s.L->x);
+  auto* Lp = static_cast<const int*>(s.f.L->p);
+  auto* Li = static_cast<const int*>(s.f.L->i);
+  auto* Lnz = static_cast<int*>(s.f.L->nz);
+  auto* Lx = static_cast<double*>(s.f.L->x);
   Eigen::MatrixXd L_cc = Eigen::MatrixXd::Zero(s.m, s.m);
   for (int j = ni; j < s.n; ++j) {
     for (int q = Lp[j]; q < Lp[j] + Lnz[j]; ++q)
@@ -136,8 +112,7 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   }
   S_ = L_cc.triangularView<Eigen::Lower>() * L_cc.transpose();
   S_ = 0.5 * (S_ + S_.transpose()).eval();
-  s.z = cholmod_allocate_dense(s.n, 1, s.n, CHOLMOD_REAL, &c);
-  SIG_VERIFY(s.z, "CHOLMOD split: out of memory");
+  s.f.allocate();
 }
 
 CholmodSplitSolver::~CholmodSplitSolver() = default;
@@ -145,22 +120,22 @@ CholmodSplitSolver::~CholmodSplitSolver() = default;
 Eigen::VectorXd CholmodSplitSolver::reduce(const Eigen::VectorXd& b) {
   State& s = *state_;
   SIG_VERIFY(b.size() == s.n, "CHOLMOD split: a load of size " << b.size() << " for " << s.n);
-  auto* z = static_cast<double*>(s.z->x);
+  double* z = s.f.values();
   for (int k = 0; k < s.n; ++k)
     z[k] = b[s.perm[k]];
-  s.substitute(CHOLMOD_L);
+  s.f.solve(CHOLMOD_L);
   s.reduced = true;
-  return Eigen::Map<const Eigen::VectorXd>(z + (s.n - s.m), s.m);
+  return Eigen::Map<const Eigen::VectorXd>(s.f.values() + (s.n - s.m), s.m);
 }
 
 Eigen::VectorXd CholmodSplitSolver::expand(const Eigen::VectorXd& x_c) {
   State& s = *state_;
   SIG_VERIFY(s.reduced && x_c.size() == s.m,
              "CHOLMOD split: expand needs a reduce() before it and " << s.m << " values");
-  auto* z = static_cast<double*>(s.z->x);
-  Eigen::Map<Eigen::VectorXd>(z + (s.n - s.m), s.m) = x_c;
-  s.substitute(CHOLMOD_Lt);
+  Eigen::Map<Eigen::VectorXd>(s.f.values() + (s.n - s.m), s.m) = x_c;
+  s.f.solve(CHOLMOD_Lt);
   s.reduced = false;
+  const double* z = s.f.values();
   Eigen::VectorXd u(s.n);
   for (int k = 0; k < s.n; ++k)
     u[s.perm[k]] = z[k];
