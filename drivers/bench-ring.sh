@@ -49,33 +49,10 @@ n=512
 repeat=3
 loadsteps="1 14"
 getfem=1
-while [ $# -gt 0 ]; do
-  case $1 in
-    --quick) n=128 ;;
-    --n | --repeat | --loadsteps | -o)
-      [ $# -ge 2 ] || die "$1 needs a value"
-      case $1 in
-        --n) n=$2 ;;
-        --repeat) repeat=$2 ;;
-        --loadsteps) loadsteps=$2 ;;
-        -o) out=$2 ;;
-      esac
-      shift
-      ;;
-    --no-getfem) getfem=0 ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    *)
-      usage >&2
-      die "unknown argument '$1'"
-      ;;
-  esac
-  shift
-done
+parse_options --quick:n=128 --n=n --repeat=repeat --loadsteps=loadsteps -o=out \
+  --no-getfem:getfem=0 -- "$@"
 [[ $n =~ ^[0-9]+$ ]] && [ "$n" -ge 4 ] && [ $((n % 2)) -eq 0 ] || die "--n must be an even integer >= 4, got '$n'"
-[[ $repeat =~ ^[0-9]+$ ]] && [ "$repeat" -ge 1 ] || die "--repeat must be a positive integer, got '$repeat'"
+require_positive --repeat "$repeat"
 for steps in $loadsteps; do
   [[ $steps =~ ^[0-9]+$ ]] && [ "$steps" -ge 1 ] || die "--loadsteps takes positive integers, got '$steps'"
 done
@@ -126,12 +103,7 @@ for steps in $loadsteps; do
   fi
 done
 
-{
-  echo "command: $invocation"
-  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "host: $(uname -n), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
-} >"$out/command.txt"
+bench_provenance >"$out/command.txt"
 
 "$python" - "$out" "$n" "$loadsteps" <<'EOF'
 import json, sys
