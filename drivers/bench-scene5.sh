@@ -5,6 +5,7 @@
 #   t64     h = k = 1/64 on the thesis's 64 x 12 union-jack mesh (3226 dofs, 63 contact nodes)
 #   t64mu0  the same, frictionless (the contact problem on the normal unknowns only)
 #   n256    h = k = 1/256 on the 256 x 64 mesh, the reference of Fig 5.12 (66178 dofs, 255 nodes)
+#   n256mu0 the same, frictionless
 # each with CHOLMOD (the deck's: the step matrix factorized whole, Gamma3 last) and MUMPS (its
 # Schur variables and split solve). Reported, medians of K runs (default 5):
 #   - the setup (frames, one sparse factorization with the Schur complement, the condensed
@@ -49,9 +50,11 @@ case_edits() {
     t64mu0) edits=(--replace-card FRICTION "FRICTION ref=3 law=none") ;;
     n256) edits=(--set MESH.nx=256 --set MESH.ny=64 --set TIME.k=0.00390625
       --set TIME.output_every=256) ;;
+    n256mu0) edits=(--set MESH.nx=256 --set MESH.ny=64 --set TIME.k=0.00390625
+      --set TIME.output_every=256 --replace-card FRICTION "FRICTION ref=3 law=none") ;;
   esac
 }
-cases=(t64 t64mu0 n256)
+cases=(t64 t64mu0 n256 n256mu0)
 start=$SECONDS
 for name in "${cases[@]}"; do
   for backend in cholmod mumps; do
@@ -76,7 +79,8 @@ from pathlib import Path
 out, invocation, repeat, seconds, revision = sys.argv[1:6]
 out = Path(out)
 cases = {"t64": "h = k = 1/64, the thesis's mesh, friction", "t64mu0": "h = k = 1/64, frictionless",
-         "n256": "h = k = 1/256 (Fig 5.12's reference), friction"}
+         "n256": "h = k = 1/256 (Fig 5.12's reference), friction",
+         "n256mu0": "h = k = 1/256, frictionless"}
 bench = {(c, b): json.loads((out / f"{c}_{b}" / "bench.json").read_text())
          for c in cases for b in ("cholmod", "mumps")}
 lines = [
