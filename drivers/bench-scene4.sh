@@ -16,8 +16,8 @@
 #           and by CHOLMOD, the faster taken
 # Cases: fig42 (a = 2, b = 0.02, alpha = 1), fig45 (a = 1, b = 0.5, alpha = 100) and slow
 # (a = 2, b = 1, alpha = 100: the map's slowest of these at the thesis's size), pdas gamma = 2e2.
-# K rounds (default 5) run round robin; medians; run it under the exclusive CPU lock
-# (`flock -x /work/coord/cpu.lock drivers/bench-scene4.sh`) for figures worth quoting. Writes
+# K rounds (default 5) run round robin; medians; run it on a quiet machine
+# (nothing else building or running) for figures worth quoting. Writes
 # OUTDIR/bench.md, bench.json and times.tsv (default out/bench-scene4).
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).

@@ -11,8 +11,8 @@
 #               of k = 1/300 through the impact), frictionless, and IPM + EMM with mu1 and mu2.
 # Per run: the wall time of sig-march (median of N runs, default 3, round robin), the time and the
 # Newton iterations per step, and their ratios to the contact-free step. Nothing is asserted: the
-# numbers go to OUTDIR/report.md (default out/bench-scene8b) and bench.csv. Run it under the
-# exclusive CPU lock (../coord/PROTOCOL.md): flock -x /work/coord/cpu.lock drivers/bench-scene8b.sh
+# numbers go to OUTDIR/report.md (default out/bench-scene8b) and bench.csv. Run it on a quiet
+# machine (nothing else building or running) for figures worth quoting.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
@@ -134,7 +134,7 @@ free_step = wall["free-flight"] / steps["free-flight"]
 ref_step = wall["no-contact"] / steps["no-contact"]
 ref_its = its["no-contact"] / steps["no-contact"]
 md = ["# Benchmark: scene 8b, the hyperelastic ring impact", "",
-      f"Command: `drivers/bench-scene8b.sh --repeat {repeat}` (under the exclusive CPU lock). "
+      f"Command: `drivers/bench-scene8b.sh --repeat {repeat}` (on a quiet machine). "
       "The ring of datafiles/scene8b/ring.dat: 1664 nodes, 3328 dofs, 128 contact nodes, "
       "Ciarlet-Geymonat with Gonzalez's stress, k = 1/300, MUMPS LU. Wall time of sig-march "
       "(reading the DS files, marching, writing case.hist), median of " + repeat + " runs, round "

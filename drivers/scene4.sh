@@ -38,7 +38,7 @@
 #   speed/<M>/<method>_<value>  the Fig 4.2 case by each method on C, M, G (and T), its error
 #                     ||u - u_ref||_V against the reference (sig-error, error.json)
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3). Times are sig-solve
-# phases: run under `flock -x /work/coord/cpu.lock` for times worth quoting (PROTOCOL.md).
+# phases: run it on a quiet machine for times worth quoting.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 

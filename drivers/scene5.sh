@@ -31,7 +31,7 @@
 #                        against the same reference (pdas gamma = 100: fig512)
 #   map/k<K>_c<c>_g<g>   the stability map: k x cn x g -> Newton iterations per step, Nv
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3). March times are
-# sig-march's: run under `flock -x /work/coord/cpu.lock` for times worth quoting (PROTOCOL.md).
+# sig-march's: run it on a quiet machine for times worth quoting.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 

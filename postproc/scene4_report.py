@@ -292,8 +292,8 @@ def main():
     w(f"Command: `{info['command']}` (outdir {info.get('outdir', out)}, revision "
       f"{info.get('revision', '?')}, {info.get('date', '?')}, host {info.get('host', '?')}); runs "
       f"took {info.get('seconds', '?')} s. Times below are sig-solve's phases (all but "
-      "assembly), from this run of the driver; for quotable times run it under "
-      "`flock -x /work/coord/cpu.lock` (the benchmark drivers/bench-scene4.sh does its own).")
+      "assembly), from this run of the driver; for quotable times run it on a quiet "
+      "machine (the benchmark drivers/bench-scene4.sh does its own).")
     w("")
     w("*What it models and why.* The cross-section of a ball (centre (10, 10), R = 10, GPa and m) "
       "pressed onto a foundation: a rigid body under a deformable layer of depth g = 0.5, normal "

@@ -1,8 +1,7 @@
 #!/usr/bin/env python3
 """The index of all scenes: OUTDIR/index.md and OUTDIR/index.html, one page listing each scene's
 checks (PASS/FAIL), its key table "ours (thesis)", its charts and links to its report and ParaView
-files, from the entries OUTDIR/<folder>/scene.json that the scene reports write (PROTOCOL.md 6,
-postproc/sigreport/scene.py).
+files, from the entries OUTDIR/<folder>/scene.json that the scene reports write (postproc/sigreport/scene.py).
 
     scene_index.py OUTDIR [--runs FILE]
 

@@ -1,6 +1,6 @@
 """A scene's folder: the driver's command.txt, the runs' summary.json and CSV files, the solve
 time of a run, and the scene index entry out/<scene>/scene.json that every scene report writes
-(PROTOCOL.md section 6; `drivers/run.sh --all` builds out/index.html from these files):
+(`drivers/run.sh --all` builds out/index.html from these files):
 
     {"scene": "7a", "title": "...", "report": "report.md", "command": "drivers/scene7a.sh --quick",
      "seconds": 12.3,
