@@ -16,8 +16,8 @@
 #     same backend's plain solve, and the fastest solve, CHOLMOD's simplicial one,
 #     solver/cholmod_simplicial.hpp), and the step's parts: the right side, the contact problem,
 #     the condensation and expansion (the split solve).
-# Run it on a quiet machine (nothing else building or running) for figures worth quoting. Writes OUTDIR/report.md and OUTDIR/<case>_<backend>/bench.json
-# (default out/bench-scene5).
+# Run it on a quiet machine (nothing else building or running) for figures worth quoting.
+# Writes OUTDIR/report.md and OUTDIR/<case>_<backend>/bench.json (default out/bench-scene5).
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail

@@ -12,8 +12,8 @@
 # parts: right side, contact problem, condensation and expansion):
 #   - setup + march of the reference under 30 s, with one sparse factorization;
 #   - a step against one solve plus the contact problem's share: at most 1.2x.
-# Run it on a quiet machine (nothing else building or running) for figures worth quoting. Writes OUTDIR/report.md and OUTDIR/bench.json (default
-# out/bench-scene6).
+# Run it on a quiet machine (nothing else building or running) for figures worth quoting.
+# Writes OUTDIR/report.md and OUTDIR/bench.json (default out/bench-scene6).
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3), BENCH_CASES (the
 # cases, default "n256 n64").

@@ -44,21 +44,40 @@ link_ds() {
   done
 }
 
+# stage_cards STAGE: the cards the stage reads but TITLE, from its --help (one list, the stage's).
+stage_cards() {
+  "$bin/sig-$1" --help | sed -n 's/^\([A-Z][A-Z0-9]*\)\( (repeatable)\)\{0,1\}:.*/\1/p' |
+    grep -v '^TITLE$'
+}
+
+# same_cards STAGE DECK1 DECK2: status 0 when both decks hold the same cards of the stage.
+same_cards() {
+  local cards
+  mapfile -t cards < <(stage_cards "$1")
+  cmp -s <(deck_cards "$2" "${cards[@]}") <(deck_cards "$3" "${cards[@]}")
+}
+
 # variant_ds BASE_DECK DIR DECK: DIR's DS files up to the system for DECK, a variant of BASE_DECK
 # (in the folder of its DS files): case.nopo and case.mili link to the base's, and so do case.cont
 # and case.tae where DECK keeps the cards they are made of; sig-contact and sig-assemble run on
-# DECK where it changes them. Status 1 when a stage fails.
+# DECK where it changes them. A variant of the mesh or the material is refused: every DS of the
+# case would change. Status 1 when a stage fails or the variant is refused.
 variant_ds() {
-  local base_dir
+  local base_dir stage
   base_dir=$(dirname "$1")
+  for stage in mesh material; do
+    if ! same_cards "$stage" "$1" "$3"; then
+      echo "variant_ds: $3 changes the cards of sig-$stage of $1: build it as a case of its own" >&2
+      return 1
+    fi
+  done
   link_ds "$base_dir" "$2" nopo mili
-  if cmp -s <(deck_cards "$3" CONTACT FRICTION) <(deck_cards "$1" CONTACT FRICTION); then
+  if same_cards contact "$1" "$3"; then
     link_ds "$base_dir" "$2" cont
   else
     run_stage contact "$3" "$2" || return 1
   fi
-  if cmp -s <(deck_cards "$3" DIRICHLET TRACTION PRESSURE BODYFORCE) \
-    <(deck_cards "$1" DIRICHLET TRACTION PRESSURE BODYFORCE); then
+  if same_cards assemble "$1" "$3"; then
     link_ds "$base_dir" "$2" tae
   else
     run_stage assemble "$3" "$2"

@@ -98,9 +98,27 @@ message=$("$bin/sig-solve" "$good" -o "$work/out" 2>&1) && { echo "FAIL: corrupt
 grep -q "CRC" <<< "$message" && grep -q "array '" <<< "$message" || { echo "FAIL: corrupted TAE message: $message"; failures=$((failures + 1)); }
 cp "$work/keep.tae" "$work/out/case.tae"
 
+# Command-line values of the error and benchmark tools: a refusal naming the option and the value.
+expect_option() {
+  local what=$1 expected=$2 status=0 message
+  shift 2
+  message=$("$@" 2>&1) || status=$?
+  if [ "$status" -eq 0 ] || ! grep -qF -- "$expected" <<< "$message"; then
+    echo "FAIL ($what): exit $status: $message"; failures=$((failures + 1))
+  fi
+}
+for window in 1,2,3,4, 1,2,3 1,2,x,4 2,1,3,4; do
+  expect_option "--window $window" "--window $window" \
+    "$bin/sig-error" --window "$window" "$work/out" "$work/out"
+done
+for repeat in abc 2x 0; do
+  expect_option "--repeat $repeat" "--repeat: '$repeat'" \
+    "$bin/sig-bench-quasistatic" "$good" -o "$work/out" --repeat "$repeat"
+done
+
 # Nothing the good run wrote was touched by the failed ones.
 after=$(cd "$work/out" && sha256sum case.* | sha256sum)
 [ "$before" = "$after" ] || { echo "FAIL: a failed stage changed a DS file"; failures=$((failures + 1)); }
 
 [ "$failures" -eq 0 ] || exit 1
-echo "bad_input: 25 bad inputs refused with file, line and field; DS files intact"
+echo "bad_input: 25 bad inputs and 7 bad option values refused with file, line and field; DS files intact"

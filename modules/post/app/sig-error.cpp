@@ -73,7 +73,8 @@ sig::Window parse_window(const std::string& text) {
                "--window " << text << ": '" << item << "' is not a number");
     v.push_back(x);
   }
-  SIG_VERIFY(v.size() == 4 && v[0] < v[1] && v[2] < v[3],
+  // getline drops an empty last field: "1,2,3,4," would pass as four numbers.
+  SIG_VERIFY(v.size() == 4 && text.back() != ',' && v[0] < v[1] && v[2] < v[3],
              "--window " << text << ": expected X0,X1,Y0,Y1 with X0 < X1 and Y0 < Y1");
   return {v[0], v[1], v[2], v[3]};
 }

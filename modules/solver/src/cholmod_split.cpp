@@ -37,41 +37,15 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   // 1. A fill-reducing order constrained to put the Schur variables last: CSYMAMD on the whole
   //    K with two constraint sets, whose factor is sparser than a free order of the interior
   //    (METIS) followed by the Schur variables (the interior's order knows nothing of them).
-  //    AMD on the interior where CHOLMOD lacks CSYMAMD (no Partition module).
   cholmod_common& c = s.f.c;
   std::vector<int> member(s.n), order(s.n);
   for (int d = 0; d < s.n; ++d)
     member[d] = is_last[d];
   cholmod_sparse full = view_lower(K);
-  if (cholmod_csymamd(&full, member.data(), order.data(), &c)) {
-    for (int d : order)
-      if (!is_last[d]) s.perm.push_back(d);
-  } else {
-    std::vector<int> interior, position(s.n, -1);
-    for (int d = 0; d < s.n; ++d)
-      if (!is_last[d]) {
-        position[d] = static_cast<int>(interior.size());
-        interior.push_back(d);
-      }
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int j = 0; j < K.outerSize(); ++j)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
-        if (position[it.row()] >= 0 && position[j] >= 0)
-          entries.emplace_back(position[it.row()], position[j], it.value());
-    Eigen::SparseMatrix<double> K_ii(ni, ni);
-    K_ii.setFromTriplets(entries.begin(), entries.end());
-    K_ii.makeCompressed();
-    c.nmethods = 1;
-    c.method[0].ordering = CHOLMOD_AMD;
-    c.postorder = 1;
-    cholmod_sparse view = view_lower(K_ii);
-    cholmod_factor* symbolic = cholmod_analyze(&view, &c);
-    SIG_VERIFY(symbolic, "CHOLMOD split: analysis of the interior failed: status " << c.status);
-    const int* interior_perm = static_cast<const int*>(symbolic->Perm);
-    for (int k = 0; k < ni; ++k)
-      s.perm.push_back(interior[interior_perm[k]]);
-    cholmod_free_factor(&symbolic, &c);
-  }
+  SIG_VERIFY(cholmod_csymamd(&full, member.data(), order.data(), &c),
+             "CHOLMOD split: CSYMAMD ordering failed: status " << c.status);
+  for (int d : order)
+    if (!is_last[d]) s.perm.push_back(d);
   s.perm.insert(s.perm.end(), last.begin(), last.end());
 
   // 2. The whole K in that order, simplicial LL^T (its substitutions cost about half the
