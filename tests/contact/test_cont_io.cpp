@@ -3,6 +3,7 @@
 #include "contact/contact_elements.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "scratch_folder.hpp"
 #include "square_mesh.hpp"
 
 #include <filesystem>
@@ -13,9 +14,9 @@
 namespace sig {
 namespace {
 
+// One folder for the file's tests, removed when the test program ends.
 std::filesystem::path temp_path(const std::string& name) {
-  const auto dir = std::filesystem::path(testing::TempDir()) / "sig_test_contact";
-  std::filesystem::create_directories(dir);
+  static const testing::ScratchFolder dir;
   return dir / name;
 }
 
