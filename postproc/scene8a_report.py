@@ -17,6 +17,7 @@ import csv
 import math
 from pathlib import Path
 
+from sigreport import charts
 from sigreport import (Checks, Deck, MapCell, MapPanel, Point, Series, Table, load_thesis,
                        main_guard, markdown_table, pyplot, read_command, read_ds,
                        speed_accuracy_chart, stability_map, write_scene_json)
@@ -142,25 +143,10 @@ def mesh_nodes(out, mesh):
 
 
 def energy_chart(out, runs, names, title, png, window):
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
-    for name in names:
-        run = runs.get(name)
-        if run is None:
-            continue
-        t = [r["time"] for r in run["rows"]]
-        e = [r["total"] / run["e0"] for r in run["rows"]]
-        pts = [(a, b) for a, b in zip(t, e) if window[0] <= a <= window[1]]
-        if pts:
-            ax.plot(*zip(*pts), marker=MARKER.get(run["method"], "."), markersize=3,
-                    label=LABEL.get(name, name))
-    ax.set_xlabel("time (s)")
-    ax.set_ylabel("discrete energy E / E0 (8.33)")
-    ax.set_title(title)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out / png, dpi=110)
-    plt.close(fig)
+    chosen = [(name, runs[name]) for name in names if name in runs]
+    charts.energy_chart(out / png, [
+        (LABEL.get(name, name), MARKER.get(run["method"], "."), [r["time"] for r in run["rows"]],
+         [r["total"] / run["e0"] for r in run["rows"]]) for name, run in chosen], title, window)
 
 
 def impact_window(runs):

@@ -17,6 +17,7 @@ import csv
 import math
 from pathlib import Path
 
+from sigreport import charts
 from sigreport.ds import sig_dump_json
 from sigreport import (Checks, MapCell, MapPanel, Point, Series, Table, load_thesis, main_guard,
                        markdown_table, pyplot, read_command, read_ds, speed_accuracy_chart,
@@ -132,23 +133,10 @@ def window_of(runs, before=0.05, after=1.0):
 
 
 def energy_chart(out, runs, title, png, window, key="total", label_of=None):
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
-    for run in runs:
-        t = [r["time"] for r in run["rows"]]
-        e = [r[key] / run["e0"] for r in run["rows"]]
-        pts = [(a, b) for a, b in zip(t, e) if window[0] <= a <= window[1]]
-        if pts:
-            label = label_of(run) if label_of else LABEL.get(run["method"], run["method"])
-            ax.plot(*zip(*pts), marker=MARKER.get(run["method"], "."), markersize=2, linewidth=1,
-                    markevery=max(1, len(pts) // 25), label=label)
-    ax.set_xlabel("time (s)")
-    ax.set_ylabel("discrete energy E / E0 (8.33)")
-    ax.set_title(title)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out / png, dpi=110)
-    plt.close(fig)
+    charts.energy_chart(out / png, [
+        (label_of(run) if label_of else LABEL.get(run["method"], run["method"]),
+         MARKER.get(run["method"], "."), [r["time"] for r in run["rows"]],
+         [r[key] / run["e0"] for r in run["rows"]]) for run in runs], title, window, markersize=2)
 
 
 def balance_chart(out, run, png, window):

@@ -14,7 +14,8 @@ Modules (each docstring states its API):
   table   Table(header, rows, caption).markdown() / .as_json(); markdown_table
   checks  Checks().add(name, passed, ...): PASS / FAIL / not run, table and JSON
   charts  speed_accuracy_chart(path, [Series(label, [Point(x, y, text)])], ...);
-          stability_map(path, [MapPanel(title, rows, columns, cells)]) with MapCell(text, status)
+          stability_map(path, [MapPanel(title, rows, columns, cells)]) with MapCell(text, status);
+          energy_chart(path, [(label, marker, times, energies)], title, window)
   scene   read_command, read_summary, solve_seconds, read_csv_columns, find_pvd,
           write_scene_json(out, scene, title, command, checks, key_table, charts, pvd)
 
@@ -43,7 +44,7 @@ A scene report, in outline:
 import sys
 
 __all__ = [
-    "MapCell", "MapPanel", "Point", "Series", "pyplot", "speed_accuracy_chart", "stability_map",
+    "MapCell", "MapPanel", "Point", "Series", "energy_chart", "pyplot", "speed_accuracy_chart", "stability_map",
     "MISSING", "fmt", "is_missing", "ours_thesis", "pct", "run_cell", "tolerance_text", "within",
     "Check", "Checks", "Deck", "read_deck", "Ds", "read_ds", "ReportError",
     "EARLIER_STAGE_PHASES", "find_pvd", "read_command", "read_csv_columns", "read_summary",
@@ -51,8 +52,8 @@ __all__ = [
     "load_thesis", "main_guard",
 ]
 
-from .charts import (MapCell, MapPanel, Point, Series, pyplot, speed_accuracy_chart,
-                     stability_map)
+from .charts import (MapCell, MapPanel, Point, Series, energy_chart, pyplot,
+                     speed_accuracy_chart, stability_map)
 from .cells import MISSING, fmt, is_missing, ours_thesis, pct, run_cell, tolerance_text, within
 from .checks import Check, Checks
 from .deck import Deck, read_deck

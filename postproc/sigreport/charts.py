@@ -137,6 +137,27 @@ class MapPanel(NamedTuple):
     ylabel: str = ""
 
 
+def energy_chart(path, curves, title, window, markersize=3, ylabel="discrete energy E / E0 (8.33)"):
+    """The energy histories of several runs near an impact: curves = [(label, marker, times,
+    energies)], each drawn on the times inside window = (t0, t1); a curve with none is left out.
+    Markers every len/25 points, so that long histories stay lines."""
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    for label, marker, times, energies in curves:
+        pts = [(t, e) for t, e in zip(times, energies) if window[0] <= t <= window[1]]
+        if pts:
+            ax.plot(*zip(*pts), marker=marker, markersize=markersize, linewidth=1,
+                    markevery=max(1, len(pts) // 25), label=label)
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 PALETTE = {"ok": "#8fd18f", "Nv": "#e07070", "missing": "#dddddd", "gain": "#f0b050",
            "drift": "#f0b050", "dissipates": "#9ec5e8", "chatter": "#e8e070", "sway": "#8fd18f"}
 FRAMED = ("sway", "drift")

@@ -29,7 +29,8 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
                  std::adjacent_find(last.begin(), last.end()) == last.end() && last.front() >= 0 &&
                  last.back() < s.n,
              "CHOLMOD split: the Schur variables must be sorted, distinct and in [0, n)");
-  std::vector<char> is_last(s.n, 0);
+  // CSYMAMD's constraint sets: 0 the interior, 1 the Schur variables (ordered after set 0).
+  std::vector<int> is_last(s.n, 0);
   for (int d : last)
     is_last[d] = 1;
   const int ni = s.n - s.m;
@@ -38,11 +39,9 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   //    K with two constraint sets, whose factor is sparser than a free order of the interior
   //    (METIS) followed by the Schur variables (the interior's order knows nothing of them).
   cholmod_common& c = s.f.c;
-  std::vector<int> member(s.n), order(s.n);
-  for (int d = 0; d < s.n; ++d)
-    member[d] = is_last[d];
-  cholmod_sparse full = view_lower(K);
-  SIG_VERIFY(cholmod_csymamd(&full, member.data(), order.data(), &c),
+  std::vector<int> order(s.n);
+  cholmod_sparse view = view_lower(K);
+  SIG_VERIFY(cholmod_csymamd(&view, is_last.data(), order.data(), &c),
              "CHOLMOD split: CSYMAMD ordering failed: status " << c.status);
   for (int d : order)
     if (!is_last[d]) s.perm.push_back(d);
@@ -56,7 +55,6 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   c.postorder = 0;
   c.supernodal = CHOLMOD_SIMPLICIAL;
   c.final_ll = 1;
-  cholmod_sparse view = view_lower(K);
   s.f.L = cholmod_analyze_p(&view, s.perm.data(), nullptr, 0, &c);
   SIG_VERIFY(s.f.L, "CHOLMOD split: analysis failed: status " << c.status);
   const int* used = static_cast<const int*>(s.f.L->Perm);
