@@ -23,9 +23,15 @@ std::vector<Eigen::Vector3d> element_strains(const Mesh& mesh, const Eigen::Vect
 }
 
 double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u) {
+  return strain_norm(mesh, u, [](int) { return true; });
+}
+
+double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u,
+                   const std::function<bool(int)>& counts) {
   const std::vector<Eigen::Vector3d> strains = element_strains(mesh, u);
   double sum = 0;
   for (int t = 0; t < mesh.num_triangles(); ++t) {
+    if (!counts(t)) continue;
     const Eigen::Vector3d& e = strains[t]; // (e11, e22, 2 e12): eps : eps = e11^2 + e22^2 + 2 e12^2
     sum += 0.5 * std::abs(signed_double_area(mesh, t)) *
            (e[0] * e[0] + e[1] * e[1] + 0.5 * e[2] * e[2]);
