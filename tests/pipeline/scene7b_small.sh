@@ -25,7 +25,8 @@
 #  - the same crush in ONE load step (the deck's reading of the thesis): PDAS, ALM and projection
 #    c = 1e4 converge to the 3-step state (reactions within 1e-6: the problem is path-independent
 #    here), and the finite-strain history is per iteration: active(k) - active(k-1) =
-#    entered(k) - left(k), one step length alpha in (0, 1] per iteration;
+#    entered(k) - left(k), one step length alpha in (0, 1] per iteration, and history_wall's rows
+#    are these active sets (row sums = active, new nodes = entered);
 #  - the report end to end on a tree laid out as drivers/scene7b.sh lays it out (the one-step
 #    runs, their 3-step variant in loadsteps14/, the N = 128 reference): report.md with the
 #    claims, the histories, the Nv histories and the load-stepping sections, its charts, and
@@ -172,6 +173,13 @@ for m, three in (("pdas_1e4", "pdas"), ("alm_1e3", "alm"), ("projection_1e4", "p
           and all(0 < a <= 1 for a in alpha),
           f"{m}: history per iteration ({k}), active(k) - active(k-1) = entered - left, "
           f"alpha in (0, 1]")
+    wall = one.array("history_wall")
+    rows_agree = wall.shape == (k, len(one["multiplier"])) and all(
+        wall[i].sum() == active[i] and (i == 0 or
+                                        ((wall[i] == 1) & (wall[i - 1] == 0)).sum() == entered[i])
+        for i in range(k))
+    check(rows_agree, f"{m}: history_wall {wall.shape}: each row holds history_active nodes, "
+          f"the new ones history_entered")
 sys.exit(1 if failures else 0)
 EOF
 

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "post/contact_table.hpp"
+#include "post/result_checks.hpp"
 #include "post_test_mesh.hpp"
 
 #include <gtest/gtest.h>
@@ -181,6 +182,29 @@ TEST(Summary, HertzJsonHasTheReferenceBesideOurs) {
     EXPECT_NE(json.find(key_of(key)), std::string::npos) << key;
   }
   EXPECT_NE(json.find("\"p_max\":14.4"), std::string::npos);
+}
+
+// The active set per iteration is [iterations x contact nodes] of 0 / 1: a file with another
+// shape or code is refused naming the array.
+TEST(SolutionChecks, HistoryWallHasOneRowOfFlagsPerIteration) {
+  const Mesh mesh = test::small_mesh();
+  Ds b = solved("pdas");
+  const std::vector<std::int64_t> wall{1, 1, 1, 0, 1, 0, 0, 1, 0, 0, 1, 0};
+  b.put("history_wall", wall, {4, 3});
+  EXPECT_NO_THROW(verify_solution_ds(b, mesh));
+  b.put("history_wall", std::vector<std::int64_t>(9, 0), {3, 3});
+  EXPECT_THROW(
+      try { verify_solution_ds(b, mesh); } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("'history_wall' is not 4 iterations x 3"),
+                  std::string::npos)
+            << e.what();
+        throw;
+      },
+      Error);
+  std::vector<std::int64_t> bad = wall;
+  bad[4] = 2;
+  b.put("history_wall", bad, {4, 3});
+  EXPECT_THROW(verify_solution_ds(b, mesh), Error);
 }
 
 } // namespace

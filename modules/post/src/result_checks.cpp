@@ -74,6 +74,14 @@ void verify_solution_ds(const Ds& b, const Mesh& mesh) {
     for (const char* name :
          {"history_active", "history_entered", "history_left", "history_stick", "history_slip"})
       if (b.has(name)) codes_in(b, name, 0, m);
+    if (b.has("history_wall")) {
+      const std::vector<std::int64_t>& shape = b.shape("history_wall");
+      SIG_VERIFY(shape.size() == 2 && shape[0] == static_cast<std::int64_t>(iterations) &&
+                     shape[1] == m,
+                 b.source << ": array 'history_wall' is not " << iterations << " iterations x " << m
+                          << " contact nodes");
+      codes_in(b, "history_wall", 0, 1);
+    }
   }
 }
 

@@ -161,6 +161,7 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
     std::vector<NodeBranch> branch(m_);
     std::vector<NodeConditions> conditions(m_);
     IterationRecord record;
+    record.wall.resize(m_);
     for (int p = 0; p < m_; ++p) {
       const bool was_on_wall = !iterate.branch.empty() && iterate.branch[p].wall;
       const bool was_inactive = !iterate.branch.empty() && !was_on_wall;
@@ -170,6 +171,7 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
       branch[p] = branch_of(k);
       conditions[p] = node_conditions(p, k, now.q_n[p], now.q_t[p]);
       record.active += k.wall_active ? 1 : 0;
+      record.wall[p] = k.wall_active ? 1 : 0;
       if (k.wall_active != was_on_wall) ++(k.wall_active ? record.entered : record.left);
       record.stick += k.stick ? 1 : 0;
       record.slip += k.slip != 0 && k.bound > 0 ? 1 : 0;

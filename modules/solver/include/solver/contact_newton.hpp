@@ -46,6 +46,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,9 @@ struct IterationRecord {
   double residual = 0;  ///< relative residual after the iteration
   double increment = 0; ///< relative increment ||x(k+1) - x(k)|| / ||x(k+1)||
   double step = 0;      ///< E_k = ||x(k+1) - x(k)||, the measure of the thesis's Figs 7.14-7.16
+  /// Per contact node, 1 if on the wall in the iteration's step: the active set itself, to see
+  /// where it moves (a contact patch travelling one node per iteration, scene 7b).
+  std::vector<std::int8_t> wall;
 };
 
 struct ContactNewtonOptions {

@@ -39,6 +39,17 @@ void put_history(Ds& ds, const std::vector<IterationRecord>& history) {
   put_column(ds, "history_residual", history, &IterationRecord::residual);
   put_column(ds, "history_increment", history, &IterationRecord::increment);
   put_column(ds, "history_step_norm", history, &IterationRecord::step);
+  // The active sets, one row per iteration, when every iteration has one of the same size.
+  const std::size_t m = history.empty() ? 0 : history.front().wall.size();
+  std::vector<std::int64_t> wall;
+  wall.reserve(history.size() * m);
+  for (const IterationRecord& r : history) {
+    if (m == 0 || r.wall.size() != m) return;
+    wall.insert(wall.end(), r.wall.begin(), r.wall.end());
+  }
+  if (m > 0)
+    ds.put("history_wall", wall,
+           {static_cast<std::int64_t>(history.size()), static_cast<std::int64_t>(m)});
 }
 
 void put_convexification(Ds& ds, const ConvexificationResult& loop) {

@@ -3,7 +3,8 @@
 // interleaved), method, linear (backend), converged, iterations, dofs, failure; for contact
 // cases the contact state (put_contact_state) and history_active, history_entered,
 // history_left, history_stick, history_slip,
-// history_residual, history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||); scalars
+// history_residual, history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||),
+// history_wall (the active set of each iteration); scalars
 // time_<phase> in seconds. With a convexification loop (put_convexification): outer_* arrays.
 // `iterations` counts every Newton iteration (of every convex solve).
 #include "solver/static_solve.hpp"
@@ -24,7 +25,9 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
 /// The iteration history: history_active (nodes on the wall), history_entered and history_left
 /// (of them, nodes that came onto it since the previous iteration; nodes that came off it),
 /// history_stick, history_slip, history_residual,
-/// history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||), one entry per iteration.
+/// history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||), one entry per iteration;
+/// history_wall [iterations x contact nodes], 1 where a node is on the wall in the iteration's
+/// step.
 void put_history(Ds& ds, const std::vector<IterationRecord>& history);
 
 /// The convexification loop: outer_converged, outer_iterations, outer_cycle (period of a status
