@@ -15,6 +15,9 @@ and writes OUT/report.md with its charts:
 - Figs 7.14-7.16 (fig7_14_16_ek.png): E_k = ||x(k+1) - x(k)|| of the same three runs, and
   newton_history.png: their residual and active-set size per iteration, side by side, with
   the table of every iteration (active set, entered, left, residual, E_k, step length);
+- the active set per iteration (active_set_map.png): every iteration's active set of the same
+  runs (iteration x contact node along Gamma3), the walk of the left patch's outer edge and the
+  distance to the final active set;
 - the runs that do not converge (nv_history.png): their histories;
 - load stepping (the 14-step variant beside the one-step runs): iterations and time, the
   reactions compared, what converges only one way;
@@ -538,6 +541,103 @@ def ek_section(runs, out):
     return lines
 
 
+def arc_order(ds):
+    """The contact nodes in order along Gamma3, from its left end over the bottom to its right
+    end: by the angle of their reference position about the ring's centre (the deck's MESH
+    center). Element order if contact.csv or the deck is missing."""
+    path, deck = ds.path.parent / "contact.csv", ds.path.parent / "ring.dat"
+    center = Deck.read(deck).value("MESH", "center") if deck.exists() else None
+    if not path.exists() or center is None:
+        return None
+    c1, c2 = (float(v) for v in center.split(","))
+    with open(path) as f:
+        angle = [math.atan2(float(r["x1"]) - c1, c2 - float(r["x2"])) for r in csv.DictReader(f)]
+    return sorted(range(len(angle)), key=lambda p: angle[p])
+
+
+def last_step_walls(ds):
+    """The active sets of the last load step, one list of 0 / 1 per iteration, the contact
+    nodes in order along Gamma3 (arc_order)."""
+    step = max(ds["history_step"])
+    wall = ds.array("history_wall")
+    order = arc_order(ds) or range(wall.shape[1])
+    return [[int(wall[k][p]) for p in order]
+            for k, s in enumerate(ds["history_step"]) if s == step]
+
+
+def distances_to_final(walls):
+    """|A_k symmetric difference A_final| per iteration: how many nodes the active set has yet
+    to gain or lose."""
+    final = walls[-1]
+    return [sum(a != b for a, b in zip(w, final)) for w in walls]
+
+
+def outer_edge_walk(walls):
+    """The outer edge of the left contact patch (its first node along Gamma3 left of the
+    bottom) per iteration, None where that half has no node on the wall, and the number of
+    iterations in which it moved by exactly one node towards the bottom."""
+    half = len(walls[0]) // 2
+    edges = [next((p for p in range(half) if w[p]), None) for w in walls]
+    ones = sum(1 for e, f in zip(edges, edges[1:]) if e is not None and f is not None and f == e + 1)
+    return edges, ones
+
+
+def active_set_section(runs, out):
+    """Where the iterations go: the active set of every iteration of the figure runs, mapped
+    (iteration x contact node) and measured against the final one."""
+    columns = [(n, {k: v for k, v in runs.figure_runs(n).items()
+                    if scalar(v, "converged") and "history_wall" in v}) for n in runs.sizes]
+    columns = [(n, r) for n, r in columns if r]
+    lines = ["## The active set per iteration: contact patches that roll a node at a time", ""]
+    if not columns:
+        return lines + ["No converged figure run holds its active sets (history_wall).", ""]
+    plt = pyplot()
+    rows = max(len(r) for _, r in columns)
+    fig, axes = plt.subplots(rows, len(columns), figsize=(5 * len(columns), 2.6 * rows),
+                             squeeze=False)
+    table = []
+    for j, (n, figure_runs) in enumerate(columns):
+        for i, (label, ds) in enumerate(figure_runs.items()):
+            walls = last_step_walls(ds)
+            ax = axes[i][j]
+            ax.imshow(walls, aspect="auto", cmap="Greys", interpolation="nearest",
+                      extent=(0.5, len(walls[0]) + 0.5, len(walls) + 0.5, 0.5))
+            ax.set_title(f"N = {n}, {label}", fontsize=9)
+            ax.set_xlabel("contact node along Gamma3 (bottom in the middle)", fontsize=8)
+            ax.set_ylabel("iteration k", fontsize=8)
+            edges, ones = outer_edge_walk(walls)
+            walk = " ".join(MISSING if e is None else str(e + 1) for e in edges)
+            table.append([str(n), label, str(len(walls)), str(sum(walls[1])),
+                          str(sum(walls[-1])), walk, str(ones),
+                          " ".join(str(d) for d in distances_to_final(walls))])
+    for ax in axes.flat[len(table):]:
+        ax.axis("off")
+    fig.tight_layout()
+    fig.savefig(out / "active_set_map.png", dpi=100)
+    plt.close(fig)
+    lines += ["active_set_map.png draws the active set of every iteration of the figure runs "
+              "(black = on the wall; the contact nodes along Gamma3 from its left end over the "
+              "bottom to its right end). The first step, from rest with one node on the wall, "
+              "carries the whole crush and pushes a wide arc through the wall; the next "
+              "iterations hold it and split it into two patches, one each side of the bottom, "
+              "of about their final width but outside their final place. From then on each "
+              "patch rolls towards the bottom one node per iteration: held on the wall, a "
+              "patch can slide (frictionless) but not roll, and after the step only its outer "
+              "edge node is in tension (it leaves) and only the node past its inner edge "
+              "penetrates (it enters). The count of such iterations grows with the distance "
+              "the patches have to travel, in nodes, so with N. The table gives, per "
+              "iteration, the outer edge of the left patch (its first node, counted along "
+              "Gamma3), how many iterations it moved by exactly one node, and how far the "
+              "active set is from the final one (nodes to gain or lose).", "",
+              "![active sets](active_set_map.png)", "",
+              markdown_table(["N", "run", "iterations", "on the wall at k = 2", "final",
+                              "outer edge of the left patch per iteration",
+                              "iterations moving it by one node",
+                              "|A_k - A_final| (symmetric difference) per iteration"], table),
+              ""]
+    return lines
+
+
 def nv_section(runs, out):
     """The one-step runs that did not converge: their histories (chart and summary)."""
     failed = {(n, m, p): ds for (n, m, p), ds in runs.items() if not scalar(ds, "converged")}
@@ -771,6 +871,7 @@ def main():
     lines += dof_table(runs, thesis)
     lines += pressure_section(runs, plt, out, checks)
     lines += ek_section(runs, out)
+    lines += active_set_section(runs, out)
     lines += nv_section(runs, out)
     if variant:
         lines += loadstep_section(runs, variant, checks)
@@ -778,6 +879,8 @@ def main():
     lines += stability_section(runs, variant, out, maxit)
     charts = {"stability": "stability_map.png", "fig7_13": "fig7_13_pressure.png",
               "fig7_14_16": "fig7_14_16_ek.png", "newton_history": "newton_history.png"}
+    if (out / "active_set_map.png").exists():
+        charts["active_set_map"] = "active_set_map.png"
     if (out / "nv_history.png").exists():
         charts["nv_history"] = "nv_history.png"
     if variant:
