@@ -15,7 +15,9 @@
 # and the summary.json + contact.csv of sig-post; the same runs in the labelled variant
 # LOADSTEPS n=14 go to OUTDIR/loadsteps14/N<N>/<method>[_<value>]/ (the robust path a user would
 # take for a harder crush: what load stepping costs and buys). The runs of Figs 7.13-7.16 (pdas
-# and projection at 1e4, alm) also get ring.pvd with one ring_NNNN.vtu per load step.
+# and projection at 1e4, alm) also get ring.pvd with one ring_NNNN.vtu per load step, and run
+# once more from rest (LOADSTEPS start=rest, OUTDIR/rest/N<N>/<run>/) beside the deck's start,
+# the small-strain solution: what the first iterate costs and buys.
 #
 #   pdas        gamma in 1 10 1e2 1e3 1e4 1e5 1e6   (Table 7.5, and gamma = 1)
 #   projection  c     in 1 10 1e2 1e3 1e4 1e5 1e6   (Table 7.4, and c = 1)
@@ -66,12 +68,13 @@ template=$root/datafiles/scene7b/ring.dat
 require_stages mesh material contact assemble solve post
 require_charts
 
-# deck TEMPLATE OUTPUT N METHOD FIELD VALUE VTK STEPS: the template with MESH N= and the SOLVER
-# card's method and parameter replaced (any r=, gamma=, c= of the template dropped), OUTPUT
-# vtk=VTK, LOADSTEPS n=STEPS.
+# deck TEMPLATE OUTPUT N METHOD FIELD VALUE VTK STEPS [START]: the template with MESH N= and the
+# SOLVER card's method and parameter replaced (any r=, gamma=, c= of the template dropped),
+# OUTPUT vtk=VTK, LOADSTEPS n=STEPS (and start=START if given).
 deck() {
   deck_variant "$1" "$2" --set "MESH.N=$3" --drop SOLVER.gamma --drop SOLVER.c --drop SOLVER.r \
-    --set "SOLVER.method=$4" --set "SOLVER.$5=$6" --set "OUTPUT.vtk=$7" --set "LOADSTEPS.n=$8"
+    --set "SOLVER.method=$4" --set "SOLVER.$5=$6" --set "OUTPUT.vtk=$7" --set "LOADSTEPS.n=$8" \
+    ${9:+--set "LOADSTEPS.start=$9"}
 }
 
 declare -A field=([pdas]=gamma [projection]=c [alm]=r)
@@ -91,17 +94,21 @@ out=$(cd "$out" && pwd)
 } >"$out/command.txt"
 start=$SECONDS
 
-# sweep ROOT N STEPS BASE: every method and parameter at N in STEPS load steps, into ROOT/N<N>/.
+# sweep ROOT N STEPS BASE [START]: every method and parameter at N in STEPS load steps, into
+# ROOT/N<N>/; with START (rest), only the three runs of Figs 7.13-7.16 from that first iterate.
 sweep() {
-  local root_dir=$1 n=$2 nsteps=$3 base=$4 method value dir vtk
+  local root_dir=$1 n=$2 nsteps=$3 base=$4 first=${5:-} method value dir vtk
   for method in pdas alm projection; do
-    for value in ${values[$method]}; do
+    local chosen=${values[$method]}
+    if [ -n "$first" ] && [ "$method" != alm ]; then chosen=1e4; fi
+    for value in $chosen; do
       if [ "$method" = alm ]; then dir=$root_dir/N$n/alm; else dir=$root_dir/N$n/${method}_$value; fi
       mkdir -p "$dir"
       for ds in nopo mili cont tae; do ln -s "$base/case.$ds" "$dir/case.$ds"; done
       vtk=no
       if [ "$method" = alm ] || [ "$value" = 1e4 ]; then vtk=yes; fi
-      deck "$template" "$dir/ring.dat" "$n" "$method" "${field[$method]}" "$value" "$vtk" "$nsteps"
+      deck "$template" "$dir/ring.dat" "$n" "$method" "${field[$method]}" "$value" "$vtk" "$nsteps" \
+        "$first"
       "$bin/sig-solve" "$dir/ring.dat" -o "$dir" >"$dir/solve.log" 2>&1 ||
         die "sig-solve failed for N = $n $method $value, $nsteps load steps (see $dir/solve.log)"
       "$bin/sig-post" "$dir/ring.dat" -o "$dir" >"$dir/post.log" 2>&1 ||
@@ -112,8 +119,9 @@ sweep() {
   done
 }
 
-# Runs: per mesh a base, 15 runs in one step, 15 in the variant, GetFEM; then the reference.
-progress_begin $((32 * ${#sizes[@]} + 1))
+# Runs: per mesh a base, 15 runs in one step, 15 in the variant, 3 from rest, GetFEM; then the
+# reference.
+progress_begin $((35 * ${#sizes[@]} + 1))
 for n in "${sizes[@]}"; do
   base=$out/N$n/base
   mkdir -p "$base"
@@ -125,6 +133,7 @@ for n in "${sizes[@]}"; do
   progress_step "N$n/base"
   sweep "$out" "$n" "$steps" "$base"
   sweep "$out/loadsteps$variant_steps" "$n" "$variant_steps" "$base"
+  sweep "$out/rest" "$n" "$steps" "$base" rest
   if [ $getfem -eq 1 ]; then
     /usr/bin/python3 "$root/postproc/getfem_ring.py" --deck "$base/ring.dat" --repeat 1 \
       --json "$out/N$n/getfem.json" >"$out/N$n/getfem.log" 2>&1 ||

@@ -27,6 +27,8 @@
 #    here), and the finite-strain history is per iteration: active(k) - active(k-1) =
 #    entered(k) - left(k), one step length alpha in (0, 1] per iteration, and history_wall's rows
 #    are these active sets (row sums = active, new nodes = entered);
+#  - the first iterate of the one-step solve is the small-strain solution (case.b start,
+#    start_iterations, start_fraction = 1), and LOADSTEPS start=rest reaches the same reaction;
 #  - the report end to end on a tree laid out as drivers/scene7b.sh lays it out (the one-step
 #    runs, their 3-step variant in loadsteps14/, the N = 128 reference): report.md with the
 #    claims, the histories, the Nv histories and the load-stepping sections, its charts, and
@@ -52,14 +54,14 @@ die() {
   exit 1
 }
 
-# deck METHOD FIELD VALUE [N] [UX] [STEPS]
+# deck METHOD FIELD VALUE [N] [UX] [STEPS] [START]
 deck() {
   cat <<EOF
 TITLE small hyperelastic ring ($1)
 MESH generator=ring center=0,10 r_in=9 r_out=10 N=${4:-64} gamma1_above=19.9 gamma3_below=17.08
 MATERIAL law=ciarlet-geymonat c1=0.5 c2=0.005 a=0.35 plane=strain
 DIRICHLET ref=1 ux=${5:-0} uy=-6
-LOADSTEPS n=${6:-3}
+LOADSTEPS n=${6:-3} start=${7:-small-strain}
 CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=signorini gap=0
 SOLVER method=$1 $2=$3 eps=1e-8 maxit=100 linear=umfpack
 EOF
@@ -67,11 +69,11 @@ EOF
 
 for run in "pdas gamma 1e4" "alm r 1e3" "projection c 10" "projection c 1e4" "pdas gamma 1e3 128" \
   "pdas gamma 1e3 64 1.5" "pdas gamma 1e4 64 0 1" "alm r 1e3 64 0 1" "projection c 1e4 64 0 1" \
-  "projection c 10 64 0 1"; do
-  read -r method field value n ux steps <<<"$run"
-  dir=$work/${method}_$value${n:+_N$n}${ux:+_ux$ux}${steps:+_steps$steps}
+  "projection c 10 64 0 1" "pdas gamma 1e4 64 0 1 rest"; do
+  read -r method field value n ux steps start <<<"$run"
+  dir=$work/${method}_$value${n:+_N$n}${ux:+_ux$ux}${steps:+_steps$steps}${start:+_$start}
   mkdir -p "$dir"
-  deck "$method" "$field" "$value" "$n" "$ux" "$steps" >"$dir/ring.dat"
+  deck "$method" "$field" "$value" "$n" "$ux" "$steps" "$start" >"$dir/ring.dat"
   for stage in mesh material contact assemble solve post; do
     "$bin/sig-$stage" "$dir/ring.dat" -o "$dir" >"$dir/$stage.log" 2>&1 ||
       { cat "$dir/$stage.log" >&2; die "sig-$stage exited with $? for $method"; }
@@ -180,6 +182,15 @@ for m, three in (("pdas_1e4", "pdas"), ("alm_1e3", "alm"), ("projection_1e4", "p
         for i in range(k))
     check(rows_agree, f"{m}: history_wall {wall.shape}: each row holds history_active nodes, "
           f"the new ones history_entered")
+# The first iterate: the small-strain solution by default, rest on request; the same state.
+one = read_ds(f"{work}/pdas_1e4_N64_ux0_steps1/case.b")
+rest = read_ds(f"{work}/pdas_1e4_N64_ux0_steps1_rest/case.b")
+d = abs(one["reaction_y"][0] - rest["reaction_y"][0]) / abs(rest["reaction_y"][0])
+check(one["start"] == "small-strain" and one["start_iterations"][0] > 0
+      and one["start_fraction"] == [1.0] and rest["start"] == "rest"
+      and "start_iterations" not in rest and rest["converged"] == [1] and d <= 1e-6,
+      f"start: small-strain ({one['start_iterations'][0]} iterations, {one['iterations'][0]} "
+      f"Newton) and rest ({rest['iterations'][0]} Newton) reach the same reaction ({d:.1e})")
 sys.exit(1 if failures else 0)
 EOF
 

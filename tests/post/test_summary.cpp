@@ -184,8 +184,8 @@ TEST(Summary, HertzJsonHasTheReferenceBesideOurs) {
   EXPECT_NE(json.find("\"p_max\":14.4"), std::string::npos);
 }
 
-// The active set per iteration is [iterations x contact nodes] of 0 / 1: a file with another
-// shape or code is refused naming the array.
+// The active set per iteration is [iterations x contact nodes] of 0 / 1 and the start's
+// fraction in [0, 1]: a file with another shape, code or fraction is refused.
 TEST(SolutionChecks, HistoryWallHasOneRowOfFlagsPerIteration) {
   const Mesh mesh = test::small_mesh();
   Ds b = solved("pdas");
@@ -201,6 +201,11 @@ TEST(SolutionChecks, HistoryWallHasOneRowOfFlagsPerIteration) {
         throw;
       },
       Error);
+  b.put("history_wall", wall, {4, 3});
+  b.put_scalar("start_fraction", 1.5);
+  EXPECT_THROW(verify_solution_ds(b, mesh), Error);
+  b.put_scalar("start_fraction", 0.5);
+  EXPECT_NO_THROW(verify_solution_ds(b, mesh));
   std::vector<std::int64_t> bad = wall;
   bad[4] = 2;
   b.put("history_wall", bad, {4, 3});

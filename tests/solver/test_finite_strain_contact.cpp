@@ -8,6 +8,7 @@
 #include "material/mili.hpp"
 #include "mesh/generators.hpp"
 #include "solver/finite_strain_contact.hpp"
+#include "solver/small_strain_start.hpp"
 #include "solver/static_solve.hpp"
 
 #include <gtest/gtest.h>
@@ -404,11 +405,13 @@ TEST(FiniteStrainContact, PdasInOneLoadStepDoesNotDependOnGamma) {
   // every iteration for every gamma, and ALM, the same test with r = gamma, the same too. Before
   // the line search held the branches of the test (contact_newton.hpp), gamma weighed the
   // penetration of inactive nodes in its merit: 10, 12, 12, 11 iterations for gamma = 10, 1e2,
-  // 1e4, 1e6.
+  // 1e4, 1e6. From rest: full steps keep every wall node's q_n = 0 and every other node's
+  // lambda = 0, so the test lambda + gamma q_n never weighs one against the other.
   const PressedRing ring(9, 10, 64, 14);
   std::vector<int> reference;
   for (double gamma : {10.0, 1e2, 1e4, 1e6}) {
     FiniteStrainOptions o = options_for("pdas", 1, 1e-5);
+    o.small_strain_start = false;
     o.contact.gamma = gamma;
     const sig::FiniteStrainSolution s = sig::solve_finite_strain_contact(ring.problem, o);
     ASSERT_TRUE(s.converged()) << "gamma " << gamma << ": " << s.steps.back().failure;
@@ -424,6 +427,7 @@ TEST(FiniteStrainContact, PdasInOneLoadStepDoesNotDependOnGamma) {
     EXPECT_EQ(active, reference) << "gamma " << gamma;
   }
   FiniteStrainOptions o = options_for("alm", 1, 1e-5);
+  o.small_strain_start = false;
   o.contact.r = 1e3;
   const sig::FiniteStrainSolution alm = sig::solve_finite_strain_contact(ring.problem, o);
   ASSERT_TRUE(alm.converged()) << alm.steps.back().failure;
@@ -441,7 +445,51 @@ TEST(FiniteStrainContact, NonConvergenceIsAStatus) {
   EXPECT_FALSE(s.steps[0].failure.empty());
 }
 
+/// ||u_final - u_start|| / ||u_final|| of the ring pressed by `press` from the small-strain
+/// start: the start's distance to the large-deformation solution.
+double start_distance(double press) {
+  const PressedRing ring(9, 10, 64, press);
+  FiniteStrainOptions o = options_for("pdas", 1, 1e-10);
+  sig::FiniteStrainBulk bulk(ring.problem, o.backend, o.contact.eps);
+  const sig::StartRecord start =
+      sig::start_from_small_strain(bulk, ring.problem, 1.0, o.contact, o.backend);
+  EXPECT_TRUE(start.used && start.converged && start.note.empty()) << start.note;
+  EXPECT_EQ(start.fraction, 1.0);
+  EXPECT_GT(start.iterations, 0);
+  const sig::FiniteStrainSolution s = sig::solve_finite_strain_contact(ring.problem, o);
+  EXPECT_TRUE(s.converged()) << s.steps.back().failure;
+  EXPECT_TRUE(s.start.used && s.start.fraction == 1.0);
+  const Eigen::VectorXd& u = s.steps.back().u;
+  return (u - bulk.displacement()).norm() / u.norm();
+}
+
 } // namespace
+
+TEST(FiniteStrainContact, SmallStrainStartIsTheLinearizationAtRestSolved) {
+  // The start solves the problem linearized at rest, contact included: it differs from the
+  // large-deformation solution by terms second order in the press (geometric and material
+  // nonlinearity), so the relative distance is first order: 5.0e-4 at 0.02, twice that at 0.04
+  // (a start off by a first-order term would not shrink with the press).
+  const double d1 = start_distance(0.02), d2 = start_distance(0.04);
+  EXPECT_LT(d1, 1e-3);
+  EXPECT_NEAR(d2 / d1, 2.0, 0.2) << d1 << " " << d2;
+}
+
+TEST(FiniteStrainContact, StartShortensALinearDisplacementThatFoldsTriangles) {
+  // u = -2 x reflects every triangle (inverted), -x collapses them (refused), -x / 2 halves the
+  // body: start_from takes theta = 1/4. A displacement no theta >= 1/64 makes admissible leaves
+  // the iterate at rest.
+  const PressedBlock body(8, 4, 0.1);
+  const FiniteStrainProblem problem = body.problem();
+  sig::FiniteStrainBulk bulk(problem, "umfpack", 1e-8);
+  Eigen::VectorXd folded = Eigen::VectorXd::Zero(2 * body.mesh.num_nodes());
+  for (int node = 0; node < body.mesh.num_nodes(); ++node)
+    folded[2 * node] = -2.0 * body.mesh.nodes[node].x();
+  EXPECT_EQ(bulk.start_from(folded), 0.25);
+  EXPECT_EQ((bulk.displacement() - 0.25 * folded).norm(), 0.0);
+  EXPECT_EQ(bulk.start_from(1e6 * folded), 0.0);
+  EXPECT_EQ(bulk.displacement().norm(), 0.0);
+}
 
 TEST(FiniteStrainContact, ForceOnlyAssemblyMatchesTheFullOne) {
   // A line-search trial is evaluated without its tangent: its energy and internal force must

@@ -242,6 +242,11 @@ const std::vector<CardSpec>& card_schema() {
        "imposed displacements and loads grow in n equal steps, each solved by Newton",
        {
            {"n", "number of load steps, >= 1", "1"},
+           {"start",
+            "first iterate of the first load step: small-strain (the small-strain solution of "
+            "that step's problem, contact included: the linearization at rest solved exactly) or "
+            "rest (u = 0)",
+            "small-strain"},
        }},
       {"TIME",
        false,

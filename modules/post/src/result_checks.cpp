@@ -64,6 +64,12 @@ void verify_solution_ds(const Ds& b, const Mesh& mesh) {
         SIG_VERIFY(false, b.source << ": array 'friction_status': " << e.what());
       }
   }
+  if (b.has("start_iterations")) integer_in(b, "start_iterations", 0, 1000000000);
+  if (b.has("start_fraction")) {
+    const double fraction = b.scalar("start_fraction");
+    SIG_VERIFY(fraction >= 0 && fraction <= 1,
+               b.source << ": array 'start_fraction': " << fraction << " is not in [0, 1]");
+  }
   if (b.has("history_active")) {
     const std::size_t iterations = length(b, "history_active");
     for (const char* name : {"history_entered", "history_left", "history_stick", "history_slip",

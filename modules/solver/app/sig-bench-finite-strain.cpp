@@ -79,6 +79,7 @@ int main(int argc, char** argv) {
     options.backend = card.backend;
     options.contact = card.parameters;
     options.load_steps = card.load_steps;
+    options.small_strain_start = card.small_strain_start;
 
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));

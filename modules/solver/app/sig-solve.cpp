@@ -3,7 +3,7 @@
 //   SOLVER method=linear|alm|penalty|pdas|projection linear=cholmod|umfpack|mumps
 //          r= gamma= c= eps= maxit=
 //
-//   LOADSTEPS n=   (hyperelastic laws only; default 1)
+//   LOADSTEPS n= start=small-strain|rest   (hyperelastic laws only; default 1, small-strain)
 //
 //   INITIAL u=ux,uy [region=]   (contact decks: the first iterate of the contact Newton)
 //
@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
       options.contact = parameters;
       options.backend = backend;
       options.load_steps = card.load_steps;
+      options.small_strain_start = card.small_strain_start;
       if (method == "linear") options.contact.method = "pdas"; // no contact nodes: plain Newton
       const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
       std::optional<sig::ContactElements> contact;
@@ -120,7 +121,13 @@ int main(int argc, char** argv) {
                 << s.total_iterations() << " iterations (per step:";
       for (const sig::LoadStepResult& step : s.steps)
         std::cout << " " << step.iterations() << (step.converged ? "" : "Nv");
-      std::cout << "), reaction " << result.reaction_x << "," << result.reaction_y << " moment "
+      std::cout << "), start "
+                << (!s.start.used ? "rest"
+                    : s.start.fraction == 1
+                        ? "small-strain (" + std::to_string(s.start.iterations) + " iterations)"
+                    : s.start.fraction > 0 ? "small-strain x " + std::to_string(s.start.fraction)
+                                           : "rest (fallback)")
+                << ", reaction " << result.reaction_x << "," << result.reaction_y << " moment "
                 << result.reaction_moment << ", solve " << result.seconds << " s -> "
                 << args.ds_path("b").string() << "\n";
       return;

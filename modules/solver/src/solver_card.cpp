@@ -55,8 +55,10 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
               : start == "slipped" ? ConvexificationStart::slipped
                                    : ConvexificationStart::given;
   }
-  if (const Card* steps = datafile.find("LOADSTEPS"))
+  if (const Card* steps = datafile.find("LOADSTEPS")) {
     result.load_steps = static_cast<int>(steps->integer("n"));
+    result.small_strain_start = steps->choice("start", {"small-strain", "rest"}) == "small-strain";
+  }
   return result;
 }
 

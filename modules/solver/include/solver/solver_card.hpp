@@ -4,7 +4,7 @@
 //
 //   SOLVER method=linear|alm|penalty|pdas|projection linear=cholmod|umfpack|mumps
 //          r= gamma= c= eps= maxit=
-//   LOADSTEPS n=   (hyperelastic laws only; default 1)
+//   LOADSTEPS n= start=small-strain|rest   (hyperelastic laws only; default 1, small-strain)
 //   CONVEXIFICATION eps= maxit= relaxation= start=rest|slipped|previous
 //                   (FRICTION law=nonmonotone; previous, the default of a march: ch. 6)
 #include "solver/contact_method.hpp"
@@ -20,6 +20,7 @@ struct SolverCard {
   std::string backend;                ///< cholmod | umfpack | mumps (default cholmod)
   ContactSolverParameters parameters; ///< method ("linear" without contact) and its parameters
   int load_steps = 1;
+  bool small_strain_start = true;         ///< LOADSTEPS start=small-strain (default) or rest
   ConvexificationOptions convexification; ///< the CONVEXIFICATION card (or its defaults)
 };
 

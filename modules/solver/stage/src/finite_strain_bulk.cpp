@@ -125,6 +125,22 @@ Eigen::VectorXd FiniteStrainBulk::velocity() const {
   return v;
 }
 
+double FiniteStrainBulk::start_from(const Eigen::VectorXd& u) {
+  SIG_VERIFY(!dynamic(), "a time step starts from its predictor (start_time_step)");
+  SIG_VERIFY(u.size() == now_.u.size(), "start of " << u.size() << " dofs for " << now_.u.size());
+  for (double theta = 1; theta >= 1.0 / 64; theta /= 2) {
+    now_.u = theta * u;
+    if (evaluate(now_, true)) {
+      base_ = now_.u;
+      return theta;
+    }
+  }
+  now_.u.setZero();
+  SIG_VERIFY(evaluate(now_, true), "the reference configuration has an inverted triangle");
+  base_ = now_.u;
+  return 0;
+}
+
 void FiniteStrainBulk::set_load_factor(double s) {
   load_factor_ = s;
 }

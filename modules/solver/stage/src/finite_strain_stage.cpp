@@ -153,6 +153,16 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   put_history(ds, history);
   ds.put("history_step", std::span<const std::int64_t>(history_step));
   ds.put("history_step_length", std::span<const double>(step_length));
+  const StartRecord& start = solution.start;
+  ds.put_text("start", !start.used          ? "rest"
+                       : start.fraction > 0 ? "small-strain"
+                                            : "rest (fallback)");
+  if (start.used) {
+    ds.put_int("start_iterations", start.iterations);
+    ds.put_scalar("start_fraction", start.fraction);
+    ds.put_text("start_note", start.note);
+    ds.put_scalar("time_start", start.seconds);
+  }
 
   if (!solution.steps.empty()) {
     const LoadStepResult& last = solution.steps.back();

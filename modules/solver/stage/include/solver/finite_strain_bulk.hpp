@@ -61,6 +61,12 @@ public:
 
   /// The load factor s of the next solves (the targets of the Dirichlet dofs become s u_D).
   void set_load_factor(double s);
+  /// A static solve's first iterate: u, or theta u for the largest theta = 1, 1/2, ... 1/64
+  /// without an inverted triangle (a linear displacement may fold elements a large one does
+  /// not); theta, or 0 when none is admissible and the iterate stays at rest.
+  double start_from(const Eigen::VectorXd& u);
+  /// The tangent at the iterate (after construction of a static bulk: at rest).
+  const Eigen::SparseMatrix<double>& tangent() const { return now_.bulk.tangent; }
 
   /// Dynamics: the next time step starts from (u_prev, v_prev) (full dofs); the iterate becomes
   /// the predictor u_prev + k v_prev (shortened towards u_prev if it inverts a triangle) and the

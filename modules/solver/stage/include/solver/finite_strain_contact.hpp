@@ -1,8 +1,9 @@
 #pragma once
 // Static frictionless contact of a hyperelastic body in large deformation (thesis ch. 7, Scene
 // 7b): load steps s = k / steps, each solved by the one contact Newton driver
-// (solver/contact_newton.hpp) on the hyperelastic bulk (solver/finite_strain_bulk.hpp),
-// warm-started from the previous step's state and statuses:
+// (solver/contact_newton.hpp) on the hyperelastic bulk (solver/finite_strain_bulk.hpp), the
+// first from the small-strain solution of its problem (small_strain_start.hpp) or from rest,
+// the others warm-started from the previous step's state and statuses:
 //
 //   f_int(u) - s f_ext - sum_p N_p n_p = 0   on the free dofs,   u = s u_D on the Dirichlet dofs,
 //   the contact law of each node in its penetration q_n = -d(X_p + u_p)   (contact_kernel.hpp).
@@ -20,6 +21,7 @@
 #include "solver/contact_method.hpp"
 #include "solver/contact_newton.hpp"
 #include "solver/finite_strain_bulk.hpp"
+#include "solver/small_strain_start.hpp"
 
 #include <string>
 #include <vector>
@@ -30,6 +32,9 @@ struct FiniteStrainOptions {
   ContactSolverParameters contact; ///< method, r / gamma / c, eps, max_iterations per step
   int load_steps = 1;
   std::string backend = "umfpack"; ///< cholmod (spd tangent only) | umfpack | mumps
+  /// The first load step starts from the small-strain solution of its problem
+  /// (small_strain_start.hpp), not from rest.
+  bool small_strain_start = true;
 };
 
 struct LoadStepResult {
@@ -50,6 +55,7 @@ struct LoadStepResult {
 struct FiniteStrainSolution {
   std::vector<LoadStepResult> steps; ///< the attempted steps; stops after the first failure
   int unknowns = 0;                  ///< Newton vector size (dofs, plus multipliers for alm)
+  StartRecord start;                 ///< the first iterate (used = false: rest)
   bool converged() const;            ///< every requested step attempted and converged
   int total_iterations() const;
 };

@@ -49,7 +49,11 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
 /// per step step_load, step_iterations, step_converged; the histories of all steps concatenated
 /// (put_history's arrays, history_step = 1-based step, history_step_length = the line search's
 /// alpha);
-/// finite_strain = 1; scalars reaction_x, reaction_y, reaction_moment, time_solve.
+/// finite_strain = 1; scalars reaction_x, reaction_y, reaction_moment, time_solve (the start
+/// included); the first iterate: start ("small-strain", "rest", or "rest (fallback)" when the
+/// small-strain start failed) and with a small-strain start start_iterations (its contact
+/// Newton), start_fraction (theta of FiniteStrainBulk::start_from), start_note (why it fell
+/// back, or empty), time_start.
 /// One state per CONVERGED load step (the attempted steps stop at the first failure, so these
 /// are steps 1 .. s, s = number of rows; row k belongs to step_load[k]), for ParaView's series
 /// and Fig 7.13: step_u {s, ndof}; with contact step_multiplier, step_status, step_normal_status
