@@ -4,7 +4,8 @@
 // Reads the same files and cards as sig-solve (case.nopo, case.mili, case.tae, case.cont; SOLVER,
 // LOADSTEPS) and writes nothing but OUTDIR/bench.json:
 //  - the solve: K runs (default 3) of solve_finite_strain_stage, as sig-solve runs it; wall
-//    seconds of each, Newton iterations, convergence, reactions;
+//    seconds of each (the small-strain start included, its own median beside), Newton
+//    iterations, convergence, reactions;
 //  - the floor of a Newton method on this mesh: the bulk tangent at the final state of the last
 //    run, its Dirichlet dofs eliminated (the pattern the Newton matrix is factorized on), with
 //    the same backend: one symbolic analysis, then K x (numeric factorization + one solve);
@@ -88,11 +89,12 @@ int main(int argc, char** argv) {
     const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));
 
     // 3. The timed solves.
-    std::vector<double> solve_seconds;
+    std::vector<double> solve_seconds, start_seconds;
     std::optional<sig::FiniteStrainStageResult> result;
     for (int k = 0; k < repeat; ++k) {
       result = sig::solve_finite_strain_stage(mesh, table, system, &contact, options);
       solve_seconds.push_back(result->seconds);
+      start_seconds.push_back(result->solution.start.seconds);
     }
     const sig::FiniteStrainSolution& solution = result->solution;
     const int iterations = solution.total_iterations();
@@ -145,7 +147,10 @@ int main(int argc, char** argv) {
         << ",\n  \"reaction_y\": " << result->reaction_y
         << ",\n  \"reaction_moment\": " << result->reaction_moment
         << ",\n  \"solve_seconds\": " << json_list(solve_seconds)
-        << ",\n  \"solve_seconds_median\": " << sig::median(solve_seconds)
+        << ",\n  \"solve_seconds_median\": " << sig::median(solve_seconds) << ",\n  \"start\": \""
+        << (solution.start.used ? "small-strain" : "rest")
+        << "\",\n  \"start_iterations\": " << solution.start.iterations
+        << ",\n  \"start_seconds_median\": " << sig::median(start_seconds)
         << ",\n  \"analyze_seconds\": " << analyze_seconds
         << ",\n  \"factor_solve_seconds\": " << json_list(factor_solve_seconds)
         << ",\n  \"factor_solve_seconds_median\": " << sig::median(factor_solve_seconds)
