@@ -121,13 +121,14 @@ int main(int argc, char** argv) {
                 << s.total_iterations() << " iterations (per step:";
       for (const sig::LoadStepResult& step : s.steps)
         std::cout << " " << step.iterations() << (step.converged ? "" : "Nv");
-      std::cout << "), start "
-                << (!s.start.used ? "rest"
-                    : s.start.fraction == 1
-                        ? "small-strain (" + std::to_string(s.start.iterations) + " iterations)"
-                    : s.start.fraction > 0 ? "small-strain x " + std::to_string(s.start.fraction)
-                                           : "rest (fallback)")
-                << ", reaction " << result.reaction_x << "," << result.reaction_y << " moment "
+      std::cout << "), start ";
+      if (!s.start.used || s.start.fraction == 0)
+        std::cout << (s.start.used ? "rest (fallback)" : "rest");
+      else
+        std::cout << "small-strain" << (s.start.fraction < 1 ? " x " : "")
+                  << (s.start.fraction < 1 ? std::to_string(s.start.fraction) : "") << " ("
+                  << s.start.iterations << " iterations)";
+      std::cout << ", reaction " << result.reaction_x << "," << result.reaction_y << " moment "
                 << result.reaction_moment << ", solve " << result.seconds << " s -> "
                 << args.ds_path("b").string() << "\n";
       return;

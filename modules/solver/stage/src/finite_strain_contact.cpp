@@ -42,7 +42,8 @@ FiniteStrainSolution solve_finite_strain_contact(const FiniteStrainProblem& prob
     solution.start = start_from_small_strain(bulk, checked, 1.0 / options.load_steps,
                                              options.contact, options.backend);
   ContactIterate iterate;
-  if (solution.start.multiplier.size() == setting.size()) iterate.lambda = solution.start.multiplier;
+  if (solution.start.multiplier.size() == setting.size())
+    iterate.lambda = solution.start.multiplier;
   for (int k = 1; k <= options.load_steps; ++k) {
     const double s = static_cast<double>(k) / options.load_steps;
     bulk.set_load_factor(s);

@@ -8,11 +8,12 @@
 // Why: from rest, the first Newton step of a large imposed displacement is the same linear
 // solve with only the nodes touching at rest on the obstacle, and pushes a wide arc of the
 // contact boundary through it. The active set that follows holds that arc, and the contact
-// patches it leaves roll to their final place one node per iteration (scene 7b: 20 of 24
-// iterations at N = 256). The small-strain solution has its contact patches where the
+// patches it leaves roll to their final place by a node or two per iteration (scene 7b at
+// N = 256: 20 of PDAS's 23 steps). The small-strain solution has its contact patches where the
 // linearized problem puts them, near the large-deformation ones, and no node through the wall.
-// The start is a displacement only: the multipliers and branches start from zero, as from rest,
-// so the methods' own first tests decide the active set.
+// Its contact forces are the first multipliers: a node it holds on the obstacle has q_n = 0 up
+// to round-off there, and its force, not the sign of that round-off, then decides the first
+// test. The branches start empty, so each method's own first test decides the active set.
 #include "solver/contact_method.hpp"
 #include "solver/finite_strain_bulk.hpp"
 
@@ -21,12 +22,12 @@
 namespace sig {
 
 struct StartRecord {
-  bool used = false;      ///< a small-strain start was asked for
-  bool converged = false; ///< the small-strain solve converged (else: started from rest)
-  int iterations = 0;     ///< its contact Newton iterations on the condensed problem
-  double fraction = 0;    ///< theta of FiniteStrainBulk::start_from: 1 = the whole solution
-  double seconds = 0;     ///< wall time of the start (factorization, condensation, solve)
-  std::string note;       ///< why the solve started from rest, if it did
+  bool used = false;          ///< a small-strain start was asked for
+  bool converged = false;     ///< the small-strain solve converged (else: started from rest)
+  int iterations = 0;         ///< its contact Newton iterations on the condensed problem
+  double fraction = 0;        ///< theta of FiniteStrainBulk::start_from: 1 = the whole solution
+  double seconds = 0;         ///< wall time of the start (factorization, condensation, solve)
+  std::string note;           ///< why the solve started from rest, if it did
   Eigen::VectorXd multiplier; ///< the small-strain contact forces per node, x fraction (or empty)
 };
 
