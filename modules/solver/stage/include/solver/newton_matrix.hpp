@@ -69,8 +69,10 @@ private:
   std::vector<int> free_dofs_;            ///< reduced index -> dof
   std::vector<int> free_index_;           ///< dof -> reduced index, -1 for a Dirichlet dof
   std::vector<int> reduced_slot_;         ///< slot of full_ -> slot of reduced_ (or -1)
+  std::vector<int> source_;               ///< slot of reduced_ -> slot of full_
   std::vector<int> diagonal_;             ///< dof -> slot of its diagonal entry
   std::unique_ptr<FrameRotation> frames_; ///< the nodal frames, in place on full_
+  Eigen::VectorXd moved_;                 ///< solve()'s A(:, imposed) values, kept allocated
 };
 
 } // namespace sig
