@@ -59,6 +59,14 @@ void NewtonMatrix::set_tangent(const Eigen::SparseMatrix<double>& K) {
   std::copy(K.valuePtr(), K.valuePtr() + K.nonZeros(), full_.valuePtr());
 }
 
+void NewtonMatrix::take_tangent(Eigen::SparseMatrix<double>& K) {
+  SIG_VERIFY(K.isCompressed() && K.rows() == full_.rows() && K.nonZeros() == full_.nonZeros() &&
+                 std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1,
+                            full_.outerIndexPtr()),
+             "tangent is not on the Newton pattern");
+  full_.swap(K);
+}
+
 void NewtonMatrix::add_node_block(int p, const Eigen::Matrix2d& block) {
   const int a = 2 * nodes_[p];
   for (int j = 0; j < 2; ++j)
