@@ -4,33 +4,47 @@
 #include "mesh/mesh.hpp"
 
 #include <algorithm>
+#include <span>
 
 namespace sig {
 
 SparsityPattern::SparsityPattern(const Mesh& mesh) {
   const int n = mesh.num_nodes();
 
-  // Node graph: each node's neighbours through the triangles, itself included, sorted.
-  std::vector<std::vector<int>> neighbours(n);
+  // Node graph: each node's neighbours through the triangles, itself included, sorted; one flat
+  // array of per-node segments (start[m], start[m] + count[m]) rather than a vector per node,
+  // whose allocations and regrowth were most of the cost (the pattern is built once per solve).
+  std::vector<int> start(n + 1, 0);
+  for (const auto& tri : mesh.triangles)
+    for (int a : tri)
+      start[a + 1] += 3;
+  for (int m = 0; m < n; ++m)
+    start[m + 1] += start[m];
+  std::vector<int> graph(start[n]);
+  std::vector<int> count(n, 0);
   for (const auto& tri : mesh.triangles)
     for (int a : tri)
       for (int b : tri)
-        neighbours[a].push_back(b);
-  for (auto& list : neighbours) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
+        graph[start[a] + count[a]++] = b;
+  for (int m = 0; m < n; ++m) {
+    const auto first = graph.begin() + start[m];
+    std::sort(first, first + count[m]);
+    count[m] = static_cast<int>(std::unique(first, first + count[m]) - first);
   }
+  const auto neighbours = [&](int m) {
+    return std::span<const int>(graph.data() + start[m], static_cast<std::size_t>(count[m]));
+  };
 
   // Column 2 m + c holds rows 2 k + 0, 2 k + 1 for every neighbour k of m: already sorted.
   outer_.assign(2 * n + 1, 0);
   for (int m = 0; m < n; ++m)
     for (int c = 0; c < 2; ++c)
-      outer_[2 * m + c + 1] = outer_[2 * m + c] + 2 * static_cast<int>(neighbours[m].size());
+      outer_[2 * m + c + 1] = outer_[2 * m + c] + 2 * count[m];
   inner_.resize(outer_.back());
   for (int m = 0; m < n; ++m)
     for (int c = 0; c < 2; ++c) {
       int p = outer_[2 * m + c];
-      for (int k : neighbours[m]) {
+      for (int k : neighbours(m)) {
         inner_[p++] = 2 * k;
         inner_[p++] = 2 * k + 1;
       }
@@ -42,7 +56,7 @@ SparsityPattern::SparsityPattern(const Mesh& mesh) {
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     for (int j = 0; j < 3; ++j) {
-      const auto& list = neighbours[tri[j]];
+      const std::span<const int> list = neighbours(tri[j]);
       for (int i = 0; i < 3; ++i) {
         const int position =
             static_cast<int>(std::lower_bound(list.begin(), list.end(), tri[i]) - list.begin());

@@ -71,6 +71,10 @@ struct MumpsSolver::State {
   /// For every stored entry of the Eigen matrix, its slot in `a`, or -1 if MUMPS does not see
   /// it (upper triangle of a symmetric matrix): factorize() refills values without a search.
   std::vector<int> slot;
+  /// The inverse of `slot`: for every entry of `a`, its rank among the stored entries, which is
+  /// its offset in the value array of a compressed matrix. factorize() gathers a compressed
+  /// matrix's values through it, a pass over the lower triangle alone.
+  std::vector<int> source;
   std::uint64_t pattern = 0; ///< fingerprint of the analyzed pattern
   bool analyzed = false;
   bool factorized = false;
@@ -144,12 +148,14 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
   s.irn.clear();
   s.jcn.clear();
   s.a.clear();
+  s.source.clear();
   s.slot.assign(static_cast<size_t>(A.nonZeros()), -1);
   int k = 0;
   for (int j = 0; j < A.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it, ++k) {
       if (lower_only && it.row() < j) continue;
       s.slot[static_cast<size_t>(k)] = static_cast<int>(s.a.size());
+      s.source.push_back(k);
       s.irn.push_back(static_cast<int>(it.row()) + 1);
       s.jcn.push_back(j + 1);
       s.a.push_back(it.value());
@@ -187,12 +193,18 @@ void MumpsSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   State& s = *state_;
   if (!s.analyzed || s.pattern != pattern_fingerprint(A)) analyze(A);
   s.factorized = false;
-  int k = 0;
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it, ++k) {
-      const int slot = s.slot[static_cast<size_t>(k)];
-      if (slot >= 0) s.a[static_cast<size_t>(slot)] = it.value();
-    }
+  if (A.isCompressed()) {
+    const double* values = A.valuePtr();
+    for (std::size_t i = 0; i < s.source.size(); ++i)
+      s.a[i] = values[s.source[i]];
+  } else {
+    int k = 0;
+    for (int j = 0; j < A.outerSize(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it, ++k) {
+        const int slot = s.slot[static_cast<size_t>(k)];
+        if (slot >= 0) s.a[static_cast<size_t>(slot)] = it.value();
+      }
+  }
   s.id.a = s.a.data();
 
   const int m = static_cast<int>(s.schur_dofs.size());
@@ -217,26 +229,33 @@ void MumpsSolver::factorize(const Eigen::SparseMatrix<double>& A) {
 }
 
 Eigen::VectorXd MumpsSolver::solve(const Eigen::VectorXd& b) const {
-  return solve(Eigen::MatrixXd(b)).col(0);
+  // In place in the copy returned: through solve(MatrixXd) b was copied into a matrix, again
+  // for MUMPS to overwrite, and the solution out of it, three vectors per Newton iteration.
+  Eigen::VectorXd x = b;
+  solve_in_place(x.data(), static_cast<int>(x.rows()), 1);
+  return x;
 }
 
 Eigen::MatrixXd MumpsSolver::solve(const Eigen::MatrixXd& B) const {
+  Eigen::MatrixXd X = B;
+  solve_in_place(X.data(), static_cast<int>(X.rows()), static_cast<int>(X.cols()));
+  return X;
+}
+
+void MumpsSolver::solve_in_place(double* x, int rows, int columns) const {
   State& s = *state_;
   SIG_VERIFY(s.factorized, "MUMPS: solve before a successful factorize");
-  SIG_VERIFY(B.rows() == s.id.n,
-             "MUMPS: right side has " << B.rows() << " rows, matrix " << s.id.n);
-  Eigen::MatrixXd X = B; // MUMPS overwrites the right sides with the solutions
-  if (X.cols() == 0) return X;
-  s.id.nrhs = static_cast<int>(X.cols());
+  SIG_VERIFY(rows == s.id.n, "MUMPS: right side has " << rows << " rows, matrix " << s.id.n);
+  if (columns == 0) return;
+  s.id.nrhs = columns;
   s.id.lrhs = s.id.n;
-  s.id.rhs = X.data();
+  s.id.rhs = x;    // MUMPS overwrites the right sides with the solutions
   s.icntl(20) = 0; // dense right sides
   s.icntl(21) = 0; // centralized solution
   s.icntl(26) = 0; // with a Schur complement: interior problem only, x_c = 0
   s.call(job_solve);
   s.id.rhs = nullptr;
   s.verify("solve");
-  return X;
 }
 
 Eigen::VectorXd MumpsSolver::reduce(const Eigen::VectorXd& b) const {

@@ -48,6 +48,9 @@ public:
   Eigen::VectorXd expand(const Eigen::VectorXd& x_schur) const;
 
 private:
+  /// The `columns` right sides of `rows` entries at x (column-major) become the solutions.
+  void solve_in_place(double* x, int rows, int columns) const;
+
   struct State;
   std::unique_ptr<State> state_;
 };

@@ -215,7 +215,11 @@ Eigen::Matrix2d FiniteStrainBulk::curvature_block(int p, double force) const {
 StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditions,
                                      const Eigen::VectorXd& normal_force) {
   if (!now_.has_tangent) evaluate(now_, true); // an accepted force-only trial
-  J_->set_tangent(now_.bulk.tangent);
+  // The tangent moves into the Newton matrix instead of a copy (2.8 MB per iteration of the
+  // ring at N = 512): the driver moves the iterate before it solves again, and an evaluation
+  // with the tangent resets the values it gets back.
+  J_->take_tangent(now_.bulk.tangent);
+  now_.has_tangent = false;
   for (int p = 0; p < contacts_; ++p)
     if (normal_force[p] != 0.0) J_->add_node_block(p, curvature_block(p, normal_force[p]));
   J_->rotate(now_.normal);

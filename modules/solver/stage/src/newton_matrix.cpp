@@ -41,6 +41,11 @@ NewtonMatrix::NewtonMatrix(const SparsityPattern& pattern, const std::vector<cha
   std::copy(reduced_outer.begin(), reduced_outer.end(), reduced_.outerIndexPtr());
   std::copy(reduced_inner.begin(), reduced_inner.end(), reduced_.innerIndexPtr());
   std::fill(reduced_.valuePtr(), reduced_.valuePtr() + reduced_inner.size(), 0.0);
+  source_.resize(reduced_inner.size());
+  for (std::size_t k = 0; k < reduced_slot_.size(); ++k)
+    if (reduced_slot_[k] >= 0)
+      source_[static_cast<std::size_t>(reduced_slot_[k])] = static_cast<int>(k);
+  moved_ = Eigen::VectorXd::Zero(n);
 
   std::vector<int> first_dofs(nodes_.size());
   for (std::size_t p = 0; p < nodes_.size(); ++p)
@@ -52,6 +57,14 @@ void NewtonMatrix::set_tangent(const Eigen::SparseMatrix<double>& K) {
   SIG_VERIFY(K.isCompressed() && K.rows() == full_.rows() && K.nonZeros() == full_.nonZeros(),
              "tangent is not on the Newton pattern");
   std::copy(K.valuePtr(), K.valuePtr() + K.nonZeros(), full_.valuePtr());
+}
+
+void NewtonMatrix::take_tangent(Eigen::SparseMatrix<double>& K) {
+  SIG_VERIFY(K.isCompressed() && K.rows() == full_.rows() && K.nonZeros() == full_.nonZeros() &&
+                 std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1,
+                            full_.outerIndexPtr()),
+             "tangent is not on the Newton pattern");
+  full_.swap(K);
 }
 
 void NewtonMatrix::add_node_block(int p, const Eigen::Matrix2d& block) {
@@ -72,30 +85,41 @@ Eigen::VectorXd NewtonMatrix::solve(const Eigen::VectorXd& r0,
   const double* v = full_.valuePtr();
   const int* outer = full_.outerIndexPtr();
   const int* inner = full_.innerIndexPtr();
-  std::vector<char> held(n, 0);
-  Eigen::VectorXd moved = Eigen::VectorXd::Zero(n); // A(:, imposed) * imposed values
-  for (const auto& [dof, value] : imposed) {
-    held[dof] = 1;
+  moved_.setZero(); // A(:, imposed) * imposed values
+  for (const auto& [dof, value] : imposed)
     for (int k = outer[dof]; k < outer[dof + 1]; ++k)
-      moved[inner[k]] += v[k] * value;
-  }
+      moved_[inner[k]] += v[k] * value;
   // A held row keeps its diagonal d (the scale of its neighbours' rows); d = 0, which a stable
   // tangent never has on a boundary node, would be singular, so it becomes 1.
   const auto held_diagonal = [&](int dof) {
     const double d = v[diagonal_[dof]];
     return d != 0.0 ? d : 1.0;
   };
+  // The free block in one gather, then the few held rows and columns decoupled: a pass that
+  // tested every entry for a held row or column cost more than the gather itself.
   double* reduced = reduced_.valuePtr();
-  for (int j = 0; j < n; ++j)
-    for (int k = outer[j]; k < outer[j + 1]; ++k) {
-      if (reduced_slot_[k] < 0) continue;
-      const bool decoupled = held[j] || held[inner[k]];
-      reduced[reduced_slot_[k]] = !decoupled ? v[k] : inner[k] == j ? held_diagonal(j) : 0.0;
+  for (std::size_t r = 0; r < source_.size(); ++r)
+    reduced[r] = v[source_[r]];
+  const int* reduced_outer = reduced_.outerIndexPtr();
+  const int* reduced_inner = reduced_.innerIndexPtr();
+  for (const auto& [dof, value] : imposed) {
+    const int c = free_index_[dof];
+    if (c < 0) continue; // a Dirichlet dof: not in the reduced matrix
+    for (int k = reduced_outer[c]; k < reduced_outer[c + 1]; ++k) {
+      const int row = reduced_inner[k];
+      reduced[k] = 0.0;
+      // The mirror entry (c, row): the pattern is structurally symmetric.
+      const int* end = reduced_inner + reduced_outer[row + 1];
+      const int* at = std::lower_bound(reduced_inner + reduced_outer[row], end, c);
+      SIG_ASSERT(at != end && *at == c, "the Newton pattern is not structurally symmetric");
+      reduced[at - reduced_inner] = 0.0;
     }
-  const Eigen::VectorXd right = -r0 - moved;
+  }
+  for (const auto& [dof, value] : imposed)
+    if (free_index_[dof] >= 0) reduced[reduced_slot_[diagonal_[dof]]] = held_diagonal(dof);
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(free_dofs_.size()));
   for (std::size_t r = 0; r < free_dofs_.size(); ++r)
-    rhs[static_cast<Eigen::Index>(r)] = right[free_dofs_[r]];
+    rhs[static_cast<Eigen::Index>(r)] = -r0[free_dofs_[r]] - moved_[free_dofs_[r]];
   for (const auto& [dof, value] : imposed)
     if (free_index_[dof] >= 0) rhs[free_index_[dof]] = held_diagonal(dof) * value;
 

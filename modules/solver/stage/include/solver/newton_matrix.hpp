@@ -34,6 +34,9 @@ public:
 
   /// Start from the bulk tangent (on the pattern of the constructor).
   void set_tangent(const Eigen::SparseMatrix<double>& K);
+  /// The same without a copy: the matrix takes K's storage and K gets the previous matrix's
+  /// (same pattern, stale values), for a caller that assembles K anew before reading it again.
+  void take_tangent(Eigen::SparseMatrix<double>& K);
   /// (dofs of contact node p, same) += block, before the rotation.
   void add_node_block(int p, const Eigen::Matrix2d& block);
   /// The matrix becomes Q^T A Q with the frames of these normals (one per contact node).
@@ -69,8 +72,10 @@ private:
   std::vector<int> free_dofs_;            ///< reduced index -> dof
   std::vector<int> free_index_;           ///< dof -> reduced index, -1 for a Dirichlet dof
   std::vector<int> reduced_slot_;         ///< slot of full_ -> slot of reduced_ (or -1)
+  std::vector<int> source_;               ///< slot of reduced_ -> slot of full_
   std::vector<int> diagonal_;             ///< dof -> slot of its diagonal entry
   std::unique_ptr<FrameRotation> frames_; ///< the nodal frames, in place on full_
+  Eigen::VectorXd moved_;                 ///< solve()'s A(:, imposed) values, kept allocated
 };
 
 } // namespace sig
