@@ -65,7 +65,8 @@ public:
   /// without an inverted triangle (a linear displacement may fold elements a large one does
   /// not); theta, or 0 when none is admissible and the iterate stays at rest.
   double start_from(const Eigen::VectorXd& u);
-  /// The tangent at the iterate (after construction of a static bulk: at rest).
+  /// The tangent at rest, right after the construction of a static bulk (the first solve()
+  /// takes it over into the Newton matrix).
   const Eigen::SparseMatrix<double>& tangent() const { return now_.bulk.tangent; }
 
   /// Dynamics: the next time step starts from (u_prev, v_prev) (full dofs); the iterate becomes
