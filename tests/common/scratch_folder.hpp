@@ -41,8 +41,11 @@ private:
   std::filesystem::path path_;
 };
 
+/// The bytes of a file; a missing or unreadable one throws (a test that then indexes into the
+/// bytes would otherwise crash instead of failing with the file's name).
 inline std::string slurp(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
