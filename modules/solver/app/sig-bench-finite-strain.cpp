@@ -148,8 +148,7 @@ int main(int argc, char** argv) {
         << ",\n  \"reaction_moment\": " << result->reaction_moment
         << ",\n  \"solve_seconds\": " << json_list(solve_seconds)
         << ",\n  \"solve_seconds_median\": " << sig::median(solve_seconds) << ",\n  \"start\": \""
-        << (solution.start.used ? "small-strain" : "rest")
-        << "\",\n  \"start_iterations\": " << solution.start.iterations
+        << solution.start.name() << "\",\n  \"start_iterations\": " << solution.start.iterations
         << ",\n  \"start_seconds_median\": " << sig::median(start_seconds)
         << ",\n  \"analyze_seconds\": " << analyze_seconds
         << ",\n  \"factor_solve_seconds\": " << json_list(factor_solve_seconds)

@@ -121,13 +121,9 @@ int main(int argc, char** argv) {
                 << s.total_iterations() << " iterations (per step:";
       for (const sig::LoadStepResult& step : s.steps)
         std::cout << " " << step.iterations() << (step.converged ? "" : "Nv");
-      std::cout << "), start ";
-      if (!s.start.used || s.start.fraction == 0)
-        std::cout << (s.start.used ? "rest (fallback)" : "rest");
-      else
-        std::cout << "small-strain" << (s.start.fraction < 1 ? " x " : "")
-                  << (s.start.fraction < 1 ? std::to_string(s.start.fraction) : "") << " ("
-                  << s.start.iterations << " iterations)";
+      std::cout << "), start " << s.start.name();
+      if (s.start.fraction > 0 && s.start.fraction < 1) std::cout << " x " << s.start.fraction;
+      if (s.start.fraction > 0) std::cout << " (" << s.start.iterations << " iterations)";
       std::cout << ", reaction " << result.reaction_x << "," << result.reaction_y << " moment "
                 << result.reaction_moment << ", solve " << result.seconds << " s -> "
                 << args.ds_path("b").string() << "\n";

@@ -154,9 +154,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   ds.put("history_step", std::span<const std::int64_t>(history_step));
   ds.put("history_step_length", std::span<const double>(step_length));
   const StartRecord& start = solution.start;
-  ds.put_text("start", !start.used          ? "rest"
-                       : start.fraction > 0 ? "small-strain"
-                                            : "rest (fallback)");
+  ds.put_text("start", start.name());
   if (start.used) {
     ds.put_int("start_iterations", start.iterations);
     ds.put_scalar("start_fraction", start.fraction);

@@ -10,6 +10,10 @@
 
 namespace sig {
 
+std::string StartRecord::name() const {
+  return !used ? "rest" : fraction > 0 ? "small-strain" : "rest (fallback)";
+}
+
 StartRecord start_from_small_strain(FiniteStrainBulk& bulk, const FiniteStrainProblem& problem,
                                     double load_factor, ContactSolverParameters parameters,
                                     const std::string& backend) {

@@ -4,6 +4,7 @@
 #include "core/ds_columns.hpp"
 #include "core/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sig {
@@ -41,15 +42,15 @@ void put_history(Ds& ds, const std::vector<IterationRecord>& history) {
   put_column(ds, "history_step_norm", history, &IterationRecord::step);
   // The active sets, one row per iteration, when every iteration has one of the same size.
   const std::size_t m = history.empty() ? 0 : history.front().wall.size();
+  if (m == 0 || std::any_of(history.begin(), history.end(),
+                            [m](const IterationRecord& r) { return r.wall.size() != m; }))
+    return;
   std::vector<std::int64_t> wall;
   wall.reserve(history.size() * m);
-  for (const IterationRecord& r : history) {
-    if (m == 0 || r.wall.size() != m) return;
+  for (const IterationRecord& r : history)
     wall.insert(wall.end(), r.wall.begin(), r.wall.end());
-  }
-  if (m > 0)
-    ds.put("history_wall", wall,
-           {static_cast<std::int64_t>(history.size()), static_cast<std::int64_t>(m)});
+  ds.put("history_wall", wall,
+         {static_cast<std::int64_t>(history.size()), static_cast<std::int64_t>(m)});
 }
 
 void put_convexification(Ds& ds, const ConvexificationResult& loop) {

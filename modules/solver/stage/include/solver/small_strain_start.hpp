@@ -29,6 +29,9 @@ struct StartRecord {
   double seconds = 0;         ///< wall time of the start (factorization, condensation, solve)
   std::string note;           ///< why the solve started from rest, if it did
   Eigen::VectorXd multiplier; ///< the small-strain contact forces per node, x fraction (or empty)
+  /// "rest" (none asked for), "small-strain", or "rest (fallback)" when it failed: the name in
+  /// case.b, sig-solve's line and the benchmark's JSON.
+  std::string name() const;
 };
 
 /// Moves `bulk` (static, at rest) to the small-strain solution of `problem` at load factor
