@@ -58,7 +58,8 @@ struct Case {
 TEST(NewtonMatrix, RotationInPlaceIsQTransposeAQ) {
   const Case c;
   sig::NewtonMatrix J(c.pattern, c.dirichlet, c.contact_nodes);
-  J.set_tangent(c.K);
+  Eigen::SparseMatrix<double> K = c.K;
+  J.take_tangent(K);
   const Eigen::Matrix2d block = (Eigen::Matrix2d() << 3.0, -1.0, 0.5, 2.0).finished();
   J.add_node_block(1, block);
   J.rotate(c.normals);
@@ -75,7 +76,8 @@ void check_decoupled_solve(bool symmetric) {
   const Case c(symmetric);
   const int n = c.pattern.num_dofs();
   sig::NewtonMatrix J(c.pattern, c.dirichlet, c.contact_nodes);
-  J.set_tangent(c.K);
+  Eigen::SparseMatrix<double> K = c.K;
+  J.take_tangent(K);
   J.rotate(c.normals);
   const Eigen::MatrixXd A = Eigen::MatrixXd(J.matrix());
   const auto solver = symmetric ? sig::make_linear_solver("mumps", sig::MatrixKind::symmetric)

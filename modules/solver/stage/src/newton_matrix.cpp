@@ -53,12 +53,6 @@ NewtonMatrix::NewtonMatrix(const SparsityPattern& pattern, const std::vector<cha
   frames_ = std::make_unique<FrameRotation>(full_, std::move(first_dofs));
 }
 
-void NewtonMatrix::set_tangent(const Eigen::SparseMatrix<double>& K) {
-  SIG_VERIFY(K.isCompressed() && K.rows() == full_.rows() && K.nonZeros() == full_.nonZeros(),
-             "tangent is not on the Newton pattern");
-  std::copy(K.valuePtr(), K.valuePtr() + K.nonZeros(), full_.valuePtr());
-}
-
 void NewtonMatrix::take_tangent(Eigen::SparseMatrix<double>& K) {
   SIG_VERIFY(K.isCompressed() && K.rows() == full_.rows() && K.nonZeros() == full_.nonZeros() &&
                  std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1,

@@ -32,10 +32,9 @@ public:
   NewtonMatrix(const SparsityPattern& pattern, const std::vector<char>& dirichlet,
                const std::vector<int>& contact_nodes);
 
-  /// Start from the bulk tangent (on the pattern of the constructor).
-  void set_tangent(const Eigen::SparseMatrix<double>& K);
-  /// The same without a copy: the matrix takes K's storage and K gets the previous matrix's
-  /// (same pattern, stale values), for a caller that assembles K anew before reading it again.
+  /// Start from the bulk tangent K (on the pattern of the constructor) without a copy: the
+  /// matrix takes K's storage and K gets the previous matrix's (same pattern, stale values), for
+  /// a caller that assembles K anew before reading it again.
   void take_tangent(Eigen::SparseMatrix<double>& K);
   /// (dofs of contact node p, same) += block, before the rotation.
   void add_node_block(int p, const Eigen::Matrix2d& block);
