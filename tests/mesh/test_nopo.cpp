@@ -312,6 +312,35 @@ TEST(Nopo, DamagedFilesAreRejectedWithAMessage) {
   EXPECT_NE(error_of(path).find("'NOPO'"), std::string::npos);
 }
 
+// A length word near 2^61 times the word size wraps to the record's true size: the fuzzer found
+// that overflow (CI, fuzz_nopo), which read past NOP5. The reader now divides instead.
+TEST(Nopo, HugeCountWordsAreRefusedNotMultiplied) {
+  const ScratchFolder dir;
+  const std::string bytes = slurp(shared_nopo("square3.nopo"));
+  const auto path = dir / "huge.nopo";
+  // square3.nopo: 8-byte markers and words; descriptor L4 at byte 56, L5 at 64; NOP4's count word
+  // at 656 (32 reals), NOP5's at 808 (220 words).
+  const auto put = [](std::string& file, std::size_t at, std::uint64_t value) {
+    std::memcpy(file.data() + at, &value, 8);
+  };
+  std::string nop5 = bytes;
+  const std::uint64_t wraps_to_220_words = (std::uint64_t{1} << 61) + 220;
+  put(nop5, 64, wraps_to_220_words);
+  put(nop5, 808, wraps_to_220_words);
+  testing::spit(path, nop5);
+  std::string error = error_of(path);
+  EXPECT_NE(error.find("(NOP5): 1760 bytes for 2305843009213694172 words"), std::string::npos)
+      << error;
+
+  std::string nop4 = bytes;
+  const std::uint64_t wraps_to_32_reals = (std::uint64_t{1} << 62) + 32;
+  put(nop4, 56, wraps_to_32_reals);
+  put(nop4, 656, wraps_to_32_reals);
+  testing::spit(path, nop4);
+  error = error_of(path);
+  EXPECT_NE(error.find("(NOP4): 128 bytes for"), std::string::npos) << error;
+}
+
 // case.nopo carries the fingerprint of its mesh records: a node moved or a byte damaged after
 // sig-mesh wrote it is refused, while the text fields (not the mesh) may change.
 TEST(Nopo, FingerprintRefusesAMovedNodeOrDamagedBytes) {

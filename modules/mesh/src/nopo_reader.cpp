@@ -26,7 +26,9 @@ public:
     raw_.clear();
     while (static_cast<std::int64_t>(values.size()) < n) {
       const auto [count, body] = next_record(name, n - static_cast<std::int64_t>(values.size()));
-      SIG_VERIFY(body.size() == static_cast<std::size_t>(count * int_bytes_),
+      // Divide, never multiply: a count read from the file may be near 2^63.
+      SIG_VERIFY(body.size() % int_bytes_ == 0 &&
+                     body.size() / int_bytes_ == static_cast<std::size_t>(count),
                  where(name) << ": " << body.size() << " bytes for " << count << " words of "
                              << int_bytes_ << " bytes");
       for (std::int64_t k = 0; k < count; ++k)
@@ -42,7 +44,7 @@ public:
     while (static_cast<std::int64_t>(values.size()) < n) {
       const auto [count, body] = next_record(name, n - static_cast<std::int64_t>(values.size()));
       const auto size = static_cast<std::int64_t>(body.size());
-      SIG_VERIFY(size == 4 * count || size == 8 * count,
+      SIG_VERIFY(size % count == 0 && (size / count == 4 || size / count == 8),
                  where(name) << ": " << size << " bytes for " << count
                              << " reals (neither float nor double)");
       real_bytes = static_cast<int>(size / count);
