@@ -107,6 +107,31 @@ TEST(Hyperelastic, TangentIsTheDerivativeOfTheStress) {
   }
 }
 
+// Plane strain's 2D closed form (at_plane_strain) against the 3D law at F3 = diag(F, 1): energy,
+// P = F3 S and dP/dF = first_piola_tangent, their in-plane blocks, to rounding.
+TEST(Hyperelastic, PlaneStrainIsTheInPlaneBlockOfThe3dLaw) {
+  for (const Law& law : all_laws()) {
+    if (law->plane() != PlaneMode::strain) continue;
+    SCOPED_TRACE(describe(*law));
+    for (const Eigen::Matrix2d& F : random_gradients(50, 13)) {
+      Eigen::Matrix3d F3 = Eigen::Matrix3d::Identity();
+      F3.topLeftCorner<2, 2>() = F;
+      const MaterialPoint3d point = law->at(F3.transpose() * F3);
+      const Eigen::Matrix3d P3 = F3 * point.S;
+      const Matrix9d A3 = first_piola_tangent(F3, point);
+      const HyperelasticResponse r = law->response(F);
+      EXPECT_NEAR(r.energy, point.energy, 1e-13 * (1 + std::abs(point.energy)));
+      EXPECT_LT((r.stress - P3.topLeftCorner<2, 2>()).norm(), 1e-13 * (1 + P3.norm()));
+      constexpr int in_plane[4] = {0, 1, 3, 4};
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+          EXPECT_NEAR(r.tangent(a, b), A3(in_plane[a], in_plane[b]), 1e-13 * (1 + A3.norm()));
+      const MaterialPoint2d p2 = law->in_plane(F.transpose() * F);
+      EXPECT_LT((p2.S - point.S.topLeftCorner<2, 2>()).norm(), 1e-13 * (1 + point.S.norm()));
+    }
+  }
+}
+
 TEST(Hyperelastic, ReferenceStateIsStressFree) {
   for (const Law& law : all_laws()) {
     SCOPED_TRACE(describe(*law));

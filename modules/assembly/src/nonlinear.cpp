@@ -17,8 +17,6 @@ namespace sig {
 
 namespace {
 
-using Matrix46 = Eigen::Matrix<double, 4, 6>;
-
 const HyperelasticLaw& law_of(const SubdomainMaterial& material) {
   SIG_VERIFY(material.hyperelastic, "sub-domain " << material.subdomain
                                                   << " has law=hooke; the large-deformation "
@@ -26,17 +24,18 @@ const HyperelasticLaw& law_of(const SubdomainMaterial& material) {
   return *material.hyperelastic;
 }
 
-// The kinematics of one triangle: F - I = B u_e in the row-major Voigt order of F (F11, F12,
-// F21, F22), B(2 i + J, 2 a + k) = delta_ik dlambda_a/dX_J.
+// The kinematics of one triangle: F = I + u_e g^T, with g(J, a) = dlambda_a/dX_J the P1
+// gradients (row-major Voigt order of F: F11, F12, F21, F22).
 struct Kinematics {
   double volume; // thickness * reference area
-  Matrix46 B;
+  Matrix23 g;
   Eigen::Matrix2d F;
 };
 
 Kinematics kinematics(const Mesh& mesh, int t, double thickness, const Eigen::VectorXd& u) {
   const Matrix23 x = triangle_vertices(mesh, t);
-  const Matrix23 g = p1_gradients(x);
+  Kinematics k;
+  k.g = p1_gradients(x);
   // Displacements relative to the first vertex's: the gradients sum to zero, so this changes
   // nothing but rounding, and a body far from its reference position (a ring thrown 100 m) keeps
   // F exact for a translation instead of carrying |u| eps / h of noise into the stress.
@@ -44,14 +43,8 @@ Kinematics kinematics(const Mesh& mesh, int t, double thickness, const Eigen::Ve
   const Eigen::Vector2d u0 = u.segment<2>(2 * mesh.triangles[t][0]);
   for (int a = 0; a < 3; ++a)
     ue.col(a) = u.segment<2>(2 * mesh.triangles[t][a]) - u0;
-  Kinematics k;
   k.volume = thickness * p1_area(x);
-  k.F = Eigen::Matrix2d::Identity() + ue * g.transpose();
-  k.B.setZero();
-  for (int a = 0; a < 3; ++a)
-    for (int i = 0; i < 2; ++i)
-      for (int J = 0; J < 2; ++J)
-        k.B(2 * i + J, 2 * a + i) = g(J, a);
+  k.F = Eigen::Matrix2d::Identity() + ue * k.g.transpose();
   return k;
 }
 
@@ -102,14 +95,22 @@ void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
     } catch (const Error& e) {
       throw Error("triangle " + std::to_string(t + 1) + ": " + e.what());
     }
-    const Eigen::Vector4d P(r.stress(0, 0), r.stress(0, 1), r.stress(1, 0), r.stress(1, 1));
-    // Virtual work: f_e = |T| t B^T P and K_e = |T| t B^T A B, with A = dP/dF.
-    const Vector6d f = k.volume * (k.B.transpose() * P);
+    // Virtual work, with dF = du_e g^T: f_e(2 a + i) = |T| t (P g)(i, a) and
+    // K_e(2 a + i, 2 b + k) = |T| t (g^T A_ik g)(a, b), A_ik the 2x2 block dP_i./dF_k. of A.
+    const Matrix23 f = k.volume * (r.stress * k.g);
     state.energy += k.volume * r.energy;
     for (int a = 0; a < 3; ++a)
-      state.internal_force.segment<2>(2 * mesh.triangles[t][a]) += f.segment<2>(2 * a);
+      state.internal_force.segment<2>(2 * mesh.triangles[t][a]) += f.col(a);
     if (K) {
-      const Matrix6d Ke = k.volume * (k.B.transpose() * r.tangent * k.B);
+      Matrix6d Ke;
+      for (int i = 0; i < 2; ++i)
+        for (int kk = 0; kk < 2; ++kk) {
+          const Eigen::Matrix3d block =
+              k.volume * (k.g.transpose() * r.tangent.block<2, 2>(2 * i, 2 * kk) * k.g);
+          for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+              Ke(2 * a + i, 2 * b + kk) = block(a, b);
+        }
       pattern->add(*K, t, Ke);
     }
   }

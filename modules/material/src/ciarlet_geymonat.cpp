@@ -48,4 +48,34 @@ MaterialPoint3d CiarletGeymonat::at(const Eigen::Matrix3d& C, bool with_tangent)
   return p;
 }
 
+MaterialPoint2d CiarletGeymonat::at_plane_strain(const Eigen::Matrix2d& C,
+                                                 bool with_tangent) const {
+  // at() with C33 = 1: I1 and I2 gain the out-of-plane 1, C^-1 is block diagonal, and the
+  // in-plane blocks of S and CC are the same expressions on the 2x2 C^-1.
+  const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+  const double I1 = C.trace() + 1.0;
+  const double I2 = 0.5 * (I1 * I1 - (C * C).trace() - 1.0);
+  const double I3 = C.determinant();
+  SIG_VERIFY(I3 > 0.0, "Ciarlet-Geymonat law: det C = " << I3 << " <= 0");
+  const Eigen::Matrix2d Ci = C.inverse();
+  const double lnI3 = std::log(I3);
+  const double d = c1_ + 2.0 * c2_ + a_;
+
+  MaterialPoint2d p;
+  p.energy = c1_ * (I1 - 3.0 - lnI3) + c2_ * (I2 - 3.0 - 2.0 * lnI3) + a_ * (I3 - 1.0 - lnI3);
+  p.S = 2.0 * (c1_ * (I - Ci) + c2_ * (I1 * I - C - 2.0 * Ci) + a_ * (I3 - 1.0) * Ci);
+  if (!with_tangent) return p;
+  const double c_identity = 4.0 * c2_, c_outer = 4.0 * a_ * I3, c_sym = 2.0 * (a_ * I3 - d);
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k)
+        for (int l = 0; l < 2; ++l) {
+          const double identity =
+              (i == j && k == l) - 0.5 * ((i == k && j == l) + (i == l && j == k));
+          p.CC(2 * i + j, 2 * k + l) = c_identity * identity + c_outer * Ci(i, j) * Ci(k, l) -
+                                       c_sym * (Ci(i, k) * Ci(j, l) + Ci(i, l) * Ci(j, k));
+        }
+  return p;
+}
+
 } // namespace sig

@@ -89,23 +89,36 @@ HyperelasticResponse HyperelasticLaw::response(const Eigen::Matrix2d& F) const {
 HyperelasticResponse HyperelasticLaw::plane_strain(const Eigen::Matrix2d& F) const {
   // F3 = diag(F, 1): only the in-plane entries of first_piola_tangent's A are needed, and for
   // in-plane i, k they contract CC over in-plane I, K alone (F3 has no in-plane row reaching
-  // index 3): A(iJ, kL) = F_iI CC(IJ, KL) F_kK + delta_ik S_JL, 64 multiply-adds instead of the
-  // 486 of the 9 x 9 A (this runs once per triangle and Newton iteration).
-  const Eigen::Matrix3d F3 = embedded(F, 1.0);
-  const MaterialPoint3d point = at(F3.transpose() * F3);
+  // index 3): A(iJ, kL) = F_iI CC(IJ, KL) F_kK + delta_ik S_JL.
+  const MaterialPoint2d point = at_plane_strain(F.transpose() * F, true);
   HyperelasticResponse out;
   out.energy = point.energy;
-  out.stress = (F3 * point.S).topLeftCorner<2, 2>();
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) {
-      const int i = a / 2, J = a % 2, k = b / 2, L = b % 2;
-      double sum = i == k ? point.S(J, L) : 0.0;
-      for (int I = 0; I < 2; ++I)
-        for (int K = 0; K < 2; ++K)
-          sum += F(i, I) * point.CC(3 * I + J, 3 * K + L) * F(k, K);
-      out.tangent(a, b) = sum;
-    }
+  out.stress = F * point.S;
+  // The two contractions one after the other (32 multiply-adds each): T(iJ, KL) = F_iI
+  // CC(IJ, KL), then A(iJ, kL) = T(iJ, KL) F_kK.
+  Eigen::Matrix4d T;
+  for (int i = 0; i < 2; ++i)
+    for (int J = 0; J < 2; ++J)
+      T.row(2 * i + J) = F(i, 0) * point.CC.row(J) + F(i, 1) * point.CC.row(2 + J);
+  for (int k = 0; k < 2; ++k)
+    for (int L = 0; L < 2; ++L)
+      out.tangent.col(2 * k + L) = T.col(L) * F(k, 0) + T.col(2 + L) * F(k, 1);
+  for (int i = 0; i < 2; ++i)
+    out.tangent.block<2, 2>(2 * i, 2 * i) += point.S;
   out.stretch33 = 1.0;
+  return out;
+}
+
+MaterialPoint2d HyperelasticLaw::at_plane_strain(const Eigen::Matrix2d& C,
+                                                 bool with_tangent) const {
+  const MaterialPoint3d point = at(embedded(C, 1.0), with_tangent);
+  MaterialPoint2d out;
+  out.energy = point.energy;
+  out.S = point.S.topLeftCorner<2, 2>();
+  if (!with_tangent) return out;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      out.CC(a, b) = point.CC(in_plane_index[a], in_plane_index[b]);
   return out;
 }
 
@@ -129,9 +142,8 @@ HyperelasticResponse HyperelasticLaw::plane_stress(const Eigen::Matrix2d& F) con
 MaterialPoint2d HyperelasticLaw::in_plane(const Eigen::Matrix2d& C, bool with_tangent) const {
   SIG_VERIFY(C.determinant() > 0.0,
              "hyperelastic law: det C = " << C.determinant() << " <= 0 (inverted element)");
-  Eigen::Matrix3d C3 = Eigen::Matrix3d::Zero();
-  C3.topLeftCorner<2, 2>() = C;
-  C3(2, 2) = plane_ == PlaneMode::strain ? 1.0 : out_of_plane_c33(C);
+  if (plane_ == PlaneMode::strain) return at_plane_strain(C, with_tangent);
+  const Eigen::Matrix3d C3 = embedded(C, out_of_plane_c33(C));
   const MaterialPoint3d point = at(C3, with_tangent);
   MaterialPoint2d out;
   out.energy = point.energy;
@@ -142,11 +154,9 @@ MaterialPoint2d HyperelasticLaw::in_plane(const Eigen::Matrix2d& C, bool with_ta
   const double CC33 = point.CC(out_of_plane, out_of_plane);
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b)
-      out.CC(a, b) =
-          point.CC(in_plane_index[a], in_plane_index[b]) -
-          (plane_ == PlaneMode::stress ? point.CC(in_plane_index[a], out_of_plane) *
-                                             point.CC(out_of_plane, in_plane_index[b]) / CC33
-                                       : 0.0);
+      out.CC(a, b) = point.CC(in_plane_index[a], in_plane_index[b]) -
+                     point.CC(in_plane_index[a], out_of_plane) *
+                         point.CC(out_of_plane, in_plane_index[b]) / CC33;
   return out;
 }
 

@@ -82,6 +82,12 @@ public:
 protected:
   explicit HyperelasticLaw(PlaneMode plane) : plane_(plane) {}
 
+  /// The in-plane blocks of the 3D law at C3 = diag(C, 1), plane strain's C (CC only
+  /// `with_tangent`). This default takes them from at(); a law overrides it with its 2D closed
+  /// form, because the assembly calls it once per triangle and Newton iteration and needs 16 of
+  /// the 81 entries of CC.
+  virtual MaterialPoint2d at_plane_strain(const Eigen::Matrix2d& C, bool with_tangent) const;
+
 private:
   HyperelasticResponse plane_strain(const Eigen::Matrix2d& F) const;
   HyperelasticResponse plane_stress(const Eigen::Matrix2d& F) const;
