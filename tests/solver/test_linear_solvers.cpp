@@ -217,6 +217,18 @@ TEST(Umfpack, OrdersWithMetis) {
   EXPECT_EQ(solver.ordering(), "metis");
 }
 
+TEST(Mumps, OrdersWithAmdBelowTwoHundredThousandUnknowns) {
+  MumpsSolver solver(MatrixKind::symmetric);
+  solver.analyze(test::clamped_stiffness({10, 10}));
+  EXPECT_EQ(solver.ordering(), "amd");
+  // Above it, MUMPS's automatic choice: nested dissection (Scotch or PORD) on this 2D grid.
+  const Eigen::SparseMatrix<double> large = test::clamped_stiffness({320, 320});
+  ASSERT_GT(large.rows(), 200000);
+  solver.analyze(large);
+  EXPECT_NE(solver.ordering(), "amd");
+  EXPECT_NE(solver.ordering(), "");
+}
+
 TEST(Mumps, SingularMatrixIsAnError) {
   for (MatrixKind kind : {MatrixKind::general, MatrixKind::symmetric}) {
     MumpsSolver solver(kind);

@@ -1,6 +1,7 @@
 #pragma once
 // Sequential MUMPS adapter: multifrontal LDL^T (SYM = 1 spd, 2 symmetric) or LU (SYM = 0),
-// METIS ordering when MUMPS was built with it (else MUMPS's automatic choice).
+// AMD ordering up to 2e5 unknowns (a 2D problem's analysis 4-7x cheaper than nested
+// dissection's for the same factorization time), MUMPS's automatic choice above.
 //
 // With Schur variables it performs MUMPS's partial factorization (ICNTL(19)): the interior
 // block K_ii is factorized and S = K_cc - K_ci K_ii^{-1} K_ic comes out of the same pass. Solves
