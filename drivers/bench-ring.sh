@@ -175,6 +175,17 @@ for steps in loadsteps:
               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(r) + " |" for r in rows]
     lines.append("")
+    # What each target asks of the rest of the solve: the start's share of the ratio, and how
+    # far ahead of GetFEM the floor itself is (the 8x target needs solve / floor <= that / 8).
+    lines.append("Start excluded, solve / floor: " + ", ".join(
+        f"{m} {(r['solve_seconds_median'] - r['start_seconds_median']) / r['floor_seconds']:.2f}"
+        for m, r in runs.items()) + ".")
+    if getfem:
+        lines[-1] += (" GetFEM / floor (GetFEM's solve against our floor alone, the speed-up a "
+                      "Newton with this linear solver and these iterations cannot pass): " +
+                      ", ".join(f"{m} {getfem['solve_seconds_median'] / r['floor_seconds']:.2f}x"
+                                for m, r in runs.items()) + ".")
+    lines.append("")
     if getfem:
         ry = {m: r["reaction_y"] for m, r in runs.items()}
         diff = {m: abs(v - getfem["reaction_y"]) / abs(getfem["reaction_y"]) for m, v in ry.items()}
