@@ -25,6 +25,9 @@
 #                                                    not print its r)
 # Every run is bounded by the deck's maxit (Newton iterations per load step, 200): a run that
 # does not converge within it stops at that step as "Nv", the later steps are not attempted.
+# The rings next to the largest N (N - 8, - 4, - 2, + 2, + 4, + 8) get PDAS gamma = 1e4, projection
+# c = 1e4 and 1e5 and ALM in one step (OUTDIR/neighbours/N<n>/): how far a count moves with the
+# mesh alone.
 # When /usr/bin/python3 imports getfem, postproc/getfem_ring.py solves the one-step crush on the
 # same mesh per N (OUTDIR/N<N>/getfem.json: its Newton iterations and reaction beside ours).
 # The accuracy of each run is measured against OUTDIR/reference: PDAS gamma = 1e4 in one load
@@ -94,48 +97,64 @@ out=$(cd "$out" && pwd)
 } >"$out/command.txt"
 start=$SECONDS
 
+# run DIR N METHOD VALUE STEPS [START] [VTK]: one solve (deck, sig-solve, sig-post) in DIR, the
+# base's DS files linked there first by the caller; VTK output for the figure runs (alm and 1e4)
+# unless VTK says no.
+run() {
+  local dir=$1 n=$2 method=$3 value=$4 nsteps=$5 first=${6:-} vtk=${7:-}
+  if [ -z "$vtk" ]; then
+    vtk=no
+    if [ "$method" = alm ] || [ "$value" = 1e4 ]; then vtk=yes; fi
+  fi
+  deck "$template" "$dir/ring.dat" "$n" "$method" "${field[$method]}" "$value" "$vtk" "$nsteps" \
+    "$first"
+  "$bin/sig-solve" "$dir/ring.dat" -o "$dir" >"$dir/solve.log" 2>&1 ||
+    die "sig-solve failed for N = $n $method $value, $nsteps load steps (see $dir/solve.log)"
+  "$bin/sig-post" "$dir/ring.dat" -o "$dir" >"$dir/post.log" 2>&1 ||
+    die "sig-post failed for N = $n $method $value, $nsteps load steps (see $dir/post.log)"
+  echo "N=$n $method ${field[$method]}=$value: $(grep -o '[0-9/]* load steps.*' "$dir/solve.log" | sed 's/, solve.*//')"
+  progress_step "${dir#"$out"/}"
+}
+
+# base DIR N: the bulk stages of the ring at N into DIR.
+base() {
+  mkdir -p "$1"
+  deck "$template" "$1/ring.dat" "$2" pdas gamma 1e3 no "$steps"
+  for stage in mesh material contact assemble; do
+    "$bin/sig-$stage" "$1/ring.dat" -o "$1" >"$1/$stage.log" 2>&1 ||
+      die "sig-$stage failed at N = $2 (see $1/$stage.log)"
+  done
+  progress_step "${1#"$out"/}"
+}
+
 # sweep ROOT N STEPS BASE [START]: every method and parameter at N in STEPS load steps, into
 # ROOT/N<N>/; with START (rest), only the three runs of Figs 7.13-7.16 from that first iterate.
 sweep() {
-  local root_dir=$1 n=$2 nsteps=$3 base=$4 first=${5:-} method value dir vtk
+  local root_dir=$1 n=$2 nsteps=$3 base_dir=$4 first=${5:-} method value dir
   for method in pdas alm projection; do
     local chosen=${values[$method]}
     if [ -n "$first" ] && [ "$method" != alm ]; then chosen=1e4; fi
     for value in $chosen; do
       if [ "$method" = alm ]; then dir=$root_dir/N$n/alm; else dir=$root_dir/N$n/${method}_$value; fi
       mkdir -p "$dir"
-      for ds in nopo mili cont tae; do ln -s "$base/case.$ds" "$dir/case.$ds"; done
-      vtk=no
-      if [ "$method" = alm ] || [ "$value" = 1e4 ]; then vtk=yes; fi
-      deck "$template" "$dir/ring.dat" "$n" "$method" "${field[$method]}" "$value" "$vtk" "$nsteps" \
-        "$first"
-      "$bin/sig-solve" "$dir/ring.dat" -o "$dir" >"$dir/solve.log" 2>&1 ||
-        die "sig-solve failed for N = $n $method $value, $nsteps load steps (see $dir/solve.log)"
-      "$bin/sig-post" "$dir/ring.dat" -o "$dir" >"$dir/post.log" 2>&1 ||
-        die "sig-post failed for N = $n $method $value, $nsteps load steps (see $dir/post.log)"
-      echo "N=$n $method ${field[$method]}=$value: $(grep -o '[0-9/]* load steps.*' "$dir/solve.log" | sed 's/, solve.*//')"
-      progress_step "${dir#"$out"/}"
+      for ds in nopo mili cont tae; do ln -s "$base_dir/case.$ds" "$dir/case.$ds"; done
+      run "$dir" "$n" "$method" "$value" "$nsteps" "$first"
     done
   done
 }
 
-# Runs: per mesh a base, 15 runs in one step, 15 in the variant, 3 from rest, GetFEM; then the
-# reference.
-progress_begin $((35 * ${#sizes[@]} + 1))
+# Runs: per mesh a base, 15 runs in one step, 15 in the variant, 3 from rest, GetFEM; the
+# neighbours of the largest N; then the reference.
+neighbour_offsets=(-8 -4 -2 2 4 8)
+neighbour_runs=("pdas 1e4" "projection 1e4" "projection 1e5" "alm 1e3")
+progress_begin $((35 * ${#sizes[@]} + ${#neighbour_offsets[@]} * (1 + ${#neighbour_runs[@]}) + 1))
 for n in "${sizes[@]}"; do
-  base=$out/N$n/base
-  mkdir -p "$base"
-  deck "$template" "$base/ring.dat" "$n" pdas gamma 1e3 no "$steps"
-  for stage in mesh material contact assemble; do
-    "$bin/sig-$stage" "$base/ring.dat" -o "$base" >"$base/$stage.log" 2>&1 ||
-      die "sig-$stage failed at N = $n (see $base/$stage.log)"
-  done
-  progress_step "N$n/base"
-  sweep "$out" "$n" "$steps" "$base"
-  sweep "$out/loadsteps$variant_steps" "$n" "$variant_steps" "$base"
-  sweep "$out/rest" "$n" "$steps" "$base" rest
+  base "$out/N$n/base" "$n"
+  sweep "$out" "$n" "$steps" "$out/N$n/base"
+  sweep "$out/loadsteps$variant_steps" "$n" "$variant_steps" "$out/N$n/base"
+  sweep "$out/rest" "$n" "$steps" "$out/N$n/base" rest
   if [ $getfem -eq 1 ]; then
-    /usr/bin/python3 "$root/postproc/getfem_ring.py" --deck "$base/ring.dat" --repeat 1 \
+    /usr/bin/python3 "$root/postproc/getfem_ring.py" --deck "$out/N$n/base/ring.dat" --repeat 1 \
       --json "$out/N$n/getfem.json" >"$out/N$n/getfem.log" 2>&1 ||
       die "postproc/getfem_ring.py failed at N = $n (see $out/N$n/getfem.log)"
     tail -1 "$out/N$n/getfem.log"
@@ -143,6 +162,22 @@ for n in "${sizes[@]}"; do
     echo "scene7b.sh: /usr/bin/python3 cannot import getfem: no GetFEM comparison at N = $n"
   fi
   progress_step "N$n/getfem"
+done
+
+# The count's spread: the figure runs and projection c = 1e5 in one step on the rings next to the
+# largest N, into OUTDIR/neighbours/N<n>/. A count of a Newton whose active set crosses a wide arc
+# is one sample; these say how far it moves when the mesh alone changes.
+n_top=${sizes[${#sizes[@]} - 1]}
+for offset in "${neighbour_offsets[@]}"; do
+  n=$((n_top + offset))
+  base "$out/neighbours/N$n/base" "$n"
+  for spec in "${neighbour_runs[@]}"; do
+    read -r method value <<<"$spec"
+    if [ "$method" = alm ]; then dir=$out/neighbours/N$n/alm; else dir=$out/neighbours/N$n/${method}_$value; fi
+    mkdir -p "$dir"
+    for ds in nopo mili cont tae; do ln -s "$out/neighbours/N$n/base/case.$ds" "$dir/case.$ds"; done
+    run "$dir" "$n" "$method" "$value" "$steps" "" no
+  done
 done
 
 # The reference for the accuracy: PDAS on the ring with twice the largest N.

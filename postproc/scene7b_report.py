@@ -9,6 +9,8 @@ and writes OUT/report.md with its charts:
   "Nv" where a run did not converge), the thesis's claims on them as checks (projection
   c >= 1e4 within +-3, Nv for c <= 10, PDAS within 1.3x of projection at gamma >= 1e4 and
   nearly independent of gamma, ALM within 2x), Table 7.6 (times), the dof counts;
+- the count on neighbouring meshes (OUT/neighbours/N<n>/, N - 8 ... N + 8 around the largest
+  N): how far a one-step count moves with the mesh alone, and PDAS over projection there;
 - Fig 7.13 (fig7_13_pressure.png): contact pressure along Gamma3 at the final state for
   PDAS, projection (gamma = c = 1e4, the thesis's value in Figs 7.14-7.16) and ALM, and the
   check that they agree within 1 % (PASS / FAIL lines);
@@ -275,6 +277,60 @@ def claims_section(runs, thesis, checks):
         checks.items.append(check)
     lines += [group.table().markdown(), "", f"{group.summary()}.", ""]
     return lines
+
+
+def neighbour_section(runs, neighbours):
+    """How far a one-step count moves with the mesh alone: the figure runs and projection
+    c = 1e5 on the rings next to the largest N (OUT/neighbours/), beside the tables' own."""
+    top = runs.sizes[-1]
+    sizes = sorted(set(neighbours.sizes) | {top})
+    columns = [("PDAS gamma = 1e4", "pdas", "1e4"), ("projection c = 1e4", "projection", "1e4"),
+               ("projection c = 1e5", "projection", "1e5"), ("ALM", "alm", "")]
+
+    def count(n, method, p):
+        return converged_count((runs if n == top else neighbours).get(n, method, p))
+
+    def ratio(a, b):
+        return a / b if a and b else None
+
+    rows, counts = [], {label: [] for label, _, _ in columns}
+    ratios = {"1e4": [], "1e5": []}
+    for n in sizes:
+        source = runs if n == top else neighbours
+        row = [f"{n} (the tables')" if n == top else str(n)]
+        for label, method, p in columns:
+            row.append(iterations_cell(source.get(n, method, p)))
+            if count(n, method, p) is not None:
+                counts[label].append(count(n, method, p))
+        for c in ratios:
+            r = ratio(count(n, "pdas", "1e4"), count(n, "projection", c))
+            row.append(MISSING if r is None else f"{r:.2f}")
+            if r is not None:
+                ratios[c].append(r)
+        rows.append(row)
+
+    def spread(values, digits=0):
+        if not values:
+            return MISSING
+        ordered = sorted(values)
+        median = ordered[len(ordered) // 2] if len(ordered) % 2 else (
+            0.5 * (ordered[len(ordered) // 2 - 1] + ordered[len(ordered) // 2]))
+        return f"{ordered[0]:.{digits}f}-{ordered[-1]:.{digits}f}, median {median:.{digits}f}"
+
+    header = ["N"] + [label for label, _, _ in columns] + [
+        "PDAS / projection c = 1e4", "PDAS / projection c = 1e5"]
+    return ["## The count on neighbouring meshes", "",
+            f"The claims above are checked on the count at N = {top}, as the thesis reports one. "
+            "Its crush moves the active set across a wide arc of Gamma3, and the count of such a "
+            "Newton is one sample: the same one-step runs on the rings next to it (N - 8 ... "
+            "N + 8; OUT/neighbours/, not checks) show how far it moves when the mesh alone "
+            "changes. PDAS is gamma-independent (Table 7.5), so its gamma = 1e4 count stands "
+            "against both projection columns.", "",
+            markdown_table(header, rows), "",
+            "Over these meshes: " + "; ".join(
+                f"{label} {spread(counts[label])}" for label, _, _ in columns)
+            + "; PDAS / projection " + "; ".join(
+                f"c = {c}: {spread(ratios[c], 2)}" for c in ratios) + ".", ""]
 
 
 def loadstep_section(runs, variant, checks):
@@ -919,6 +975,9 @@ def main():
     table_lines, key_table = iteration_tables(runs, thesis)
     lines += table_lines
     lines += claims_section(runs, thesis, checks)
+    neighbours = Runs(out / "neighbours") if (out / "neighbours").is_dir() else None
+    if neighbours is not None and neighbours.runs:
+        lines += neighbour_section(runs, neighbours)
     lines += effort_section(runs, out)
     lines += time_table(runs, thesis)
     lines += dof_table(runs, thesis)

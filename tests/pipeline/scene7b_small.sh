@@ -31,8 +31,8 @@
 #    start_iterations, start_fraction = 1), and LOADSTEPS start=rest reaches the same reaction;
 #  - the report end to end on a tree laid out as drivers/scene7b.sh lays it out (the one-step
 #    runs, their 3-step variant in loadsteps14/, the N = 128 reference): report.md with the
-#    claims, the histories, the Nv histories and the load-stepping sections, its charts, and
-#    scene.json whose same-reaction checks pass.
+#    claims, the histories, the Nv histories, the load-stepping and the neighbouring-mesh (N = 66)
+#    sections, its charts, and scene.json whose same-reaction checks pass.
 # Run from the repository root with SIG_BIN set (ctest does both); exit 77 (skipped) when the
 # executables are missing.
 set -euo pipefail
@@ -69,7 +69,8 @@ EOF
 
 for run in "pdas gamma 1e4" "alm r 1e3" "projection c 10" "projection c 1e4" "pdas gamma 1e3 128" \
   "pdas gamma 1e3 64 1.5" "pdas gamma 1e4 64 0 1" "alm r 1e3 64 0 1" "projection c 1e4 64 0 1" \
-  "projection c 10 64 0 1" "pdas gamma 1e4 64 0 1 rest"; do
+  "projection c 10 64 0 1" "pdas gamma 1e4 64 0 1 rest" "pdas gamma 1e4 66 0 1" \
+  "projection c 1e4 66 0 1"; do
   read -r method field value n ux steps start <<<"$run"
   dir=$work/${method}_$value${n:+_N$n}${ux:+_ux$ux}${steps:+_steps$steps}${start:+_$start}
   mkdir -p "$dir"
@@ -204,6 +205,9 @@ for run in pdas_1e4 alm_1e3 projection_1e4 projection_10; do
   ln -s "$work/$run" "$tree/loadsteps14/N64/$name"
 done
 for f in "$work"/pdas_1e3_N128/*; do ln -s "$f" "$tree/reference/"; done
+mkdir -p "$tree/neighbours/N66"
+ln -s "$work/pdas_1e4_N66_ux0_steps1" "$tree/neighbours/N66/pdas_1e4"
+ln -s "$work/projection_1e4_N66_ux0_steps1" "$tree/neighbours/N66/projection_1e4"
 echo "command: tests/pipeline/scene7b_small.sh" >"$tree/command.txt"
 PYTHONDONTWRITEBYTECODE=1 "$python" "$root/postproc/scene7b_report.py" "$tree" ||
   die "scene7b_report.py failed on the small tree"
@@ -217,9 +221,14 @@ report = (tree / "report.md").read_text()
 failures = []
 for section in ("## The thesis's claims on Tables 7.4 / 7.5, one load step",
                 "## Where the iterations go", "## Runs that do not converge (Nv)",
-                "## Load stepping: one step beside 3 load steps", "![history](newton_history.png)"):
+                "## Load stepping: one step beside 3 load steps", "![history](newton_history.png)",
+                "## The count on neighbouring meshes"):
     if section not in report:
         failures.append(f"report.md lacks '{section}'")
+# The neighbour's row: its PDAS and projection counts and their ratio, from its own runs.
+neighbour = [line for line in report.splitlines() if line.startswith("| 66 |")]
+if len(neighbour) != 1 or neighbour[0].count("|") != 8 or " - | - | - | - |" in neighbour[0]:
+    failures.append(f"the neighbour N = 66 row: {neighbour}")
 scene = json.loads((tree / "scene.json").read_text())
 for chart in scene["charts"].values():
     if not (tree / chart).is_file():
