@@ -3,8 +3,8 @@
 # (scene 7b, ../shared/SCENES.md) with the methods and parameters of Tables 7.4 and 7.5, in one
 # load step as the thesis ran it, and the same runs in 14 load steps beside them; then its report.
 #
-#   default: N = 128 256       (about 1.5 min on the shared 2 cores)
-#   --quick: N = 128           (about 10 s)
+#   default: N = 128 256       (about 1 min on 2 cores)
+#   --quick: N = 128           (about 15 s)
 #   --full:  N = 128 256 512   (about 5 min: the projection method at c = 1e2 in 14 load steps
 #                               needs ~100 Newton iterations per load step)
 #
@@ -25,9 +25,9 @@
 #                                                    not print its r)
 # Every run is bounded by the deck's maxit (Newton iterations per load step, 200): a run that
 # does not converge within it stops at that step as "Nv", the later steps are not attempted.
-# The rings next to the largest N (N - 8, - 4, - 2, + 2, + 4, + 8) get PDAS gamma = 1e4, projection
-# c = 1e4 and 1e5 and ALM in one step (OUTDIR/neighbours/N<n>/): how far a count moves with the
-# mesh alone.
+# The rings next to the largest N (N - 8, - 4, - 2, + 2, + 4, + 8, with its layers) get PDAS
+# gamma = 1e4, projection c = 1e4 and 1e5 and ALM in one step (OUTDIR/neighbours/N<n>/): how far
+# a count moves with the number of nodes around the ring alone.
 # When /usr/bin/python3 imports getfem, postproc/getfem_ring.py solves the one-step crush on the
 # same mesh per N (OUTDIR/N<N>/getfem.json: its Newton iterations and reaction beside ours).
 # The accuracy of each run is measured against OUTDIR/reference: PDAS gamma = 1e4 in one load
@@ -73,11 +73,13 @@ require_charts
 
 # deck TEMPLATE OUTPUT N METHOD FIELD VALUE VTK STEPS [START]: the template with MESH N= and the
 # SOLVER card's method and parameter replaced (any r=, gamma=, c= of the template dropped),
-# OUTPUT vtk=VTK, LOADSTEPS n=STEPS (and start=START if given).
+# OUTPUT vtk=VTK, LOADSTEPS n=STEPS (and start=START if given); MESH layers=$mesh_layers when
+# that is set (the neighbouring meshes keep the largest N's layers).
+mesh_layers=
 deck() {
   deck_variant "$1" "$2" --set "MESH.N=$3" --drop SOLVER.gamma --drop SOLVER.c --drop SOLVER.r \
     --set "SOLVER.method=$4" --set "SOLVER.$5=$6" --set "OUTPUT.vtk=$7" --set "LOADSTEPS.n=$8" \
-    ${9:+--set "LOADSTEPS.start=$9"}
+    ${9:+--set "LOADSTEPS.start=$9"} ${mesh_layers:+--set "MESH.layers=$mesh_layers"}
 }
 
 declare -A field=([pdas]=gamma [projection]=c [alm]=r)
@@ -97,11 +99,14 @@ out=$(cd "$out" && pwd)
 } >"$out/command.txt"
 start=$SECONDS
 
-# run DIR N METHOD VALUE STEPS [START] [VTK]: one solve (deck, sig-solve, sig-post) in DIR, the
-# base's DS files linked there first by the caller; VTK output for the figure runs (alm and 1e4)
-# unless VTK says no.
+# run ROOT BASE N METHOD VALUE STEPS [START] [VTK]: one solve (deck, sig-solve, sig-post) of
+# the ring at N in ROOT/N<N>/<method>[_<value>]/, on the DS files of BASE; VTK output for the
+# figure runs (alm and 1e4) unless VTK says no.
 run() {
-  local dir=$1 n=$2 method=$3 value=$4 nsteps=$5 first=${6:-} vtk=${7:-}
+  local root_dir=$1 base_dir=$2 n=$3 method=$4 value=$5 nsteps=$6 first=${7:-} vtk=${8:-} dir ds
+  if [ "$method" = alm ]; then dir=$root_dir/N$n/alm; else dir=$root_dir/N$n/${method}_$value; fi
+  mkdir -p "$dir"
+  for ds in nopo mili cont tae; do ln -s "$base_dir/case.$ds" "$dir/case.$ds"; done
   if [ -z "$vtk" ]; then
     vtk=no
     if [ "$method" = alm ] || [ "$value" = 1e4 ]; then vtk=yes; fi
@@ -118,6 +123,7 @@ run() {
 
 # base DIR N: the bulk stages of the ring at N into DIR.
 base() {
+  local stage
   mkdir -p "$1"
   deck "$template" "$1/ring.dat" "$2" pdas gamma 1e3 no "$steps"
   for stage in mesh material contact assemble; do
@@ -130,15 +136,12 @@ base() {
 # sweep ROOT N STEPS BASE [START]: every method and parameter at N in STEPS load steps, into
 # ROOT/N<N>/; with START (rest), only the three runs of Figs 7.13-7.16 from that first iterate.
 sweep() {
-  local root_dir=$1 n=$2 nsteps=$3 base_dir=$4 first=${5:-} method value dir
+  local root_dir=$1 n=$2 nsteps=$3 base_dir=$4 first=${5:-} method value
   for method in pdas alm projection; do
     local chosen=${values[$method]}
     if [ -n "$first" ] && [ "$method" != alm ]; then chosen=1e4; fi
     for value in $chosen; do
-      if [ "$method" = alm ]; then dir=$root_dir/N$n/alm; else dir=$root_dir/N$n/${method}_$value; fi
-      mkdir -p "$dir"
-      for ds in nopo mili cont tae; do ln -s "$base_dir/case.$ds" "$dir/case.$ds"; done
-      run "$dir" "$n" "$method" "$value" "$nsteps" "$first"
+      run "$root_dir" "$base_dir" "$n" "$method" "$value" "$nsteps" "$first"
     done
   done
 }
@@ -166,19 +169,20 @@ done
 
 # The count's spread: the figure runs and projection c = 1e5 in one step on the rings next to the
 # largest N, into OUTDIR/neighbours/N<n>/. A count of a Newton whose active set crosses a wide arc
-# is one sample; these say how far it moves when the mesh alone changes.
+# is one sample; these say how far it moves with the number of nodes around the ring alone (the
+# layers through the thickness are the largest N's: the generator's default, 3 N / 64 + 1, would
+# change them too).
 n_top=${sizes[${#sizes[@]} - 1]}
+mesh_layers=$((3 * n_top / 64 + 1))
 for offset in "${neighbour_offsets[@]}"; do
   n=$((n_top + offset))
   base "$out/neighbours/N$n/base" "$n"
   for spec in "${neighbour_runs[@]}"; do
     read -r method value <<<"$spec"
-    if [ "$method" = alm ]; then dir=$out/neighbours/N$n/alm; else dir=$out/neighbours/N$n/${method}_$value; fi
-    mkdir -p "$dir"
-    for ds in nopo mili cont tae; do ln -s "$out/neighbours/N$n/base/case.$ds" "$dir/case.$ds"; done
-    run "$dir" "$n" "$method" "$value" "$steps" "" no
+    run "$out/neighbours" "$out/neighbours/N$n/base" "$n" "$method" "$value" "$steps" "" no
   done
 done
+mesh_layers=
 
 # The reference for the accuracy: PDAS on the ring with twice the largest N.
 n_ref=$((2 * sizes[${#sizes[@]} - 1]))

@@ -128,6 +128,10 @@ TEST(Hyperelastic, PlaneStrainIsTheInPlaneBlockOfThe3dLaw) {
           EXPECT_NEAR(r.tangent(a, b), A3(in_plane[a], in_plane[b]), 1e-13 * (1 + A3.norm()));
       const MaterialPoint2d p2 = law->in_plane(F.transpose() * F);
       EXPECT_LT((p2.S - point.S.topLeftCorner<2, 2>()).norm(), 1e-13 * (1 + point.S.norm()));
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+          EXPECT_NEAR(p2.CC(a, b), point.CC(in_plane[a], in_plane[b]),
+                      1e-13 * (1 + point.CC.norm()));
     }
   }
 }

@@ -25,7 +25,7 @@ const HyperelasticLaw& law_of(const SubdomainMaterial& material) {
 }
 
 // The kinematics of one triangle: F = I + u_e g^T, with g(J, a) = dlambda_a/dX_J the P1
-// gradients (row-major Voigt order of F: F11, F12, F21, F22).
+// gradients.
 struct Kinematics {
   double volume; // thickness * reference area
   Matrix23 g;
@@ -86,30 +86,30 @@ void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     const HyperelasticLaw& law = law_of(material);
-    const Kinematics k = kinematics(mesh, t, material.thickness, u);
-    SIG_VERIFY(k.F.determinant() > 0.0,
-               "triangle " << t + 1 << " is inverted: det F = " << k.F.determinant());
+    const Kinematics kin = kinematics(mesh, t, material.thickness, u);
+    SIG_VERIFY(kin.F.determinant() > 0.0,
+               "triangle " << t + 1 << " is inverted: det F = " << kin.F.determinant());
     StepResponse r;
     try {
-      r = response(t, law, k.F, K != nullptr);
+      r = response(t, law, kin.F, K != nullptr);
     } catch (const Error& e) {
       throw Error("triangle " + std::to_string(t + 1) + ": " + e.what());
     }
     // Virtual work, with dF = du_e g^T: f_e(2 a + i) = |T| t (P g)(i, a) and
     // K_e(2 a + i, 2 b + k) = |T| t (g^T A_ik g)(a, b), A_ik the 2x2 block dP_i./dF_k. of A.
-    const Matrix23 f = k.volume * (r.stress * k.g);
-    state.energy += k.volume * r.energy;
+    const Matrix23 f = kin.volume * (r.stress * kin.g);
+    state.energy += kin.volume * r.energy;
     for (int a = 0; a < 3; ++a)
       state.internal_force.segment<2>(2 * mesh.triangles[t][a]) += f.col(a);
     if (K) {
       Matrix6d Ke;
       for (int i = 0; i < 2; ++i)
-        for (int kk = 0; kk < 2; ++kk) {
+        for (int k = 0; k < 2; ++k) {
           const Eigen::Matrix3d block =
-              k.volume * (k.g.transpose() * r.tangent.block<2, 2>(2 * i, 2 * kk) * k.g);
+              kin.volume * (kin.g.transpose() * r.tangent.block<2, 2>(2 * i, 2 * k) * kin.g);
           for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b)
-              Ke(2 * a + i, 2 * b + kk) = block(a, b);
+              Ke(2 * a + i, 2 * b + k) = block(a, b);
         }
       pattern->add(*K, t, Ke);
     }

@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 
 #include <cmath>
+#include <type_traits>
 
 namespace sig {
 
@@ -17,16 +18,19 @@ CiarletGeymonat::CiarletGeymonat(double c1, double c2, double a, PlaneMode plane
 
 namespace {
 
-/// W, S and CC at C, a dim x dim block: the whole C in 3D, or plane strain's in-plane block, whose
-/// C33 = 1 is `out_of_plane` (0 in 3D). It enters I1 and I2; C^-1 is then block diagonal, and the
-/// in-plane blocks of S and CC are the 3D expressions on the block's inverse.
-template <int dim, class Point>
-Point law_at(double c1, double c2, double a, const Eigen::Matrix<double, dim, dim>& C,
-             double out_of_plane, bool with_tangent) {
+/// W, S and CC at C, a dim x dim block: the whole C in 3D, or plane strain's in-plane block of
+/// diag(C, 1). Its C33 = 1 enters I1 and I2; C^-1 is then block diagonal, and the in-plane blocks
+/// of S and CC are the 3D expressions on the block's inverse.
+template <int dim>
+std::conditional_t<dim == 3, MaterialPoint3d, MaterialPoint2d>
+law_at(double c1, double c2, double a, const Eigen::Matrix<double, dim, dim>& C,
+       bool with_tangent) {
+  using Point = std::conditional_t<dim == 3, MaterialPoint3d, MaterialPoint2d>;
+  constexpr double c33 = dim == 2 ? 1.0 : 0.0; // the out-of-plane entry left out of C
   using Matrix = Eigen::Matrix<double, dim, dim>;
   const Matrix I = Matrix::Identity();
-  const double I1 = C.trace() + out_of_plane;
-  const double I2 = 0.5 * (I1 * I1 - (C * C).trace() - out_of_plane * out_of_plane);
+  const double I1 = C.trace() + c33;
+  const double I2 = 0.5 * (I1 * I1 - (C * C).trace() - c33 * c33);
   const double I3 = C.determinant(); // in plane strain det diag(C, 1) = det C
   SIG_VERIFY(I3 > 0.0, "Ciarlet-Geymonat law: det C = " << I3 << " <= 0");
   const Matrix Ci = C.inverse();
@@ -59,12 +63,12 @@ Point law_at(double c1, double c2, double a, const Eigen::Matrix<double, dim, di
 } // namespace
 
 MaterialPoint3d CiarletGeymonat::at(const Eigen::Matrix3d& C, bool with_tangent) const {
-  return law_at<3, MaterialPoint3d>(c1_, c2_, a_, C, 0.0, with_tangent);
+  return law_at<3>(c1_, c2_, a_, C, with_tangent);
 }
 
 MaterialPoint2d CiarletGeymonat::at_plane_strain(const Eigen::Matrix2d& C,
                                                  bool with_tangent) const {
-  return law_at<2, MaterialPoint2d>(c1_, c2_, a_, C, 1.0, with_tangent);
+  return law_at<2>(c1_, c2_, a_, C, with_tangent);
 }
 
 } // namespace sig

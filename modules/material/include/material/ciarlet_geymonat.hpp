@@ -27,10 +27,9 @@ public:
   double lambda() const override { return 4.0 * (a_ + c2_); }
   double mu() const override { return 2.0 * (c1_ + c2_); }
 
-protected:
+private:
   MaterialPoint2d at_plane_strain(const Eigen::Matrix2d& C, bool with_tangent) const override;
 
-private:
   double c1_, c2_, a_;
 };
 
