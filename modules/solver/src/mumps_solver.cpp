@@ -20,8 +20,8 @@ constexpr int max_workspace_retries = 6;
 // ICNTL(7): AMD up to this many unknowns, MUMPS's automatic choice above (Scotch here: Debian's
 // MUMPS has no METIS). On the 2D Newton matrices of the ring (scene 7b) AMD's analysis costs
 // 7 ms against Scotch's 50 ms at 25554 unknowns and 31 ms against 135 ms at 100258, for a
-// factorization as fast (33 ms; 200 ms for 17 % more flops); nested dissection's smaller fill
-// pays beyond a few 1e5 unknowns.
+// factorization + solve as fast (33 ms; 200 ms for 17 % more flops); nested dissection's
+// smaller fill pays beyond a few 1e5 unknowns.
 constexpr int amd_max_unknowns = 200000;
 constexpr int ordering_amd = 0;
 constexpr int ordering_automatic = 7;

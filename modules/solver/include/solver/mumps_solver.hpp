@@ -1,6 +1,6 @@
 #pragma once
 // Sequential MUMPS adapter: multifrontal LDL^T (SYM = 1 spd, 2 symmetric) or LU (SYM = 0),
-// AMD ordering up to 2e5 unknowns (a 2D problem's analysis 4-7x cheaper than nested
+// AMD ordering up to 2e5 unknowns (a 2D problem's analysis 4-8x cheaper than nested
 // dissection's for the same factorization time), MUMPS's automatic choice above.
 //
 // With Schur variables it performs MUMPS's partial factorization (ICNTL(19)): the interior
