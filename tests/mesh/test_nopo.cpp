@@ -312,7 +312,7 @@ TEST(Nopo, DamagedFilesAreRejectedWithAMessage) {
   EXPECT_NE(error_of(path).find("'NOPO'"), std::string::npos);
 }
 
-// A length word near 2^61 times the word size wraps to the record's true size: the fuzzer found
+// A count word near 2^61 times the word size wraps to the record's true size: the fuzzer found
 // that overflow (CI, fuzz_nopo), which read past NOP5. The reader now divides instead.
 TEST(Nopo, HugeCountWordsAreRefusedNotMultiplied) {
   const ScratchFolder dir;

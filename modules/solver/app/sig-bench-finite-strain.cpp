@@ -6,7 +6,7 @@
 //  - the solve: K runs (default 3) of solve_finite_strain_stage, as sig-solve runs it; wall
 //    seconds of each (the small-strain start included, its own median beside), Newton
 //    iterations, convergence, reactions;
-//  - the floor of a Newton method on this mesh: the bulk tangent at the final state of the last
+//  - the floor of a Newton method on this mesh: the bulk tangent at the final state of the first
 //    run, its Dirichlet dofs eliminated (the pattern the Newton matrix is factorized on), with
 //    the same backend: one symbolic analysis, then 2K x (numeric factorization + one solve),
 //    two after each timed solve; floor = sig::median(factorize + solve) x iterations. The
