@@ -229,6 +229,31 @@ TEST(Mumps, OrdersWithAmdBelowTwoHundredThousandUnknowns) {
   EXPECT_NE(solver.ordering(), "");
 }
 
+// An uncompressed matrix (room left in its columns) refills MUMPS's values from its compressed
+// copy: the same solution as the compressed matrix, before and after a change of values.
+TEST(Mumps, UncompressedMatrixSolvesAsItsCompressedCopy) {
+  const int n = 30;
+  Eigen::SparseMatrix<double> loose(n, n);
+  loose.reserve(Eigen::VectorXi::Constant(n, 5));
+  for (int k = 0; k < n; ++k) {
+    loose.insert(k, k) = 3.0;
+    if (k > 0) loose.insert(k, k - 1) = -1.0;
+    if (k + 1 < n) loose.insert(k, k + 1) = -1.0;
+  }
+  ASSERT_FALSE(loose.isCompressed());
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  MumpsSolver solver(MatrixKind::symmetric); // the second factorization reuses the analysis
+  for (double diagonal : {3.0, 5.0}) {
+    for (int k = 0; k < n; ++k)
+      loose.coeffRef(k, k) = diagonal;
+    Eigen::SparseMatrix<double> tight = loose;
+    tight.makeCompressed();
+    solver.factorize(loose);
+    const Eigen::VectorXd x = solver.solve(b);
+    EXPECT_LT((tight * x - b).norm(), 1e-12 * b.norm()) << "diagonal " << diagonal;
+  }
+}
+
 TEST(Mumps, SingularMatrixIsAnError) {
   for (MatrixKind kind : {MatrixKind::general, MatrixKind::symmetric}) {
     MumpsSolver solver(kind);

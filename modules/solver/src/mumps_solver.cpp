@@ -76,12 +76,9 @@ struct MumpsSolver::State {
   std::vector<double> schur;      ///< m x m, column-major, filled by the factorization
   std::vector<int> irn, jcn;      ///< 1-based coordinates of the entries passed (lower for SYM > 0)
   std::vector<double> a;
-  /// For every stored entry of the Eigen matrix, its slot in `a`, or -1 if MUMPS does not see
-  /// it (upper triangle of a symmetric matrix): factorize() refills values without a search.
-  std::vector<int> slot;
-  /// The inverse of `slot`: for every entry of `a`, its rank among the stored entries, which is
-  /// its offset in the value array of a compressed matrix. factorize() gathers a compressed
-  /// matrix's values through it, a pass over the lower triangle alone.
+  /// For every entry of `a`, its rank among the Eigen matrix's stored entries, which is its
+  /// offset in the value array of the compressed matrix: factorize() refills `a` by a gather, a
+  /// pass over the lower triangle alone for SYM > 0.
   std::vector<int> source;
   std::uint64_t pattern = 0; ///< fingerprint of the analyzed pattern
   bool analyzed = false;
@@ -156,12 +153,10 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
   s.jcn.clear();
   s.a.clear();
   s.source.clear();
-  s.slot.assign(static_cast<size_t>(A.nonZeros()), -1);
   int k = 0;
   for (int j = 0; j < A.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it, ++k) {
       if (lower_only && it.row() < j) continue;
-      s.slot[static_cast<size_t>(k)] = static_cast<int>(s.a.size());
       s.source.push_back(k);
       s.irn.push_back(static_cast<int>(it.row()) + 1);
       s.jcn.push_back(j + 1);
@@ -201,18 +196,15 @@ void MumpsSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   State& s = *state_;
   if (!s.analyzed || s.pattern != pattern_fingerprint(A)) analyze(A);
   s.factorized = false;
-  if (A.isCompressed()) {
-    const double* values = A.valuePtr();
-    for (std::size_t i = 0; i < s.source.size(); ++i)
-      s.a[i] = values[s.source[i]];
-  } else {
-    int k = 0;
-    for (int j = 0; j < A.outerSize(); ++j)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it, ++k) {
-        const int slot = s.slot[static_cast<size_t>(k)];
-        if (slot >= 0) s.a[static_cast<size_t>(slot)] = it.value();
-      }
+  // An uncompressed matrix (no caller of ours passes one) is compressed in a copy first.
+  Eigen::SparseMatrix<double> compressed;
+  if (!A.isCompressed()) {
+    compressed = A;
+    compressed.makeCompressed();
   }
+  const double* values = A.isCompressed() ? A.valuePtr() : compressed.valuePtr();
+  for (std::size_t i = 0; i < s.source.size(); ++i)
+    s.a[i] = values[s.source[i]];
   s.id.a = s.a.data();
 
   const int m = static_cast<int>(s.schur_dofs.size());

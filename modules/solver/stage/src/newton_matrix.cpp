@@ -23,14 +23,13 @@ NewtonMatrix::NewtonMatrix(const SparsityPattern& pattern, const std::vector<cha
     }
   // The reduced pattern: the free rows of the free columns, in order (so still sorted).
   const int free = static_cast<int>(free_dofs_.size());
-  reduced_slot_.assign(inner.size(), -1);
   diagonal_.assign(n, -1);
   std::vector<int> reduced_outer(free + 1, 0), reduced_inner;
   for (int j = 0; j < n; ++j)
     for (int k = outer[j]; k < outer[j + 1]; ++k) {
       if (inner[k] == j) diagonal_[j] = k;
       if (free_index_[j] < 0 || free_index_[inner[k]] < 0) continue;
-      reduced_slot_[k] = static_cast<int>(reduced_inner.size());
+      source_.push_back(k);
       reduced_inner.push_back(free_index_[inner[k]]);
       reduced_outer[free_index_[j] + 1] = static_cast<int>(reduced_inner.size());
     }
@@ -41,10 +40,6 @@ NewtonMatrix::NewtonMatrix(const SparsityPattern& pattern, const std::vector<cha
   std::copy(reduced_outer.begin(), reduced_outer.end(), reduced_.outerIndexPtr());
   std::copy(reduced_inner.begin(), reduced_inner.end(), reduced_.innerIndexPtr());
   std::fill(reduced_.valuePtr(), reduced_.valuePtr() + reduced_inner.size(), 0.0);
-  source_.resize(reduced_inner.size());
-  for (std::size_t k = 0; k < reduced_slot_.size(); ++k)
-    if (reduced_slot_[k] >= 0)
-      source_[static_cast<std::size_t>(reduced_slot_[k])] = static_cast<int>(k);
   moved_ = Eigen::VectorXd::Zero(n);
 
   std::vector<int> first_dofs(nodes_.size());
@@ -101,6 +96,10 @@ Eigen::VectorXd NewtonMatrix::solve(const Eigen::VectorXd& r0,
     if (c < 0) continue; // a Dirichlet dof: not in the reduced matrix
     for (int k = reduced_outer[c]; k < reduced_outer[c + 1]; ++k) {
       const int row = reduced_inner[k];
+      if (row == c) {
+        reduced[k] = held_diagonal(dof);
+        continue;
+      }
       reduced[k] = 0.0;
       // The mirror entry (c, row): the pattern is structurally symmetric.
       const int* end = reduced_inner + reduced_outer[row + 1];
@@ -109,8 +108,6 @@ Eigen::VectorXd NewtonMatrix::solve(const Eigen::VectorXd& r0,
       reduced[at - reduced_inner] = 0.0;
     }
   }
-  for (const auto& [dof, value] : imposed)
-    if (free_index_[dof] >= 0) reduced[reduced_slot_[diagonal_[dof]]] = held_diagonal(dof);
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(free_dofs_.size()));
   for (std::size_t r = 0; r < free_dofs_.size(); ++r)
     rhs[static_cast<Eigen::Index>(r)] = -r0[free_dofs_[r]] - moved_[free_dofs_[r]];

@@ -70,7 +70,6 @@ private:
   std::vector<int> nodes_;                ///< contact node p
   std::vector<int> free_dofs_;            ///< reduced index -> dof
   std::vector<int> free_index_;           ///< dof -> reduced index, -1 for a Dirichlet dof
-  std::vector<int> reduced_slot_;         ///< slot of full_ -> slot of reduced_ (or -1)
   std::vector<int> source_;               ///< slot of reduced_ -> slot of full_
   std::vector<int> diagonal_;             ///< dof -> slot of its diagonal entry
   std::unique_ptr<FrameRotation> frames_; ///< the nodal frames, in place on full_
