@@ -145,6 +145,12 @@ class Runs:
         return {k: v for k, v in runs.items() if v is not None}
 
 
+def runs_under(root):
+    """The runs under root (rest/, the variant, neighbours/), or None where there are none."""
+    runs = Runs(root) if root.is_dir() else None
+    return runs if runs is not None and runs.runs else None
+
+
 def sway(ds):
     """|M| / (|Ry| R_OUT): the moment of the support reactions relative to Ry's lever arm, zero
     on the symmetric branch (the horizontal reaction is zero by equilibrium against a
@@ -707,8 +713,8 @@ def start_section(runs, rest, thesis, out):
              "iteration: held on the wall a frictionless patch can slide but not roll, and after "
              "each step only the nodes at its outer edge are in tension (they leave) and only "
              "those just past its inner edge penetrate (they enter). The travel, in nodes, grows "
-             "with N, and so does the count. The deck starts instead from the small-strain solution of the same problem "
-             "(LOADSTEPS start=small-strain: the tangent at rest, the same Dirichlet data and "
+             "with N, and so does the count. The deck starts instead from the small-strain "
+             "solution of the same problem (LOADSTEPS start=small-strain: the tangent at rest, the same Dirichlet data and "
              "contact elements, solved exactly by PDAS on the condensed contact problem, one "
              "sparse factorization), whose patches lie near their large-deformation place and "
              "no node through the wall; start=rest is the other choice. Neither start is "
@@ -949,13 +955,8 @@ def main():
     maxit = deck_field(runs, "SOLVER", "maxit")
     reference_b = out / "reference" / "case.b"
     reference = read_ds(reference_b) if reference_b.exists() else None
-    rest = Runs(out / "rest") if (out / "rest").is_dir() else None
-    if rest is not None and not rest.runs:
-        rest = None
-    variant_root = out / VARIANT
-    variant = Runs(variant_root) if variant_root.is_dir() else None
-    if variant is not None and not variant.runs:
-        variant = None
+    rest = runs_under(out / "rest")
+    variant = runs_under(out / VARIANT)
     title = "Scene 7b: hyperelastic ring pressed on a rigid foundation"
     lines = [f"# {title}", "",
              "Cells are ours (thesis). Our count is the Newton iterations of the one-step solve "
@@ -972,8 +973,8 @@ def main():
     table_lines, key_table = iteration_tables(runs, thesis)
     lines += table_lines
     lines += claims_section(runs, thesis, checks)
-    neighbours = Runs(out / "neighbours") if (out / "neighbours").is_dir() else None
-    if neighbours is not None and neighbours.runs:
+    neighbours = runs_under(out / "neighbours")
+    if neighbours:
         lines += neighbour_section(runs, neighbours)
     lines += effort_section(runs, out)
     lines += time_table(runs, thesis)
