@@ -16,7 +16,7 @@
 #   search=auto, <method>_<value>), with a line search (search=yes, <method>_<value>_search) and
 #   with full Newton steps (search=no, <method>_<value>_full)
 #   pdas_1e2_from_zero at N = 256: the Newton from u = 0 instead of the rigid shift (a single
-#                                   node touches and holds nothing sideways: shown failing)
+#                                   node touches: the same solution, the count beside)
 #   tresca_pdas_1e2 at N = 256:     the Tresca law with threshold 1 GPa instead of Coulomb
 # Every run starts from the rigid shift u = (0, -h^2 / R), h = pi R / N (the INITIAL card).
 # Then postproc/friction_hertz_report.py OUTDIR writes OUTDIR/report.md, its PNGs and

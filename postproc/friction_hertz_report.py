@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 
 from sigreport import (Checks, Deck, Point, ReportError, Series, Table, fmt, main_guard, pyplot,
-                       read_command, read_summary, run_cell, solve_seconds, speed_accuracy_chart,
-                       write_scene_json)
+                       read_command, read_summary, run_cell, save_figure, solve_seconds,
+                       speed_accuracy_chart, write_report)
 
 plt = pyplot()
 
@@ -264,13 +264,12 @@ def section_zones(runs, data, info, out):
     ax.plot(xa + centre, data.cattaneo(xa), "C0--", lw=0.6, alpha=0.6,
             label="Cattaneo-Mindlin, about our centre")
     ax.set_xlim(c0 - 2 * data.b / 3, c1 + 2 * data.b / 3)
-    ax.set_xlabel("x1")
+    ax.set_xlabel("x1 (m)")
     ax.set_ylabel("traction (GPa)")
     ax.set_title(f"Frictional Hertz, PDAS, N = {n}")
     ax.legend(fontsize=7, loc="upper left")
     fig.tight_layout()
-    fig.savefig(out / f"tractions_N{n}.png", dpi=120)
-    plt.close(fig)
+    save_figure(fig, out / f"tractions_N{n}.png", dpi=120)
     return lines, zones_table
 
 
@@ -350,15 +349,17 @@ def section_stability(runs, info):
     if zero:
         lines += ["", f"From u = 0 instead of the rigid shift (PDAS gamma = 1e2): "
                   f"{iterations_cell(zero)}; {zero['summary']['failure'] or 'converged'}. A single "
-                  f"node touches at u = 0: its first step holds nothing sideways and the body drifts "
-                  f"by the tangential load over the proximal term."]
-    lines += ["", "With full steps, where a stick test t + gamma q_t (or r q_t, q_t / c) sees a "
-              "large slip — a large parameter, a coarse mesh, projection's held-back normals — the "
-              "nodes of the contact zone slip one after the other; once none sticks, a body held "
-              "sideways by friction alone has no tangential stiffness in the step, drifts by the "
-              "tangential load over the proximal term, and the iteration cycles (Nv). The line "
-              "search damps the steps that would raise the residual and keeps a stick zone. "
-              "Bodies held by a Dirichlet condition do not have this mode.", ""]
+                  f"node touches at u = 0: it sticks (the apex of the Coulomb cone on an active "
+                  f"wall belongs to stick), the rotation it does not hold is an unheld step, cut "
+                  f"where the next node touches (solver/contact_newton.hpp)."]
+    lines += ["", "With full steps (search=no), where a stick test t + gamma q_t (or r q_t, q_t / c) "
+              "sees a large slip — a large parameter, a coarse mesh, projection's held-back normals "
+              "— the nodes of the contact zone slip one after the other; once none sticks, a body "
+              "held sideways by friction alone has no tangential stiffness in the step, drifts by "
+              "the tangential load over the proximal term, and the iteration cycles (Nv). The "
+              "globalized steps (search=auto) cut such an unheld step where a node first sticks, and "
+              "shorten the steps that raise the residual over ten times the recent ones. Bodies held "
+              "by a Dirichlet condition do not have this mode.", ""]
     return lines
 
 
@@ -401,8 +402,8 @@ def section_speed_accuracy(runs, info, out):
         series[run["method"]].points.append(
             Point(run["seconds"], et if run["converged"] else None, label))
     speed_accuracy_chart(out / "speed_accuracy.png", [s for s in series.values() if s.points],
-                         xlabel="sig-solve time, s",
-                         ylabel="tangential traction error vs reference",
+                         xlabel="sig-solve time (s)",
+                         ylabel="tangential traction error, max over max (-)",
                          title="Frictional Hertz: speed against accuracy", figsize=(6.5, 4.5),
                          legend_fontsize=7, label_fontsize=6)
     lines += table(["N", "method", "parameter", "iterations", "time s", "pressure error",
@@ -443,11 +444,10 @@ def main():
     lines += section_speed_accuracy(runs, info, out)
     lines += section_stability(runs, info)
     lines += section_tresca(runs, info)
-    (out / "report.md").write_text("\n".join(lines) + "\n")
     n = info["meshes"][-1]
-    write_scene_json(out, "friction_hertz", title, info, checks, key_table=key_table,
-                     charts={"speed_accuracy": "speed_accuracy.png",
-                             "tractions": f"tractions_N{n}.png"})
+    write_report(out, "\n".join(lines) + "\n", "friction_hertz", title, info, checks,
+                 key_table=key_table, charts={"speed_accuracy": "speed_accuracy.png",
+                                              "tractions": f"tractions_N{n}.png"})
     print(f"{out / 'report.md'}: checks {'PASS' if passed else 'FAIL'}")
     return 0 if passed else 1
 

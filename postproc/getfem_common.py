@@ -1,7 +1,9 @@
 """What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py, getfem_friction.py) share:
-a deck's cards (through the report library's deck reader), the version of Debian's
-python3-getfem, the gmsh half disc, our plane-strain elasticity as a GetFEM model, the node
-coordinates of sig-mesh's case.nopo and the nodal weights of the contact nodes."""
+their command line's checks and a quiet GetFEM, a deck's cards (through the report library's
+deck reader), the version of Debian's python3-getfem, the gmsh half disc and its import into
+GetFEM, our plane-strain elasticity as a GetFEM model, the node coordinates of sig-mesh's
+case.nopo and the nodal weights of the contact nodes."""
+import json
 import math
 import subprocess
 
@@ -17,6 +19,28 @@ def deck_cards(path):
     for card in Deck.read(path).cards():
         cards.setdefault(card.keyword, {k: v.lower() for k, v in card.fields.items()})
     return cards
+
+
+def parse_timed_args(parser, fail):
+    """The arguments of a script that times its solves (--repeat, >= 1, else fail(message)),
+    with GetFEM's assembly traces and minor warnings silenced: they would bury the summary line."""
+    import getfem as gf  # only the scripts that run GetFEM need it
+    args = parser.parse_args()
+    if args.repeat < 1:
+        fail("--repeat must be >= 1")
+    gf.util_trace_level(0)
+    gf.util_warning_level(1)
+    return args
+
+
+def print_summary(summary, line, path=None):
+    """Print the summary line of a solve and write the summary as JSON at path (if given); the
+    line's "{solve}" becomes the timed solves' seconds and their median."""
+    times = ", ".join(f"{t:.3f}" for t in summary["solve_seconds"])
+    median = summary["solve_seconds_median"]
+    print(line.replace("{solve}", f"solve {times} s (median {median:.3f})"))
+    if path:
+        path.write_text(json.dumps(summary, indent=1) + "\n")
 
 
 def getfem_version():
@@ -38,6 +62,19 @@ def gmsh_half_disc(geo, workdir, R, n, grading):
     if done.returncode != 0 or not msh.is_file():
         raise RuntimeError(f"gmsh failed ({' '.join(cmd)}):\n{done.stdout}{done.stderr}")
     return msh
+
+
+def import_half_disc(geo, workdir, R, n, grading, regions):
+    """gmsh_half_disc's mesh imported by GetFEM, and the .msh path; RuntimeError with gmsh's
+    output, or when GetFEM's mesh lacks one of the physical `regions`."""
+    import getfem as gf  # only the scripts that run GetFEM need it
+    msh = gmsh_half_disc(geo, workdir, R, n, grading)
+    m = gf.Mesh("import", "gmsh", str(msh))
+    found = set(int(r) for r in np.atleast_1d(m.regions()))
+    if not set(regions) <= found:
+        raise RuntimeError(f"{msh}: GetFEM imported regions {sorted(found)}, expected "
+                           f"{' and '.join(str(r) for r in regions)}")
+    return m, msh
 
 
 def plane_strain_elasticity(m, E, nu, traction, region):

@@ -63,7 +63,6 @@ timed solves of md.solve, each from the same start; only md.solve is timed. Prin
 sig-contact's case.cont).
 """
 import argparse
-import json
 import math
 import statistics
 import sys
@@ -73,8 +72,9 @@ from pathlib import Path
 
 import numpy as np
 
-from getfem_common import (deck_cards, getfem_version, gmsh_half_disc, nopo_coordinates,
-                           plane_strain_elasticity, snap_arc, tributary_lengths)
+from getfem_common import (deck_cards, getfem_version, import_half_disc, nopo_coordinates,
+                           parse_timed_args, plane_strain_elasticity, print_summary, snap_arc,
+                           tributary_lengths)
 
 try:
     import getfem as gf
@@ -171,59 +171,31 @@ def check_mesh(m, nopo):
     return {"nopo": str(nopo), "nodes": len(ours), "max_distance": float(dist.max())}
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--deck", type=Path, help="datafile giving the problem (default: the issue's deck)")
-    parser.add_argument("--n", type=int, help="segments on the arc (default: the deck's, 64)")
-    parser.add_argument("--grading", type=float, help="mesh size growth away from the arc (default: the deck's)")
-    parser.add_argument("--law", choices=("coulomb", "tresca"), help="friction law (default: the deck's)")
-    parser.add_argument("--mu", type=float, help="Coulomb friction coefficient (default: the deck's)")
-    parser.add_argument("--threshold", type=float, help="Tresca bound on |tangential pressure| (default: the deck's)")
-    parser.add_argument("--eps", type=float, help="GetFEM's max_res, relative to the load (default: the deck's eps)")
-    parser.add_argument("--r", type=float, help="augmentation parameter (default E)")
-    parser.add_argument("--version", type=int, default=2, choices=(1, 2, 3),
-                        help="augmentation version of the brick (default 2)")
-    parser.add_argument("--brick", choices=("obstacle", "basic"), default="obstacle",
-                        help="Coulomb through the rigid-obstacle brick (default) or the basic brick")
-    parser.add_argument("--maxit", type=int, default=100, help="Newton iterations (default 100)")
-    parser.add_argument("--repeat", type=int, default=3, help="timed solves (default 3)")
-    parser.add_argument("--json", type=Path, help="write the summary here")
-    parser.add_argument("--workdir", type=Path, help="folder for the gmsh mesh (default: temporary)")
-    parser.add_argument("--nopo", type=Path, help="sig-mesh's case.nopo: check GetFEM has its nodes")
-    parser.add_argument("--noisy", action="store_true", help="print GetFEM's Newton iterations")
-    args = parser.parse_args()
-    if args.repeat < 1:
-        fail("--repeat must be >= 1")
-    gf.util_trace_level(0)
-    gf.util_warning_level(1)
-    d = read_deck(args.deck)
-    for key in ("law", "mu", "threshold", "eps", "grading"):
-        if getattr(args, key) is not None:
-            d[key] = getattr(args, key)
-    if args.n is not None:
-        d["N"] = args.n
-    if d["N"] < 4 or d["N"] % 2:
-        fail(f"N must be even and >= 4, got {d['N']}")
-    if d["law"] not in ("coulomb", "tresca"):
-        fail(f"FRICTION law={d['law']}: coulomb or tresca")
+class Problem:
+    """The GetFEM model of the frictional half disc and what the comparison reads off it."""
+
+
+def build_problem(d, r=None, version=2, brick="obstacle", workdir=None, nopo=None, start=None):
+    """GetFEM's model of the deck's problem d (read_deck) with augmentation r (default E),
+    augmentation `version` and `brick` (obstacle | basic); its unknowns start at `start`, a
+    uniform displacement (default: the deck's INITIAL u, else the rigid shift (0, -h^2/R)).
+    Returns a Problem: md, unknowns (name -> start values), displacement() and the
+    multipliers read as our nodal forces (forces()), the contact nodes' geometry (X, xdof, ydof,
+    order, weights, n, t, gap), the elastic K and F, and max_res for a relative eps."""
     R, E, nu, N, law = d["R"], d["E"], d["nu"], d["N"], d["law"]
     h = math.pi * R / N
-    start_shift = d["start"] or (0.0, -h * h / R)
-    r = args.r if args.r is not None else E
-    basic = law == "tresca" or args.brick == "basic"
+    start_shift = start if start is not None else (d["start"] or (0.0, -h * h / R))
+    r = r if r is not None else E
+    basic = law == "tresca" or brick == "basic"
 
     # 1. The mesh: gmsh on half_disc.geo, imported by GetFEM.
     with tempfile.TemporaryDirectory() as tmp:
-        workdir = args.workdir or Path(tmp)
+        workdir = workdir or Path(tmp)
         workdir.mkdir(parents=True, exist_ok=True)
         try:
-            msh = gmsh_half_disc(GEO, workdir, R, N, d["grading"])
+            m, msh = import_half_disc(GEO, workdir, R, N, d["grading"], (TOP, GAMMA3))
         except RuntimeError as e:
             fail(str(e))
-        m = gf.Mesh("import", "gmsh", str(msh))
-    regions = set(int(v) for v in np.atleast_1d(m.regions()))
-    if not {TOP, GAMMA3} <= regions:
-        fail(f"GetFEM imported regions {sorted(regions)}, expected {TOP} and {GAMMA3}")
     # sig-mesh puts the arc nodes at their exact polar positions; so do we.
     points = np.array(m.pts())
     arc = [int(i) for i in np.atleast_1d(m.pid_in_regions([GAMMA3]))]
@@ -232,11 +204,13 @@ def main():
     except ValueError as e:
         fail(f"{msh.name}: {e}")
     m.set_pts(points)
-    mesh_check = check_mesh(m, args.nopo) if args.nopo else None
+    mesh_check = check_mesh(m, nopo) if nopo else None
 
     # 2. P1 plane-strain elasticity with the traction on the top edge.
     elastic, mfu, mim = plane_strain_elasticity(m, E, nu, d["f"], TOP)
     nbdof = mfu.nbdof()
+    elastic.assembly("build_all")  # K and F of the elastic model alone, at u = 0
+    K, F = elastic.tangent_matrix(), np.asarray(elastic.rhs()).ravel()
 
     # 3. The contact nodes (dof order, as GetFEM's multipliers), their geometry and weights.
     dofs = np.sort(np.asarray(mfu.basic_dof_on_region(GAMMA3)).ravel())
@@ -256,10 +230,8 @@ def main():
     start[0::2], start[1::2] = start_shift
     md = elastic
     if basic:
-        # Explicit model U = (u, z): K and F of the elastic model, assembled at u = 0.
+        # Explicit model U = (u, z): K and F of the elastic model.
         extra = nbc if law == "tresca" else 0
-        elastic.assembly("build_all")
-        K, F = elastic.tangent_matrix(), np.asarray(elastic.rhs()).ravel()
         size = nbdof + extra
         md = gf.Model("real")
         md.add_variable("U", size)
@@ -285,10 +257,10 @@ def main():
         if law == "coulomb":
             md.add_initialized_data("friction_coeff", [d["mu"]])
             md.add_basic_contact_brick("U", "lambda_n", "lambda_t", "r", BN, BT, "friction_coeff",
-                                       "gap", "alpha", args.version)
+                                       "gap", "alpha", version)
         else:
             bound = d["threshold"] * weights  # Tresca: |T_i| <= threshold w_i
-            md.add_basic_contact_brick("U", "lambda_n", "r", BN, "gap", "alpha", args.version)
+            md.add_basic_contact_brick("U", "lambda_n", "r", BN, "gap", "alpha", version)
             BZ = gf.Spmat("empty", nbc, size)
             for j in range(nbc):
                 BZ[j, nbdof + j] = 1.0
@@ -297,7 +269,7 @@ def main():
             md.add_initialized_data("one", [1.0])
             md.add_initialized_data("zero", [0.0])
             md.add_basic_contact_brick("U", "lambda_z", "lambda_t", "r", BZ, BT, "one", "zero",
-                                       "alpha", args.version)
+                                       "alpha", version)
         md.add_explicit_rhs("U", force)
         tangent_sign = 1.0  # BT rows are t
         u_start = np.concatenate([start, np.zeros(extra)])
@@ -311,15 +283,70 @@ def main():
         md.add_initialized_data("r", [r])
         md.add_initialized_data("friction_coeff", [d["mu"]])
         md.add_nodal_contact_with_rigid_obstacle_brick(mim, "u", "lambda_n", "lambda_t", "r", "friction_coeff",
-                                                       GAMMA3, signed_distance(d["point"], n), args.version)
+                                                       GAMMA3, signed_distance(d["point"], n), version)
         tangent_sign = float(getfem_tangent(-n) @ t)
         displacement = lambda: np.asarray(md.variable("u")).ravel()
         unknowns = {"u": start, "lambda_n": np.zeros(nbc), "lambda_t": np.zeros(nbc)}
 
+    p = Problem()
+    p.__dict__.update(md=md, unknowns=unknowns, displacement=displacement, mfu=mfu, m=m, N=N,
+                      R=R, E=E, r=r, law=law, basic=basic, X=X, xdof=xdof, ydof=ydof, nbc=nbc,
+                      order=order, weights=weights, n=n, t=t, gap=gap, start_shift=start_shift,
+                      tangent_sign=tangent_sign, nbdof=nbdof, mesh_check=mesh_check,
+                      elastic=elastic)
+    p.K, p.F = K, F
+
+    def forces():
+        """Our nodal forces (N, T) of GetFEM's multipliers, in GetFEM's contact-node order."""
+        ln = np.asarray(md.variable("lambda_n")).ravel()
+        lt = np.asarray(md.variable("lambda_t")).ravel()
+        return -ln + 0.0, -tangent_sign * lt + 0.0
+    p.forces = forces
     # GetFEM divides its residual by an approximation of the external load, the l1 norm of the
     # source terms (max_res is then relative), but counts no explicit rhs: on the explicit model
     # the residual is absolute, so max_res is scaled by the l1 norm of the same traction load.
-    max_res = d["eps"] * (float(np.abs(F).sum()) if basic else 1.0)
+    p.max_res_scale = float(np.abs(p.F).sum()) if basic else 1.0
+    return p
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--deck", type=Path, help="datafile giving the problem (default: the issue's deck)")
+    parser.add_argument("--n", type=int, help="segments on the arc (default: the deck's, 64)")
+    parser.add_argument("--grading", type=float, help="mesh size growth away from the arc (default: the deck's)")
+    parser.add_argument("--law", choices=("coulomb", "tresca"), help="friction law (default: the deck's)")
+    parser.add_argument("--mu", type=float, help="Coulomb friction coefficient (default: the deck's)")
+    parser.add_argument("--threshold", type=float, help="Tresca bound on |tangential pressure| (default: the deck's)")
+    parser.add_argument("--eps", type=float, help="GetFEM's max_res, relative to the load (default: the deck's eps)")
+    parser.add_argument("--r", type=float, help="augmentation parameter (default E)")
+    parser.add_argument("--version", type=int, default=2, choices=(1, 2, 3),
+                        help="augmentation version of the brick (default 2)")
+    parser.add_argument("--brick", choices=("obstacle", "basic"), default="obstacle",
+                        help="Coulomb through the rigid-obstacle brick (default) or the basic brick")
+    parser.add_argument("--maxit", type=int, default=100, help="Newton iterations (default 100)")
+    parser.add_argument("--repeat", type=int, default=3, help="timed solves (default 3)")
+    parser.add_argument("--json", type=Path, help="write the summary here")
+    parser.add_argument("--workdir", type=Path, help="folder for the gmsh mesh (default: temporary)")
+    parser.add_argument("--nopo", type=Path, help="sig-mesh's case.nopo: check GetFEM has its nodes")
+    parser.add_argument("--noisy", action="store_true", help="print GetFEM's Newton iterations")
+    args = parse_timed_args(parser, fail)
+    d = read_deck(args.deck)
+    for key in ("law", "mu", "threshold", "eps", "grading"):
+        if getattr(args, key) is not None:
+            d[key] = getattr(args, key)
+    if args.n is not None:
+        d["N"] = args.n
+    if d["N"] < 4 or d["N"] % 2:
+        fail(f"N must be even and >= 4, got {d['N']}")
+    if d["law"] not in ("coulomb", "tresca"):
+        fail(f"FRICTION law={d['law']}: coulomb or tresca")
+    R, N, law = d["R"], d["N"], d["law"]
+    p = build_problem(d, args.r, args.version, args.brick, args.workdir, args.nopo)
+    md, unknowns, displacement, r = p.md, p.unknowns, p.displacement, p.r
+    basic, X, xdof, ydof, order, weights = p.basic, p.X, p.xdof, p.ydof, p.order, p.weights
+    n, t, gap, start_shift, tangent_sign = p.n, p.t, p.gap, p.start_shift, p.tangent_sign
+    nbdof, nbc, mesh_check = p.nbdof, p.nbc, p.mesh_check
+    max_res = d["eps"] * p.max_res_scale
     options = ["max_res", max_res, "max_iter", args.maxit, "lsolver", "auto"] + (["noisy"] if args.noisy else [])
 
     def solve():
@@ -383,13 +410,11 @@ def main():
         "mesh_check": mesh_check,
         "nodes": nodes,
     }
-    print(f"GetFEM {summary['getfem_version']}, {law_text}, N = {N}: {nbdof} dofs, Newton {iterations}"
-          f"{'' if converged else ' (NOT converged)'}, solve {', '.join(f'{s:.3f}' for s in times)} s "
-          f"(median {summary['solve_seconds_median']:.3f}), {summary['active_nodes']} in contact "
-          f"(friction {summary['stick_nodes']} S=, {summary['slip_nodes']} S+/S-), "
-          f"resultant ({resultant[0]:.6f}, {resultant[1]:.6f}) against load ({load[0]:g}, {load[1]:g})")
-    if args.json:
-        args.json.write_text(json.dumps(summary, indent=1) + "\n")
+    print_summary(summary, f"GetFEM {summary['getfem_version']}, {law_text}, N = {N}: {nbdof} "
+                  f"dofs, Newton {iterations}{'' if converged else ' (NOT converged)'}, {{solve}}, "
+                  f"{summary['active_nodes']} in contact (friction {summary['stick_nodes']} S=, "
+                  f"{summary['slip_nodes']} S+/S-), resultant ({resultant[0]:.6f}, "
+                  f"{resultant[1]:.6f}) against load ({load[0]:g}, {load[1]:g})", args.json)
     if not converged:
         sys.exit(1)
 

@@ -22,7 +22,6 @@ stiffness is assembled by sig-assemble, outside the times we compare); then K ti
 each from the same start. Only md.solve is timed. Prints a summary; --json writes it.
 """
 import argparse
-import json
 import math
 import statistics
 import sys
@@ -32,8 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
-from getfem_common import (deck_cards, getfem_version, gmsh_half_disc, plane_strain_elasticity,
-                           tributary_lengths)
+from getfem_common import (deck_cards, getfem_version, import_half_disc, parse_timed_args,
+                           plane_strain_elasticity, print_summary, tributary_lengths)
 
 try:
     import getfem as gf
@@ -63,19 +62,6 @@ def read_deck(path):
 
 
 
-def mesh(workdir, R, n, grading):
-    """gmsh half_disc.geo -> msh 2.2 -> gf.Mesh; checks the regions GetFEM imported."""
-    try:
-        msh = gmsh_half_disc(GEO, workdir, R, n, grading)
-    except RuntimeError as e:
-        fail(str(e))
-    m = gf.Mesh("import", "gmsh", str(msh))
-    regions = set(int(r) for r in np.atleast_1d(m.regions()))
-    if not {TOP, GAMMA3} <= regions:
-        fail(f"{msh}: GetFEM imported regions {sorted(regions)}, expected {TOP} and {GAMMA3}")
-    return m
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--n", type=int, default=512, help="segments on the arc (default 512)")
@@ -86,13 +72,9 @@ def main():
     parser.add_argument("--eps", type=float, help="relative residual (default: the deck's eps)")
     parser.add_argument("--json", type=Path, help="write the summary here")
     parser.add_argument("--workdir", type=Path, help="folder for the gmsh mesh (default: temporary)")
-    args = parser.parse_args()
+    args = parse_timed_args(parser, fail)
     if args.n < 4 or args.n % 2:
         fail(f"--n must be even and >= 4, got {args.n}")
-    if args.repeat < 1:
-        fail("--repeat must be >= 1")
-    gf.util_trace_level(0)  # GetFEM's assembly traces would bury the summary line
-    gf.util_warning_level(1)
     deck = read_deck(args.deck)
     R, f, E, nu = deck["R"], deck["f"], deck["E"], deck["nu"]
     if args.grading is None:
@@ -104,7 +86,10 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         workdir = args.workdir or Path(tmp)
         workdir.mkdir(parents=True, exist_ok=True)
-        m = mesh(workdir, R, args.n, args.grading)
+        try:
+            m, _ = import_half_disc(GEO, workdir, R, args.n, args.grading, (TOP, GAMMA3))
+        except RuntimeError as e:
+            fail(str(e))
 
     md, mfu, mim = plane_strain_elasticity(m, E, nu, (0.0, -f), TOP)
     nbdof = mfu.nbdof()
@@ -181,12 +166,10 @@ def main():
         "p0": p0,
         "p_max_rel_error": float((pressure.max() - p0) / p0),
     }
-    print(f"GetFEM {summary['getfem_version']}, N = {args.n}: {nbdof} dofs, Newton {iterations}, "
-          f"solve {', '.join(f'{t:.3f}' for t in times)} s (median {summary['solve_seconds_median']:.3f}), "
-          f"{active} active nodes, resultant {summary['resultant']:.4f} (load {2 * R * f:g}), "
-          f"p_max {summary['p_max']:.4f} ({100 * summary['p_max_rel_error']:+.2f} % vs p0 = {p0:.4f})")
-    if args.json:
-        args.json.write_text(json.dumps(summary, indent=1) + "\n")
+    print_summary(summary, f"GetFEM {summary['getfem_version']}, N = {args.n}: {nbdof} dofs, "
+                  f"Newton {iterations}, {{solve}}, {active} active nodes, resultant "
+                  f"{summary['resultant']:.4f} (load {2 * R * f:g}), p_max {summary['p_max']:.4f} "
+                  f"({100 * summary['p_max_rel_error']:+.2f} % vs p0 = {p0:.4f})", args.json)
 
 
 if __name__ == "__main__":

@@ -28,7 +28,6 @@ sum of the contact forces (global equilibrium). K timed solves of all the load s
 u = 0 (only md.solve is timed). Prints a summary; --json writes it.
 """
 import argparse
-import json
 import math
 import statistics
 import sys
@@ -37,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-from getfem_common import deck_cards, getfem_version
+from getfem_common import deck_cards, getfem_version, parse_timed_args, print_summary
 
 try:
     import getfem as gf
@@ -113,11 +112,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=3, help="timed solves (default 3)")
     parser.add_argument("--eps", type=float, help="relative residual (default: the deck's eps)")
     parser.add_argument("--json", type=Path, help="write the summary here")
-    args = parser.parse_args()
-    if args.repeat < 1:
-        fail("--repeat must be >= 1")
-    gf.util_trace_level(0)
-    gf.util_warning_level(1)
+    args = parse_timed_args(parser, fail)
     d = read_deck(args.deck)
     if args.n is not None:
         d["N"] = args.n
@@ -210,14 +205,11 @@ def main():
         "reaction_y": reaction[1],
         "contact_force_sum": float(contact_force.sum()),
     }
-    print(f"GetFEM {summary['getfem_version']}, N = {d['N']}: {summary['dofs']} dofs, Newton "
-          f"{summary['newton_iterations']} (per step {per_step}), solve "
-          f"{', '.join(f'{t:.3f}' for t in summary['solve_seconds'])} s (median "
-          f"{summary['solve_seconds_median']:.3f}), reaction ({reaction[0]:.4g}, {reaction[1]:.6g}), "
-          f"contact forces sum {summary['contact_force_sum']:.6g}"
-          f"{'' if converged else ', NOT converged'}")
-    if args.json:
-        args.json.write_text(json.dumps(summary, indent=1) + "\n")
+    print_summary(summary, f"GetFEM {summary['getfem_version']}, N = {d['N']}: {summary['dofs']} "
+                  f"dofs, Newton {summary['newton_iterations']} (per step {per_step}), {{solve}}, "
+                  f"reaction ({reaction[0]:.4g}, {reaction[1]:.6g}), contact forces sum "
+                  f"{summary['contact_force_sum']:.6g}{'' if converged else ', NOT converged'}",
+                  args.json)
 
 
 if __name__ == "__main__":

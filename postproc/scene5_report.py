@@ -12,63 +12,65 @@ sig-error) and writes OUTDIR/report.md, its charts (PNG) and OUTDIR/scene.json:
   - the checks (PASS / FAIL, also in scene.json).
 """
 import csv
-import json
+import functools
 import math
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from sigreport import (Checks, MapCell, MapPanel, Point, ReportError, Series, Table,  # noqa: E402
-                       find_pvd, fmt, load_thesis, main_guard, ours_thesis, pyplot,
-                       read_command, read_deck, read_ds,
-                       speed_accuracy_chart, stability_map, within, write_scene_json)
+from sigreport import (Checks, MapCell, MapPanel, March, Point, ReportError, Series,  # noqa: E402
+                       Table, find_pvd, fmt, load_thesis, loglog_slope, main_guard,
+                       ours_thesis, pyplot, read_command, read_error, save_figure,
+                       speed_accuracy_chart, stability_map, within, write_report)
 
 LOADS = {"P": "printed f2 = (0, -10 t)", "R": "rescaled f2 = (0, -t)"}
 HIST_ARRAYS = ["converged", "failure", "k", "T", "steps", "time_march", "time_factorize",
                "sparse_factorizations", "dense_factorizations", "newton_iterations",
                "step_converged", "contact_node", "weight", "velocity_n", "displacement_n",
                "force_n", "normal_status", "friction_status", "output_step", "ndof"]
+REQUIRED = ("command", "g_series", "c_series", "mu_series", "rhos", "nested", "reference",
+            "speed_meshes", "map_k", "map_c", "map_g")
 FREE, RNI, CUV = 0, 1, 2
 NONE, STICK, SLIP_PLUS, SLIP_MINUS = 0, 1, 2, 3
+TIMES_54 = [0.3, 0.5, 0.7, 1.0]
+TIMES_53 = [0.1, 0.3, 0.5, 0.7, 1.0]
+# Fig 5.7's thesis key: its labels are ambiguous (ALGORITHMS.md 2.5 item 6), read in this order.
+FIG57_KEY = "fig5.7 g=0.05 t=1 c in 0.01/5/8/12/15/20 (order as extracted; layout ambiguous)"
+FIG57_C = ["0.01", "5", "8", "12", "15", "20"]
+# ALGORITHMS.md 2.5 item 1 [check]: an independent numpy solver's RNI counts, frictionless, R.
+CHECK_54 = [63, 52, 38, 36]
+CHECK_55 = {"0.001": 2, "0.01": 16, "0.05": 36, "0.1": 63}
+CHECK_57 = {"0.01": 36, "5": 36, "8": 36, "12": 36, "15": 38, "20": 50}
+ERROR_VARIANTS = [
+    ("the printed deck, whole strip (the check above)", "fig512/n", "error.json"),
+    ("the printed deck, on [1, 4] x [0, 1] only", "fig512/n", "error_interior.json"),
+    ("the clamped elastic strip alone, whole strip", "fig512/elastic/n", "error.json"),
+    ("the clamped elastic strip alone, on [1, 4] x [0, 1]", "fig512/elastic/n",
+     "error_interior.json"),
+    ("[variant] rollers on Gamma1, whole strip", "fig512/rollers/n", "error.json"),
+    ("[variant] rollers on Gamma1, on [1, 4] x [0, 1]", "fig512/rollers/n",
+     "error_interior.json")]
 
 
-class Run:
-    """One run folder of the driver: its deck, case.hist (sig-dump) and error.json."""
+class Run(March):
+    """One run folder of the driver: its deck strip.dat, case.hist (sig-dump) and error.json."""
 
     def __init__(self, folder):
-        self.dir = Path(folder)
-        hist = self.dir / "case.hist"
-        if not hist.is_file():
-            raise ReportError(f"{hist} is missing: the run failed (see its march.log)")
-        self.ds = read_ds(hist, arrays=HIST_ARRAYS)
-        self.deck = read_deck(self.dir / "strip.dat")
-        self.k = self.ds.scalar("k")
-        self.converged = bool(self.ds.scalar("converged"))
-        self.failure = self.ds.get("failure", "")
+        super().__init__(folder, "strip.dat", HIST_ARRAYS)
         self.iterations = self.ds.array("newton_iterations")[1:]
-        self.p = len(self.ds["contact_node"])
         nx = int(self.deck.number("MESH", "nx"))
         lx = self.deck.number("MESH", "lx")
         # The rectangle generator numbers the bottom row's corners first, left to right.
         nodes = [n - 1 for n in self.ds["contact_node"]]
         if max(nodes) > nx:
-            raise ReportError(f"{hist}: contact nodes beyond the bottom row of the mesh")
+            raise ReportError(f"{self.dir / 'case.hist'}: contact nodes beyond the bottom row of "
+                              "the mesh")
         self.x = [lx * n / nx for n in nodes]
-        self.weight = self.ds.array("weight")
         self.g = self.deck.number("CONTACT", "g")
-        self._u = None
 
-    def rows(self, name):
-        return self.ds.array(name).reshape(-1, self.p)
-
-    def step_of(self, t):
-        """The step of the time level nearest to t."""
-        return int(round(t / self.k))
-
-    def done(self):
-        return len(self.iterations)
-
-    def counts(self, n):
+    def counts(self, n=None):
+        """The status counts of step n (the last by default)."""
+        n = self.steps_done() if n is None else n
         normal, friction = self.rows("normal_status")[n], self.rows("friction_status")[n]
         return {"RNI": int((normal == RNI).sum()), "CUV": int((normal == CUV).sum()),
                 "free": int((normal == FREE).sum()), "stick": int((friction == STICK).sum()),
@@ -83,18 +85,12 @@ class Run:
         return [count(RNI, SLIP_MINUS), count(CUV, SLIP_MINUS), count(CUV, STICK),
                 count(CUV, SLIP_PLUS), count(RNI, SLIP_PLUS)]
 
-    def u(self):
-        if self._u is None:
-            ds = read_ds(self.dir / "case.hist", arrays=["u", "output_step"])
-            self._u = (ds.array("u").reshape(len(ds["output_step"]), -1), list(ds["output_step"]))
-        return self._u
-
     def measures(self, n):
         """ALGORITHMS.md 2.3: max_i u_nu,i = sum of k v_i (the normal displacement the damper and
         the bound allow, <= g t), the largest downward displacement in the body (from the kept
         state of step n) and the largest contact pressure."""
         u_nu = float(self.rows("displacement_n")[n].max())
-        states, kept = self.u()
+        states, kept = self.states()
         vertical = float(-states[kept.index(n)][1::2].min()) if n in kept else None
         pressure = float((self.rows("force_n")[n] / self.weight).max())
         return u_nu, vertical, pressure
@@ -102,20 +98,45 @@ class Run:
     def profile(self, n):
         return self.x, self.rows("velocity_n")[n]
 
-    def seconds(self):
-        """sig-march's factorization (frames, Schur complement, dense Cholesky) and march."""
-        return self.ds.scalar("time_factorize") + self.ds.scalar("time_march")
 
-    def error(self):
-        path = self.dir / "error.json"
-        return json.loads(path.read_text()) if path.is_file() else None
+class Scene:
+    """OUT of drivers/scene5.sh: command.txt and its series, the runs (each read once), the
+    checks and charts the sections add."""
 
+    def __init__(self, out):
+        self.out = Path(out)
+        self.info = info = read_command(out, required=REQUIRED)
+        self.thesis = load_thesis().scene("5")
+        self.g_series, self.c_series = info["g_series"].split(), info["c_series"].split()
+        self.mu_series, self.rhos = info["mu_series"].split(), info["rhos"].split()
+        self.nested, self.reference = info["nested"].split(), info["reference"]
+        self.checks, self.charts = Checks(), {}
 
-def slope(xs, ys):
-    """Least-squares slope of log y against log x."""
-    lx, ly = [math.log(x) for x in xs], [math.log(y) for y in ys]
-    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
-    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum((a - mx) ** 2 for a in lx)
+    @functools.cache
+    def run(self, name):
+        return Run(self.out / name)
+
+    def rni_penetration(self, key):
+        """The thesis's "RNI / penetration max" of a key, as its two parts (None, None when
+        absent)."""
+        value = self.thesis.get("rni_penetration", key)
+        return value.split("/") if value else (None, None)
+
+    def fig57(self, c):
+        """Fig 5.7's "RNI / penetration" of cn = c, as two parts (None, None when absent)."""
+        value = self.thesis.get("rni_penetration", FIG57_KEY)
+        by_c = dict(zip(FIG57_C, value.split())) if value else {}
+        return by_c[c].split("/") if c in by_c else (None, None)
+
+    def error_series(self, folder, name="error.json"):
+        """(h, error) of the nested meshes whose folder FOLDER<n> has the error file `name`."""
+        hs, es = [], []
+        for n in self.nested:
+            e = read_error(self.out / f"{folder}{n}", name)
+            if e is not None:
+                hs.append(1 / int(n))
+                es.append(e["error"])
+        return hs, es
 
 
 def compare(a, b, close=0.05):
@@ -125,257 +146,245 @@ def compare(a, b, close=0.05):
     return f"within {close} of" if abs(a - b) <= close else ("below" if a < b else "above")
 
 
-def main():
-    out = Path(sys.argv[1] if len(sys.argv) > 1 else "out/scene5")
-    info = read_command(out, required=("command", "g_series", "c_series", "mu_series", "rhos",
-                                       "nested", "reference", "speed_meshes", "map_k", "map_c",
-                                       "map_g"))
-    thesis = load_thesis().scene("5")
-    g_series, c_series = info["g_series"].split(), info["c_series"].split()
-    mu_series, rhos = info["mu_series"].split(), info["rhos"].split()
-    nested, reference = info["nested"].split(), info["reference"]
-    checks = Checks()
-    plt = pyplot()
-    runs = {}
+def rates(errors):
+    """The rates between successive meshes halving h."""
+    return [math.log(a / b) / math.log(2) for a, b in zip(errors, errors[1:])]
 
-    def run(name):
-        if name not in runs:
-            runs[name] = Run(out / name)
-        return runs[name]
 
-    def cell(value, printed):
-        return ours_thesis(value, printed)
+# --- Sections ----------------------------------------------------------------------------------
 
-    report = []
-    w = report.append
-    base = run("fig52/P")
-    w("# Scene 5: quasistatic Kelvin-Voigt strip, damped foundation with a velocity bound, "
-      "Coulomb in velocity (Figs 5.2-5.12)\n")
-    w(f"Command: `{info['command']}` ({info.get('seconds', '?')} s of runs; {info.get('date', '')},"
-      f" {info.get('host', '')}, revision {info.get('revision', '?')}). Every number below comes "
-      "from these runs (`out/scene5/<figure>/<load>/<run>/`: the deck variant `strip.dat`, "
-      "`case.hist`, `steps.csv`, and `strip.pvd` where ParaView files were written).\n")
+def section_head(scene):
+    info, thesis, base = scene.info, scene.thesis, scene.run("fig52/P")
     ndof = int(base.ds.scalar("ndof"))
-    w("## What it models and why\n")
-    w("The cross-section (0,5) x (0,1) of a long viscoelastic strip (thesis ch. 5.5, l.9754-10295),"
-      " clamped on both vertical sides, loaded on its top by f2 = (0, -10 t) GPa, its bottom on a "
-      "foundation that responds to the normal *velocity*: a damper p(v) = cn [v]+ while v < g, the "
-      "unilateral bound v <= g beyond (1.28), Coulomb friction on the damper's force only (5.6). "
-      "Kelvin-Voigt: A = (eta1, eta2) = (0.25, 0.5) GPa s, B Hooke E = 100 GPa, nu = 0.3, no memory "
-      "(as every figure of the thesis; the code's memory term is tested on the oedometric column, "
-      "tests/integrator/test_quasistatic.cpp). 2D plane strain (the printed formula), small strain,"
-      " quasistatic: backward Euler in velocity (5.62)-(5.64), each step's unknown the velocity "
-      "w_n; the step matrix A + k B is factorized and condensed onto the 63 contact nodes once for "
-      "the whole march (`sig-march` scheme=quasistatic). Every choice the thesis leaves open is a "
-      "comment of `datafiles/scene5/strip.dat` (ALGORITHMS.md 0 and 2).\n")
-    w(f"Mesh: the union-jack 64 x 12 cells (ALGORITHMS.md 0.2): 3072 triangles, {ndof} "
-      f"displacement dofs + 2 x 64 multipliers = {ndof + 128} (thesis "
-      f"{thesis.get('mesh', 'h=1/64: triangles/contact elements/dofs')}: triangles / contact "
-      f"elements / dofs); {base.p} contact elements, one per free Gamma3 node (the corners are "
-      "clamped). k = 1/64.\n")
+    return [
+        "# Scene 5: quasistatic Kelvin-Voigt strip, damped foundation with a velocity bound, "
+        "Coulomb in velocity (Figs 5.2-5.12)\n",
+        f"Command: `{info['command']}` ({info.get('seconds', '?')} s of runs; {info.get('date', '')},"
+        f" {info.get('host', '')}, revision {info.get('revision', '?')}). Every number below comes "
+        "from these runs (`out/scene5/<figure>/<load>/<run>/`: the deck variant `strip.dat`, "
+        "`case.hist`, `steps.csv`, and `strip.pvd` where ParaView files were written).\n",
+        "## What it models and why\n",
+        "The cross-section (0,5) x (0,1) of a long viscoelastic strip (thesis ch. 5.5, l.9754-10295),"
+        " clamped on both vertical sides, loaded on its top by f2 = (0, -10 t) GPa, its bottom on a "
+        "foundation that responds to the normal *velocity*: a damper p(v) = cn [v]+ while v < g, the "
+        "unilateral bound v <= g beyond (1.28), Coulomb friction on the damper's force only (5.6). "
+        "Kelvin-Voigt: A = (eta1, eta2) = (0.25, 0.5) GPa s, B Hooke E = 100 GPa, nu = 0.3, no memory "
+        "(as every figure of the thesis; the code's memory term is tested on the oedometric column, "
+        "tests/integrator/test_quasistatic.cpp). 2D plane strain (the printed formula), small strain,"
+        " quasistatic: backward Euler in velocity (5.62)-(5.64), each step's unknown the velocity "
+        "w_n; the step matrix A + k B is factorized and condensed onto the 63 contact nodes once for "
+        "the whole march (`sig-march` scheme=quasistatic). Every choice the thesis leaves open is a "
+        "comment of `datafiles/scene5/strip.dat` (ALGORITHMS.md 0 and 2).\n",
+        f"Mesh: the union-jack 64 x 12 cells (ALGORITHMS.md 0.2): 3072 triangles, {ndof} "
+        f"displacement dofs + 2 x 64 multipliers = {ndof + 128} (thesis "
+        f"{thesis.get('mesh', 'h=1/64: triangles/contact elements/dofs')}: triangles / contact "
+        f"elements / dofs); {base.p} contact elements, one per free Gamma3 node (the corners are "
+        "clamped). k = 1/64.\n"]
 
-    # ---- Key table: Fig 5.2 and Fig 5.4 ------------------------------------------------------
-    w("## Status counts beside the thesis\n")
-    w("Two loads, every figure with both: **P** the printed data, **R** the labelled variant "
-      "f2 = (0, -t) *rescaled to match the thesis statuses*. ALGORITHMS.md 2.5 item 1: with the "
-      "printed load the damper carries at most cn g L = 2.5 GN/m while the load is 25 GN/m at "
-      "t = 0.5, so most of Gamma3 must sit on the bound (CUV), and the printed \"63 RNI at "
-      "t = 0.5\" cannot happen; the problem is positively homogeneous in (load, g, velocity), so R "
-      "is the printed load with every g ten times larger. Cells: ours (thesis).\n")
-    printed = thesis.get("rni_cuv", "fig5.2 g=0.01 c=10 mu=0.2 t=1")
+
+def section_key(scene):
+    """The status counts of Figs 5.2 and 5.4 beside the thesis, and that table (the key table)."""
+    printed = scene.thesis.get("rni_cuv", "fig5.2 g=0.01 c=10 mu=0.2 t=1")
     key = Table(["load", "Fig 5.2 RNI / CUV (t = 1)", "Fig 5.4 RNI t = 0.3", "t = 0.5", "t = 0.7",
                  "t = 1"], caption="Figs 5.2 and 5.4: nodes in RNI (and CUV), ours (thesis)")
-    times54 = [0.3, 0.5, 0.7, 1.0]
     for L in LOADS:
-        r52, r54 = run(f"fig52/{L}"), run(f"fig53/{L}/c10")
-        c = r52.counts(r52.done())
-        row = [f"{L}: {LOADS[L]}", cell(f"{c['RNI']} / {c['CUV']}", printed)]
-        for t in times54:
-            th = thesis.get("rni_penetration", f"fig5.4 g=0.05 c=10 t={t:g}")
-            row.append(cell(r54.counts(r54.step_of(t))["RNI"], th.split("/")[0] if th else None))
-        key.add(*row)
-    w(key.markdown() + "\n")
-    w("t = 0.3 and 0.7 are not time levels of k = 1/64: the columns show steps 19 (t = 0.297) "
-      "and 45 (t = 0.703), the nearest (ALGORITHMS.md 2.3).\n")
+        r52, r54 = scene.run(f"fig52/{L}"), scene.run(f"fig53/{L}/c10")
+        c = r52.counts()
+        key.add(f"{L}: {LOADS[L]}", ours_thesis(f"{c['RNI']} / {c['CUV']}", printed),
+                *[ours_thesis(r54.counts(r54.step(t))["RNI"],
+                              scene.rni_penetration(f"fig5.4 g=0.05 c=10 t={t:g}")[0])
+                  for t in TIMES_54])
+    return ["## Status counts beside the thesis\n",
+            "Two loads, every figure with both: **P** the printed data, **R** the labelled variant "
+            "f2 = (0, -t) *rescaled to match the thesis statuses*. ALGORITHMS.md 2.5 item 1: with the "
+            "printed load the damper carries at most cn g L = 2.5 GN/m while the load is 25 GN/m at "
+            "t = 0.5, so most of Gamma3 must sit on the bound (CUV), and the printed \"63 RNI at "
+            "t = 0.5\" cannot happen; the problem is positively homogeneous in (load, g, velocity), so R "
+            "is the printed load with every g ten times larger. Cells: ours (thesis).\n",
+            key.markdown() + "\n",
+            "t = 0.3 and 0.7 are not time levels of k = 1/64: the columns show steps 19 (t = 0.297) "
+            "and 45 (t = 0.703), the nearest (ALGORITHMS.md 2.3).\n"], key
 
-    # ---- Three displacement measures ----------------------------------------------------------
-    w("### The three displacement measures beside the thesis's \"penetration max\"\n")
-    w("The thesis prints a \"penetration max\" of 0.46 m for g = 0.05 m/s over 1 s, more than "
-      "g T: it cannot be the displacement the velocity bound allows. ALGORITHMS.md 2.3 asks for "
-      "three measures: **u_nu** = max_i sum_n k v_i,n (the bottom's normal displacement, <= g t "
-      "by construction), **u_max** the largest downward displacement in the body, **p_max** the "
-      "largest contact pressure (GPa). 2.5 item 1 [check]: 10 u_max of the rescaled load follows "
-      "Fig 5.4's numbers (the problem is homogeneous: R's u_max x 10 is the printed load's with "
-      "g x 10).\n")
+
+def measure_row(scene, figure, case, name, t, printed_text):
+    """A row of the measures table: u_nu / u_max / p_max of each load at time t, R's 10 u_max."""
+    row = [figure, case, printed_text or "—"]
+    tenfold = None
+    for L in LOADS:
+        r = scene.run(name.format(L=L))
+        u_nu, u_max, p_max = r.measures(r.step(t))
+        row.append(f"{fmt(u_nu, 3)} / {fmt(u_max, 3)} / {fmt(p_max, 3)}")
+        if L == "R":
+            tenfold = 10 * u_max if u_max is not None else None
+    return row + [fmt(tenfold, 3)]
+
+
+def section_measures(scene):
     measures = Table(["figure", "case", "thesis penetration max (m)"] +
                      [f"{L}: u_nu / u_max / p_max" for L in LOADS] + ["R: 10 u_max"])
+    for t in TIMES_54:
+        printed = scene.rni_penetration(f"fig5.4 g=0.05 c=10 t={t:g}")[1]
+        measures.add(*measure_row(scene, "5.4", f"t = {t:g}", "fig53/{L}/c10", t, printed))
+    for g in scene.g_series:
+        printed = scene.rni_penetration(f"fig5.5 c=10 t=1 g={g}")[1]
+        measures.add(*measure_row(scene, "5.5", f"g = {g}", "fig55/{L}/g" + g, 1.0, printed))
+    for c in scene.c_series:
+        measures.add(*measure_row(scene, "5.7", f"cn = {c}", "fig57/{L}/c" + c, 1.0,
+                                  scene.fig57(c)[1]))
+    return ["### The three displacement measures beside the thesis's \"penetration max\"\n",
+            "The thesis prints a \"penetration max\" of 0.46 m for g = 0.05 m/s over 1 s, more than "
+            "g T: it cannot be the displacement the velocity bound allows. ALGORITHMS.md 2.3 asks for "
+            "three measures: **u_nu** = max_i sum_n k v_i,n (the bottom's normal displacement, <= g t "
+            "by construction), **u_max** the largest downward displacement in the body, **p_max** the "
+            "largest contact pressure (GPa). 2.5 item 1 [check]: 10 u_max of the rescaled load follows "
+            "Fig 5.4's numbers (the problem is homogeneous: R's u_max x 10 is the printed load's with "
+            "g x 10).\n", measures.markdown() + "\n"]
 
-    def measure_row(figure, case, name, t, printed_text):
-        row = [figure, case, printed_text or "—"]
-        tenfold = None
-        for L in LOADS:
-            r = run(name.format(L=L))
-            u_nu, u_max, p_max = r.measures(r.step_of(t))
-            row.append(f"{fmt(u_nu, 3)} / {fmt(u_max, 3)} / {fmt(p_max, 3)}")
-            if L == "R":
-                tenfold = 10 * u_max if u_max is not None else None
-        row.append(fmt(tenfold, 3))
-        measures.add(*row)
 
-    for t in times54:
-        th = thesis.get("rni_penetration", f"fig5.4 g=0.05 c=10 t={t:g}")
-        measure_row("5.4", f"t = {t:g}", "fig53/{L}/c10", t, th.split("/")[1] if th else None)
-    for g in g_series:
-        th = thesis.get("rni_penetration", f"fig5.5 c=10 t=1 g={g}")
-        measure_row("5.5", f"g = {g}", "fig55/{L}/g" + g, 1.0, th.split("/")[1] if th else None)
-    fig57 = thesis.get("rni_penetration", "fig5.7 g=0.05 t=1 c in 0.01/5/8/12/15/20 (order as "
-                       "extracted; layout ambiguous)")
-    fig57_by_c = dict(zip(["0.01", "5", "8", "12", "15", "20"], fig57.split())) if fig57 else {}
-    for c in c_series:
-        th = fig57_by_c.get(c)
-        measure_row("5.7", f"cn = {c}", "fig57/{L}/c" + c, 1.0, th.split("/")[1] if th else None)
-    w(measures.markdown() + "\n")
-
-    # ---- Figs 5.5, 5.7, 5.9, 5.10 --------------------------------------------------------------
-    w("### Figs 5.5, 5.7, 5.9, 5.10 (t = 1)\n")
-    series = Table(["figure", "case"] + [f"{L}: RNI" for L in LOADS] +
-                   [f"{L}: CUV" for L in LOADS])
-    for g in g_series:
-        th = thesis.get("rni_penetration", f"fig5.5 c=10 t=1 g={g}")
-        cells = [cell(run(f"fig55/{L}/g{g}").counts(run(f"fig55/{L}/g{g}").done())["RNI"],
-                      th.split("/")[0] if th else None) for L in LOADS]
-        series.add("5.5", f"g = {g}", *cells,
-                   *[run(f"fig55/{L}/g{g}").counts(run(f"fig55/{L}/g{g}").done())["CUV"]
-                     for L in LOADS])
-    for c in c_series:
-        th = fig57_by_c.get(c)
-        rs = [run(f"fig57/{L}/c{c}") for L in LOADS]
-        series.add("5.7", f"cn = {c}",
-                   *[cell(r.counts(r.done())["RNI"], th.split("/")[0] if th else None)
-                     for r in rs], *[r.counts(r.done())["CUV"] for r in rs])
-    w(series.markdown() + "\n")
-    w("Fig 5.7's labels are ambiguous in the thesis's layout (ALGORITHMS.md 2.5 item 6): the "
-      "thesis column follows the assignment RNI rising with cn.\n")
+def friction_table(scene):
+    """Fig 5.9: RNI, stick and slip counts against mu."""
     friction = Table(["mu"] + [f"{L}: RNI" for L in LOADS] + [f"{L}: stick (S=)" for L in LOADS] +
                      [f"{L}: S+ / S-" for L in LOADS])
-    for mu in mu_series:
+    for mu in scene.mu_series:
         key_mu = "fig5.9 g=0.05 c=10 t=1 mu=0" if float(mu) == 0 else f"fig5.9 mu={float(mu):.1f}"
-        th = thesis.get("rni_penetration_stick", key_mu)
+        th = scene.thesis.get("rni_penetration_stick", key_mu)
         parts = th.split("/") if th else [None, None, None]
-        rs = [run(f"fig59/{L}/mu{mu}") for L in LOADS]
-        cs = [r.counts(r.done()) for r in rs]
-        friction.add(mu, *[cell(c["RNI"], parts[0]) for c in cs],
-                     *[cell(c["stick"], parts[2]) for c in cs],
+        cs = [scene.run(f"fig59/{L}/mu{mu}").counts() for L in LOADS]
+        friction.add(mu, *[ours_thesis(c["RNI"], parts[0]) for c in cs],
+                     *[ours_thesis(c["stick"], parts[2]) for c in cs],
                      *[f"{c['S+']} / {c['S-']}" for c in cs])
-    w("Fig 5.9: g = 0.05, cn = 10, t = 1, the friction bound mu p(min(v, g)) (bound=compliance):\n")
-    w(friction.markdown() + "\n")
-    if "0.6" in mu_series:
-        th = thesis.get("status_counts", "fig5.10 mu=0.6: RNI/S- CUV/S- CUV/S= CUV/S+ RNI/S+")
-        parts = th.split("/") if th else [None] * 5
-        groups = Table(["load", "RNI/S-", "CUV/S-", "CUV/S=", "CUV/S+", "RNI/S+"])
-        for L in LOADS:
-            r = run(f"fig59/{L}/mu0.6")
-            groups.add(L, *[cell(v, t) for v, t in zip(r.groups(r.done()), parts)])
-        w("Fig 5.10 (mu = 0.6): the five groups along Gamma3, left to right:\n")
-        w(groups.markdown() + "\n")
+    return friction
 
-    # ---- Profiles: Figs 5.3, 5.6, 5.8 ----------------------------------------------------------
-    w("## Normal-velocity profiles (Figs 5.3, 5.6, 5.8)\n")
-    profile_charts = {}
 
-    def profiles(name, cases, title):
-        rows = (len(cases) + 1) // 2
-        fig, axes = plt.subplots(rows, 2, figsize=(10.5, 3.6 * rows), squeeze=False)
-        for ax, (panel, curves) in zip(axes.flat, cases):
-            for label, r, n in curves:
-                x, v = r.profile(n)
-                ax.plot(x, v, marker=".", markersize=3, label=label)
-            ax.set_title(panel, fontsize=9)
-            ax.set_xlabel("x1 (m)")
-            ax.set_ylabel("normal velocity (m/s)")
-            ax.grid(alpha=0.3)
-            ax.legend(fontsize=7)
-        fig.suptitle(title, fontsize=10)
-        fig.tight_layout()
-        fig.savefig(out / name, dpi=110)
-        plt.close(fig)
-        profile_charts[name.removesuffix(".png")] = name
-        w(f"![{title}]({name})\n")
+def groups_section(scene):
+    """Fig 5.10 (mu = 0.6): the five groups along Gamma3, when mu = 0.6 was run."""
+    if "0.6" not in scene.mu_series:
+        return []
+    th = scene.thesis.get("status_counts", "fig5.10 mu=0.6: RNI/S- CUV/S- CUV/S= CUV/S+ RNI/S+")
+    parts = th.split("/") if th else [None] * 5
+    groups = Table(["load", "RNI/S-", "CUV/S-", "CUV/S=", "CUV/S+", "RNI/S+"])
+    for L in LOADS:
+        r = scene.run(f"fig59/{L}/mu0.6")
+        groups.add(L, *[ours_thesis(v, t) for v, t in zip(r.groups(r.steps_done()), parts)])
+    return ["Fig 5.10 (mu = 0.6): the five groups along Gamma3, left to right:\n",
+            groups.markdown() + "\n"]
 
-    times53 = [0.1, 0.3, 0.5, 0.7, 1.0]
+
+def section_series(scene):
+    series = Table(["figure", "case"] + [f"{L}: RNI" for L in LOADS] +
+                   [f"{L}: CUV" for L in LOADS])
+    for figure, name, values, label, thesis_of in (
+            ("5.5", "fig55/{L}/g", scene.g_series, "g",
+             lambda v: scene.rni_penetration(f"fig5.5 c=10 t=1 g={v}")[0]),
+            ("5.7", "fig57/{L}/c", scene.c_series, "cn", lambda v: scene.fig57(v)[0])):
+        for v in values:
+            counts = [scene.run(name.format(L=L) + v).counts() for L in LOADS]
+            series.add(figure, f"{label} = {v}", *[ours_thesis(c["RNI"], thesis_of(v))
+                                                   for c in counts],
+                       *[c["CUV"] for c in counts])
+    return ["### Figs 5.5, 5.7, 5.9, 5.10 (t = 1)\n", series.markdown() + "\n",
+            "Fig 5.7's labels are ambiguous in the thesis's layout (ALGORITHMS.md 2.5 item 6): the "
+            "thesis column follows the assignment RNI rising with cn.\n",
+            "Fig 5.9: g = 0.05, cn = 10, t = 1, the friction bound mu p(min(v, g)) "
+            "(bound=compliance):\n", friction_table(scene).markdown() + "\n"] + groups_section(scene)
+
+
+def profile_figure(path, cases, title):
+    """Normal-velocity profiles: one panel per (panel title, [(label, run, step)])."""
+    rows = (len(cases) + 1) // 2
+    fig, axes = pyplot().subplots(rows, 2, figsize=(10.5, 3.6 * rows), squeeze=False)
+    for ax, (panel, curves) in zip(axes.flat, cases):
+        for label, r, n in curves:
+            x, v = r.profile(n)
+            ax.plot(x, v, marker=".", markersize=3, label=label)
+        ax.set_title(panel, fontsize=9)
+        ax.set_xlabel("x1 (m)")
+        ax.set_ylabel("normal velocity (m/s)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    return save_figure(fig, path).name
+
+
+def section_profiles(scene):
+    run = scene.run
     cases53 = []
     for L in LOADS:
         for c in (20, 10):
             r = run(f"fig53/{L}/c{c}")
             cases53.append((f"{L}, cn = {c}, g = 0.05",
-                            [(f"t = {r.step_of(t) * r.k:.3g}", r, r.step_of(t)) for t in times53]))
-    profiles("fig53_profiles.png", cases53, "Fig 5.3: normal velocity on Gamma3 in time")
-    profiles("fig56_profiles.png",
-             [(f"{L}, cn = 10, t = 1", [(f"g = {g}", run(f"fig55/{L}/g{g}"),
-                                        run(f"fig55/{L}/g{g}").done()) for g in g_series])
-              for L in LOADS], "Fig 5.6: normal velocity on Gamma3 for several g")
-    profiles("fig58_profiles.png",
-             [(f"{L}, g = 0.05, t = 1", [(f"cn = {c}", run(f"fig57/{L}/c{c}"),
-                                          run(f"fig57/{L}/c{c}").done()) for c in c_series])
-              for L in LOADS], "Fig 5.8: normal velocity on Gamma3 for several cn")
-    w("The thesis: for cn = 20 the velocity never reaches g = 0.05, for cn = 10 some nodes do "
-      "after 0.5 s (Fig 5.3); more nodes reach the bound as g falls (Fig 5.6) and fewer as cn "
-      "rises (Fig 5.8). The rescaled load R shows that; under the printed load P the bound holds "
-      "almost all of Gamma3 from the first steps.\n")
+                            [(f"t = {r.step(t) * r.k:.3g}", r, r.step(t)) for t in TIMES_53]))
+    figures = [
+        ("fig53_profiles.png", cases53, "Fig 5.3: normal velocity on Gamma3 in time"),
+        ("fig56_profiles.png",
+         [(f"{L}, cn = 10, t = 1", [(f"g = {g}", run(f"fig55/{L}/g{g}"),
+                                    run(f"fig55/{L}/g{g}").steps_done()) for g in scene.g_series])
+          for L in LOADS], "Fig 5.6: normal velocity on Gamma3 for several g"),
+        ("fig58_profiles.png",
+         [(f"{L}, g = 0.05, t = 1", [(f"cn = {c}", run(f"fig57/{L}/c{c}"),
+                                      run(f"fig57/{L}/c{c}").steps_done()) for c in scene.c_series])
+          for L in LOADS], "Fig 5.8: normal velocity on Gamma3 for several cn")]
+    lines = ["## Normal-velocity profiles (Figs 5.3, 5.6, 5.8)\n"]
+    for name, cases, title in figures:
+        scene.charts[name.removesuffix(".png")] = profile_figure(scene.out / name, cases, title)
+        lines.append(f"![{title}]({name})\n")
+    return lines + [
+        "The thesis: for cn = 20 the velocity never reaches g = 0.05, for cn = 10 some nodes do "
+        "after 0.5 s (Fig 5.3); more nodes reach the bound as g falls (Fig 5.6) and fewer as cn "
+        "rises (Fig 5.8). The rescaled load R shows that; under the printed load P the bound holds "
+        "almost all of Gamma3 from the first steps.\n"]
 
-    # ---- Fig 5.11 ------------------------------------------------------------------------------
-    w("## Fig 5.11: the perturbed data, h = k = 1/16\n")
-    w("mu + rho, f0 = (rho, rho), f2 + (rho, rho), K = 0 (ALGORITHMS.md 2.4 [choice]); "
-      "||u_rho - u||_V = ||eps(u_rho - u)||_L2 at t = 1 (sig-error), against rho:\n")
-    t511 = Table(["rho"] + [f"{L}: difference" for L in LOADS])
-    fig, ax = plt.subplots(figsize=(5.5, 4))
-    rho_values = [float(r) for r in rhos]
-    slopes511 = {}
-    for L in LOADS:
-        diffs = [run(f"fig511/{L}/rho{r}").error() for r in rhos]
-        values = [d["error"] if d else None for d in diffs]
-        ax.loglog(rho_values, values, "o-", label=LOADS[L])
-        ok = [(r, v) for r, v in zip(rho_values, values) if v and v > 0]
-        small = sorted(ok)[:3]
-        slopes511[L] = slope([r for r, _ in small], [v for _, v in small]) if len(small) > 1 \
-            else None
-        falling = all(b < a for (_, a), (_, b) in zip(sorted(ok, reverse=True),
-                                                     sorted(ok, reverse=True)[1:]))
-        checks.add(f"Fig 5.11 ({L}): the difference falls with rho", falling and len(ok) == len(rhos),
-                   ours=" ".join(fmt(v, 3) for v in values), detail=f"slope in rho over the three "
-                   f"smallest: {fmt(slopes511[L], 3)}")
-    for r, *v in zip(rhos, *[[run(f"fig511/{L}/rho{x}").error() for x in rhos] for L in LOADS]):
-        t511.add(r, *[fmt(d["error"] if d else None, 4) for d in v])
-    ax.set_xlabel("rho")
-    ax.set_ylabel("||u_rho - u||_V at t = 1")
+
+def fig511_figure(path, rho_values, values):
+    """Fig 5.11: the difference against rho, one curve per load {L: differences}."""
+    fig, ax = pyplot().subplots(figsize=(5.5, 4))
+    for L, v in values.items():
+        ax.loglog(rho_values, v, "o-", label=LOADS[L])
+    ax.set_xlabel("perturbation rho (-)")
+    ax.set_ylabel("||u_rho - u||_V at t = 1 (m)")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
-    ax.set_title("Fig 5.11: difference against the perturbation", fontsize=10)
+    ax.set_title("Fig 5.11: difference against the perturbation (rho added to mu, f0, f2)",
+                 fontsize=10)
     fig.tight_layout()
-    fig.savefig(out / "fig511.png", dpi=110)
-    plt.close(fig)
-    w(t511.markdown() + "\n")
-    w(f"Slope in rho over the three smallest rho: " + ", ".join(
-        f"{L} {fmt(s, 3)}" for L, s in slopes511.items()) + " (the solution map is Lipschitz in "
-      "the data: the difference is linear in rho).\n")
-    w("![Fig 5.11](fig511.png)\n")
+    return save_figure(fig, path).name
 
-    # ---- Fig 5.12 ------------------------------------------------------------------------------
-    w(f"## Fig 5.12: error against h = k, reference h = k = 1/{reference}\n")
-    ref = run(f"fig512/n{reference}")
-    ref_dofs = int(ref.ds.scalar("ndof"))
-    w(f"The nested union-jack family N x N/4 cells, h = k = 1/N (ALGORITHMS.md 2.4 [choice]: "
-      f"nested so that the coarse P1 field prolongates exactly; 64 x 16 at h = 1/64, not the "
-      f"thesis's 64 x 12, which no nested family through 1/4 contains). The reference N = "
-      f"{reference} has {ref_dofs} displacement dofs + {2 * (int(reference) - 1)} multipliers "
-      f"(thesis {thesis.get('reference_dofs', 'h=k=1/256')}, a count no structured mesh of "
-      f"(0,5) x (0,1) gives, ALGORITHMS.md 0.2) and marched in {fmt(ref.seconds(), 3)} s "
-      f"(factorization + march, sig-march). The printed data (g = 0.01, cn = 10, mu = 0.2); E_hk "
-      f"= ||u - u_hk||_V at t = 1 and its maximum over t = 0.25, 0.5, 0.75, 1 (sig-error):\n")
+
+def section_fig511(scene):
+    rhos = scene.rhos
+    rho_values = [float(r) for r in rhos]
+    values, slopes = {}, {}
+    for L in LOADS:
+        diffs = [scene.run(f"fig511/{L}/rho{r}").error() for r in rhos]
+        values[L] = [d["error"] if d else None for d in diffs]
+        ok = [(r, v) for r, v in zip(rho_values, values[L]) if v and v > 0]
+        small = sorted(ok)[:3]
+        slopes[L] = loglog_slope([r for r, _ in small], [v for _, v in small])
+        falling = all(b < a for (_, a), (_, b) in zip(sorted(ok, reverse=True),
+                                                     sorted(ok, reverse=True)[1:]))
+        scene.checks.add(f"Fig 5.11 ({L}): the difference falls with rho",
+                         falling and len(ok) == len(rhos),
+                         ours=" ".join(fmt(v, 3) for v in values[L]),
+                         detail=f"slope in rho over the three smallest: {fmt(slopes[L], 3)}")
+    table = Table(["rho"] + [f"{L}: difference" for L in LOADS],
+                  [[r, *[fmt(values[L][i], 4) for L in LOADS]] for i, r in enumerate(rhos)])
+    scene.charts["fig511"] = fig511_figure(scene.out / "fig511.png", rho_values, values)
+    return ["## Fig 5.11: the perturbed data, h = k = 1/16\n",
+            "mu + rho, f0 = (rho, rho), f2 + (rho, rho), K = 0 (ALGORITHMS.md 2.4 [choice]); "
+            "||u_rho - u||_V = ||eps(u_rho - u)||_L2 at t = 1 (sig-error), against rho:\n",
+            table.markdown() + "\n",
+            "Slope in rho over the three smallest rho: " + ", ".join(
+                f"{L} {fmt(s, 3)}" for L, s in slopes.items()) + " (the solution map is Lipschitz "
+            "in the data: the difference is linear in rho).\n", "![Fig 5.11](fig511.png)\n"]
+
+
+def fig512_table(scene):
+    """The error of each nested mesh against the reference: the table, h, E_hk, its maximum."""
     t512 = Table(["h = k", "dofs", "E_hk at t = 1", "relative", "max over t", "march s"])
     hs, errors, maxima = [], [], []
-    for n in nested:
-        r = run(f"fig512/n{n}")
+    for n in scene.nested:
+        r = scene.run(f"fig512/n{n}")
         e = r.error()
         if e is None:
             continue
@@ -384,103 +393,74 @@ def main():
         maxima.append(e["max_error"])
         t512.add(f"1/{n}", int(r.ds.scalar("ndof")), fmt(e["error"], 4), fmt(e["relative"], 3),
                  fmt(e["max_error"], 4), fmt(r.seconds(), 3))
-    w(t512.markdown() + "\n")
-    s512 = slope(hs, errors) if len(hs) > 1 else None
-    s512_fine = slope(hs[-3:], errors[-3:]) if len(hs) > 2 else None
-    elastic_h, elastic_e = [], []
-    for n in nested:
-        path = out / f"fig512/elastic/n{n}/error.json"
-        if path.is_file():
-            elastic_h.append(1 / int(n))
-            elastic_e.append(json.loads(path.read_text())["error"])
-    s_elastic = slope(elastic_h, elastic_e) if len(elastic_h) > 1 else None
-    rates = [math.log(a / b) / math.log(2) for a, b in zip(errors, errors[1:])]
-    time_errors = {}
-    for k in ("16", "64"):
-        path = out / f"fig512/time/k{k}/error.json"
-        if path.is_file():
-            time_errors[k] = json.loads(path.read_text())["error"]
-    w(f"Slope of log E_hk against log h: **{fmt(s512, 3)}** over every h (the thesis's figure: "
-      f"1, the optimal order of (5.77)), {fmt(s512_fine, 3)} over the three finest; the rates "
-      f"between successive meshes are " + ", ".join(fmt(r, 2) for r in rates) + ". The same "
-      f"meshes on the clamped elastic strip alone (Hooke, the load of t = 1, no contact, no "
-      f"time: fig512/elastic) converge at {fmt(s_elastic, 3)} over every h: the clamped ends meet "
-      "the loaded top and the contact boundary at right angles, corners of a stress singularity "
-      "where the solution is not in H^2, so uniform meshes stay below order 1 in the norm of V "
-      "whatever the march does (the optimal estimate (5.77) assumes the regularity). The march's "
-      f"slope is {compare(s512, s_elastic)} the elastic strip's. The finest rate is raised by the "
-      "reference being only twice finer. The time error is small beside it: at h = 1/64 (fig512/time) the marches with "
-      f"k = 1/16 and 1/64 are within {fmt(time_errors.get('16'), 3)} and "
-      f"{fmt(time_errors.get('64'), 3)} of k = 1/256, against E_hk = "
-      f"{fmt(errors[nested.index('64')] if '64' in nested[:len(errors)] else None, 3)} at h = k = "
-      "1/64.\n")
-    checks.add("Fig 5.12: slope of the error against h = k", within(s512, 1, abs=0.15),
-               ours=fmt(s512, 3), target=1, tolerance="+-0.15",
-               detail=f"slope {fmt(s512, 3)} over every h; the clamped elastic strip alone on "
-                      f"the same meshes: {fmt(s_elastic, 3)}")
+    return t512, hs, errors, maxima
 
-    # Away from the corners, and the rollers variant (labelled): where the rate 1 shows.
-    def series(folder, name):
-        hs_, es_ = [], []
-        for n in nested:
-            path = out / f"{folder}{n}" / name
-            if path.is_file():
-                hs_.append(1 / int(n))
-                es_.append(json.loads(path.read_text())["error"])
-        return hs_, es_
 
-    variants = []
-    for label, folder, name in [
-            ("the printed deck, whole strip (the check above)", "fig512/n", "error.json"),
-            ("the printed deck, on [1, 4] x [0, 1] only", "fig512/n", "error_interior.json"),
-            ("the clamped elastic strip alone, whole strip", "fig512/elastic/n", "error.json"),
-            ("the clamped elastic strip alone, on [1, 4] x [0, 1]", "fig512/elastic/n",
-             "error_interior.json"),
-            ("[variant] rollers on Gamma1, whole strip", "fig512/rollers/n", "error.json"),
-            ("[variant] rollers on Gamma1, on [1, 4] x [0, 1]", "fig512/rollers/n",
-             "error_interior.json")]:
-        hs_, es_ = series(folder, name)
-        if len(hs_) < 2:
-            continue
-        variants.append((label, hs_, es_))
-    if len(variants) > 1:
-        w("Where the order is lost: the same errors on the sub-domain [1, 4] x [0, 1] only "
-          "(sig-error --window: the reference triangles whose centroid lies in it, every corner "
-          "of the strip outside), and the labelled variant with rollers on Gamma1 (u1 = 0 only, "
-          "no clamped corner; fig512/rollers against its own h = k = 1/" f"{reference}):\n")
-        tv = Table(["error", "slope, every h", "slope, three finest"] +
-                   [f"E at 1/{n}" for n in nested] + ["rates"])
-        for label, hs_, es_ in variants:
-            rates_ = [math.log(a / b) / math.log(2) for a, b in zip(es_, es_[1:])]
-            tv.add(label, fmt(slope(hs_, es_), 3),
-                   fmt(slope(hs_[-3:], es_[-3:]), 3) if len(hs_) > 2 else "—",
-                   *[fmt(e, 3) for e in es_] + ["—"] * (len(nested) - len(es_)),
-                   " ".join(fmt(r, 2) for r in rates_))
-        w(tv.markdown() + "\n")
-        steps_csv = out / f"fig512/rollers/n{nested[-1]}" / "steps.csv"
-        last = list(csv.DictReader(steps_csv.open()))[-1] if steps_csv.is_file() else {}
-        bound = (f" ({last.get('cuv')} CUV, {last.get('rni')} RNI at t = 1, h = k = 1/"
-                 f"{nested[-1]})") if last else ""
-        whole, inner = variants[0][2], variants[1][2] if "[1, 4]" in variants[1][0] else None
-        share = (f" (at h = k = 1/{nested[len(inner) - 1]} the norm on [1, 4] x [0, 1], 60 % of "
-                 f"the strip, is {fmt(100 * inner[-1] / whole[len(inner) - 1], 2)} % of the "
-                 "whole)") if inner else ""
-        w("Away from the corners the march converges at order 1 or better (the rates on the finer "
-          "meshes of the [1, 4] x [0, 1] rows), and its error there is a small part of the whole "
-          f"one{share}: the error of the printed deck sits near the ends, where the clamped sides "
-          "meet the loaded top and the foundation, as the clamped elastic strip's does. The "
-          "thesis's Theorem 5.6 ((5.88), l.9731) assumes u' in H^2, which those corners deny, and "
-          "Fig 5.12 plots the error on the whole strip, so the printed setup's slope stays "
-          "below 1 (the check above, FAIL). The rollers variant reaches slope 1 on the whole "
-          f"strip but proves little: under the uniform load with rollers every node ends on the "
-          f"bound{bound}, where a uniform compression meets every condition and P1 reproduces "
-          "it, so its error is that of the two bottom corner nodes left off the foundation "
-          "(exclude=1,4), the reason its interior error falls at order 2.\n")
-    fig, ax = plt.subplots(figsize=(5.5, 4))
+def fig512_slope_text(scene, hs, errors, s512, s_elastic):
+    nested = scene.nested
+    s512_fine = loglog_slope(hs[-3:], errors[-3:]) if len(hs) > 2 else None
+    time_errors = {k: e["error"] for k in ("16", "64")
+                   if (e := read_error(scene.out / f"fig512/time/k{k}")) is not None}
+    return (
+        f"Slope of log E_hk against log h: **{fmt(s512, 3)}** over every h (the thesis's figure: "
+        f"1, the optimal order of (5.77)), {fmt(s512_fine, 3)} over the three finest; the rates "
+        f"between successive meshes are " + ", ".join(fmt(r, 2) for r in rates(errors)) + ". The "
+        f"same meshes on the clamped elastic strip alone (Hooke, the load of t = 1, no contact, no "
+        f"time: fig512/elastic) converge at {fmt(s_elastic, 3)} over every h: the clamped ends meet "
+        "the loaded top and the contact boundary at right angles, corners of a stress singularity "
+        "where the solution is not in H^2, so uniform meshes stay below order 1 in the norm of V "
+        "whatever the march does (the optimal estimate (5.77) assumes the regularity). The march's "
+        f"slope is {compare(s512, s_elastic)} the elastic strip's. The finest rate is raised by the "
+        "reference being only twice finer. The time error is small beside it: at h = 1/64 (fig512/time) the marches with "
+        f"k = 1/16 and 1/64 are within {fmt(time_errors.get('16'), 3)} and "
+        f"{fmt(time_errors.get('64'), 3)} of k = 1/256, against E_hk = "
+        f"{fmt(errors[nested.index('64')] if '64' in nested[:len(errors)] else None, 3)} at h = k = "
+        "1/64.\n")
+
+
+def variants_section(scene, variants):
+    """Where the order is lost: the errors on [1, 4] x [0, 1] and the rollers variant."""
+    nested = scene.nested
+    tv = Table(["error", "slope, every h", "slope, three finest"] +
+               [f"E at 1/{n}" for n in nested] + ["rates"])
+    for label, hs_, es_ in variants:
+        tv.add(label, fmt(loglog_slope(hs_, es_), 3),
+               fmt(loglog_slope(hs_[-3:], es_[-3:]), 3) if len(hs_) > 2 else "—",
+               *[fmt(e, 3) for e in es_] + ["—"] * (len(nested) - len(es_)),
+               " ".join(fmt(r, 2) for r in rates(es_)))
+    steps_csv = scene.out / f"fig512/rollers/n{nested[-1]}" / "steps.csv"
+    last = list(csv.DictReader(steps_csv.open()))[-1] if steps_csv.is_file() else {}
+    bound = (f" ({last.get('cuv')} CUV, {last.get('rni')} RNI at t = 1, h = k = 1/"
+             f"{nested[-1]})") if last else ""
+    whole, inner = variants[0][2], variants[1][2] if "[1, 4]" in variants[1][0] else None
+    share = (f" (at h = k = 1/{nested[len(inner) - 1]} the norm on [1, 4] x [0, 1], 60 % of "
+             f"the strip, is {fmt(100 * inner[-1] / whole[len(inner) - 1], 2)} % of the "
+             "whole)") if inner else ""
+    return [
+        "Where the order is lost: the same errors on the sub-domain [1, 4] x [0, 1] only "
+        "(sig-error --window: the reference triangles whose centroid lies in it, every corner "
+        "of the strip outside), and the labelled variant with rollers on Gamma1 (u1 = 0 only, "
+        "no clamped corner; fig512/rollers against its own h = k = 1/" f"{scene.reference}):\n",
+        tv.markdown() + "\n",
+        "Away from the corners the march converges at order 1 or better (the rates on the finer "
+        "meshes of the [1, 4] x [0, 1] rows), and its error there is a small part of the whole "
+        f"one{share}: the error of the printed deck sits near the ends, where the clamped sides "
+        "meet the loaded top and the foundation, as the clamped elastic strip's does. The "
+        "thesis's Theorem 5.6 ((5.88), l.9731) assumes u' in H^2, which those corners deny, and "
+        "Fig 5.12 plots the error on the whole strip, so the printed setup's slope stays "
+        "below 1 (the check above, FAIL). The rollers variant reaches slope 1 on the whole "
+        f"strip but proves little: under the uniform load with rollers every node ends on the "
+        f"bound{bound}, where a uniform compression meets every condition and P1 reproduces "
+        "it, so its error is that of the two bottom corner nodes left off the foundation "
+        "(exclude=1,4), the reason its interior error falls at order 2.\n"]
+
+
+def fig512_figure(path, hs, errors, maxima, elastic, variants, s512):
+    fig, ax = pyplot().subplots(figsize=(5.5, 4))
     ax.loglog(hs, errors, "o-", label="E_hk at t = 1")
     ax.loglog(hs, maxima, "s--", label="max over t", fillstyle="none")
-    if elastic_h:
-        ax.loglog(elastic_h, elastic_e, "^-.", label="clamped elastic strip alone", alpha=0.7)
+    if elastic[0]:
+        ax.loglog(*elastic, "^-.", label="clamped elastic strip alone", alpha=0.7)
     for label, hs_, es_ in variants:
         if "[1, 4]" in label and "printed" in label:
             ax.loglog(hs_, es_, "v-", label="on [1, 4] x [0, 1]", alpha=0.8)
@@ -488,80 +468,138 @@ def main():
             ax.loglog(hs_, es_, "x:", label="[variant] rollers on Gamma1", alpha=0.8)
     if hs:
         ax.loglog(hs, [errors[0] * h / hs[0] for h in hs], ":", color="grey", label="slope 1")
-    ax.set_xlabel("h = k")
-    ax.set_ylabel("||u - u_hk||_V")
+    ax.set_xlabel("mesh size h (m)")
+    ax.set_ylabel("||u - u_hk||_V (m)")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
-    ax.set_title(f"Fig 5.12: error against h = k (slope {fmt(s512, 3)})", fontsize=10)
+    ax.set_title(f"Fig 5.12: error against h, time step k = h (slope {fmt(s512, 3)})", fontsize=10)
     fig.tight_layout()
-    fig.savefig(out / "fig512.png", dpi=110)
-    plt.close(fig)
-    w("![Fig 5.12](fig512.png)\n")
+    return save_figure(fig, path).name
 
-    # ---- Speed against accuracy ----------------------------------------------------------------
-    w("## Speed against accuracy\n")
-    speed_series = []
-    rows = []
+
+def section_fig512(scene):
+    reference, thesis = scene.reference, scene.thesis
+    ref = scene.run(f"fig512/n{reference}")
+    t512, hs, errors, maxima = fig512_table(scene)
+    s512 = loglog_slope(hs, errors)
+    elastic = scene.error_series("fig512/elastic/n")
+    s_elastic = loglog_slope(*elastic)
+    scene.checks.add("Fig 5.12: slope of the error against h = k", within(s512, 1, abs=0.15),
+                     ours=fmt(s512, 3), target=1, tolerance="+-0.15",
+                     detail=f"slope {fmt(s512, 3)} over every h; the clamped elastic strip alone "
+                            f"on the same meshes: {fmt(s_elastic, 3)}")
+    variants = [(label, *series) for label, folder, name in ERROR_VARIANTS
+                if len((series := scene.error_series(folder, name))[0]) >= 2]
+    scene.charts["fig512"] = fig512_figure(scene.out / "fig512.png", hs, errors, maxima, elastic,
+                                           variants, s512)
+    return [f"## Fig 5.12: error against h = k, reference h = k = 1/{reference}\n",
+            f"The nested union-jack family N x N/4 cells, h = k = 1/N (ALGORITHMS.md 2.4 [choice]: "
+            f"nested so that the coarse P1 field prolongates exactly; 64 x 16 at h = 1/64, not the "
+            f"thesis's 64 x 12, which no nested family through 1/4 contains). The reference N = "
+            f"{reference} has {int(ref.ds.scalar('ndof'))} displacement dofs + "
+            f"{2 * (int(reference) - 1)} multipliers "
+            f"(thesis {thesis.get('reference_dofs', 'h=k=1/256')}, a count no structured mesh of "
+            f"(0,5) x (0,1) gives, ALGORITHMS.md 0.2) and marched in {fmt(ref.seconds(), 3)} s "
+            f"(factorization + march, sig-march). The printed data (g = 0.01, cn = 10, mu = 0.2); E_hk "
+            f"= ||u - u_hk||_V at t = 1 and its maximum over t = 0.25, 0.5, 0.75, 1 (sig-error):\n",
+            t512.markdown() + "\n", fig512_slope_text(scene, hs, errors, s512, s_elastic)] + \
+        (variants_section(scene, variants) if len(variants) > 1 else []) + \
+        ["![Fig 5.12](fig512.png)\n"]
+
+
+def section_speed(scene):
+    base, thesis = scene.run("fig52/P"), scene.thesis
+    speed_series, rows = [], []
     methods = [("pdas", "gamma = 100", "fig512/n{n}")] + \
         [(m, f"{p} = {v}", f"speed/{m}_{v}/n{{n}}")
          for m, p, v in (("alm", "r", "100"), ("projection", "c", "1"), ("projection", "c", "0.01"))]
     for i, (method, value, pattern) in enumerate(methods):
         points = []
-        for n in info["speed_meshes"].split():
-            r = run(pattern.format(n=n))
+        for n in scene.info["speed_meshes"].split():
+            r = scene.run(pattern.format(n=n))
             e = r.error()
             y = e["relative"] if (e and r.converged) else None
             points.append(Point(r.seconds(), y, f"1/{n}"))
             rows.append([f"{method} {value}", f"1/{n}", fmt(r.seconds(), 3), fmt(y, 3),
                          int(r.iterations.sum()),
-                         "yes" if r.converged else f"Nv at step {r.done()}"])
+                         "yes" if r.converged else f"Nv at step {r.steps_done()}"])
         speed_series.append(Series(f"{method} {value}", points, color=f"C{i}"))
-    speed_accuracy_chart(out / "speed_accuracy.png", speed_series,
-                         "sig-march seconds (factorization + march)",
-                         "relative error ||u - u_ref||_V / ||u_ref||_V at t = 1",
+    speed_accuracy_chart(scene.out / "speed_accuracy.png", speed_series,
+                         "sig-march time, factorization + march (s)",
+                         "relative error in the norm of V at t = 1 (-)",
                          title="Scene 5: speed against accuracy (h = k)")
-    w("Each method on each nested mesh (h = k), its time (sig-march: frames, factorization, "
-      "Schur complement, the condensed Cholesky, then every step) against its error at t = 1:\n")
-    w(Table(["method", "h = k", "seconds", "relative error", "Newton iterations", "converged"],
-            rows).markdown() + "\n")
-    w("![speed against accuracy](speed_accuracy.png)\n")
-    w(f"h = k = 1/64 (the thesis's mesh, fig52/P): {fmt(base.seconds(), 3)} s for the whole march"
-      f" (thesis: {thesis.get('cpu', 'h=k=1/64')} s of CPU on the hardware of its day), "
-      f"{int(base.ds.scalar('sparse_factorizations'))} sparse and "
-      f"{int(base.ds.scalar('dense_factorizations'))} dense factorization for the whole march. "
-      "The per-step costs against one solve with the factorized step matrix are measured by "
-      "`drivers/bench-scene5.sh` (out/bench-scene5/report.md).\n")
+    scene.charts["speed_accuracy"] = "speed_accuracy.png"
+    return ["## Speed against accuracy\n",
+            "Each method on each nested mesh (h = k), its time (sig-march: frames, factorization, "
+            "Schur complement, the condensed Cholesky, then every step) against its error at t = 1:\n",
+            Table(["method", "h = k", "seconds", "relative error", "Newton iterations", "converged"],
+                  rows).markdown() + "\n",
+            "![speed against accuracy](speed_accuracy.png)\n",
+            f"h = k = 1/64 (the thesis's mesh, fig52/P): {fmt(base.seconds(), 3)} s for the whole march"
+            f" (thesis: {thesis.get('cpu', 'h=k=1/64')} s of CPU on the hardware of its day), "
+            f"{int(base.ds.scalar('sparse_factorizations'))} sparse and "
+            f"{int(base.ds.scalar('dense_factorizations'))} dense factorization for the whole march. "
+            "The per-step costs against one solve with the factorized step matrix are measured by "
+            "`drivers/bench-scene5.sh` (out/bench-scene5/report.md).\n"]
 
-    # ---- Stability map -------------------------------------------------------------------------
-    w("## Stability map: k x cn x g -> Newton iterations per step\n")
-    panels = []
-    map_rows = []
+
+def map_cell(r, g, k, c, map_rows):
+    """A cell of the stability map and its row of the table."""
+    its = r.iterations
+    if not r.converged:
+        map_rows.append([g, f"1/{k}", c, "Nv", r.failure[:80]])
+        return MapCell(f"Nv@{r.steps_done()}", "Nv")
+    map_rows.append([g, f"1/{k}", c, f"{its.max()} / {its.mean():.2f}", ""])
+    return MapCell(f"{its.max()} ({its.mean():.1f})", "ok", float(its.mean()))
+
+
+def section_stability(scene):
+    info = scene.info
+    panels, map_rows = [], []
     for g in info["map_g"].split():
-        cells = []
-        for k in info["map_k"].split():
-            row = []
-            for c in info["map_c"].split():
-                r = run(f"map/k{k}_c{c}_g{g}")
-                its = r.iterations
-                if not r.converged:
-                    row.append(MapCell(f"Nv@{r.done()}", "Nv"))
-                    map_rows.append([g, f"1/{k}", c, "Nv", r.failure[:80]])
-                else:
-                    row.append(MapCell(f"{its.max()} ({its.mean():.1f})", "ok", float(its.mean())))
-                    map_rows.append([g, f"1/{k}", c, f"{its.max()} / {its.mean():.2f}", ""])
-            cells.append(row)
+        cells = [[map_cell(scene.run(f"map/k{k}_c{c}_g{g}"), g, k, c, map_rows)
+                  for c in info["map_c"].split()] for k in info["map_k"].split()]
         panels.append(MapPanel(f"g = {g}", [f"k = 1/{k}" for k in info["map_k"].split()],
-                               info["map_c"].split(), cells, xlabel="cn (GPa s/m)"))
-    stability_map(out / "stability.png", panels, value_label="log10(mean Newton iterations)",
+                               info["map_c"].split(), cells, xlabel="cn (GPa s/m)",
+                               ylabel="time step k (s)"))
+    stability_map(scene.out / "stability.png", panels,
+                  value_label="mean Newton per step (iterations)",
                   title="Scene 5: max (mean) Newton iterations per step; Nv@n: stopped at step n")
-    w("The printed load with friction (mu = 0.2, bound=compliance) on the 64 x 12 mesh, PDAS "
-      "gamma = 100, eps = 1e-8; each cell the most (mean) Newton iterations of a step:\n")
-    w(Table(["g", "k", "cn", "max / mean iterations", "failure"], map_rows).markdown() + "\n")
-    w("![stability map](stability.png)\n")
+    scene.charts["stability"] = "stability.png"
+    return ["## Stability map: k x cn x g -> Newton iterations per step\n",
+            "The printed load with friction (mu = 0.2, bound=compliance) on the 64 x 12 mesh, PDAS "
+            "gamma = 100, eps = 1e-8; each cell the most (mean) Newton iterations of a step:\n",
+            Table(["g", "k", "cn", "max / mean iterations", "failure"], map_rows).markdown() + "\n",
+            "![stability map](stability.png)\n"]
 
-    # ---- Checks --------------------------------------------------------------------------------
+
+def status_checks(scene):
+    """ALGORITHMS.md 2.5's [check] counts: an independent numpy solver's, frictionless."""
+    checks, run = scene.checks, scene.run
+    r54 = run("fig53/R/c10")
+    t_series = [r54.counts(r54.step(t))["RNI"] for t in TIMES_54]
+    checks.add("R, Fig 5.4 t-series RNI equal ALGORITHMS.md 2.5's [check] 63/52/38/36",
+               t_series == CHECK_54, ours="/".join(map(str, t_series)))
+    g_rni = {g: run(f"fig55/R/g{g}").counts()["RNI"] for g in scene.g_series}
+    if all(g in g_rni for g in CHECK_55):
+        got = [g_rni[g] for g in CHECK_55]
+        checks.add("R, Fig 5.5 g-series RNI equal ALGORITHMS.md 2.5's [check] 2/16/36/63",
+                   got == list(CHECK_55.values()), ours="/".join(map(str, got)))
+    name = "R, Fig 5.7 cn-series RNI equal ALGORITHMS.md 2.5's [check] 36/36/36/36/38/50"
+    if all(c in scene.c_series for c in CHECK_57):
+        got = [run(f"fig57/R/c{c}").counts()["RNI"] for c in CHECK_57]
+        checks.add(name, got == list(CHECK_57.values()), ours="/".join(map(str, got)))
+    else:
+        checks.add(name, None, detail="the quick variant runs three of the six cn")
+    p50 = run("fig53/P/c10").counts(run("fig53/P/c10").step(0.5))
+    checks.add("P: CUV dominates at t = 0.5 (ALGORITHMS.md 2.5 [check]: 53 of 63)",
+               p50["CUV"] > p50["RNI"], ours=f"{p50['CUV']} CUV, {p50['RNI']} RNI")
+
+
+def section_checks(scene):
+    out, checks, base = scene.out, scene.checks, scene.run("fig52/P")
     names = sorted(p.parent.relative_to(out).as_posix() for p in out.glob("**/case.hist"))
-    all_runs = [run(n) for n in names]
+    all_runs = [scene.run(n) for n in names]
     # The speed and map runs try methods and parameters where a failure is a result (Nv).
     figure_runs = [r for r in all_runs
                    if not r.dir.relative_to(out).as_posix().startswith(("map/", "speed/"))]
@@ -578,45 +616,32 @@ def main():
                detail=f"every march: 1 sparse; dense (condensed) factorizations at most {dense}")
     checks.add("h = k = 1/64 marched well under a second", base.seconds() < 1,
                ours=f"{base.seconds():.3f} s", target="< 1 s (thesis 32 s)")
-    # ALGORITHMS.md 2.5 item 1 [check]: an independent numpy solver's counts, frictionless.
-    r54 = run("fig53/R/c10")
-    t_series = [r54.counts(r54.step_of(t))["RNI"] for t in times54]
-    checks.add("R, Fig 5.4 t-series RNI equal ALGORITHMS.md 2.5's [check] 63/52/38/36",
-               t_series == [63, 52, 38, 36], ours="/".join(map(str, t_series)))
-    g_rni = {g: run(f"fig55/R/g{g}").counts(run(f"fig55/R/g{g}").done())["RNI"] for g in g_series}
-    expected_g = {"0.001": 2, "0.01": 16, "0.05": 36, "0.1": 63}
-    if all(g in g_rni for g in expected_g):
-        got = [g_rni[g] for g in expected_g]
-        checks.add("R, Fig 5.5 g-series RNI equal ALGORITHMS.md 2.5's [check] 2/16/36/63",
-                   got == list(expected_g.values()), ours="/".join(map(str, got)))
-    expected_c = {"0.01": 36, "5": 36, "8": 36, "12": 36, "15": 38, "20": 50}
-    if all(c in c_series for c in expected_c):
-        got = [run(f"fig57/R/c{c}").counts(run(f"fig57/R/c{c}").done())["RNI"] for c in expected_c]
-        checks.add("R, Fig 5.7 cn-series RNI equal ALGORITHMS.md 2.5's [check] 36/36/36/36/38/50",
-                   got == list(expected_c.values()), ours="/".join(map(str, got)))
-    else:
-        checks.add("R, Fig 5.7 cn-series RNI equal ALGORITHMS.md 2.5's [check] 36/36/36/36/38/50",
-                   None, detail="the quick variant runs three of the six cn")
-    p50 = run("fig53/P/c10").counts(run("fig53/P/c10").step_of(0.5))
-    checks.add("P: CUV dominates at t = 0.5 (ALGORITHMS.md 2.5 [check]: 53 of 63)",
-               p50["CUV"] > p50["RNI"], ours=f"{p50['CUV']} CUV, {p50['RNI']} RNI")
-    w("## Checks\n")
-    w(checks.table().markdown() + "\n")
-    w(f"{checks.passed} passed, {checks.failed} failed, {checks.not_run} not run.\n")
+    status_checks(scene)
+    return ["## Checks\n", checks.table().markdown() + "\n",
+            f"{checks.passed} passed, {checks.failed} failed, {checks.not_run} not run.\n"]
 
-    pvd = find_pvd(out)
-    w("## ParaView files\n")
-    w("Each .pvd is the march's time series (one .vtu per step): displacement, velocity, stress, "
-      "contact_pressure, tangential_pressure, normal_status (0 free, 1 RNI, 2 CUV), "
-      "friction_status (0 none, 1 S=, 2 S+, 3 S-):\n")
-    w("\n".join(f"- `{p}`" for p in pvd) + "\n")
-    (out / "report.md").write_text("\n".join(report))
-    charts = {"speed_accuracy": "speed_accuracy.png", "stability": "stability.png",
-              "fig511": "fig511.png", "fig512": "fig512.png", **profile_charts}
-    write_scene_json(out, "5", "Scene 5: quasistatic Kelvin-Voigt strip, damped foundation, "
-                     "velocity bound, Coulomb in velocity", info, checks, key_table=key,
-                     charts=charts, pvd=pvd)
-    print(out / "report.md")
+
+def section_paraview(pvd):
+    return ["## ParaView files\n",
+            "Each .pvd is the march's time series (one .vtu per step): displacement, velocity, "
+            "stress, contact_pressure, tangential_pressure, normal_status (0 free, 1 RNI, 2 CUV), "
+            "friction_status (0 none, 1 S=, 2 S+, 3 S-):\n",
+            "\n".join(f"- `{p}`" for p in pvd) + "\n"]
+
+
+def main():
+    scene = Scene(sys.argv[1] if len(sys.argv) > 1 else "out/scene5")
+    key_lines, key = section_key(scene)
+    report = section_head(scene) + key_lines + section_measures(scene) + section_series(scene) + \
+        section_profiles(scene) + section_fig511(scene) + section_fig512(scene) + \
+        section_speed(scene) + section_stability(scene) + section_checks(scene)
+    pvd = find_pvd(scene.out)
+    report += section_paraview(pvd)
+    charts = {k: scene.charts[k] for k in ("speed_accuracy", "stability", "fig511", "fig512")}
+    charts.update({k: v for k, v in scene.charts.items() if k.endswith("_profiles")})
+    print(write_report(scene.out, "\n".join(report), "5", "Scene 5: quasistatic Kelvin-Voigt "
+                       "strip, damped foundation, velocity bound, Coulomb in velocity", scene.info,
+                       scene.checks, key_table=key, charts=charts, pvd=pvd))
 
 
 if __name__ == "__main__":

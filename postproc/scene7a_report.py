@@ -20,8 +20,8 @@ import numpy as np
 
 from sigreport import (Checks, Deck, Point, ReportError, Series, Table, fmt, load_thesis,
                        main_guard, markdown_table, ours_thesis, pct, pyplot, read_command,
-                       read_summary, run_cell, solve_seconds, speed_accuracy_chart,
-                       write_scene_json)
+                       read_summary, run_cell, save_figure, solve_seconds, speed_accuracy_chart,
+                       write_report)
 
 plt = pyplot()
 
@@ -311,15 +311,13 @@ def section_active_history(runs, thesis, out):
         ax.plot(range(1, len(h) + 1), h, "-", marker=MARKER[m], fillstyle="none",
                 color=COLOR[m] if v == THESIS_RUN.get(m) else "C4", label=f"{LABEL[m]} {PARAMETER[m]} = {v}")
     ax.plot(its, counts, "ks", markersize=9, fillstyle="none", label="thesis (Figs 7.8/7.9)")
-    ax.set_xlabel("iteration k")
-    ax.set_ylabel("contact nodes (active set)")
+    ax.set_xlabel("Newton iteration k (-)")
+    ax.set_ylabel("active set (nodes)")
     ax.set_title("Hertz, N = 256: active set per iteration")
     ax.grid(alpha=0.3)
     ax.legend()
-    png = out / "active_history_N256.png"
     fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
+    png = save_figure(fig, out / "active_history_N256.png", dpi=120)
     text += ["", f"![contact nodes per iteration]({png.name})"]
     return "\n".join(text), png
 
@@ -350,10 +348,8 @@ def section_pressure(runs, hertz, out):
     ax_d.set_xlabel("x1 (m)")
     ax_d.set_ylabel("p - p_Hertz (GPa)")
     ax_d.grid(alpha=0.3)
-    png = out / "pressure_N256.png"
     fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
+    png = save_figure(fig, out / "pressure_N256.png", dpi=120)
     text.append(f"Pressure = multiplier / nodal weight at each Gamma3 node (`contact.csv` column "
                 f"`pressure`, x = `x1`), against p(x) = 4 R f / (pi b^2) sqrt(b^2 - x^2) with R = "
                 f"{hertz.R:g}, f = {hertz.f:g}, E = {hertz.E:g}, nu = {hertz.nu:g} from the deck: "
@@ -469,14 +465,12 @@ def section_error_vs_h(runs, uniform_runs, hertz, out, error_meshes):
     last = (uniform or graded)[-1]
     ax.loglog([first[1], last[1]], [first[2], first[2] * last[1] / first[1]], "k:", label="slope 1")
     ax.set_xlabel("h = pi R / N (m)")
-    ax.set_ylabel("relative error (pressure L2 on Gamma3; energy norm)")
-    ax.set_title("Hertz, PDAS gamma = 1e2: error vs h")
+    ax.set_ylabel("relative error (-)")
+    ax.set_title("Hertz, PDAS gamma = 1e2: error vs h (pressure L2 on Gamma3, energy norm)")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
-    png = out / "error_vs_h.png"
     fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
+    png = save_figure(fig, out / "error_vs_h.png", dpi=120)
     text.append(
         f"PDAS, gamma = 1e2. **Energy norm** (the thesis's Fig 7.10 measures ||u - u_h||_V): "
         f"the relative energy-norm error against the finest run of the series, from the total "
@@ -553,7 +547,7 @@ def section_speed_accuracy(runs, uniform_runs, hertz, out, meshes):
             rows.append(["penalty sweep", f"r = {v}", n_top, f"{ti:.3f}", f"{ei:.3e}"])
     png = out / "speed_vs_accuracy.png"
     speed_accuracy_chart(png, series, xlabel="sig-solve time: sum of its phases (s)",
-                         ylabel="relative L2 pressure error vs Hertz",
+                         ylabel="relative L2 pressure error vs Hertz (-)",
                          title="Hertz half disc: speed vs accuracy")
     text = ["## Speed vs accuracy", ""]
     text.append("x: the sum of sig-solve's phases in `summary.json` `times` (factorize, schur, "
@@ -685,11 +679,10 @@ def main():
                  "folder's *.log): " + ", ".join(f"`{m}`" for m in missing)]
     report = "\n\n".join(["\n".join(head), t71, t73, dofs, active, pressure, error, speed,
                           accuracy, checks_text]) + "\n"
-    (out / "report.md").write_text(report)
     charts = {"speed_accuracy": "speed_vs_accuracy.png", "error_vs_h": "error_vs_h.png",
               "pressure": "pressure_N256.png", "active_history": "active_history_N256.png"}
-    write_scene_json(out, "7a", title, info, checks, key_table=key_table,
-                     charts={k: v for k, v in charts.items() if (out / v).is_file()})
+    write_report(out, report, "7a", title, info, checks, key_table=key_table,
+                 charts={k: v for k, v in charts.items() if (out / v).is_file()})
     print(f"{out / 'report.md'}: {len(runs)} runs, checks {passed} PASS, {failed} FAIL")
 
 

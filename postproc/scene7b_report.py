@@ -48,8 +48,8 @@ from pathlib import Path
 
 from sigreport import (Checks, Deck, MapCell, MapPanel, Point, ReportError, Series, Table,
                        load_thesis, main_guard, markdown_table, ours_thesis, pyplot, read_command,
-                       read_ds, run_cell, speed_accuracy_chart, stability_map, within,
-                       write_scene_json)
+                       read_ds, run_cell, save_figure, speed_accuracy_chart, stability_map,
+                       within, write_report)
 
 PARAMETERS = ["1", "10", "1e2", "1e3", "1e4", "1e5", "1e6"]
 FIGURE_VALUE = "1e4"  # c = gamma of Figs 7.14-7.16 and Table 7.6
@@ -526,13 +526,12 @@ def pressure_section(runs, plt, out, checks):
                                d <= TOLERANCE, detail=detail)
             lines.append(f"- {check.result}: N = {n}, {label} vs PDAS: {detail}")
         ax.set_title(f"N = {n}")
-        ax.set_xlabel("x1 + u1 (current abscissa)")
+        ax.set_xlabel("current abscissa x1 + u1 (mm)")
         ax.set_ylabel("contact pressure (MPa)")
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(out / "fig7_13_pressure.png", dpi=110)
-    plt.close(fig)
+    save_figure(fig, out / "fig7_13_pressure.png")
     return lines + [""]
 
 
@@ -542,9 +541,10 @@ def last_step_history(ds, name="history_step_norm"):
     return step, [e for s, e in zip(ds["history_step"], ds[name]) if s == step]
 
 
-HISTORY = (("history_step_norm", "E_k = ||x(k+1) - x(k)||", True),
-           ("history_residual", "relative residual ||R|| / force scale", True),
-           ("history_active", "nodes on the wall (active set)", False))
+# x = (u, lambda) for ALM, u otherwise: E_k adds millimetres and, for ALM, megapascals.
+HISTORY = (("history_step_norm", "E_k = ||x(k+1) - x(k)|| (mm, MPa)", True),
+           ("history_residual", "relative residual ||R|| / force scale (-)", True),
+           ("history_active", "active set on the wall (nodes)", False))
 
 
 def history_chart(path, columns, title_of, rows=HISTORY):
@@ -567,13 +567,12 @@ def history_chart(path, columns, title_of, rows=HISTORY):
                     ax.plot(k, values, marker=marker, markersize=3, label=run)
             ax.set_title(title_of(key), fontsize=9)
             ax.xaxis.set_major_locator(MaxNLocator(integer=True))
-            ax.set_xlabel("iteration k")
+            ax.set_xlabel("Newton iteration k (-)")
             ax.set_ylabel(label, fontsize=8)
             ax.grid(alpha=0.3, which="both")
             ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    save_figure(fig, path, dpi=100)
 
 
 def ek_section(runs, out):
@@ -682,8 +681,8 @@ def active_set_map(runs, path):
             ax.imshow(walls, aspect="auto", cmap="Greys", interpolation="nearest",
                       extent=(0.5, len(walls[0]) + 0.5, len(walls) + 0.5, 0.5))
             ax.set_title(f"N = {n}, {label}", fontsize=9)
-            ax.set_xlabel("contact node along Gamma3 (bottom in the middle)", fontsize=8)
-            ax.set_ylabel("iteration k", fontsize=8)
+            ax.set_xlabel("contact node along Gamma3, bottom in the middle (-)", fontsize=8)
+            ax.set_ylabel("Newton iteration k (-)", fontsize=8)
             edges, ones = outer_edge_walk(walls)
             walk = " ".join(MISSING if e is None else str(e + 1) for e in edges)
             table.append([str(n), label, str(len(walls)), str(sum(walls[0])),
@@ -692,8 +691,7 @@ def active_set_map(runs, path):
     for ax in axes.flat[len(table):]:
         ax.axis("off")
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    save_figure(fig, path, dpi=100)
     return [f"![active sets]({path.name})", "",
             markdown_table(["N", "run", "iterations", "on the wall at k = 1", "final",
                             "outer edge of the left patch per iteration",
@@ -803,8 +801,9 @@ def stability_section(runs, variant, out, maxit):
 
     for these, steps in sets:
         panels = []
-        for method, name, values in (("projection", "c", PARAMETERS),
-                                     ("pdas", "gamma", PARAMETERS), ("alm", "r", ["1e3"])):
+        for method, name, values in (("projection", "c (mm/MPa)", PARAMETERS),
+                                     ("pdas", "gamma (MPa/mm)", PARAMETERS),
+                                     ("alm", "r (MPa/mm)", ["1e3"])):
             cells = []
             for n in these.sizes:
                 row = []
@@ -820,9 +819,9 @@ def stability_section(runs, variant, out, maxit):
                                            "sway" if swayed(ds) else "ok", its))
                 cells.append(row)
             panels.append(MapPanel(f"{method}: Newton iterations", [f"N = {n}" for n in these.sizes],
-                                   values, cells, xlabel=name))
+                                   values, cells, xlabel=name, ylabel="ring mesh N (-)"))
         name = "stability_map.png" if these is runs else f"stability_map_{VARIANT}.png"
-        stability_map(out / name, panels, value_label="log10(Newton iterations)",
+        stability_map(out / name, panels, value_label="Newton (iterations)",
                       title=f"Ring in {'one load step' if these is runs else steps + ' load steps'}"
                       " (red Nv, framed: sway)")
     return lines
@@ -926,7 +925,7 @@ def speed_accuracy_section(runs, variant, reference, out):
                          f"{a[1]:.2e}" if a else "Nv"])
     speed_accuracy_chart(out / "speed_accuracy.png", list(series.values()),
                          xlabel="solve time (s)",
-                         ylabel="error of the vertical reaction vs the reference ring",
+                         ylabel="relative error of the vertical reaction vs the reference (-)",
                          title="Ring: speed against accuracy", figsize=(7.5, 5), dpi=110,
                          legend_fontsize=7)
     return lines + [markdown_table(["N", "load steps", "run", "solve s", "reaction error",
@@ -1009,8 +1008,8 @@ def main():
     lines += run_table(runs, "one load step")
     if variant:
         lines += run_table(variant, f"{variant.steps} load steps")
-    (out / "report.md").write_text("\n".join(lines))
-    write_scene_json(out, "7b", title, info, checks, key_table=key_table, charts=charts)
+    write_report(out, "\n".join(lines), "7b", title, info, checks, key_table=key_table,
+                 charts=charts)
     print(f"scene7b_report: wrote {out / 'report.md'} ({len(runs.runs)} runs"
           + (f", {len(variant.runs)} in {variant.steps} load steps" if variant else "")
           + f"; checks {checks.summary()})")

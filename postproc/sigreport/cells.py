@@ -3,6 +3,7 @@ values, and tolerance checks. Each function takes `missing`, the text of an abse
 default "—"; a report that always wrote "-" passes missing="-").
 
     fmt(0.0123449)                         # "0.01234"      fmt(None) -> "—"
+    fmt_spec(0.0123449, "+.3f")            # "+0.012"       fmt_spec(nan) -> "n/a"
     pct(-0.0123)                           # "-1.23 %"
     run_cell(True, 59)                     # "59"
     run_cell(True, 208, sway=True)         # "208 sway"
@@ -24,6 +25,11 @@ def is_missing(x):
 def fmt(x, digits=4, missing=MISSING):
     """`digits` significant digits (format 'g'), or `missing`."""
     return missing if is_missing(x) else f"{x:.{digits}g}"
+
+
+def fmt_spec(x, spec=".3g", missing="n/a"):
+    """x in a format spec ("+.3f", ".2f", ...), or `missing`."""
+    return missing if is_missing(x) else format(x, spec)
 
 
 def pct(x, missing=MISSING):

@@ -12,22 +12,29 @@ y=None, it is drawn hollow on the chart's top edge, on a grey "Nv" line.
                      [Point(0.21, 3.1e-3, "N=128"), Point(0.52, 1.2e-3, "N=256")], color="C0"),
               Series("projection c = 1", [Point(0.30, None, "N=128")], marker="s", line="")]
     speed_accuracy_chart(out / "speed_accuracy.png", series, xlabel="sig-solve time (s)",
-                         ylabel="relative L2 pressure error", title="Hertz: speed vs accuracy")
+                         ylabel="relative L2 pressure error (-)", title="Hertz: speed vs accuracy")
 
 stability_map: method x parameter x mesh -> a grid per panel (e.g. one panel per method, rows =
 meshes, columns = parameter values); each MapCell has a text (an iteration count, "Nv", an
-energy change), a status and an optional value. Status "ok" cells with a value are coloured by
-log10(value) on one colour scale for all panels; other statuses by a fixed colour (Nv red,
-missing grey, gain/drift orange, dissipates blue, chatter yellow); "sway" and "drift" cells are
-framed in red.
+energy change), a status and an optional value. Status "ok" cells with a value are coloured on
+one logarithmic colour scale for all panels (its bar labelled value_label); other statuses by a
+fixed colour (Nv red, missing grey, gain/drift orange, dissipates blue, chatter yellow); "sway"
+and "drift" cells are framed in red.
 
     panels = [MapPanel("pdas: total iterations", rows=["N = 128"], columns=["1", "10"],
-                       cells=[[MapCell("59", "ok", 59), MapCell("Nv", "Nv")]], xlabel="gamma")]
-    stability_map(out / "stability.png", panels, value_label="log10(total iterations)")
+                       cells=[[MapCell("59", "ok", 59), MapCell("Nv", "Nv")]],
+                       xlabel="gamma (GPa/m)", ylabel="mesh (-)")]
+    stability_map(out / "stability.png", panels, value_label="total (iterations)")
+
+energy_chart: energy histories near an impact (scenes 8a, 8b).
+
+Every chart, these and the reports' own, is written by save_figure (sigreport.figure): it
+refuses an axis without its unit and texts on top of each other.
 """
 import math
-from pathlib import Path
 from typing import NamedTuple
+
+from .figure import keep_legends_off_data, save_figure
 
 
 def pyplot():
@@ -57,11 +64,12 @@ class Series:
 def _annotate_once(ax, items, fontsize, gap=3, same_gap=20):
     """Annotate (x, y, text) items without clutter: an item whose label would come within
     `same_gap` pixels of a label with the same text is not labelled again (label once, the legend
-    tells the series apart); a label that would come within `gap` pixels of another moves below,
-    to the left or further away from its point, and is left out when no place is free (the
-    report's table has every number)."""
+    tells the series apart); a label that would come within `gap` pixels of another or of the
+    legend moves below, to the left or further away from its point, and is left out when no
+    place is free (the report's table has every number)."""
     renderer = ax.figure.canvas.get_renderer()
-    placed = []  # (bbox, text)
+    legend = ax.get_legend()
+    placed = [(legend.get_window_extent(renderer), None)] if legend else []  # (bbox, text)
     offsets = [(4, 4), (4, -10), (-4, 4), (-4, -10), (4, 16), (4, -22), (-4, 16), (-4, -22)]
     for x, y, text in items:
         for offset in offsets:
@@ -115,11 +123,11 @@ def speed_accuracy_chart(path, series, xlabel, ylabel, title="", log=True, figsi
     ax.legend(fontsize=legend_fontsize)
     ax.margins(0.08)  # room for the labels of the outermost points
     fig.tight_layout()
+    if keep_legends_off_data(fig):
+        fig.tight_layout()
     fig.canvas.draw()
     _annotate_once(ax, labels, label_fontsize)
-    fig.savefig(path, dpi=dpi)
-    plt.close(fig)
-    return Path(path)
+    return save_figure(fig, path, dpi=dpi, layout=False)
 
 
 class MapCell(NamedTuple):
@@ -137,7 +145,8 @@ class MapPanel(NamedTuple):
     ylabel: str = ""
 
 
-def energy_chart(path, curves, title, window, markersize=3, ylabel="discrete energy E / E0 (8.33)"):
+def energy_chart(path, curves, title, window, markersize=3,
+                 ylabel="discrete energy (8.33) E / E0 (-)"):
     """The energy histories of several runs near an impact: curves = [(label, marker, times,
     energies)], each drawn on the times inside window = (t0, t1); a curve with none is left out.
     Markers every len/25 points, so that long histories stay lines."""
@@ -154,8 +163,7 @@ def energy_chart(path, curves, title, window, markersize=3, ylabel="discrete ene
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    return save_figure(fig, path, dpi=110)
 
 
 PALETTE = {"ok": "#8fd18f", "Nv": "#e07070", "missing": "#dddddd", "gain": "#f0b050",
@@ -163,7 +171,7 @@ PALETTE = {"ok": "#8fd18f", "Nv": "#e07070", "missing": "#dddddd", "gain": "#f0b
 FRAMED = ("sway", "drift")
 
 
-def stability_map(path, panels, value_label="log10(value)", title="", palette=None,
+def stability_map(path, panels, value_label="value (-)", title="", palette=None,
                   cmap="viridis", dpi=110, cell_size=(1.3, 0.55), fontsize=8):
     """Draw the panels side by side (see the module docstring) and save the PNG; returns path."""
     plt = pyplot()
@@ -173,7 +181,7 @@ def stability_map(path, panels, value_label="log10(value)", title="", palette=No
               if c.value is not None and c.value > 0]
     lo, hi = (math.log10(min(values)), math.log10(max(values))) if values else (0.0, 1.0)
     hi = max(hi, lo + 1e-9)
-    norm = mcolors.Normalize(vmin=min(lo, 0.0), vmax=hi)
+    norm = mcolors.LogNorm(vmin=10 ** min(lo, 0.0), vmax=10 ** hi)
     colormap = plt.get_cmap(cmap)
     width = sum(1.6 + cell_size[0] * len(p.columns) for p in panels) + (1.2 if values else 0)
     height = 1.2 + cell_size[1] * max(len(p.rows) for p in panels)
@@ -184,7 +192,7 @@ def stability_map(path, panels, value_label="log10(value)", title="", palette=No
             for j, cell in enumerate(row):
                 status = cell.status.split("+")[0]
                 coloured = cell.value is not None and cell.value > 0 and status in ("ok",) + FRAMED
-                face = colormap(norm(math.log10(cell.value))) if coloured else \
+                face = colormap(norm(cell.value)) if coloured else \
                     palette.get(status, palette["missing"])
                 ax.add_patch(plt.Rectangle((j, i), 1, 1, facecolor=face, edgecolor="white"))
                 if status in FRAMED:
@@ -203,10 +211,12 @@ def stability_map(path, panels, value_label="log10(value)", title="", palette=No
         ax.set_ylabel(panel.ylabel)
         ax.set_title(panel.title, fontsize=fontsize + 1)
     if values:
+        from matplotlib import ticker
         mappable = plt.cm.ScalarMappable(norm=norm, cmap=colormap)
-        fig.colorbar(mappable, ax=axes[0].tolist(), label=value_label)
+        bar = fig.colorbar(mappable, ax=axes[0].tolist(), label=value_label)
+        bar.ax.yaxis.set_major_locator(ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
+        bar.ax.yaxis.set_major_formatter(ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+        bar.ax.yaxis.set_minor_formatter(ticker.NullFormatter())
     if title:
         fig.suptitle(title, fontsize=fontsize + 2, y=1.0 + 0.25 / height)
-    fig.savefig(path, dpi=dpi, bbox_inches="tight")
-    plt.close(fig)
-    return Path(path)
+    return save_figure(fig, path, dpi=dpi, layout=False)

@@ -19,6 +19,7 @@ that was not run.
     table = read_csv_columns(run_dir / "contact.csv")           # {column: numpy array}
     write_scene_json(out, "7a", "Hertz half disc", info, checks, key_table=table_71,
                      charts={"speed_accuracy": "speed_vs_accuracy.png"})
+    write_report(out, text, "7a", "Hertz half disc", info, checks, ...)  # report.md, then the same
 """
 import json
 from pathlib import Path
@@ -154,3 +155,13 @@ def write_scene_json(out, scene, title, command, checks=(), key_table=None, char
                               f"got {check}")
     return write_text_atomically(out / "scene.json",
                                  json.dumps(entry, indent=1, ensure_ascii=False) + "\n")
+
+
+def write_report(out, text, scene, title, command, checks=(), key_table=None, charts=None,
+                 pvd=None):
+    """Write OUT/report.md (the text as given) and the scene index entry pointing at it
+    (write_scene_json's arguments); return report.md's path."""
+    path = write_text_atomically(Path(out) / "report.md", text)
+    write_scene_json(out, scene, title, command, checks, key_table=key_table, charts=charts,
+                     pvd=pvd)
+    return path

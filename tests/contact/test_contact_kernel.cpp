@@ -383,7 +383,58 @@ TEST(ContactKernel, FrictionStatuses) {
     EXPECT_EQ(static_cast<long>(friction_status_of_code(code)), code);
   EXPECT_EQ(label(FrictionStatus::slip_backward), "S-");
   EXPECT_EQ(label(NormalStatus::compliance), "CN");
-  EXPECT_THROW(normal_status_of_code(3), Error);
+  EXPECT_EQ(normal_status_of_code(3), NormalStatus::held);
+  EXPECT_THROW(normal_status_of_code(4), Error);
+}
+
+TEST(ContactKernel, TheConeApexOnTheWallSticks) {
+  // A node just touching at rest: on the wall (lambda + r (q_n - g) = 0), the Coulomb bound
+  // s = mu N = 0 and z = 0. Its kink belongs to stick: the slip is imposed, q_t = 0, and a
+  // growing normal force (lambda up) keeps it inside the cone, the side its derivative is.
+  const ContactLaw coulomb = law_of(NormalLaw::signorini, FrictionLaw::coulomb);
+  for (double r : kAugmentations) {
+    const NodeVariables apex{coulomb.depth, 0.0, 0.0, 0.0};
+    const ContactKernel k = contact_kernel(coulomb, apex, r, r);
+    EXPECT_TRUE(k.wall_active);
+    EXPECT_EQ(k.bound, 0.0);
+    EXPECT_TRUE(k.stick) << "r " << r;
+    EXPECT_EQ(k.d_force(1, kQt), r);
+    expect_kink_side(coulomb, apex, r, kLambda, 1.0, "apex, r " + std::to_string(r));
+  }
+  // Off the wall, or under a bound that does not follow N (Tresca's zero threshold, a pure
+  // compliance at its start), the apex slips with sigma = 0: T = 0, nothing held.
+  EXPECT_FALSE(contact_kernel(coulomb, {coulomb.depth - 0.1, 0.0, 0.0, 0.0}, 1, 1).stick);
+  ContactLaw loose = law_of(NormalLaw::signorini, FrictionLaw::tresca);
+  loose.threshold = 0;
+  EXPECT_FALSE(contact_kernel(loose, {loose.depth, 0.0, 0.0, 0.0}, 1, 1).stick);
+  const ContactLaw compliance = law_of(NormalLaw::compliance, FrictionLaw::coulomb);
+  EXPECT_FALSE(contact_kernel(compliance, {0.0, 0.0, 0.0, 0.0}, 1, 1).stick);
+}
+
+TEST(ContactKernel, HeldComponentsAreABilateralWallAndAStick) {
+  // A roller on a contact node (ContactLaw::held_normal / held_tangential): the normal is on its
+  // wall whatever the sign of the reaction, the tangential component sticks at its held slip
+  // whatever the force; each kernel is smooth (one branch) and its derivative the exact one.
+  ContactLaw held = law_of(NormalLaw::signorini, FrictionLaw::none);
+  held.held_normal = held.held_tangential = true;
+  held.depth = -0.2; // held away from the surface
+  held.held_slip = 0.05;
+  for (double r : kAugmentations)
+    for (const NodeVariables& x : points_of_every_branch()) {
+      const ContactKernel k = contact_kernel(held, x, r, r);
+      EXPECT_TRUE(k.wall_active && k.held && k.stick);
+      EXPECT_DOUBLE_EQ(k.normal, x.lambda + r * (x.q_n - held.depth));
+      EXPECT_DOUBLE_EQ(k.tangential, x.t + r * (x.q_t - held.held_slip));
+      EXPECT_EQ(normal_status(k), NormalStatus::held);
+      EXPECT_EQ(friction_status(held, k), FrictionStatus::stick);
+      expect_derivatives(held, x, r, "held, r " + std::to_string(r));
+    }
+  // Its zeros are the held values, with any reaction.
+  const ContactKernel at = contact_kernel(held, {held.depth, held.held_slip, -3.0, 7.0}, 1, 1);
+  EXPECT_EQ(at.complementarity, Eigen::Vector2d::Zero());
+  EXPECT_FALSE(law_problem(held).has_value());
+  held.friction = FrictionLaw::coulomb; // out of contact: no friction law
+  EXPECT_TRUE(law_problem(held).has_value());
 }
 
 TEST(ContactKernel, ComplianceBoundIsTrescaOnTheWall) {

@@ -76,9 +76,10 @@ TEST(StageHelp, ListsFilesOptionsAndEveryCardAndRefusesAnUnknownCard) {
                        .options = {{"--fast", "quickly"}}};
   const std::string text = stage_help_text(help);
   for (const char* expected :
-       {"usage: sig-x DATAFILE [-o OUTDIR]\n", "Does x.\n", "  OUTDIR/case.nopo\n",
-        "  OUTDIR/case.x\n", "  -o OUTDIR ", "  --fast      quickly\n",
-        "\nTITLE: ", "\nSOLVER: ", "    linear  ", "[default: cholmod]"})
+       {"usage: sig-x DATAFILE [-o OUTDIR] [--time-limit SECONDS]\n", "Does x.\n",
+        "  OUTDIR/case.nopo\n", "  OUTDIR/case.x\n", "  -o OUTDIR ", "  --time-limit SECONDS ",
+        "  --fast  ", " quickly\n", "\nTITLE: ", "\nSOLVER: ", "    linear  ",
+        "[default: cholmod]"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
   StageHelp wrong = help;
   wrong.cards.push_back("NOSUCHCARD");

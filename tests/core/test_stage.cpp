@@ -2,12 +2,17 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "core/stage_guard.hpp"
 #include "scratch_folder.hpp"
 
 #include <cctype>
+#include <chrono>
+#include <cstdlib>
 #include <ctime>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <stdexcept>
+#include <thread>
 
 namespace sig {
 namespace {
@@ -57,8 +62,8 @@ TEST(Stage, BadCommandLinesGiveTheUsage) {
       parse(words);
       ADD_FAILURE() << words.size();
     } catch (const Error& e) {
-      EXPECT_STREQ(e.what(), "usage: sig-mesh DATAFILE [-o OUTDIR] (--help: what it reads, "
-                             "writes and the cards it uses)");
+      EXPECT_STREQ(e.what(), "usage: sig-mesh DATAFILE [-o OUTDIR] [--time-limit SECONDS] "
+                             "(--help: what it reads, writes and the cards it uses)");
     }
   }
 }
@@ -74,6 +79,56 @@ TEST(Stage, RunStageTurnsExceptionsIntoExitCodeOne) {
       << err;
   EXPECT_NE(err.find("sig-post: error: disk full\n"), std::string::npos) << err;
   EXPECT_NE(err.find("sig-mesh: error:"), std::string::npos) << err;
+}
+
+TEST(Stage, TimeLimitIsAPositiveNumberOfSecondsUpToADay) {
+  EXPECT_EQ(parse_time_limit("2.5"), 2.5);
+  EXPECT_EQ(parse_time_limit("86400"), 86400);
+  for (const char* bad : {"0", "-1", "abc", "2s", "", "86401", "nan"}) {
+    try {
+      parse_time_limit(bad);
+      ADD_FAILURE() << bad;
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), std::string("--time-limit: '") + bad +
+                                           "' is not a number of seconds in (0, 86400]");
+    }
+  }
+}
+
+// The watchdog ends a stage that outlives its budget: status 1, the message, and what the stage
+// had not finished (a temporary it registered) removed.
+TEST(StageGuard, TimeLimitStopsTheStageAndRemovesItsUnfinishedFiles) {
+  ScratchFolder dir;
+  const auto temporary = dir / ".case.b.tmp.1";
+  EXPECT_EXIT(run_stage("solve",
+                        [&] {
+                          std::ofstream(temporary) << "half";
+                          const Unfinished unfinished(temporary);
+                          start_time_limit(0.2, "sig-solve");
+                          std::this_thread::sleep_for(std::chrono::seconds(30));
+                        }),
+              ::testing::ExitedWithCode(1),
+              "sig-solve: error: the time limit of 0.2 s \\(--time-limit\\) ran out before "
+              "sig-solve finished: stopped, with its unfinished files removed");
+  EXPECT_FALSE(std::filesystem::exists(temporary));
+  // Within the budget nothing happens, and the watchdog stops with the stage.
+  EXPECT_EQ(run_stage("solve", [] { start_time_limit(30, "sig-solve"); }), 0);
+}
+
+// A library's exit() inside a stage (libgomp's "Thread creation failed") is an error of the
+// stage, whatever status the library gave, with its unfinished files removed.
+TEST(StageGuard, LibraryExitInsideAStageIsAnError) {
+  ScratchFolder dir;
+  const auto temporary = dir / ".case.tae.tmp.1";
+  EXPECT_EXIT(run_stage("assemble",
+                        [&] {
+                          std::ofstream(temporary) << "half";
+                          const Unfinished unfinished(temporary);
+                          std::exit(0);
+                        }),
+              ::testing::ExitedWithCode(1),
+              "sig-assemble: error: a library ended the stage before it finished");
+  EXPECT_FALSE(std::filesystem::exists(temporary));
 }
 
 TEST(Stage, DsDateIsTodayAsYyMmDd) {

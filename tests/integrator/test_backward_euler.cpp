@@ -18,7 +18,8 @@
 #include "integrator/energy.hpp"
 #include "material/mili.hpp"
 #include "mesh/generators.hpp"
-#include "solver/static_solve.hpp"
+#include "stages/march_inputs.hpp"
+#include "stages/static_solve.hpp"
 
 #include <gtest/gtest.h>
 
@@ -51,22 +52,24 @@ ContactSolverParameters newton() {
 }
 
 /// The energies after each step 0 .. steps: E = 1/2 w.M w + 1/2 u.K u, and the compliance's
-/// potential; the states too.
+/// potential, computed here from the states (and checked against the march's records); the
+/// states too.
 struct Marched {
   std::vector<double> energy, potential;
   std::vector<Eigen::VectorXd> u, w; ///< free dofs
-  VelocityHistory history;
+  MarchHistory history;
   Eigen::VectorXd u_full; ///< at the end
 };
 
 Marched march(const Case& c, double k, int steps, const Eigen::VectorXd& v0_full = {}) {
-  ReducedSystem reduced = reduce(c.system);
+  const ReducedSystem reduced = reduce(c.system);
   const Eigen::VectorXd w0 = v0_full.size() ? reduced.restrict(v0_full) : Eigen::VectorXd();
   std::optional<VelocityContact> contact;
   if (c.contact) contact = velocity_contact(*c.contact, reduced);
-  DynamicBackwardEuler scheme(c.system, std::move(reduced), c.system.M, k, {}, w0,
-                              c.contact ? c.contact->gap : Eigen::VectorXd());
-  if (contact) contact->setting = scheme.velocity_setting(contact->setting);
+  DynamicBackwardEuler scheme(viscoelastic_problem(c.system, reduced, c.system.M), k, {}, w0,
+                              c.contact ? c.contact->gap : Eigen::VectorXd(),
+                              contact ? contact->setting : ContactSetting{});
+  if (contact) contact->setting = scheme.velocity_setting();
   LinearContactMarch m(scheme, contact ? &*contact : nullptr, scheme.velocity_parameters(newton()),
                        "cholmod");
   Marched r;
@@ -77,17 +80,26 @@ Marched march(const Case& c, double k, int steps, const Eigen::VectorXd& v0_full
       for (int p = 0; p < contact->size(); ++p) {
         const Eigen::Vector2d up(scheme.displacement()[contact->dofs[p][0]],
                                  scheme.displacement()[contact->dofs[p][1]]);
-        stored += c.contact->weight[p] *
-                  compliance_energy(c.contact->law[p],
-                                       -contact->normal[p].dot(up) - c.contact->gap[p]);
+        stored +=
+            c.contact->weight[p] *
+            compliance_energy(c.contact->law[p], -contact->normal[p].dot(up) - c.contact->gap[p]);
       }
     r.potential.push_back(stored);
     r.u.push_back(scheme.displacement());
     r.w.push_back(scheme.velocity());
   };
   record();
-  r.history = march_in_velocity(m, scheme, steps, steps, [&](const VelocityStep&) { record(); });
-  r.u_full = scheme.reduced().expand(scheme.displacement());
+  r.history =
+      sig::march(m, steps, steps, [&](const StepRecord&, const DynamicState&) { record(); });
+  r.u_full = reduced.expand(scheme.displacement());
+  // The march's own energy records: E = kinetic + elastic, the potential apart.
+  EXPECT_TRUE(r.history.records.energy);
+  for (std::size_t n = 0; n < r.energy.size(); ++n) {
+    const EnergyRecord& e = r.history.steps[n].energy;
+    EXPECT_NEAR(e.total, r.energy[n], 1e-14 * r.energy[0]) << "step " << n;
+    EXPECT_EQ(e.total, e.kinetic + e.elastic);
+    EXPECT_NEAR(e.interface, r.potential[n], 1e-14 * r.energy[0]) << "step " << n;
+  }
   return r;
 }
 

@@ -5,9 +5,11 @@
 // signorini: no penetration) and a failed Newton reported as a result.
 #include "assembly/dirichlet.hpp"
 #include "contact/contact_elements.hpp"
-#include "integrator/contact_march.hpp"
+#include "core/error.hpp"
 #include "integrator/contact_strategy.hpp"
+#include "integrator/elastodynamic_march.hpp"
 #include "integrator/elastodynamics.hpp"
+#include "stages/march_inputs.hpp"
 #include "test_bodies.hpp"
 
 #include <gtest/gtest.h>
@@ -44,8 +46,7 @@ struct ThrownBlock {
     return m;
   }
   Elastodynamics problem(MassChoice mass) const {
-    return reduced_elastodynamics(reduced,
-                                  mass_matrix(system, mass, mesh, elements.node));
+    return reduced_elastodynamics(reduced, mass_matrix(system, mass, mesh, elements.node));
   }
   DynamicState thrown() const {
     Eigen::VectorXd v = Eigen::VectorXd::Zero(system.num_dofs());
@@ -89,21 +90,19 @@ TEST_P(EveryStrategy, EnergyChangesByTheWorkOfTheContactForces) {
   const auto [strategy, scheme, mass] = GetParam();
   const BlockRun r = run(strategy, 150, 0.01, mass, scheme);
   ASSERT_TRUE(r.history.converged) << r.history.failure;
-  ASSERT_EQ(r.history.energy.size(), 151u);
-  const double e0 = r.history.energy[0].total;
+  ASSERT_EQ(r.history.steps.size(), 151u);
+  const double e0 = r.history.steps[0].energy.total;
   EXPECT_NEAR(e0, initial_energy(), 1e-12);
   int contact_steps = 0;
-  for (const EnergyRecord& e : r.history.energy) {
-    EXPECT_NEAR(e.total - e.contact_work, e0, 1e-11 * e0) << strategy << " step " << e.step;
+  for (const StepRecord& step : r.history.steps) {
+    const EnergyRecord& e = step.energy;
+    EXPECT_NEAR(e.total - e.contact_work, e0, 1e-11 * e0) << strategy << " step " << step.step;
     contact_steps += e.active_nodes > 0 ? 1 : 0;
+    // One force per contact node at every step, never pulling the body to the plane.
+    ASSERT_EQ(step.contact.normal_force.size(), r.boundary.size());
+    EXPECT_GE(step.contact.normal_force.minCoeff(), 0.0) << strategy;
   }
   EXPECT_GT(contact_steps, 5) << strategy; // the block did hit the plane
-  // One pressure per contact node at every kept state, never pulling the body to the plane.
-  ASSERT_EQ(r.history.output_pressure.size(), r.history.outputs.size());
-  for (const Eigen::VectorXd& pressure : r.history.output_pressure) {
-    EXPECT_EQ(pressure.size(), r.boundary.size());
-    EXPECT_GE(pressure.minCoeff(), 0.0) << strategy;
-  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -122,7 +121,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(SpecificPenalty, ConservesEnergyPlusPenaltyEnergy) {
   const BlockRun r = run("specific-penalty", 300);
   ASSERT_TRUE(r.history.converged) << r.history.failure;
-  const double e0 = r.history.energy[0].total;
+  const double e0 = r.history.steps[0].energy.total;
   // The penetrations of every step are needed, not only at the kept states: march again with an
   // observer.
   const ThrownBlock block;
@@ -131,7 +130,8 @@ TEST(SpecificPenalty, ConservesEnergyPlusPenaltyEnergy) {
   p.r = kStiffness;
   const ContactBoundary boundary = block.boundary();
   double worst = 0, deepest = 0;
-  const auto check = [&](const DynamicState& state, const EnergyRecord& e) {
+  const auto check = [&](const StepRecord& step, const DynamicState& state) {
+    const EnergyRecord& e = step.energy;
     const Eigen::VectorXd pen = boundary.penetration(boundary.B * state.u);
     const double foundation = 0.5 * kStiffness * boundary.setting.weight.dot(pen.cwiseProduct(pen));
     worst = std::max(worst, std::abs(e.total + foundation - e0));
@@ -146,13 +146,13 @@ TEST(SpecificPenalty, ConservesEnergyPlusPenaltyEnergy) {
 }
 
 double energy_after(const BlockRun& r) {
-  return r.history.energy.back().total;
+  return r.history.steps.back().energy.total;
 }
 
 double deepest(const BlockRun& r) {
   double pen = 0;
-  for (const EnergyRecord& e : r.history.energy)
-    pen = std::max(pen, e.max_penetration);
+  for (const StepRecord& step : r.history.steps)
+    pen = std::max(pen, step.energy.max_penetration);
   return pen;
 }
 
@@ -162,14 +162,14 @@ double deepest(const BlockRun& r) {
 // velocity (C15) a node arriving at speed v sinks a further k v / 2 or so, and the arrival costs
 // energy, less than Signorini's.
 TEST(TwoStep, IncrementKeepsTheEnergyMidpointPenetratesSignoriniLosesMore) {
-  const BlockRun increment = run("two-step", 300, 0.01, MassChoice::consistent, "midpoint", 50,
-                                 Persistency::increment);
+  const BlockRun increment =
+      run("two-step", 300, 0.01, MassChoice::consistent, "midpoint", 50, Persistency::increment);
   const BlockRun midpoint = run("two-step", 300);
   const BlockRun sig = run("signorini", 300);
   ASSERT_TRUE(increment.history.converged && midpoint.history.converged && sig.history.converged);
   const double e0 = initial_energy();
   for (const BlockRun* r : {&increment, &midpoint, &sig}) // the block has left the plane
-    EXPECT_EQ(r->history.energy.back().active_nodes, 0);
+    EXPECT_EQ(r->history.steps.back().energy.active_nodes, 0);
   const double loss_increment = (e0 - energy_after(increment)) / e0;
   const double loss_midpoint = (e0 - energy_after(midpoint)) / e0;
   const double loss_sig = (e0 - energy_after(sig)) / e0;
@@ -188,9 +188,9 @@ TEST(Signorini, NoPenetrationAtAnyStep) {
   const BlockRun r = run("signorini", 300);
   ASSERT_TRUE(r.history.converged) << r.history.failure;
   int contact_steps = 0;
-  for (const EnergyRecord& e : r.history.energy) {
-    EXPECT_LE(e.max_penetration, 1e-12 * 1.0) << "step " << e.step; // 1.0: the block's size
-    contact_steps += e.active_nodes > 0 ? 1 : 0;
+  for (const StepRecord& step : r.history.steps) {
+    EXPECT_LE(step.energy.max_penetration, 1e-12 * 1.0) << "step " << step.step; // block's size
+    contact_steps += step.energy.active_nodes > 0 ? 1 : 0;
   }
   EXPECT_GT(contact_steps, 5);
 }
@@ -202,13 +202,13 @@ TEST(ImprovedPenalty, PenetrationBoundedByGAndEnergyKeptWithEmm) {
     const BlockRun r = run("ipm", 300, 0.01, mass);
     ASSERT_TRUE(r.history.converged) << r.history.failure;
     double deepest = 0;
-    for (const EnergyRecord& e : r.history.energy) {
-      EXPECT_LE(e.max_penetration, kAllowed * (1 + 1e-12)) << "step " << e.step;
-      deepest = std::max(deepest, e.max_penetration);
+    for (const StepRecord& step : r.history.steps) {
+      EXPECT_LE(step.energy.max_penetration, kAllowed * (1 + 1e-12)) << "step " << step.step;
+      deepest = std::max(deepest, step.energy.max_penetration);
     }
     EXPECT_GT(deepest, 0.5 * kAllowed); // the bound was reached, not idle
     if (mass == MassChoice::emm) {
-      EXPECT_EQ(r.history.energy.back().active_nodes, 0);
+      EXPECT_EQ(r.history.steps.back().energy.active_nodes, 0);
       EXPECT_LT(std::abs(energy_after(r) - initial_energy()), 0.005 * initial_energy());
     }
   }
@@ -223,15 +223,36 @@ TEST(ContactMarch, NewtonFailureStopsTheMarchAndSaysWhere) {
     EXPECT_FALSE(h.converged) << strategy;
     EXPECT_NE(h.failure.find("step "), std::string::npos) << h.failure;
     // The impact starts at t = kGap / kSpeed = 0.05: steps before it are done.
-    ASSERT_GE(h.energy.size(), 5u) << strategy;
-    EXPECT_LT(h.energy.size(), 101u) << strategy;
-    const int failed = static_cast<int>(h.energy.size());
-    EXPECT_NE(h.failure.find("step " + std::to_string(failed)), std::string::npos) << h.failure;
-    for (const EnergyRecord& e : h.energy)
-      EXPECT_TRUE(std::isfinite(e.total) && std::isfinite(e.contact_work));
-    EXPECT_TRUE(h.final_state.u.allFinite() && h.final_state.v.allFinite());
-    EXPECT_EQ(h.outputs.back().time, h.final_state.time); // the last state done is kept
+    ASSERT_GE(h.steps_done(), 5u) << strategy;
+    EXPECT_LT(h.steps_done(), 101u) << strategy;
+    // The failed step is the last record, after the steps done.
+    const StepRecord& failed = h.steps.back();
+    EXPECT_FALSE(failed.converged);
+    EXPECT_EQ(failed.step, static_cast<int>(h.steps_done()));
+    EXPECT_NE(h.failure.find("step " + std::to_string(failed.step)), std::string::npos)
+        << h.failure;
+    for (const StepRecord& step : h.steps)
+      EXPECT_TRUE(std::isfinite(step.energy.total) && std::isfinite(step.energy.contact_work));
+    EXPECT_TRUE(h.final_state().u.allFinite() && h.final_state().v.allFinite());
+    EXPECT_EQ(h.output_step.back(), failed.step - 1); // the last state done is kept
   }
+}
+
+// The traits a card reader asks of a strategy are those of the strategy the factory makes: r is
+// required exactly where the traits say so, and the strategy made carries the name asked for.
+TEST(ContactStrategyFactory, TraitsMatchTheStrategiesMade) {
+  for (const char* name : {"signorini", "compliance", "specific-penalty", "two-step", "ipm"}) {
+    ContactStrategyParameters p;
+    const bool needs_r = contact_strategy_traits(name).needs_r;
+    if (needs_r)
+      EXPECT_THROW(make_contact_strategy(name, p), Error) << name;
+    else
+      EXPECT_EQ(make_contact_strategy(name, p)->name(), name);
+    p.r = 1e3;
+    EXPECT_EQ(make_contact_strategy(name, p)->name(), name);
+  }
+  EXPECT_THROW(contact_strategy_traits("penalty"), Error);
+  EXPECT_THROW(make_contact_strategy("penalty", ContactStrategyParameters{}), Error);
 }
 
 } // namespace

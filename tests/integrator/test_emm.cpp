@@ -49,7 +49,7 @@ protected:
     lumped_ = GetParam() % 2 == 1;
     const LinearSystem s = test::free_body_system(body_.mesh, test::unit_material(1.0, 0.3, 7.5));
     M_ = lumped_ ? diagonal_mass(s.M_lumped) : s.M;
-    Me_ = equivalent_mass_matrix(M_, body_.mesh, body_.contact);
+    Me_ = equivalent_mass_matrix(M_, body_.mesh.nodes, body_.contact);
     ASSERT_GE(body_.contact.size(), 5u);
   }
   std::string label() const { return body_.name + (lumped_ ? " lumped" : " consistent"); }
@@ -128,14 +128,14 @@ TEST(Emm, RejectsImpossibleContactSets) {
   std::vector<int> all(static_cast<std::size_t>(b.mesh.num_nodes()));
   for (int i = 0; i < b.mesh.num_nodes(); ++i)
     all[static_cast<std::size_t>(i)] = i;
-  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh, all), Error); // no mass left anywhere
+  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh.nodes, all), Error); // no mass left anywhere
   std::vector<int> twice = b.contact;
   twice.push_back(twice.front());
-  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh, twice), Error);
+  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh.nodes, twice), Error);
   std::vector<int> outside = b.contact;
   outside.front() = b.mesh.num_nodes();
-  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh, outside), Error);
-  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh, {}), Error);
+  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh.nodes, outside), Error);
+  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh.nodes, {}), Error);
 }
 
 } // namespace

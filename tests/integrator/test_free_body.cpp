@@ -5,16 +5,18 @@
 // load).
 #include "assembly/dirichlet.hpp"
 #include "core/error.hpp"
+#include "integrator/elastodynamic_march.hpp"
 #include "integrator/elastodynamics.hpp"
-#include "integrator/march.hpp"
 #include "integrator/midpoint.hpp"
 #include "integrator/newmark.hpp"
+#include "stages/march_inputs.hpp"
 #include "test_bodies.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace sig {
 namespace {
@@ -59,11 +61,12 @@ TEST_P(MidpointFreeBody, ConservesEnergyAndMomentaOverThousandSteps) {
   const Elastodynamics problem = body.problem(GetParam());
   const ImplicitMidpoint scheme(problem, k);
   const MarchHistory history = march(scheme, body.initial(), steps);
-  ASSERT_EQ(history.energy.size(), steps + 1u);
+  ASSERT_EQ(history.steps.size(), steps + 1u);
 
-  const double E0 = history.energy.front().total;
+  const double E0 = history.steps.front().energy.total;
   double drift = 0.0, min_elastic = 1e300, max_elastic = 0.0;
-  for (const EnergyRecord& r : history.energy) {
+  for (const StepRecord& step : history.steps) {
+    const EnergyRecord& r = step.energy;
     EXPECT_EQ(r.external_work, 0.0);
     EXPECT_DOUBLE_EQ(r.total, r.kinetic + r.elastic);
     drift = std::max(drift, std::abs(r.total - E0) / E0);
@@ -74,11 +77,11 @@ TEST_P(MidpointFreeBody, ConservesEnergyAndMomentaOverThousandSteps) {
   // The body really vibrates: energy moves between the kinetic and the elastic parts.
   EXPECT_EQ(min_elastic, 0.0);
   EXPECT_GT(max_elastic, 1e-3 * E0);
-  EXPECT_NEAR(history.energy.back().time, steps * k, 1e-9);
+  EXPECT_NEAR(history.steps.back().time, steps * k, 1e-9);
 
   // K annihilates the rigid modes, so M (v_{n+1} - v_n) is orthogonal to them: the momenta
   // p = e.M v and the angular momentum about the origin are conserved by the scheme.
-  const Eigen::VectorXd v0 = body.initial().v, v1 = history.final_state.v;
+  const Eigen::VectorXd v0 = body.initial().v, v1 = history.final_state().v;
   for (const Eigen::VectorXd& mode : {body.translation(0), body.translation(1), body.rotation()}) {
     const Eigen::VectorXd m = body.reduced.restrict(mode);
     const double p0 = m.dot(problem.M * v0), p1 = m.dot(problem.M * v1);
@@ -123,26 +126,31 @@ TEST_P(NewmarkFreeBody, MatchesMidpointStatesAndEnergy) {
     EXPECT_LT(dv_max, 1e-10);
   }
   EXPECT_EQ(a.time, b.time);
-  const double E0 = energy_record(problem, body.initial(), 0, 0.0).total;
-  EXPECT_NEAR(energy_record(problem, b, steps, 0.0).total, E0, 1e-10 * E0);
+  const double E0 = energy_of(problem, body.initial()).total;
+  EXPECT_NEAR(energy_of(problem, b).total, E0, 1e-10 * E0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Masses, NewmarkFreeBody,
                          ::testing::Values(MassChoice::consistent, MassChoice::emm),
                          [](const auto& info) { return to_string(info.param); });
 
-TEST(MarchHistory, KeepsTheOutputSteps) {
+// Every output_every-th step is kept, and the last one even off that grid; the observer sees
+// every step once, in order, with its state.
+TEST(MarchHistory, KeepsTheOutputStepsAndTheLast) {
   const FreeBody body;
   const ImplicitMidpoint scheme(body.problem(MassChoice::lumped), k);
   int calls = 0;
-  const MarchHistory h =
-      march(scheme, body.initial(), 10, 4,
-            [&calls](const DynamicState&, const EnergyRecord& r) { EXPECT_EQ(r.step, ++calls); });
+  const MarchHistory h = march(scheme, body.initial(), 10, 4,
+                               [&calls](const StepRecord& r, const DynamicState& state) {
+                                 EXPECT_EQ(r.step, ++calls);
+                                 EXPECT_EQ(state.time, r.time);
+                               });
   EXPECT_EQ(calls, 10);
-  ASSERT_EQ(h.outputs.size(), 3u); // steps 0, 4, 8
+  EXPECT_EQ(h.output_step, (std::vector<int>{0, 4, 8, 10}));
+  ASSERT_EQ(h.outputs.size(), 4u);
   EXPECT_NEAR(h.outputs[1].time, 4 * k, 1e-15);
   EXPECT_NEAR(h.outputs[2].time, 8 * k, 1e-15);
-  EXPECT_NEAR(h.final_state.time, 10 * k, 1e-15);
+  EXPECT_NEAR(h.final_state().time, 10 * k, 1e-15);
   EXPECT_EQ(march(scheme, body.initial(), 3).outputs.size(), 2u); // initial and final
 }
 
@@ -164,6 +172,24 @@ TEST(TimeScheme, RejectsBadInput) {
   LinearSystem empty = massless;
   empty.M = Eigen::SparseMatrix<double>(0, 0);
   EXPECT_THROW(mass_matrix(empty, MassChoice::consistent, body.mesh), Error);
+}
+
+// Every scheme the TIME card names has its traits; the factory makes exactly those of
+// elastodynamics (the marches in velocity build their own), midpoint alone in large deformation.
+TEST(TimeScheme, EveryCardSchemeHasTraitsAndTheFactoryMakesElastodynamicsOnes) {
+  const FreeBody body;
+  std::istringstream names(time_scheme_names);
+  int count = 0;
+  for (std::string name; std::getline(names, name, '|'); ++count) {
+    const TimeSchemeTraits traits = time_scheme_traits(name);
+    if (traits.march == MarchKind::elastodynamics)
+      EXPECT_EQ(make_time_scheme(name, body.problem(MassChoice::lumped), k)->name(), name);
+    else
+      EXPECT_THROW(make_time_scheme(name, body.problem(MassChoice::lumped), k), Error) << name;
+    EXPECT_EQ(traits.large_deformation, name == "midpoint") << name;
+  }
+  EXPECT_EQ(count, 4);
+  EXPECT_THROW(time_scheme_traits("euler"), Error);
 }
 
 } // namespace

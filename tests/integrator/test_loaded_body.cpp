@@ -3,10 +3,11 @@
 // (E_n - E_0 = W_n), and Newmark and midpoint agree for a load affine in time but not for a
 // curved one (their only difference is f(t_{n+1/2}) against (f_n + f_{n+1}) / 2).
 #include "assembly/dirichlet.hpp"
+#include "integrator/elastodynamic_march.hpp"
 #include "integrator/elastodynamics.hpp"
-#include "integrator/march.hpp"
 #include "integrator/midpoint.hpp"
 #include "integrator/newmark.hpp"
+#include "stages/march_inputs.hpp"
 #include "test_bodies.hpp"
 
 #include <gtest/gtest.h>
@@ -63,14 +64,15 @@ TEST_P(LoadedBody, EnergyChangesByTheWorkOfTheLoad) {
       k);
   const MarchHistory h = march(*scheme, body.rest(), steps);
   double scale = 0.0, imbalance = 0.0;
-  for (const EnergyRecord& r : h.energy) {
+  for (const StepRecord& step : h.steps) {
+    const EnergyRecord& r = step.energy;
     scale = std::max(scale, r.total);
-    imbalance = std::max(imbalance, std::abs(r.total - r.external_work - h.energy[0].total));
+    imbalance = std::max(imbalance, std::abs(r.total - r.external_work - h.steps[0].energy.total));
   }
   EXPECT_GT(scale, 1e-4); // the load does work
   EXPECT_LT(imbalance, 1e-10 * scale) << GetParam();
   // The clamped side stays in place: the expanded state has zero there.
-  const Eigen::VectorXd u = body.reduced.expand(h.final_state.u);
+  const Eigen::VectorXd u = body.reduced.expand(h.final_state().u);
   for (int d : body.system.dirichlet_dofs)
     EXPECT_EQ(u(d), 0.0);
 }

@@ -3,7 +3,7 @@
 // rotation generator: in (u, v / w) each step is an exact rotation by theta = 2 atan(w k / 2),
 // so the amplitude is kept and the discrete period 2 pi k / theta is too long by
 // (w k)^2 / 12 + O(k^4): second order.
-#include "integrator/march.hpp"
+#include "integrator/elastodynamic_march.hpp"
 #include "integrator/time_scheme.hpp"
 
 #include <gtest/gtest.h>
@@ -89,9 +89,9 @@ TEST_P(Oscillator, KeepsTheAmplitudeAtLargeSteps) {
   const MarchHistory h = march(
       *scheme, {0.0, Eigen::VectorXd::Constant(1, u0), Eigen::VectorXd::Constant(1, v0)}, 200);
   const double E0 = 0.5 * mass * v0 * v0 + 0.5 * stiffness * u0 * u0;
-  EXPECT_NEAR(h.energy.front().total, E0, 1e-15 * E0);
-  for (const EnergyRecord& r : h.energy)
-    EXPECT_NEAR(r.total, E0, 1e-12 * E0);
+  EXPECT_NEAR(h.steps.front().energy.total, E0, 1e-15 * E0);
+  for (const StepRecord& r : h.steps)
+    EXPECT_NEAR(r.energy.total, E0, 1e-12 * E0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Schemes, Oscillator, ::testing::Values("midpoint", "newmark"));

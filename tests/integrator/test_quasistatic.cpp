@@ -17,7 +17,8 @@
 #include "integrator/linear_contact_march.hpp"
 #include "material/mili.hpp"
 #include "mesh/generators.hpp"
-#include "solver/static_solve.hpp"
+#include "stages/march_inputs.hpp"
+#include "stages/static_solve.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
@@ -59,20 +60,20 @@ ContactSolverParameters newton(double eps = 1e-11) {
 }
 
 struct Marched {
-  VelocityHistory history;
+  MarchHistory history;
   Eigen::VectorXd u; ///< full dofs at the end
   int dense_factorizations = 0;
 };
 
 Marched march(const Case& c, double k, int steps, const ContactSolverParameters& p = newton()) {
-  ReducedSystem reduced = reduce(c.system);
+  const ReducedSystem reduced = reduce(c.system);
   std::optional<VelocityContact> contact;
   if (c.contact) contact = velocity_contact(*c.contact, reduced);
-  QuasistaticKelvinVoigt scheme(c.system, std::move(reduced), k);
+  QuasistaticKelvinVoigt scheme(viscoelastic_problem(c.system, reduced), k);
   LinearContactMarch m(scheme, contact ? &*contact : nullptr, p, "cholmod");
   Marched r;
-  r.history = march_in_velocity(m, scheme, steps, steps);
-  r.u = scheme.reduced().expand(scheme.displacement());
+  r.history = sig::march(m, steps, steps);
+  r.u = reduced.expand(scheme.displacement());
   r.dense_factorizations = m.dense_factorizations();
   return r;
 }
@@ -146,11 +147,11 @@ TEST(OedometricColumn, StrainSettlementsAndWallPressure) {
   const auto [bottom, top] = settlements(c.mesh, r.u);
   EXPECT_NEAR(bottom, 0.01, 1e-12);
   EXPECT_NEAR(top, 0.08387184, 5e-9);
-  const VelocityStep& last = r.history.steps.back();
+  const StepRecord& last = r.history.steps.back();
   for (int p = 0; p < c.contact->size(); ++p) {
     EXPECT_EQ(last.contact.normal_status[p], NormalStatus::unilateral) << "node " << p;
-    EXPECT_NEAR(last.normal_velocity[p], 0.01, 1e-12);
-    EXPECT_NEAR(last.tangential_velocity[p], 0.0, 1e-12);
+    EXPECT_NEAR(last.contact.normal_velocity[p], 0.01, 1e-12);
+    EXPECT_NEAR(last.contact.tangential_velocity[p], 0.0, 1e-12);
     const double pressure = last.contact.normal_force[p] / c.contact->weight[p];
     EXPECT_NEAR(pressure, 10.0, 1e-9);            // the whole normal pressure: q(1)
     EXPECT_NEAR(pressure - 10 * 0.01, 9.9, 1e-9); // the wall's share: q - c g
@@ -165,13 +166,14 @@ TEST(OedometricColumn, RniToCuvSwitch) {
   const Case c = column(10, 10, 0.05);
   const Marched r = march(c, k, 8);
   ASSERT_TRUE(r.history.converged) << r.history.failure;
-  for (const VelocityStep& s : r.history.steps) {
+  for (std::size_t n = 1; n < r.history.steps.size(); ++n) {
+    const StepRecord& s = r.history.steps[n];
     const bool rni = s.step <= 3;
     for (int p = 0; p < c.contact->size(); ++p) {
       EXPECT_EQ(s.contact.normal_status[p],
                 rni ? NormalStatus::compliance : NormalStatus::unilateral)
           << "step " << s.step << " node " << p;
-      EXPECT_NEAR(s.normal_velocity[p], rni ? 10 * s.time / 10 : 0.05, 1e-12);
+      EXPECT_NEAR(s.contact.normal_velocity[p], rni ? 10 * s.time / 10 : 0.05, 1e-12);
     }
   }
   EXPECT_NEAR(uniform_strain(c.mesh, r.u), column_strain(10, k, 8).back(), 1e-13);
@@ -227,19 +229,19 @@ TEST(QuasistaticMarch, ScalingLoadAndBoundScalesTheVelocities) {
   const Marched a = march(strip(1, 0.05), k, 16), b = march(strip(s, s * 0.05), k, 16);
   ASSERT_TRUE(a.history.converged && b.history.converged);
   int rni = 0, cuv = 0, stick = 0, slip = 0;
-  for (std::size_t n = 0; n < a.history.steps.size(); ++n) {
-    const VelocityStep &x = a.history.steps[n], &y = b.history.steps[n];
-    EXPECT_EQ(x.contact.normal_status, y.contact.normal_status) << "step " << x.step;
-    EXPECT_EQ(x.contact.friction_status, y.contact.friction_status) << "step " << x.step;
+  for (std::size_t n = 1; n < a.history.steps.size(); ++n) {
+    const ContactRecord &x = a.history.steps[n].contact, &y = b.history.steps[n].contact;
+    EXPECT_EQ(x.normal_status, y.normal_status) << "step " << n;
+    EXPECT_EQ(x.friction_status, y.friction_status) << "step " << n;
     EXPECT_LT((s * x.normal_velocity - y.normal_velocity).norm(), 1e-9 * y.normal_velocity.norm());
     EXPECT_LT((s * x.tangential_velocity - y.tangential_velocity).norm(),
               1e-9 * y.normal_velocity.norm());
-    for (std::size_t p = 0; p < x.contact.normal_status.size(); ++p) {
-      rni += x.contact.normal_status[p] == NormalStatus::compliance;
-      cuv += x.contact.normal_status[p] == NormalStatus::unilateral;
-      stick += x.contact.friction_status[p] == FrictionStatus::stick;
-      slip += x.contact.friction_status[p] == FrictionStatus::slip_forward ||
-              x.contact.friction_status[p] == FrictionStatus::slip_backward;
+    for (std::size_t p = 0; p < x.normal_status.size(); ++p) {
+      rni += x.normal_status[p] == NormalStatus::compliance;
+      cuv += x.normal_status[p] == NormalStatus::unilateral;
+      stick += x.friction_status[p] == FrictionStatus::stick;
+      slip += x.friction_status[p] == FrictionStatus::slip_forward ||
+              x.friction_status[p] == FrictionStatus::slip_backward;
     }
   }
   EXPECT_LT((s * a.u - b.u).norm(), 1e-9 * b.u.norm());
@@ -350,10 +352,11 @@ NodeOutcome one_node(double fx, double fn, FrictionBound bound, double origin = 
   law.bound = bound;
   contact.setting = {{law}, Eigen::VectorXd::Constant(1, 0.5)};
   LinearContactMarch m(scheme, &contact, newton(1e-12), "cholmod");
-  const VelocityStep s = m.step();
-  EXPECT_TRUE(s.converged()) << s.contact.failure;
-  return {s.normal_velocity[0],          s.tangential_velocity[0],   s.contact.normal_force[0],
-          s.contact.tangential_force[0], s.contact.normal_status[0], s.contact.friction_status[0]};
+  const StepRecord s = m.step(1);
+  EXPECT_TRUE(s.converged) << s.failure;
+  const ContactRecord& c = s.contact;
+  return {c.normal_velocity[0],  c.tangential_velocity[0], c.normal_force[0],
+          c.tangential_force[0], c.normal_status[0],       c.friction_status[0]};
 }
 
 // ALGORITHMS.md 2.6 check 4: Coulomb in velocity on one node of weight w = 0.5, c = 10,
@@ -401,7 +404,7 @@ TEST(QuasistaticMarch, AFailedStepStopsTheMarch) {
   const Marched r = march(strip(1, 0.05), 1.0 / 16, 16, p);
   EXPECT_FALSE(r.history.converged);
   EXPECT_NE(r.history.failure.find("did not converge"), std::string::npos) << r.history.failure;
-  EXPECT_FALSE(r.history.steps.back().converged());
+  EXPECT_FALSE(r.history.steps.back().converged);
   EXPECT_EQ(r.history.output_step.back(), r.history.steps.back().step - 1);
 }
 

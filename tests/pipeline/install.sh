@@ -60,7 +60,7 @@ targets=$prefix/lib/cmake/Signorini/SignoriniTargets.cmake
 public=$(sed -n 's/^ *INTERFACE_LINK_LIBRARIES "\(.*\)"/\1/p' "$targets" | tr ';' '\n' |
   grep -v '^\\\$<LINK_ONLY:' | grep -v '^Signorini::' | sort -u | tr '\n' ' ')
 [ "$public" = "Eigen3::Eigen " ] || fail "public link dependencies beyond Eigen: $public"
-for target in core mesh material assembly contact_laws contact solver solver_stage integrator post; do
+for target in core mesh material assembly contact_laws contact solver integrator stages post; do
   grep -q "add_library(Signorini::$target STATIC IMPORTED)" "$targets" || fail "no Signorini::$target"
 done
 if grep -rlE '#include [<"](vtk|cholmod|umfpack|dmumps|metis|cblas|lapacke)' "$prefix/include"; then

@@ -26,7 +26,8 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 assert s["converged"] is False, s["converged"]
 assert s["iterations"] == 3 and len(s["residual_history"]) == 3, s["iterations"]
-assert "iteration limit" in s["failure"], s["failure"]
+assert s["failure"] == "iteration-limit", s["failure"]
+assert "iteration limit" in s["failure_detail"], s["failure_detail"]
 print(f"nonconvergence: projection c = 1, maxit = 3: converged {s['converged']}, "
       f"{s['iterations']} iterations, residuals {[f'{r:.2e}' for r in s['residual_history']]}")
 PY

@@ -90,17 +90,25 @@ TEST(ContactTable, DisagreeingSizesAndBadNodesAreErrors) {
 }
 
 TEST(ContactTable, CsvHeaderAndRows) {
-  const auto csv =
-      contact_csv(contact_rows(test::small_mesh(), test::bottom_contact(), solved("alm")));
+  const auto rows = contact_rows(test::small_mesh(), test::bottom_contact(), solved("alm"));
+  const auto csv = contact_csv(rows, true);
   const std::string header = "node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,"
-                             "friction_status,tangential_multiplier,tangential_pressure,slip\n";
+                             "friction_status,tangential_multiplier,tangential_pressure,slip,"
+                             "converged\n";
   ASSERT_EQ(csv.substr(0, header.size()), header);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
-  EXPECT_NE(csv.find("\n5,1,0,0,-0.10000000000000001,0,3,3,contact,CU,S-,-1.5,-1.5,0\n"),
+  EXPECT_NE(csv.find("\n5,1,0,0,-0.10000000000000001,0,3,3,contact,CU,S-,-1.5,-1.5,0,1\n"),
             std::string::npos)
       << csv;
   EXPECT_NE(csv.find("\n1,0,0,0.01"), std::string::npos);
   EXPECT_NE(csv.find(",free,free,-,0,0,"), std::string::npos);
+  // A solve that did not converge says so on every row.
+  const auto nv = contact_csv(rows, false);
+  EXPECT_EQ(std::count(nv.begin(), nv.end(), '\n'), 4);
+  std::size_t rows_nv = 0;
+  for (std::size_t at = nv.find("\n"); at + 1 < nv.size(); at = nv.find("\n", at + 1))
+    rows_nv += nv.compare(nv.find("\n", at + 1) - 2, 2, ",0") == 0;
+  EXPECT_EQ(rows_nv, 3u) << nv;
 }
 
 TEST(ContactTable, SamplesAreCentred) {
@@ -110,6 +118,22 @@ TEST(ContactTable, SamplesAreCentred) {
   EXPECT_EQ(samples[1].x, 0.0);
   EXPECT_EQ(samples[2].x, 1.0);
   EXPECT_EQ(samples[1].weight, 1.0);
+}
+
+TEST(Summary, AFailedSolveNamesItsReasonAndDrift) {
+  const Mesh mesh = test::small_mesh();
+  Ds b = solved("alm");
+  b.put_int("converged", 0);
+  b.put_text("failure", "drift: a rigid motion of the body is held by no contact");
+  b.put_text("failure_reason", "drift");
+  b.put_scalar("drift", 8.7e6);
+  const auto rows = contact_rows(mesh, test::bottom_contact(), b);
+  const std::string json = build_summary("Nv", mesh, b, rows, gather_times({&b})).dump(-1);
+  EXPECT_NE(json.find("\"converged\":false,\"failure\":\"drift\",\"failure_detail\":\"drift: a "
+                      "rigid motion"),
+            std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"drift\":8700000"), std::string::npos) << json;
 }
 
 TEST(Summary, KeysInStableOrderWithValuesFromTheSolution) {

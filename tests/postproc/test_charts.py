@@ -30,7 +30,7 @@ def test_labels_of_coinciding_points_are_written_once():
 def test_speed_accuracy_png_with_nv(tmp_path):
     series = [Series("PDAS", [Point(0.2, 3e-3, "N=128"), Point(0.5, 1e-3, "N=256")]),
               Series("projection", [Point(0.3, None, "N=128")], marker="s", line="")]
-    path = speed_accuracy_chart(tmp_path / "sa.png", series, "seconds", "error", "test")
+    path = speed_accuracy_chart(tmp_path / "sa.png", series, "time (s)", "error (-)", "test")
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
@@ -38,7 +38,9 @@ def test_stability_map_png(tmp_path):
     statuses = ["ok", "Nv", "missing", "sway", "drift", "gain+chatter", "dissipates"]
     cells = [[MapCell(s, s, 10 * (i + 1) if s in ("ok", "sway", "drift") else None)
               for i, s in enumerate(statuses)]]
-    panels = [MapPanel("all statuses", ["N = 128"], statuses, cells, xlabel="status"),
-              MapPanel("one", ["N = 128"], ["1e3"], [[MapCell("59", "ok", 59)]])]
-    path = stability_map(tmp_path / "map.png", panels, value_label="log10(iterations)")
+    panels = [MapPanel("all statuses", ["N = 128"], statuses, cells, xlabel="status (-)",
+                       ylabel="mesh (-)"),
+              MapPanel("one", ["N = 128"], ["1e3"], [[MapCell("59", "ok", 59)]],
+                       xlabel="gamma (GPa/m)", ylabel="mesh (-)")]
+    path = stability_map(tmp_path / "map.png", panels, value_label="Newton (iterations)")
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

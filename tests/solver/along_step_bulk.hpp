@@ -14,6 +14,7 @@ public:
   bool has_tangential() const override { return false; }
   Eigen::VectorXd slip() const override { return Eigen::VectorXd::Zero(2); }
   double force_scale() const override { return 1; }
+  Eigen::VectorXd contact_stiffness() const override { return Eigen::VectorXd::Ones(2); }
   bool move(double alpha) override {
     alpha_ = alpha;
     return true;

@@ -178,6 +178,19 @@ TEST(LinearSolverFactory, CholmodRefusesMatricesThatAreNotSpd) {
   EXPECT_THROW(make_linear_solver("cholmod", MatrixKind::symmetric), Error);
 }
 
+// The kind a backend's traits give a symmetric matrix is one its factory takes, and it solves a
+// positive definite one; an unknown name is refused as by the factory.
+TEST(BackendTraits, SymmetricKindIsOneTheBackendFactorizes) {
+  const Eigen::SparseMatrix<double> A = laplacian_1d(100, 2.5);
+  const Eigen::VectorXd x = test::manufactured(100);
+  for (const char* backend : {"cholmod", "umfpack", "MUMPS"}) {
+    const auto solver = make_linear_solver(backend, backend_traits(backend).symmetric_kind());
+    solver->factorize(A);
+    EXPECT_LT((solver->solve(Eigen::VectorXd(A * x)) - x).norm() / x.norm(), 1e-12) << backend;
+  }
+  EXPECT_THROW(backend_traits("pardiso"), Error);
+}
+
 TEST(Cholmod, IndefiniteMatrixIsAnErrorNamingTheMinor) {
   const Eigen::SparseMatrix<double> A = laplacian_1d(50, 0.9); // eigenvalues in (-1.1, 2.9), none 0
   CholmodSolver solver;

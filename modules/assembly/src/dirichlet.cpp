@@ -73,7 +73,7 @@ ReducedSystem::restrict_matrix(const Eigen::SparseMatrix<double>& A) const {
   return R;
 }
 
-ReducedSystem reduce(const LinearSystem& system) {
+ReducedSystem reduce(const LinearSystem& system, const std::vector<int>& imposed_elsewhere) {
   const int n = system.num_dofs();
   SIG_VERIFY(system.K.rows() == n && system.K.cols() == n,
              "reduce: K is " << system.K.rows() << " x " << system.K.cols() << " for " << n
@@ -83,17 +83,20 @@ ReducedSystem reduce(const LinearSystem& system) {
              "reduce: " << system.dirichlet_dofs.size() << " Dirichlet dofs but "
                         << system.dirichlet_values.size() << " values");
   ReducedSystem reduced;
-  reduced.dirichlet_dofs = system.dirichlet_dofs;
-  reduced.dirichlet_values = system.dirichlet_values;
   reduced.reduced_index.assign(n, 0);
   Eigen::VectorXd u_d = Eigen::VectorXd::Zero(n);
+  std::vector<double> values;
   for (std::size_t k = 0; k < system.dirichlet_dofs.size(); ++k) {
     const int dof = system.dirichlet_dofs[k];
     SIG_VERIFY(dof >= 0 && dof < n && (k == 0 || dof > system.dirichlet_dofs[k - 1]),
                "reduce: Dirichlet dofs must be sorted, unique and < " << n);
+    if (std::binary_search(imposed_elsewhere.begin(), imposed_elsewhere.end(), dof)) continue;
     reduced.reduced_index[dof] = -1;
-    u_d(dof) = system.dirichlet_values(static_cast<Eigen::Index>(k));
+    reduced.dirichlet_dofs.push_back(dof);
+    values.push_back(u_d(dof) = system.dirichlet_values(static_cast<Eigen::Index>(k)));
   }
+  reduced.dirichlet_values =
+      Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
   for (int dof = 0; dof < n; ++dof) {
     if (reduced.reduced_index[dof] < 0) continue;
     reduced.reduced_index[dof] = reduced.num_free();

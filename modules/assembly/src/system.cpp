@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <sstream>
 
 namespace sig {
 
@@ -98,7 +99,9 @@ Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& tabl
 
 void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vector<int>& dofs,
                           Eigen::VectorXd& values) {
-  std::map<int, double> imposed; // later cards override earlier ones
+  // Each dof's value and the card that gave it: two cards giving one dof two values (where
+  // their references meet) contradict each other, and neither may silently win.
+  std::map<int, std::pair<double, const Card*>> imposed;
   for (const Card* card : datafile.all("DIRICHLET")) {
     const std::vector<int> refs = card_references(*card, mesh, RefSupport::edges_or_vertices);
     const char* fields[2] = {"ux", "uy"};
@@ -107,14 +110,23 @@ void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vecto
       if (!card->has(fields[c])) continue;
       const double value = card->real(fields[c]);
       for (int ref : refs)
-        for (int node : mesh.nodes_with_ref(ref))
-          imposed[2 * node + c] = value;
+        for (int node : mesh.nodes_with_ref(ref)) {
+          const auto [it, fresh] = imposed.try_emplace(2 * node + c, value, card);
+          if (fresh || it->second.first == value) continue;
+          std::ostringstream what;
+          what << "gives node " << node + 1 << " (at (" << mesh.nodes[node].x() << ", "
+               << mesh.nodes[node].y() << "), reference " << ref << ") " << fields[c] << " = "
+               << value << ", but the DIRICHLET card of line " << it->second.second->line
+               << " gives it " << it->second.first
+               << ": one displacement cannot take two values (give the node one of them)";
+          card->fail(fields[c], what.str());
+        }
     }
   }
   dofs.clear();
   values.resize(static_cast<Eigen::Index>(imposed.size()));
   for (const auto& [dof, value] : imposed) {
-    values(static_cast<Eigen::Index>(dofs.size())) = value;
+    values(static_cast<Eigen::Index>(dofs.size())) = value.first;
     dofs.push_back(dof);
   }
 }

@@ -6,6 +6,7 @@
 #include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
+#include "core/log.hpp"
 #include "core/stage.hpp"
 #include "mesh/nopo.hpp"
 
@@ -41,9 +42,22 @@ int main(int argc, char** argv) {
       return;
     }
 
-    // 3. Write the CONT DS and summarize.
+    // 3. Write the CONT DS and summarize; warn of an obstacle facing Gamma3 from inside.
     sig::write_cont(cont_path, *elements, datafile.title());
     const sig::ContactElements& e = *elements;
+    if (const std::vector<int> away = sig::nodes_facing_away(mesh, e);
+        2 * away.size() > e.node.size()) {
+      const int i = away.front();
+      const Eigen::Vector2d& n = e.normal[i];
+      const Eigen::Vector2d& x = mesh.nodes[e.node[i]];
+      sig::log_warning(std::to_string(away.size()) + " of " + std::to_string(e.size()) +
+                       " contact nodes face the obstacle from inside the body (node " +
+                       std::to_string(e.node[i] + 1) + " at (" + std::to_string(x.x()) + ", " +
+                       std::to_string(x.y()) + "): the obstacle's normal (" +
+                       std::to_string(n.x()) + ", " + std::to_string(n.y()) +
+                       ") points along the body's outward normal there); the CONTACT card's "
+                       "normal= must point out of the obstacle, towards the body");
+    }
     std::cout << "sig-contact: " << e.size() << " contact elements on reference " << e.ref << " ("
               << sig::describe(e.law.front()) << "; obstacle " << e.obstacle.kind << ")\n"
               << "  Lagrange nodes " << e.lagrange_node.front() + 1 << ".."

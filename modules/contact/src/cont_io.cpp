@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace sig {
 
@@ -87,8 +88,16 @@ ContactElements read_cont(const std::filesystem::path& path) {
   const Ds ds = read_ds(path, "CONT");
   const std::string where = "CONT file " + path.string();
   ContactElements elements;
-  elements.num_nodes = static_cast<int>(ds.integer("num_nodes"));
-  elements.ref = static_cast<int>(ds.integer("ref"));
+  // Checked before they are narrowed: 1e15 would otherwise read as -1530494976.
+  const std::int64_t num_nodes = ds.integer("num_nodes"), ref = ds.integer("ref");
+  SIG_VERIFY(num_nodes >= 1 && num_nodes <= max_mesh_nodes,
+             where << ": array 'num_nodes': " << num_nodes << " is not in 1.." << max_mesh_nodes
+                   << " (the nodes a mesh may have)");
+  SIG_VERIFY(ref >= 1 && ref <= std::numeric_limits<int>::max(),
+             where << ": array 'ref': " << ref << " is not a reference (1.."
+                   << std::numeric_limits<int>::max() << ")");
+  elements.num_nodes = static_cast<int>(num_nodes);
+  elements.ref = static_cast<int>(ref);
   elements.thickness = ds.scalar("thickness");
   const std::vector<std::int64_t> node = ds.ints("node");
   const std::vector<std::int64_t> lagrange = ds.ints("lagrange_node");

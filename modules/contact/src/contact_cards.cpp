@@ -3,6 +3,7 @@
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -38,6 +39,15 @@ void check_reference(const Card& card, const Mesh& mesh, int ref) {
 
 std::unique_ptr<Obstacle> obstacle_from_card(const Card& card) {
   const std::string kind = card.choice("obstacle", {"plane", "disc"});
+  // The fields of the other obstacle would be ignored: the deck says something it does not get.
+  const std::string other = kind == "disc" ? "plane" : "disc";
+  const std::array<const char*, 2> foreign = kind == "disc"
+                                                 ? std::array<const char*, 2>{"point", "normal"}
+                                                 : std::array<const char*, 2>{"centre", "radius"};
+  for (const char* field : foreign)
+    if (card.has(field))
+      card.fail(field, "is a field of obstacle=" + other + ", not of obstacle=" + kind +
+                           " (remove it, or change the obstacle)");
   if (kind == "disc") {
     const Eigen::Vector2d centre = pair_field(card, "centre");
     const double radius = card.real("radius"); // > 0: core/ranges.hpp

@@ -157,6 +157,22 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
   return elements;
 }
 
+std::vector<int> nodes_facing_away(const Mesh& mesh, const ContactElements& elements) {
+  // The stored edges have the domain on their left: the outward normal of a -> b is the
+  // direction b - a turned clockwise.
+  std::map<int, Eigen::Vector2d> outward;
+  for (const BoundaryEdge& e : unique_edges(mesh, elements.ref)) {
+    const Eigen::Vector2d d = mesh.nodes[e.b] - mesh.nodes[e.a];
+    const Eigen::Vector2d n(d.y(), -d.x());
+    for (int k : {e.a, e.b})
+      outward.try_emplace(k, Eigen::Vector2d::Zero()).first->second += n;
+  }
+  std::vector<int> away;
+  for (int i = 0; i < elements.size(); ++i)
+    if (elements.normal[i].dot(outward.at(elements.node[i])) > 0) away.push_back(i);
+  return away;
+}
+
 Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(2 * elements.size());

@@ -54,7 +54,7 @@ std::vector<std::string> remove_stale_temporaries(const std::filesystem::path& f
     // ESRCH: no such process. EPERM means it runs (under another user): keep its file.
     if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
     std::error_code ignored;
-    if (std::filesystem::remove(entry.path(), ignored)) removed.push_back(name);
+    if (std::filesystem::remove_all(entry.path(), ignored) > 0) removed.push_back(name);
   }
   return removed;
 }
@@ -66,8 +66,8 @@ void stop_point_for_tests(const std::filesystem::path& target) {
   ::raise(SIGSTOP);
 }
 
-AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
-  temporary_ = temporary_path(target_);
+AtomicFile::AtomicFile(std::filesystem::path target)
+    : target_(std::move(target)), temporary_(temporary_path(target_)), unfinished_(temporary_) {
   file_ = std::fopen(temporary_.c_str(), "wb");
   SIG_VERIFY(file_ != nullptr, target_.string() << ": cannot create temporary file "
                                                 << temporary_.string() << ": " << reason());

@@ -1,6 +1,8 @@
 #pragma once
 // A file written under a temporary name in the target's folder and renamed over the target only
 // when complete and synced: readers see the old file or the new one, never half of one.
+#include "core/stage_guard.hpp"
+
 #include <cstdio>
 #include <filesystem>
 
@@ -20,6 +22,7 @@ public:
 
 private:
   std::filesystem::path target_, temporary_;
+  Unfinished unfinished_; ///< removes the temporary if the stage is stopped from outside
   std::FILE* file_ = nullptr;
   bool stopped_ = false; ///< stop_point_for_tests passed (once, at the first write)
 };

@@ -33,7 +33,9 @@ double parse_real(const Card& card, const std::string& name, const std::string& 
   if (error != std::errc() || end != last || text.empty())
     card.fail(name, "expected a number, got '" + text + "'");
   if (!std::isfinite(x)) card.fail(name, "expected a finite number, got '" + text + "'");
-  return x;
+  if (const std::string excess = magnitude_excess(x); !excess.empty()) card.fail(name, excess);
+  // -0 is 0: a value handed on as text (gmsh's -setnumber) must not read "-0".
+  return x == 0 ? 0.0 : x;
 }
 
 // The range of the field (core/ranges.hpp), checked on every value a stage reads.

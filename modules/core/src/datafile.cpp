@@ -1,5 +1,6 @@
 #include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/json.hpp"
 #include "core/log.hpp"
 #include "text_case.hpp"
@@ -175,6 +176,7 @@ const std::vector<std::string>& cards_looked_up() {
 }
 
 Datafile Datafile::read(const std::filesystem::path& path) {
+  verify_regular_file(path, "datafile");
   std::ifstream in(path, std::ios::binary);
   SIG_VERIFY(in, path.string() << ": cannot read datafile: " << std::strerror(errno));
   std::ostringstream text;

@@ -2,6 +2,7 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/finite.hpp"
+#include "core/input_file.hpp"
 #include "core/provenance.hpp"
 
 #include <algorithm>
@@ -131,6 +132,7 @@ private:
 class DsReader {
 public:
   explicit DsReader(const std::filesystem::path& path) : path_(path.string()) {
+    verify_regular_file(path, "DS");
     std::error_code error;
     const auto size = std::filesystem::file_size(path, error);
     SIG_VERIFY(!error, path_ << ": cannot read DS: " << error.message());

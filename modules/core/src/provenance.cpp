@@ -51,6 +51,10 @@ void close_case() {
   current_case().reset();
 }
 
+std::filesystem::path case_folder() {
+  return current_case() ? current_case()->folder : std::filesystem::path();
+}
+
 void note_case_input(const std::string& kind, const std::filesystem::path& file,
                      std::uint64_t fingerprint, const std::vector<ProvenanceEntry>& built_from) {
   std::optional<Case>& state = current_case();

@@ -20,6 +20,16 @@ constexpr ValueRange positive{0, inf, true, false, nullptr};
 constexpr ValueRange non_negative{0, inf, false, false, nullptr};
 constexpr ValueRange count_from_1{1, max_count, false, false, nullptr};
 constexpr ValueRange reference{1, 2147483647, false, false, nullptr};
+// Iterations of one nonlinear solve: the most a scene takes is 1445 (projection with c = 1e2 on
+// the ring of scene 7b, in 14 load steps); a method that has not converged in 7x that will not.
+constexpr ValueRange iterations{1, 1e4, false, false,
+                                "a method that has not converged in 1e4 iterations will not: "
+                                "the most any scene takes is 1445"};
+// A relative test below 1e-14 (about 50 round-offs of a double) is met by chance only: the run
+// would go on to maxit.
+constexpr ValueRange tolerance{1e-14, 1, false, true,
+                               "the test is relative: below 1e-14, some 50 round-offs, it is met "
+                               "by chance only"};
 constexpr ValueRange poisson{-1, 0.5, true, true,
                              "0.5 is the incompressible limit, where Hooke's law has no D"};
 
@@ -65,9 +75,15 @@ constexpr FieldRange table[] = {
     {"SOLVER", "r", positive},
     {"SOLVER", "gamma", positive},
     {"SOLVER", "c", positive},
-    {"SOLVER", "eps", positive},
-    {"SOLVER", "maxit", count_from_1},
-    {"LOADSTEPS", "n", count_from_1},
+    {"SOLVER", "eps", tolerance},
+    {"SOLVER", "maxit", iterations},
+    {"CONVEXIFICATION", "eps", tolerance},
+    {"CONVEXIFICATION", "maxit", iterations},
+    {"CONVEXIFICATION", "relaxation", {0, 1, true, false, nullptr}},
+    // Each load step is a whole Newton solve; scene 7b takes 14.
+    {"LOADSTEPS",
+     "n",
+     {1, 1e4, false, false, "each load step is a Newton solve of its own; scene 7b takes 14"}},
     {"TIME", "T", positive},
     {"TIME", "k", positive},
     {"TIME", "output_every", count_from_1},
@@ -83,6 +99,31 @@ std::string number(double x) {
 }
 
 } // namespace
+
+std::string magnitude_excess(double x) {
+  const double size = std::abs(x);
+  if (x == 0 || (size >= kSmallestMagnitude && size <= kLargestMagnitude)) return "";
+  const bool small = size < kSmallestMagnitude;
+  return number(x) + " is " + (small ? "smaller in magnitude than " : "larger in magnitude than ") +
+         number(small ? kSmallestMagnitude : kLargestMagnitude) + ", the " +
+         (small ? "smallest" : "largest") +
+         " magnitude a number of a deck may have (0 aside): beyond it the products the solve "
+         "forms (u ~ f L / E, energies, squared norms) leave the range of doubles or lose their "
+         "digits";
+}
+
+const WorkBound& max_time_steps() {
+  // Scene 8b's march takes 3000 steps in 15 s; 1e6 steps of that mesh would take over an hour.
+  static const WorkBound bound{1e6, "time steps",
+                               "each step is at least one solve; scene 8b takes 3000"};
+  return bound;
+}
+
+std::string work_excess(const WorkBound& bound, double count) {
+  if (count <= bound.maximum) return "";
+  return number(count) + " " + bound.what + ": more than the " + number(bound.maximum) +
+         " a run may take (" + bound.why + ")";
+}
 
 bool ValueRange::contains(double x) const {
   return (low_open ? x > low : x >= low) && (high_open ? x < high : x <= high);
@@ -115,6 +156,9 @@ void verify_in_range(double value, const std::string& keyword, const std::string
   SIG_VERIFY(std::isfinite(value) && range->contains(value),
              file << ": array '" << array << "', row " << row << ": " << value << " is not "
                   << range->text() << " (the range of " << keyword << " " << field << "=)");
+  const std::string excess = magnitude_excess(value);
+  SIG_VERIFY(excess.empty(), file << ": array '" << array << "', row " << row << ": " << excess
+                                  << " (" << keyword << " " << field << "=)");
 }
 
 } // namespace sig

@@ -6,10 +6,12 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/provenance.hpp"
+#include "core/stage_guard.hpp"
 #include "revision.hpp"
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -33,6 +35,22 @@ std::string list_lines(const std::vector<std::string>& items, std::size_t indent
   return out;
 }
 
+std::function<std::string(const std::string&)>& factorization_explainer() {
+  static std::function<std::string(const std::string&)> explain;
+  return explain;
+}
+
+// The stage's words for a failed factorization; the solver's message if it has none, or if
+// finding the words fails in turn.
+std::string explained(const FactorizationFailure& failure) {
+  if (!factorization_explainer()) return failure.what();
+  try {
+    return factorization_explainer()(failure.what());
+  } catch (const std::exception& e) {
+    return std::string(failure.what()) + " (and its cause could not be named: " + e.what() + ")";
+  }
+}
+
 // The cards the stage looked up, for the test suite's check of --help (stage_help.sh).
 void append_card_trace(const std::string& program) {
   const char* file = std::getenv("SIG_CARD_TRACE");
@@ -54,6 +72,10 @@ std::string stage_help_text(const StageHelp& help) {
   if (help.usage.find("-o OUTDIR") != std::string::npos)
     options.emplace_back("-o OUTDIR", "the case's folder, where the stages read and write their "
                                       "files (default out/<datafile stem>/)");
+  if (help.usage.find("--time-limit") != std::string::npos)
+    options.emplace_back("--time-limit SECONDS",
+                         "the wall-clock budget: when it runs out the stage stops with an "
+                         "error, its unfinished files removed (default none)");
   options.insert(options.end(), help.options.begin(), help.options.end());
   options.emplace_back("-h, --help", "this help");
   options.emplace_back("--version", "version and git revision");
@@ -103,24 +125,39 @@ std::filesystem::path StageArgs::ds_path(const std::string& extension) const {
   return outdir / ("case." + extension);
 }
 
+double parse_time_limit(const std::string& text) {
+  double seconds = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+  SIG_VERIFY(error == std::errc{} && end == text.data() + text.size() && seconds > 0 &&
+                 seconds <= kMaxTimeLimit,
+             "--time-limit: '" << text << "' is not a number of seconds in (0, " << kMaxTimeLimit
+                               << "]");
+  return seconds;
+}
+
 StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help) {
   handle_help_and_version(argc, argv, help);
   const std::string usage = "usage: " + program_name(help.name) + " " + help.usage +
                             " (--help: what it reads, writes and the cards it uses)";
   StageArgs args;
   bool have_outdir = false;
+  double time_limit = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-o") {
       SIG_VERIFY(i + 1 < argc && !have_outdir, usage);
       args.outdir = argv[++i];
       have_outdir = true;
+    } else if (arg == "--time-limit") {
+      SIG_VERIFY(i + 1 < argc && time_limit == 0, usage);
+      time_limit = parse_time_limit(argv[++i]);
     } else {
       SIG_VERIFY(!arg.empty() && arg[0] != '-' && args.datafile.empty(), usage);
       args.datafile = arg;
     }
   }
   SIG_VERIFY(!args.datafile.empty(), usage);
+  if (time_limit > 0) start_time_limit(time_limit, program_name(help.name));
   if (!have_outdir) args.outdir = std::filesystem::path("out") / args.datafile.stem();
   SIG_VERIFY(!args.outdir.empty(), usage);
   std::error_code error;
@@ -136,16 +173,21 @@ StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help) {
 int run_stage(const std::string& stage, const std::function<void()>& body) {
   int code = 1;
   close_case();
+  enter_stage_body(program_name(stage));
   try {
     body();
     code = 0;
   } catch (const StageExit& exit) {
     code = exit.code;
+  } catch (const FactorizationFailure& failure) {
+    std::cerr << program_name(stage) << ": error: " << explained(failure) << std::endl;
   } catch (const std::exception& e) {
     std::cerr << program_name(stage) << ": error: " << e.what() << std::endl;
   } catch (...) {
     std::cerr << program_name(stage) << ": error: unknown exception" << std::endl;
   }
+  leave_stage_body();
+  factorization_explainer() = nullptr;
   close_case();
   // What the stage printed is a result too (sig-dump > file): a failed write is an error.
   std::cout.flush();
@@ -158,6 +200,24 @@ int run_stage(const std::string& stage, const std::function<void()>& body) {
   }
   append_card_trace(program_name(stage));
   return code;
+}
+
+void explain_factorization_failures(std::function<std::string(const std::string&)> explain) {
+  factorization_explainer() = std::move(explain);
+}
+
+std::vector<std::string> stage_chain(const Datafile& datafile) {
+  // The cards are looked at, not read (Datafile::find would count them as read by sig-dump).
+  const auto has = [&](const char* keyword) {
+    return std::any_of(datafile.cards().begin(), datafile.cards().end(),
+                       [&](const Card& card) { return card.keyword == keyword; });
+  };
+  std::vector<std::string> stages{"mesh", "material"};
+  if (has("CONTACT")) stages.emplace_back("contact");
+  stages.emplace_back("assemble");
+  stages.emplace_back(has("TIME") ? "march" : "solve");
+  stages.emplace_back("post");
+  return stages;
 }
 
 std::string ds_date() {

@@ -1,6 +1,6 @@
 #include "integrator/backward_euler_scheme.hpp"
 
-#include "assembly/system.hpp"
+#include "contact/contact_kernel.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 
@@ -8,30 +8,32 @@
 
 namespace sig {
 
-DynamicBackwardEuler::DynamicBackwardEuler(const LinearSystem& system, ReducedSystem reduced,
-                                           const Eigen::SparseMatrix<double>& mass, double k,
+DynamicBackwardEuler::DynamicBackwardEuler(ViscoelasticProblem problem, double k,
                                            Eigen::VectorXd u0, Eigen::VectorXd w0,
-                                           Eigen::VectorXd gap)
-    : reduced_(std::move(reduced)), k_(k), u_(std::move(u0)), w_(std::move(w0)),
-      gap_(std::move(gap)) {
+                                           Eigen::VectorXd gap, ContactSetting setting)
+    : load_(std::move(problem.load)), M_(std::move(problem.M)), k_(k), u_(std::move(u0)),
+      w_(std::move(w0)), gap_(std::move(gap)), setting_(std::move(setting)) {
   SIG_VERIFY(k_ > 0 && std::isfinite(k_), "backward Euler: time step k = " << k_);
-  SIG_VERIFY(system.memory.empty(),
+  SIG_VERIFY(problem.memory.empty(),
              "backward Euler: the dynamic march of ch. 6 has no memory term (MEMORY cards are "
              "for the quasistatic march of ch. 5)");
-  const int n = reduced_.num_free();
+  SIG_VERIFY(load_, "backward Euler: no load history");
+  const int n = problem.num_dofs();
   if (u_.size() == 0) u_ = Eigen::VectorXd::Zero(n);
   if (w_.size() == 0) w_ = Eigen::VectorXd::Zero(n);
   SIG_VERIFY(u_.size() == n && w_.size() == n, "backward Euler: u0 of size "
                                                    << u_.size() << " and w0 of size " << w_.size()
                                                    << " for " << n << " free dofs");
-  M_ = reduced_.restrict_matrix(mass);
+  SIG_VERIFY(M_.rows() == n && M_.cols() == n, "backward Euler: a mass of " << M_.rows() << " x "
+                                                                            << M_.cols() << " for "
+                                                                            << n << " free dofs");
   // The consistent mass is assembled on the stiffness's pattern, whose x-y couplings it does
   // not have: without those stored zeros a product with it costs half.
   M_.prune(0.0);
-  S_ = (1.0 / k_) * M_ + k_ * reduced_.K;
-  if (system.V.size() > 0) S_ += reduced_.restrict_matrix(system.V);
+  S_ = (1.0 / k_) * M_ + k_ * problem.K;
+  if (problem.C.size() > 0) S_ += problem.C;
   // The products read the lower triangles only: half the memory traffic of the full matrices.
-  K_lower_ = reduced_.K.triangularView<Eigen::Lower>();
+  K_lower_ = problem.K.triangularView<Eigen::Lower>();
   M_lower_ = M_.triangularView<Eigen::Lower>();
   update_products();
 }
@@ -44,7 +46,7 @@ void DynamicBackwardEuler::update_products() {
 }
 
 Eigen::VectorXd DynamicBackwardEuler::right_side(int n) const {
-  Eigen::VectorXd b = reduced_.load_at(n * k_);
+  Eigen::VectorXd b = load_(n * k_);
   b -= Ku_;
   b += (1.0 / k_) * Mw_;
   return b;
@@ -70,7 +72,8 @@ Eigen::VectorXd DynamicBackwardEuler::normal_origin(int, const VelocityContact& 
   return origin;
 }
 
-ContactSetting DynamicBackwardEuler::velocity_setting(ContactSetting setting) const {
+ContactSetting DynamicBackwardEuler::velocity_setting() const {
+  ContactSetting setting = setting_;
   for (ContactLaw& law : setting.law) {
     SIG_VERIFY(!law.in_velocity(),
                "backward Euler: law=" << to_string(law.normal)
@@ -96,6 +99,23 @@ double DynamicBackwardEuler::kinetic_energy() const {
 
 double DynamicBackwardEuler::elastic_energy() const {
   return 0.5 * u_.dot(Ku_);
+}
+
+EnergyRecord DynamicBackwardEuler::energy(const VelocityContact* contact) const {
+  EnergyRecord e;
+  e.kinetic = kinetic_energy();
+  e.elastic = elastic_energy();
+  e.total = e.kinetic + e.elastic;
+  if (contact == nullptr) return e;
+  SIG_VERIFY(gap_.size() == contact->size() && setting_.size() == contact->size(),
+             "backward Euler: " << gap_.size() << " gaps and " << setting_.size() << " laws for "
+                                << contact->size() << " contact nodes");
+  for (int p = 0; p < contact->size(); ++p) {
+    const Eigen::Vector2d u(u_[contact->dofs[p][0]], u_[contact->dofs[p][1]]);
+    e.interface += setting_.weight[p] *
+                   compliance_energy(setting_.law[p], -contact->normal[p].dot(u) - gap_[p]);
+  }
+  return e;
 }
 
 } // namespace sig

@@ -55,8 +55,7 @@ void ContactStrategy::phase(ContactBulk& bulk, const ContactSetting& setting,
   s.eps = p_.eps;
   s.max_iterations = p_.max_iterations;
   const std::unique_ptr<ContactMethod> m = make_contact_method(s);
-  const ContactNewtonResult r =
-      solve_contact(bulk, setting, *m, newton_options(s, setting.law), iterate);
+  const ContactNewtonResult r = solve_contact(bulk, setting, *m, newton_options(s), iterate);
   solution.normal_force = r.normal_force;
   solution.tangential_force = r.tangential_force;
   solution.normal_status = r.normal_status;
@@ -69,22 +68,61 @@ void ContactStrategy::phase(ContactBulk& bulk, const ContactSetting& setting,
                        (r.converged ? "the contact forces are not finite" : r.failure);
 }
 
+namespace {
+
+/// A strategy of the card: its traits and its constructor.
+struct StrategyEntry {
+  const char* name;
+  ContactStrategyTraits traits;
+  std::unique_ptr<ContactStrategy> (*make)(const ContactStrategyParameters&);
+};
+
+template <class Strategy>
+std::unique_ptr<ContactStrategy> construct(const ContactStrategyParameters& p) {
+  return std::make_unique<Strategy>(p);
+}
+
+/// The strategy called `name`: the one place a strategy's name is read.
+const StrategyEntry& strategy_named(const std::string& name) {
+  static const StrategyEntry entries[] = {
+      {"signorini", {}, construct<SignoriniStrategy>},
+      {"compliance", {.needs_r = true, .has_wall = false}, construct<ComplianceStrategy>},
+      {"specific-penalty",
+       {.needs_r = true, .has_wall = false},
+       construct<SpecificPenaltyStrategy>},
+      {"two-step", {.has_persistency = true}, construct<TwoStepStrategy>},
+      {"ipm", {.needs_r = true}, construct<ImprovedPenaltyStrategy>}};
+  for (const StrategyEntry& entry : entries)
+    if (name == entry.name) return entry;
+  SIG_VERIFY(false,
+             "unknown contact strategy '" << name << "' (choose " << contact_strategy_names << ")");
+  return entries[0];
+}
+
+} // namespace
+
 std::unique_ptr<ContactStrategy> make_contact_strategy(const std::string& name,
                                                        const ContactStrategyParameters& p) {
-  const bool needs_r = name == "compliance" || name == "specific-penalty" || name == "ipm";
-  SIG_VERIFY(!needs_r || p.r > 0,
+  const StrategyEntry& strategy = strategy_named(name);
+  SIG_VERIFY(!strategy.traits.needs_r || p.r > 0,
              "contact strategy " << name << " needs a foundation stiffness r > 0, got " << p.r);
   SIG_VERIFY(p.max_iterations >= 1, "contact strategy: max_iterations = " << p.max_iterations);
   SIG_VERIFY(p.gamma > 0 && p.eps > 0,
              "contact strategy: gamma = " << p.gamma << " and eps = " << p.eps << " must be > 0");
-  if (name == "signorini") return std::make_unique<SignoriniStrategy>(p);
-  if (name == "compliance") return std::make_unique<ComplianceStrategy>(p);
-  if (name == "specific-penalty") return std::make_unique<SpecificPenaltyStrategy>(p);
-  if (name == "two-step") return std::make_unique<TwoStepStrategy>(p);
-  if (name == "ipm") return std::make_unique<ImprovedPenaltyStrategy>(p);
-  SIG_VERIFY(false,
-             "unknown contact strategy '" << name << "' (choose " << contact_strategy_names << ")");
-  return nullptr;
+  return strategy.make(p);
+}
+
+ContactStrategyTraits contact_strategy_traits(const std::string& name) {
+  return strategy_named(name).traits;
+}
+
+ContactRecord contact_record(const ContactStepSolution& solution) {
+  ContactRecord r;
+  r.normal_force = solution.normal_force;
+  r.tangential_force = solution.tangential_force;
+  r.normal_status = solution.normal_status;
+  r.friction_status = solution.friction_status;
+  return r;
 }
 
 double interface_energy(const std::vector<ContactLaw>& laws, const Eigen::VectorXd& weight,

@@ -2,7 +2,6 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
-#include "mesh/mesh.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
@@ -95,9 +94,9 @@ Eigen::SparseMatrix<double> project(const Eigen::SparseMatrix<double>& m,
 } // namespace
 
 Eigen::SparseMatrix<double> equivalent_mass_matrix(const Eigen::SparseMatrix<double>& M,
-                                                   const Mesh& mesh,
+                                                   const std::vector<Eigen::Vector2d>& positions,
                                                    const std::vector<int>& contact_nodes) {
-  const int nodes = mesh.num_nodes();
+  const int nodes = static_cast<int>(positions.size());
   SIG_VERIFY(M.rows() == 2 * nodes && M.cols() == M.rows(),
              "EMM: a " << M.rows() << " x " << M.cols() << " mass for " << nodes << " nodes");
   SIG_VERIFY(!contact_nodes.empty(), "EMM: no contact node (the EMM would be M)");
@@ -110,11 +109,11 @@ Eigen::SparseMatrix<double> equivalent_mass_matrix(const Eigen::SparseMatrix<dou
     removed[static_cast<std::size_t>(i)] = 1;
   }
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-  for (const Eigen::Vector2d& x : mesh.nodes)
+  for (const Eigen::Vector2d& x : positions)
     centre += x / nodes;
   Eigen::MatrixXd phi(nodes, 3);
   for (int i = 0; i < nodes; ++i)
-    phi.row(i) << 1.0, mesh.nodes[i].x() - centre.x(), mesh.nodes[i].y() - centre.y();
+    phi.row(i) << 1.0, positions[i].x() - centre.x(), positions[i].y() - centre.y();
   const Eigen::SparseMatrix<double> m = scalar_mass(M);
   Eigen::SparseMatrix<double> me = project(m, removed, phi, true);
   if (me.nonZeros() == 0) {

@@ -22,27 +22,28 @@ double elastic_energy(const Eigen::SparseMatrix<double>& K, const Eigen::VectorX
   return 0.5 * u.dot(K * u);
 }
 
-EnergyRecord energy_record(const Elastodynamics& problem, const DynamicState& state, int step,
-                           double external_work) {
+EnergyRecord energy_of(const Elastodynamics& problem, const DynamicState& state) {
   EnergyRecord r;
-  r.step = step;
-  r.time = state.time;
   r.kinetic = kinetic_energy(problem.M, state.v);
   r.elastic = elastic_energy(problem.K, state.u);
   r.total = r.kinetic + r.elastic;
-  r.external_work = external_work;
   return r;
 }
 
-void add_contact_step(EnergyRecord& record, const EnergyRecord& before, const Eigen::VectorXd& N,
+void add_step_work(EnergyRecord& record, const EnergyRecord& before, const StepWork& work) {
+  record.external_work = before.external_work + work.load;
+  record.contact_work = before.contact_work + work.normal + work.friction;
+  record.friction_work = before.friction_work + work.friction;
+  record.wall_work = before.wall_work + work.normal + (record.interface - before.interface);
+}
+
+void add_contact_step(EnergyRecord& record, StepWork& work, const Eigen::VectorXd& N,
                       const Eigen::VectorXd& T, const Eigen::VectorXd& q_before,
                       const Eigen::VectorXd& q_after, const Eigen::VectorXd& slip,
                       double interface) {
-  const double normal = -N.dot(q_after - q_before), tangential = -T.dot(slip);
-  record.contact_work = before.contact_work + normal + tangential;
-  record.friction_work = before.friction_work + tangential;
+  work.normal = -N.dot(q_after - q_before);
+  work.friction = -T.dot(slip);
   record.interface = interface;
-  record.wall_work = before.wall_work + normal + (interface - before.interface);
   record.max_penetration = q_after.size() ? std::max(q_after.maxCoeff(), 0.0) : 0.0;
   record.active_nodes = static_cast<int>((N.array() > 0).count());
   record.normal_force = N.sum();

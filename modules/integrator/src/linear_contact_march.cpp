@@ -1,8 +1,6 @@
 // The march in velocity on a linear bulk (linear_contact_march.hpp).
 #include "integrator/linear_contact_march.hpp"
 
-#include "assembly/dirichlet.hpp"
-#include "contact/contact_elements.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/condensed_bulk.hpp"
@@ -13,17 +11,12 @@
 
 namespace sig {
 
-VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced) {
-  VelocityContact c;
-  for (int p = 0; p < elements.size(); ++p)
-    c.dofs.push_back(reduced.contact_node_dofs(elements.node[p]));
-  c.normal = elements.normal;
-  c.setting = {elements.law, elements.weight};
-  return c;
-}
-
 Eigen::VectorXd VelocityScheme::normal_origin(int, const VelocityContact& contact) const {
   return Eigen::VectorXd::Zero(contact.size());
+}
+
+EnergyRecord VelocityScheme::energy(const VelocityContact*) const {
+  return {};
 }
 
 LinearContactMarch::LinearContactMarch(VelocityScheme& scheme, const VelocityContact* contact,
@@ -47,7 +40,7 @@ LinearContactMarch::LinearContactMarch(VelocityScheme& scheme, const VelocityCon
              "march: " << c.size() << " contact nodes with " << c.normal.size() << " normals and "
                        << c.setting.size() << " laws");
   method_ = make_contact_method(parameters);
-  options_ = newton_options(parameters, c.setting.law);
+  options_ = newton_options(parameters);
   condensation_ =
       std::make_unique<ContactCondensation>(S, c.dofs, c.normal, c.setting.has_friction(), backend,
                                             true); // S is positive definite
@@ -68,74 +61,71 @@ int LinearContactMarch::tail_factorizations() const {
   return bulk_ ? bulk_->tail_factorizations() : 0;
 }
 
-VelocityStep LinearContactMarch::step() {
+MarchRecords LinearContactMarch::records() const {
+  return {.energy = scheme_.has_energy(), .contact_per_step = true};
+}
+
+StepRecord LinearContactMarch::start() const {
+  StepRecord r;
+  r.step = done_;
+  r.time = done_ * scheme_.time_step();
+  if (scheme_.has_energy()) r.energy = scheme_.energy(contact_);
+  if (contact_ != nullptr) {
+    const int m = contact_->size();
+    ContactRecord& c = r.contact;
+    c.normal_force = c.tangential_force = c.normal_velocity = c.tangential_velocity =
+        Eigen::VectorXd::Zero(m);
+    c.normal_status.assign(m, NormalStatus::free);
+    c.friction_status.assign(m, FrictionStatus::none);
+  }
+  return r;
+}
+
+DynamicState LinearContactMarch::state() const {
+  return {done_ * scheme_.time_step(), scheme_.displacement(), w_};
+}
+
+StepRecord LinearContactMarch::step(int n) {
+  SIG_VERIFY(n == done_ + 1, "march: step " << n << " after step " << done_);
   const Stopwatch clock;
-  VelocityStep s;
-  s.step = done_ + 1;
-  s.time = s.step * scheme_.time_step();
-  const Eigen::VectorXd b = scheme_.right_side(s.step);
-  s.seconds_right_side = clock.seconds();
+  StepRecord s;
+  s.time = n * scheme_.time_step();
+  const Eigen::VectorXd b = scheme_.right_side(n);
+  s.seconds.right_side = clock.seconds();
   Eigen::VectorXd w;
   if (contact_ == nullptr) {
     w = factor_->solve(b);
-    s.contact.converged = w.allFinite();
-    if (!s.contact.converged) s.contact.failure = "the step's solve is not finite";
+    s.iterations = 0;
+    s.converged = w.allFinite();
+    if (!s.converged) s.failure = "the step's solve is not finite";
   } else {
-    const Eigen::VectorXd origin = scheme_.normal_origin(s.step, *contact_);
+    const Eigen::VectorXd origin = scheme_.normal_origin(n, *contact_);
     bulk_->restart(condensation_->condense(b), origin);
     const Stopwatch contact_clock;
-    s.contact = solver_ ? solver_(*bulk_, contact_->setting, iterate_)
-                        : solve_contact(*bulk_, contact_->setting, *method_, options_, iterate_);
-    s.seconds_contact = contact_clock.seconds();
-    s.normal_velocity = bulk_->penetration() + origin;
-    s.tangential_velocity = bulk_->slip();
+    ContactNewtonResult result =
+        solver_ ? solver_(*bulk_, contact_->setting, iterate_)
+                : solve_contact(*bulk_, contact_->setting, *method_, options_, iterate_);
+    s.seconds.contact = contact_clock.seconds();
+    s.iterations = result.iterations();
+    s.converged = result.converged;
+    if (!s.converged) {
+      std::ostringstream why;
+      why << "the contact solve did not converge after " << result.iterations()
+          << " iterations: " << result.failure;
+      s.failure = why.str();
+    }
+    s.contact = {std::move(result.normal_force),  std::move(result.tangential_force),
+                 std::move(result.normal_status), std::move(result.friction_status),
+                 bulk_->penetration() + origin,   bulk_->slip()};
     w = condensation_->expand(bulk_->displacement());
   }
-  if (s.contact.converged) {
-    scheme_.accept(s.step, w);
+  if (s.converged) {
+    scheme_.accept(n, w);
     w_ = std::move(w);
     ++done_;
+    if (scheme_.has_energy()) s.energy = scheme_.energy(contact_);
   }
-  s.seconds = clock.seconds();
   return s;
-}
-
-VelocityHistory march_in_velocity(LinearContactMarch& march, const VelocityScheme& scheme,
-                                  int steps, int output_every, const VelocityObserver& observer) {
-  SIG_VERIFY(steps >= 0 && output_every >= 1,
-             "march: " << steps << " steps, output_every = " << output_every);
-  VelocityHistory h;
-  h.steps.reserve(static_cast<std::size_t>(steps));
-  h.output_step.push_back(march.steps_done());
-  h.output_u.push_back(scheme.displacement());
-  h.output_w.push_back(march.velocity());
-  const Stopwatch clock;
-  for (int n = 1; n <= steps; ++n) {
-    h.steps.push_back(march.step());
-    const VelocityStep& s = h.steps.back();
-    if (!s.converged()) {
-      std::ostringstream why;
-      why << "step " << s.step << " (t = " << s.time << ") did not converge after "
-          << s.contact.iterations() << " iterations: " << s.contact.failure;
-      h.converged = false;
-      h.failure = why.str();
-      break;
-    }
-    if (n % output_every == 0 || n == steps) {
-      h.output_step.push_back(s.step);
-      h.output_u.push_back(scheme.displacement());
-      h.output_w.push_back(march.velocity());
-    }
-    if (observer) observer(s);
-  }
-  // A march stopped early keeps its last good state.
-  if (!h.converged && h.output_step.back() != march.steps_done()) {
-    h.output_step.push_back(march.steps_done());
-    h.output_u.push_back(scheme.displacement());
-    h.output_w.push_back(march.velocity());
-  }
-  h.seconds = clock.seconds();
-  return h;
 }
 
 } // namespace sig

@@ -1,31 +1,58 @@
 #include "integrator/march.hpp"
 
 #include "core/error.hpp"
+#include "core/log.hpp"
+
+#include <sstream>
 
 namespace sig {
 
-MarchHistory march(const TimeScheme& scheme, const DynamicState& initial, int steps,
-                   int output_every, const StepObserver& observer) {
+namespace {
+
+void keep(MarchHistory& history, int step, DynamicState state) {
+  history.output_step.push_back(step);
+  history.outputs.push_back(std::move(state));
+}
+
+} // namespace
+
+MarchHistory march(MarchScheme& scheme, int steps, int output_every, const StepObserver& observer) {
   SIG_VERIFY(steps >= 0, "march: " << steps << " steps");
   SIG_VERIFY(output_every >= 0, "march: output_every = " << output_every << " must be >= 0");
   MarchHistory history;
-  history.energy.reserve(static_cast<std::size_t>(steps) + 1);
-  history.energy.push_back(energy_record(scheme.problem(), initial, 0, 0.0));
-  history.outputs.push_back(initial);
-  DynamicState state = initial;
-  double work = 0.0;
+  history.records = scheme.records();
+  history.steps.reserve(static_cast<std::size_t>(steps) + 1);
+  history.steps.push_back(scheme.start());
+  keep(history, 0, scheme.state());
+  const Stopwatch clock;
   for (int n = 1; n <= steps; ++n) {
-    const Eigen::VectorXd f_bar = scheme.step_load(state.time);
-    DynamicState next = scheme.advance(state, f_bar);
-    work += f_bar.dot(next.u - state.u);
-    state = std::move(next);
-    history.energy.push_back(energy_record(scheme.problem(), state, n, work));
-    history.energy.back().newton_iterations = 1;
-    const bool output = output_every > 0 ? n % output_every == 0 : n == steps;
-    if (output) history.outputs.push_back(state);
-    if (observer) observer(state, history.energy.back());
+    const Stopwatch step_clock;
+    StepRecord record = scheme.step(n);
+    record.step = n;
+    record.seconds.total = step_clock.seconds();
+    const StepRecord& before = history.steps.back();
+    if (!record.converged) {
+      std::ostringstream why;
+      why << "step " << n << " (t = " << record.time << "): " << record.failure;
+      history.converged = false;
+      history.failure = why.str();
+      record.energy = before.energy; // no state was accepted
+      history.steps.push_back(std::move(record));
+      break;
+    }
+    add_step_work(record.energy, before.energy, record.work);
+    history.steps.push_back(std::move(record));
+    const bool output = (output_every > 0 && n % output_every == 0) || n == steps;
+    if (output || observer) {
+      DynamicState state = scheme.state();
+      if (observer) observer(history.steps.back(), state);
+      if (output) keep(history, n, std::move(state));
+    }
   }
-  history.final_state = state;
+  // A march stopped early keeps its last good state.
+  const int last_done = static_cast<int>(history.steps_done()) - 1;
+  if (history.output_step.back() != last_done) keep(history, last_done, scheme.state());
+  history.seconds = clock.seconds();
   return history;
 }
 

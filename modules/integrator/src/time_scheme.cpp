@@ -55,14 +55,48 @@ void TimeScheme::check_state(const DynamicState& state) const {
                     << state.v.size() << " velocities for " << problem_.num_dofs() << " dofs");
 }
 
+namespace {
+
+/// A scheme of the TIME card: its traits and, for elastodynamics, its constructor.
+struct SchemeEntry {
+  const char* name;
+  TimeSchemeTraits traits;
+  /// Null for the schemes of a march in velocity (built by their stages).
+  std::unique_ptr<TimeScheme> (*make)(Elastodynamics, double, const std::string&);
+};
+
+template <class Scheme>
+std::unique_ptr<TimeScheme> construct(Elastodynamics problem, double k,
+                                      const std::string& linear_solver) {
+  return std::make_unique<Scheme>(std::move(problem), k, linear_solver);
+}
+
+/// The scheme called `name`: the one place a scheme's name is read.
+const SchemeEntry& scheme_named(const std::string& name) {
+  static const SchemeEntry entries[] = {
+      {"midpoint", {.large_deformation = true}, construct<ImplicitMidpoint>},
+      {"newmark", {}, construct<NewmarkAverageAcceleration>},
+      {"quasistatic", {.march = MarchKind::quasistatic}, nullptr},
+      {"backward-euler", {.march = MarchKind::viscoelastodynamics}, nullptr}};
+  for (const SchemeEntry& entry : entries)
+    if (name == entry.name) return entry;
+  SIG_VERIFY(false, "unknown time scheme '" << name << "' (choose " << time_scheme_names << ")");
+  return entries[0];
+}
+
+} // namespace
+
+TimeSchemeTraits time_scheme_traits(const std::string& name) {
+  return scheme_named(name).traits;
+}
+
 std::unique_ptr<TimeScheme> make_time_scheme(const std::string& name, Elastodynamics problem,
                                              double k, const std::string& linear_solver) {
-  if (name == "midpoint")
-    return std::make_unique<ImplicitMidpoint>(std::move(problem), k, linear_solver);
-  if (name == "newmark")
-    return std::make_unique<NewmarkAverageAcceleration>(std::move(problem), k, linear_solver);
-  SIG_VERIFY(false, "unknown time scheme '" << name << "' (choose " << time_scheme_names << ")");
-  return nullptr;
+  const SchemeEntry& scheme = scheme_named(name);
+  SIG_VERIFY(scheme.make != nullptr, "time scheme '" << name
+                                                     << "' is a march in velocity, not a scheme "
+                                                        "of elastodynamics (midpoint|newmark)");
+  return scheme.make(std::move(problem), k, linear_solver);
 }
 
 } // namespace sig

@@ -71,6 +71,13 @@ Mesh read_mesh(TokenReader& in) {
   }
 
   orient_triangles_of_file(mesh, in.file(), triangle_lines);
+  if (const auto [first, second] = side_with_two_references(mesh); second >= 0)
+    throw InputError(in.file(), edge_lines[second], "",
+                     "the side from vertex " + std::to_string(mesh.edges[second].a + 1) +
+                         " to vertex " + std::to_string(mesh.edges[second].b + 1) +
+                         " carries labels " + std::to_string(mesh.edges[first].ref) + " (line " +
+                         std::to_string(edge_lines[first]) + ") and " +
+                         std::to_string(mesh.edges[second].ref) + ": a side carries one label");
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "boundary edge with label " + std::to_string(mesh.edges[bad].ref) +

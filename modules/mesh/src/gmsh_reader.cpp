@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <unordered_map>
 #include <utility>
 
@@ -63,9 +64,17 @@ int nodes_per_element(TokenReader& in, long type) {
   }
 }
 
-void add_node(TokenReader& in, GmshContent& content, long tag, double x, double y) {
+void add_node(TokenReader& in, GmshContent& content, long tag, double x, double y, double z) {
   if (!std::isfinite(x) || !std::isfinite(y))
     in.fail("node tag " + std::to_string(tag) + " has a non-finite coordinate");
+  // Dropping z would solve another body than the file's.
+  if (z != 0) {
+    std::ostringstream what;
+    what << "node tag " << tag << " has z = " << z
+         << ": the meshes are 2D, in the plane z = 0, until three dimensions are implemented (a "
+            "mesh out of that plane is refused, not flattened)";
+    in.fail(what.str());
+  }
   const auto [it, fresh] = content.node_index.emplace(tag, static_cast<int>(content.nodes.size()));
   if (!fresh) in.fail("node tag " + std::to_string(tag) + " appears twice");
   content.nodes.emplace_back(x, y);
@@ -125,9 +134,8 @@ void read_nodes_v2(TokenReader& in, Numbers& num, GmshContent& content) {
   const long n = num.text_count("nodes", 8, 28); // "t x y z\n" / int + 3 doubles
   for (long i = 0; i < n; ++i) {
     const long tag = num.integer("node tag");
-    const double x = num.real("x"), y = num.real("y");
-    num.real("z");
-    add_node(in, content, tag, x, y);
+    const double x = num.real("x"), y = num.real("y"), z = num.real("z");
+    add_node(in, content, tag, x, y, z);
   }
   num.end_section("$EndNodes");
 }
@@ -222,11 +230,10 @@ void read_nodes_v4(TokenReader& in, Numbers& num, GmshContent& content) {
     for (long& t : tags)
       t = num.size("node tag");
     for (long i = 0; i < n; ++i) {
-      const double x = num.real("x"), y = num.real("y");
-      num.real("z");
+      const double x = num.real("x"), y = num.real("y"), z = num.real("z");
       for (long k = 0; k < (parametric ? dim : 0); ++k)
         num.real("parametric coordinate");
-      add_node(in, content, tags[i], x, y);
+      add_node(in, content, tags[i], x, y, z);
     }
   }
   num.end_section("$EndNodes");
@@ -337,8 +344,16 @@ Mesh read_mesh(TokenReader& in) {
           {node_of(in, content, element, 0), node_of(in, content, element, 1), physical});
       edge_lines.push_back(element.line);
     } else if (element.type == Point && physical > 0) {
-      int& ref = mesh.vertex_ref[node_of(in, content, element, 0)];
-      if (ref == 0) ref = physical;
+      const int node = node_of(in, content, element, 0);
+      int& ref = mesh.vertex_ref[node];
+      if (ref != 0 && ref != physical)
+        throw InputError(in.file(), element.line, "",
+                         "node tag " + std::to_string(content.node_tags[node]) +
+                             " carries references " + std::to_string(ref) + " and " +
+                             std::to_string(physical) +
+                             ": a vertex carries one reference (put its point in one physical "
+                             "group)");
+      ref = physical;
     }
   }
   if (mesh.triangles.empty())
@@ -347,6 +362,15 @@ Mesh read_mesh(TokenReader& in) {
                      "are any: is the surface in a Physical Surface?)");
 
   orient_triangles_of_file(mesh, in.file(), triangle_lines);
+  if (const auto [first, second] = side_with_two_references(mesh); second >= 0)
+    throw InputError(
+        in.file(), edge_lines[second], "",
+        "the side from node tag " + std::to_string(content.node_tags[mesh.edges[second].a]) +
+            " to node tag " + std::to_string(content.node_tags[mesh.edges[second].b]) +
+            " carries references " + std::to_string(mesh.edges[first].ref) + " (line " +
+            std::to_string(edge_lines[first]) + ") and " + std::to_string(mesh.edges[second].ref) +
+            ": a side carries one reference (put its line element in one physical "
+            "group)");
   if (const int bad = orient_boundary_edges(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
                      "line element with physical tag " + std::to_string(mesh.edges[bad].ref) +

@@ -9,8 +9,9 @@
 
 namespace sig {
 
-/// `gmsh NAME.geo -2 -format msh41 -setnumber KEY VALUE ...` with `script` as NAME.geo; the
-/// binary is $SIG_GMSH or `gmsh`. Throws sig::Error with the end of gmsh's log on failure.
+/// `gmsh NAME.geo -2 -format msh41 -setnumber KEY VALUE ...` with `script` as NAME.geo, in a
+/// scratch folder of the case (core/temporary_folder.hpp); the binary is $SIG_GMSH or `gmsh`,
+/// killed with the stage. Throws sig::Error with the end of gmsh's log on failure.
 Mesh mesh_with_gmsh(const std::string& name, const std::string& script,
                     const std::vector<std::pair<std::string, double>>& numbers);
 

@@ -1,6 +1,7 @@
 #include "mesh/mesh.hpp"
 
 #include "core/error.hpp"
+#include "core/ranges.hpp"
 #include "mesh/topology.hpp"
 
 #include <algorithm>
@@ -63,6 +64,42 @@ double signed_double_area(const Mesh& mesh, int t) {
   return u.x() * v.y() - u.y() * v.x();
 }
 
+namespace {
+
+// A P1 stiffness of a triangle whose longest side is A times its height has a condition number
+// of about A^2: beyond 1e6 it keeps fewer than 4 digits.
+constexpr double kMaxAspectRatio = 1e6;
+
+// The mesh's size and its triangles' shapes within what a solve can carry (core/ranges.hpp: the
+// magnitudes of the deck's lengths).
+void verify_scale(const Mesh& mesh, const std::string& source) {
+  Eigen::Vector2d low = mesh.nodes.front(), high = low;
+  for (const Eigen::Vector2d& x : mesh.nodes) {
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
+    for (const double c : {x.x(), x.y()})
+      SIG_VERIFY(std::abs(c) <= kLargestMagnitude, source << ": a node at (" << x.x() << ", "
+                                                          << x.y() << "): " << magnitude_excess(c));
+  }
+  const double size = (high - low).norm();
+  SIG_VERIFY(magnitude_excess(size).empty(),
+             source << ": the mesh spans " << size
+                    << " (the diagonal of its bounding box): " << magnitude_excess(size));
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    double longest = 0;
+    for (int j = 0; j < 3; ++j)
+      longest = std::max(longest, (mesh.nodes[tri[(j + 1) % 3]] - mesh.nodes[tri[j]]).norm());
+    const double height = signed_double_area(mesh, t) / longest;
+    SIG_VERIFY(longest <= kMaxAspectRatio * height,
+               source << ": triangle " << t + 1 << " (1-based) is flat: its longest side, "
+                      << longest << ", is " << longest / height << " times its height, more than "
+                      << kMaxAspectRatio << " (a P1 stiffness of it would keep no digits)");
+  }
+}
+
+} // namespace
+
 void check_mesh(const Mesh& mesh, const std::string& source) {
   const int nn = mesh.num_nodes();
   const int nt = mesh.num_triangles();
@@ -98,6 +135,9 @@ void check_mesh(const Mesh& mesh, const std::string& source) {
   for (int i = 0; i < nn; ++i) {
     SIG_VERIFY(used[i], source << ": node " << i + 1 << " (1-based) is used by no triangle");
   }
+  verify_scale(mesh, source);
+  if (const TriangleOverlap overlap = find_overlap(mesh); overlap.second >= 0)
+    SIG_VERIFY(false, source << ": " << overlap.what);
   std::unordered_set<std::uint64_t> sides;
   for (const auto& tri : mesh.triangles) {
     for (int j = 0; j < 3; ++j)

@@ -1,6 +1,7 @@
 #include "mesh/mesh_card.hpp"
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "mesh/freefem.hpp"
 #include "mesh/generators.hpp"
 #include "mesh/gmsh.hpp"
@@ -72,8 +73,9 @@ Mesh mesh_from_file(const Card& card, const std::filesystem::path& folder) {
   const std::string extension = path.extension().string();
   if (extension != ".nopo" && extension != ".msh")
     card.fail("file", "unknown mesh file extension '" + extension + "' (.nopo or .msh)");
-  if (!std::filesystem::is_regular_file(path) || !std::ifstream(path))
-    card.fail("file", "cannot read " + path.string());
+  if (const std::string why = not_a_regular_file(path); !why.empty())
+    card.fail("file", "cannot read " + path.string() + ": " + why);
+  if (!std::ifstream(path)) card.fail("file", "cannot read " + path.string());
   Mesh mesh = read_mesh_file(path);
   // Two nodes at one place that the triangles do not share leave an open crack: what the file
   // meant is rarely that (gmsh without Coherence, meshes pasted together).
@@ -164,7 +166,15 @@ Mesh mesh_from_card(const Card& card, const std::filesystem::path& folder) {
       card.fail(name,
                 "is not used by " + (generator == "file" ? std::string("a mesh file") : generator));
   }
-  return generator == "file" ? mesh_from_file(card, folder) : generate(card, generator);
+  if (generator == "file") return mesh_from_file(card, folder);
+  try {
+    return generate(card, generator);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& e) {
+    // What the generated mesh breaks (a flat triangle of lx=4 ly=1e-20) comes from this card.
+    card.fail("generator", e.what());
+  }
 }
 
 std::vector<int> card_regions(const Card& card, const Mesh& mesh) {

@@ -1,5 +1,6 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/provenance.hpp"
 #include "fortran_records.hpp"
 #include "mesh/nopo.hpp"
@@ -98,6 +99,7 @@ std::string text_of_words(const std::string& raw, int int_bytes, int first, int 
 // Read in one piece of the file's size (no stream copy): the records must tile the file, so the
 // whole of it is needed.
 std::string read_bytes(const std::filesystem::path& path) {
+  verify_regular_file(path, "NOPO file");
   std::error_code error;
   const auto size = std::filesystem::file_size(path, error);
   SIG_VERIFY(!error, path.string() << ": cannot open the NOPO file: " << error.message());

@@ -1,6 +1,7 @@
 #include "token_reader.hpp"
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -23,6 +24,7 @@ bool is_space(int c) {
 } // namespace
 
 TokenReader::TokenReader(const std::filesystem::path& path) : file_(path.string()) {
+  verify_regular_file(path, "mesh file");
   std::error_code error;
   size_ = std::filesystem::file_size(path, error);
   SIG_VERIFY(!error, file_ << ": cannot open the mesh file: " << error.message());

@@ -4,6 +4,7 @@
 #include "core/log.hpp"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
 #include <unordered_map>
@@ -31,10 +32,52 @@ void orient_triangles_of_file(Mesh& mesh, const std::string& file, const std::ve
     throw InputError(file, lines[flat], "",
                      "triangle " + std::to_string(flat + 1) +
                          " (1-based) is degenerate: its three nodes are aligned (zero area)");
+  if (const TriangleOverlap overlap = find_overlap(mesh); overlap.second >= 0)
+    throw InputError(file, lines[overlap.second], "", overlap.what);
   std::vector<long> numbers;
   for (int t : flipped)
     numbers.push_back(t + 1);
   warn_entities(file, "clockwise triangle(s) (1-based, in file order)", numbers, "reoriented");
+}
+
+TriangleOverlap find_overlap(const Mesh& mesh) {
+  // Counter-clockwise triangles that tile a domain run through each interior side once in each
+  // direction: a directed side met twice belongs to two triangles on the same side of it.
+  std::unordered_map<std::uint64_t, int> directed; // (from, to) -> triangle
+  directed.reserve(3 * mesh.triangles.size());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (int j = 0; j < 3; ++j) {
+      const std::uint64_t from = tri[j], to = tri[(j + 1) % 3];
+      const auto [it, fresh] = directed.try_emplace((from << 32) | to, t);
+      if (fresh) continue;
+      const int other = it->second;
+      std::array<int, 3> a = mesh.triangles[other], b = tri;
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      const std::string pair = "triangles " + std::to_string(other + 1) + " and " +
+                               std::to_string(t + 1) + " (1-based) ";
+      if (a == b)
+        return {other, t,
+                pair + "are one triangle listed twice (nodes " + std::to_string(a[0] + 1) + ", " +
+                    std::to_string(a[1] + 1) + ", " + std::to_string(a[2] + 1) +
+                    "): the body would count twice there"};
+      return {other, t,
+              pair + "overlap: both lie on the same side of their common side from node " +
+                  std::to_string(from + 1) + " to node " + std::to_string(to + 1)};
+    }
+  }
+  return {};
+}
+
+std::pair<int, int> side_with_two_references(const Mesh& mesh) {
+  std::unordered_map<std::uint64_t, int> first; // side -> first edge on it
+  for (int e = 0; e < static_cast<int>(mesh.edges.size()); ++e) {
+    const BoundaryEdge& edge = mesh.edges[e];
+    const auto [it, fresh] = first.try_emplace(edge_key(edge.a, edge.b), e);
+    if (!fresh && mesh.edges[it->second].ref != edge.ref) return {it->second, e};
+  }
+  return {-1, -1};
 }
 
 int orient_boundary_edges(Mesh& mesh) {

@@ -1,11 +1,13 @@
 // sig-dump: print a DS file (header and arrays) or a NOPO mesh, as MODULEF printed its
 // structures; --json gives stable keys for scripts, --values adds the arrays' values to it (the
 // one way the report scripts read a DS: postproc/sigreport/ds.py). --cards prints the card
-// schema.
+// schema, --chain the stages a datafile's chain runs (drivers/chain.sh).
 //
 //   sig-dump [--json [--values | --values=NAME,NAME...]] FILE
 //   sig-dump --cards [CARD...]
+//   sig-dump --chain DATAFILE
 #include "core/card_help.hpp"
+#include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/stage.hpp"
@@ -27,17 +29,20 @@ int main(int argc, char** argv) {
                 "NOPO mesh (with --json --values: its coordinates, triangles and edges)"},
       .writes = {"standard output"},
       .cards = {},
-      .usage = "[--json [--values | --values=NAME,NAME...]] FILE | --cards [CARD...]",
+      .usage = "[--json [--values | --values=NAME,NAME...]] FILE | --cards [CARD...] | --chain "
+               "DATAFILE",
       .options = {{"--json", "stable keys for scripts (JSON) instead of text"},
                   {"--values", "with --json: the values of every array too (one line)"},
                   {"--values=A,B", "with --json: the values of the arrays named"},
                   {"--cards", "every card with a one-line help; --cards CARD...: those cards' "
-                              "fields, help texts and defaults"}}};
+                              "fields, help texts and defaults"},
+                  {"--chain", "the stages the datafile's chain runs, one per line, as the "
+                              "stages read the deck (drivers/chain.sh)"}}};
   return sig::run_stage("sig-dump", [&] {
     // 1. Command line.
     sig::handle_help_and_version(argc, argv, help);
     const std::string usage = "usage: sig-dump " + help.usage;
-    bool json = false, cards = false;
+    bool json = false, cards = false, chain = false;
     bool values_given = false;
     sig::DumpValues values;
     std::vector<std::string> names;
@@ -47,6 +52,8 @@ int main(int argc, char** argv) {
         json = true;
       } else if (arg == "--cards") {
         cards = true;
+      } else if (arg == "--chain") {
+        chain = true;
       } else if (arg == "--values") {
         values_given = values.all = true;
       } else if (arg.starts_with("--values=")) {
@@ -63,7 +70,7 @@ int main(int argc, char** argv) {
 
     // 2. The card schema: all cards, or the named ones.
     if (cards) {
-      SIG_VERIFY(!json && !values_given, usage);
+      SIG_VERIFY(!json && !values_given && !chain, usage);
       if (names.empty())
         std::cout << "Cards of the datafiles (sig-dump --cards CARD):\n" << sig::card_index();
       for (const std::string& name : names) {
@@ -75,6 +82,12 @@ int main(int argc, char** argv) {
       return;
     }
     SIG_VERIFY(names.size() == 1, usage);
+    if (chain) {
+      SIG_VERIFY(!json && !values_given, usage);
+      for (const std::string& stage : sig::stage_chain(sig::Datafile::read(names.front())))
+        std::cout << stage << "\n";
+      return;
+    }
     const std::filesystem::path file = names.front();
     SIG_VERIFY(json || !values_given, "--values needs --json (" << usage << ")");
     SIG_VERIFY(std::filesystem::exists(file), file.string() << ": no such file");

@@ -8,13 +8,15 @@
 // case.hist (a march in time: the error at every output time of the case that the reference
 // also kept, its value at the last one and its maximum, ALGORITHMS.md 0.6). --window restricts
 // both norms to the reference triangles whose centroid lies in the rectangle: the error of a
-// sub-domain away from singular corners (scene 5's Fig 5.12).
+// sub-domain away from singular corners (scene 5's Fig 5.12). Two meshes of different domains
+// are refused (post/same_domain.hpp: their boundaries within 2 % of the reference's size).
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/json.hpp"
 #include "core/stage.hpp"
 #include "mesh/nopo.hpp"
 #include "post/error_norm.hpp"
+#include "post/same_domain.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -87,7 +89,9 @@ int main(int argc, char** argv) {
       .purpose = "The error of a solved case against a reference case on a finer mesh in the "
                  "norm of V, ||eps(u_ref - P u_h)||_L2 on the reference mesh (P the P1 "
                  "interpolation of the case's field at the reference nodes: exact on nested "
-                 "meshes); for marches in time at every shared output time.",
+                 "meshes); for marches in time at every shared output time. The two meshes "
+                 "must discretize one domain: every boundary node of each lies within 2 % of "
+                 "the reference's size (its bounding box's diagonal) of the other's boundary.",
       .reads = {"CASE_DIR/case.nopo, case.b or case.hist", "REFERENCE_DIR/the same"},
       .writes = {"standard output"},
       .cards = {},
@@ -115,6 +119,10 @@ int main(int argc, char** argv) {
     }
     SIG_VERIFY(dirs.size() == 2, "usage: sig-error " << help.usage);
     const States coarse = read_states(dirs[0]), reference = read_states(dirs[1]);
+    const std::string mismatch =
+        sig::domain_mismatch(coarse.mesh, (dirs[0] / "case.nopo").string(), reference.mesh,
+                             (dirs[1] / "case.nopo").string());
+    SIG_VERIFY(mismatch.empty(), mismatch);
 
     // The case's output times that the reference kept too.
     std::vector<double> times, errors;

@@ -8,7 +8,7 @@
 //                                          name=, default the datafile's stem)
 //   OUTDIR/summary.json                    method, convergence, sizes, histories, times
 //   OUTDIR/contact.csv                     one row per contact element (contact cases)
-// A load-stepped case (finite strain: case.b holds step_u, solver/finite_strain_stage.hpp) writes
+// A load-stepped case (finite strain: case.b holds step_u, stages/finite_strain_stage.hpp) writes
 // <stem>.pvd with one <stem>_NNNN.vtu per converged load step, time = load factor, instead of
 // the single state; summary.json and contact.csv are those of the final state as above.
 // A dynamic case (TIME card) reads case.hist instead of case.b and writes <stem>.pvd with one
@@ -119,8 +119,14 @@ int main(int argc, char** argv) {
     } else if (write_vtk) {
       const sig::SolutionFields fields = sig::solution_fields(mesh, u, materials, contact);
       const std::string vtu = stem + "_0000.vtu";
-      sig::write_vtu(args.outdir / vtu, mesh, fields.point, fields.cell,
-                     {{"title", datafile.title()}, {"method", solution.text("method")}});
+      const bool converged = solution.integer("converged") != 0;
+      sig::write_vtu(
+          args.outdir / vtu, mesh, fields.point, fields.cell,
+          {{"title", datafile.title()},
+           {"method", solution.text("method")},
+           {"convergence",
+            converged ? "converged" : "NOT converged (Nv): " + solution.text("failure")}},
+          {{"converged", converged ? 1.0 : 0.0}});
       sig::write_pvd(args.outdir / (stem + ".pvd"), {{0.0, vtu}});
       std::cout << (args.outdir / (stem + ".pvd")).string() << "\n"
                 << (args.outdir / vtu).string() << "\n";
@@ -157,7 +163,8 @@ int main(int argc, char** argv) {
     // 7. contact.csv; a stale one from an earlier contact variant would mislead, so remove it.
     const auto csv_path = args.outdir / "contact.csv";
     if (contact_case) {
-      sig::write_file_atomically(csv_path, sig::contact_csv(contact));
+      sig::write_file_atomically(csv_path,
+                                 sig::contact_csv(contact, solution.integer("converged") != 0));
       std::cout << csv_path.string() << "\n";
     } else {
       std::filesystem::remove(csv_path);

@@ -34,10 +34,11 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
                                                                 << mesh.num_nodes() << " nodes");
   std::vector<ContactRow> rows(m);
   for (std::size_t i = 0; i < m; ++i) {
+    // Checked before it is narrowed: 2^32 + 2 would otherwise read as node 2.
+    SIG_VERIFY(node[i] >= 1 && node[i] <= mesh.num_nodes(),
+               cont.source << ": array 'node' holds " << node[i] << " at element " << i + 1
+                           << ", outside 1.." << mesh.num_nodes());
     const int k = static_cast<int>(node[i]) - 1;
-    SIG_VERIFY(k >= 0 && k < mesh.num_nodes(), cont.source << ": array 'node' holds " << node[i]
-                                                           << " at element " << i + 1
-                                                           << ", outside 1.." << mesh.num_nodes());
     auto& r = rows[i];
     r.node = k + 1;
     r.x1 = mesh.nodes[k].x();
@@ -61,22 +62,25 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
     } catch (const Error& e) {
       SIG_VERIFY(false, solution.source << ": element " << i + 1 << ": " << e.what());
     }
-    r.contact = r.normal_status != NormalStatus::free;
+    r.contact =
+        r.normal_status == NormalStatus::compliance || r.normal_status == NormalStatus::unilateral;
   }
   return rows;
 }
 
-std::string contact_csv(const std::vector<ContactRow>& rows) {
+std::string contact_csv(const std::vector<ContactRow>& rows, bool converged) {
   std::string out = "node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,"
-                    "friction_status,tangential_multiplier,tangential_pressure,slip\n";
+                    "friction_status,tangential_multiplier,tangential_pressure,slip,converged\n";
   char line[768];
   for (const auto& r : rows) {
+    const char* status = r.contact                               ? "contact"
+                         : r.normal_status == NormalStatus::held ? "held"
+                                                                 : "free";
     std::snprintf(line, sizeof line,
-                  "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%s,%s,%.17g,%.17g,%.17g\n",
-                  r.node, r.x1, r.x2, r.u1, r.u2, r.gap, r.multiplier, r.pressure,
-                  r.contact ? "contact" : "free", label(r.normal_status).c_str(),
-                  label(r.friction_status).c_str(), r.tangential_multiplier, r.tangential_pressure,
-                  r.slip);
+                  "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%s,%s,%.17g,%.17g,%.17g,%d\n",
+                  r.node, r.x1, r.x2, r.u1, r.u2, r.gap, r.multiplier, r.pressure, status,
+                  label(r.normal_status).c_str(), label(r.friction_status).c_str(),
+                  r.tangential_multiplier, r.tangential_pressure, r.slip, converged ? 1 : 0);
     out += line;
   }
   return out;

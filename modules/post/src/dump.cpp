@@ -1,6 +1,7 @@
 #include "post/dump.hpp"
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 #include <algorithm>
 #include <array>
@@ -58,6 +59,7 @@ Json array_values(const Ds& ds, const DsArray& array) {
 } // namespace
 
 bool is_ds_file(const std::filesystem::path& path) {
+  verify_regular_file(path, "file");
   std::ifstream in(path, std::ios::binary);
   SIG_VERIFY(in, path.string() << ": cannot open");
   std::array<char, 8> magic{};

@@ -67,13 +67,17 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
                            << " dofs (" << mesh.num_nodes() << " mesh nodes)");
   }
   const auto nodes = static_cast<std::size_t>(mesh.num_nodes());
-  // The contact pressure of every march with contact; a march in velocity also has per step the
-  // statuses and the tangential force (integrator/velocity_history_io.hpp).
+  // The contact pressures of every march with contact (stages/history_io.hpp); a march in
+  // velocity also has per step the statuses and forces: without tangential_pressure (no
+  // friction, or a case.hist written before the one layout) its force_t / weight.
   std::vector<std::pair<std::string, std::vector<double>>> contact;
   contact.emplace_back("contact_pressure", nodal_values(hist, "pressure", outputs, nodes));
   for (const char* status : {"normal_status", "friction_status"})
     contact.emplace_back(status, nodal_values(hist, status, outputs, nodes, true));
-  if (hist.has("force_t") && hist.has("weight")) {
+  if (hist.has("tangential_pressure")) {
+    contact.emplace_back("tangential_pressure",
+                         nodal_values(hist, "tangential_pressure", outputs, nodes));
+  } else if (hist.has("force_t") && hist.has("weight")) {
     std::vector<double> tangential = nodal_values(hist, "force_t", outputs, nodes, true);
     const std::vector<double> weight = hist.reals("weight");
     const std::vector<std::int64_t> contact_node = hist.ints("contact_node");

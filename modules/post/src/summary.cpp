@@ -50,7 +50,12 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("title", title);
   s.set("method", method);
   s.set("converged", solution.integer("converged") != 0);
-  s.set("failure", solution.has("failure") ? solution.text("failure") : std::string());
+  // failure: the name of the reason (cycling, stagnation, divergence, drift, iteration-limit,
+  // singular-step), empty when converged; failure_detail: what the solver said.
+  s.set("failure",
+        solution.has("failure_reason") ? solution.text("failure_reason") : std::string());
+  s.set("failure_detail", solution.has("failure") ? solution.text("failure") : std::string());
+  if (solution.has("drift")) s.set("drift", solution.scalar("drift"));
   s.set("iterations", static_cast<long>(solution.integer("iterations")));
   s.set("dofs", static_cast<long>(solution.integer("dofs")));
   // The Newton vector holds the displacements and the multipliers the method adds (alm).
@@ -58,12 +63,13 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("contact_elements", elements);
   s.set("contact_nodes", active);
   Json normal = Json::object(), friction = Json::object();
-  for (NormalStatus status :
-       {NormalStatus::free, NormalStatus::compliance, NormalStatus::unilateral})
-    normal.set(label(status), static_cast<long>(std::count_if(contact.begin(), contact.end(),
-                                                              [status](const ContactRow& r) {
-                                                                return r.normal_status == status;
-                                                              })));
+  for (NormalStatus status : {NormalStatus::free, NormalStatus::compliance,
+                              NormalStatus::unilateral, NormalStatus::held}) {
+    const long count = std::count_if(contact.begin(), contact.end(), [status](const ContactRow& r) {
+      return r.normal_status == status;
+    });
+    if (status != NormalStatus::held || count > 0) normal.set(label(status), count); // held: rare
+  }
   for (FrictionStatus status : {FrictionStatus::none, FrictionStatus::stick,
                                 FrictionStatus::slip_forward, FrictionStatus::slip_backward})
     friction.set(label(status), static_cast<long>(std::count_if(

@@ -3,6 +3,7 @@
 
 #include "cholmod_view.hpp"
 #include "core/error.hpp"
+#include "solver/linear_solver.hpp"
 
 #include <cholmod.h>
 
@@ -31,8 +32,9 @@ CholmodSimplicialSolver::CholmodSimplicialSolver(const Eigen::SparseMatrix<doubl
   }
   SIG_VERIFY(s.L, "CHOLMOD simplicial: analysis failed: status " << c.status);
   cholmod_factorize(&view, s.L, &c);
-  SIG_VERIFY(c.status == CHOLMOD_OK && s.L->minor == s.L->n,
-             "CHOLMOD simplicial: the matrix is not positive definite (status " << c.status << ")");
+  if (c.status != CHOLMOD_OK || s.L->minor != s.L->n)
+    throw FactorizationFailure("CHOLMOD simplicial: the matrix is not positive definite (status " +
+                               std::to_string(c.status) + ")");
   s.allocate();
 }
 

@@ -100,10 +100,11 @@ void CholmodSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   Eigen::SparseMatrix<double> copy;
   cholmod_sparse view = view_lower(compressed(A, copy));
   const int ok = cholmod_factorize(&view, s.L, &c);
-  SIG_VERIFY(c.status != CHOLMOD_NOT_POSDEF, "CHOLMOD: matrix not positive definite (status "
-                                                 << c.status << ": leading minor of order "
-                                                 << s.L->minor + 1 << " of " << A.rows()
-                                                 << " fails)");
+  if (c.status == CHOLMOD_NOT_POSDEF)
+    throw FactorizationFailure("CHOLMOD: matrix not positive definite (status " +
+                               std::to_string(c.status) + ": leading minor of order " +
+                               std::to_string(s.L->minor + 1) + " of " + std::to_string(A.rows()) +
+                               " fails)");
   SIG_VERIFY(ok && c.status >= CHOLMOD_OK, "CHOLMOD: numeric factorization failed: status "
                                                << c.status << " (" << status_text(c.status) << ")");
   s.factorized = true;

@@ -3,6 +3,7 @@
 
 #include "cholmod_view.hpp"
 #include "core/error.hpp"
+#include "solver/linear_solver.hpp"
 
 #include <cholmod.h>
 
@@ -61,9 +62,10 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   SIG_VERIFY(std::equal(s.perm.begin(), s.perm.end(), used),
              "CHOLMOD split: the factor's order is not the given one");
   cholmod_factorize(&view, s.f.L, &c);
-  SIG_VERIFY(c.status == CHOLMOD_OK && s.f.L->minor == static_cast<size_t>(s.n),
-             "CHOLMOD split: K is not positive definite (status " << c.status << ", minor "
-                                                                  << s.f.L->minor << ")");
+  if (c.status != CHOLMOD_OK || s.f.L->minor != static_cast<size_t>(s.n))
+    throw FactorizationFailure("CHOLMOD split: K is not positive definite (status " +
+                               std::to_string(c.status) + ", minor " +
+                               std::to_string(s.f.L->minor) + ")");
   SIG_VERIFY(!s.f.L->is_super && s.f.L->is_ll, "CHOLMOD split: expected a simplicial LL^T");
 
   // 3. The trailing block L_cc, and S = L_cc L_cc^T. Then L_cc is made the identity in the

@@ -196,6 +196,13 @@ double CondensedBulk::force_scale() const {
   return std::max(p_.f.norm(), 1e-300);
 }
 
+Eigen::VectorXd CondensedBulk::contact_stiffness() const {
+  Eigen::VectorXd k(contacts());
+  for (int p = 0; p < contacts(); ++p)
+    k[p] = p_.S(p_.normal_dof[p], p_.normal_dof[p]);
+  return k;
+}
+
 StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
                                   const Eigen::VectorXd&) {
   const int n = static_cast<int>(p_.f.size());
@@ -352,6 +359,7 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
       s.tangential_force[p] = force_at(p_.tangential_dof[p]);
     }
   }
+  s.proximal_force = p_.regularization * step_.norm();
   base_ = w_;
   last_normal_force_ = s.normal_force;
   // S w along the step, for the residuals of a line search: two symmetric products here (S w

@@ -19,7 +19,7 @@ CondensedSolution solve_condensed_contact(CondensedProblem problem, const Contac
   CondensedBulk bulk(std::move(problem), default_stiffness, start);
   ContactIterate iterate;
   CondensedSolution s;
-  const ContactNewtonOptions inner = newton_options(parameters, setting.law);
+  const ContactNewtonOptions inner = newton_options(parameters);
   if (needs_convexification(setting.law)) {
     const bool rate = std::any_of(setting.law.begin(), setting.law.end(), [](const ContactLaw& l) {
       return l.friction == FrictionLaw::nonmonotone && l.of == SlipMeasure::slip_rate;

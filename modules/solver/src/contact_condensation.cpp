@@ -58,11 +58,12 @@ ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K,
   try {
     schur_ = std::make_unique<SchurComplement>(K_, interface_, backend, MatrixKind::spd,
                                                positive_definite);
-  } catch (const Error& e) {
-    // With the contact components held the rest of the body must be fixed, whatever the method.
-    SIG_VERIFY(false, "the body with its contact nodes held cannot be factorized ("
-                          << e.what() << "); a singular or indefinite matrix here means that "
-                          << kUnheldRigidMotion);
+  } catch (const FactorizationFailure& e) {
+    // With the contact components held the rest of the body must be fixed, whatever the method:
+    // the stage names the part that is not (assembly/singular_matrix.hpp).
+    throw FactorizationFailure(std::string("the body with its contact nodes held cannot be "
+                                           "factorized: ") +
+                               e.what());
   }
   seconds_frames_ = clock.seconds() - schur_->seconds_factorize() - schur_->seconds_schur();
 }

@@ -3,26 +3,43 @@
 
 #include "contact/contact_kernel.hpp"
 #include "core/error.hpp"
+#include "solver/newton_guard.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
 
 namespace sig {
 
 namespace {
 
-/// Halvings of the Newton step before the line search gives up on a decrease.
+/// Halvings of a step before the search settles for its least merit.
 constexpr int kMaxHalvings = 12;
-/// A linear bulk searches while its relative residual exceeds this many times eps: near the
-/// solution the Newton steps are sound, and round-off (penalty's r ||u|| eps_machine) would make
-/// the search stall on residuals it cannot lower.
-constexpr double kSearchFar = 1e3;
+/// A step whose proximal force carries more than this part of the residual is unheld.
+constexpr double kUnheld = 1e-3;
+/// A residual this many times the first one: divergence.
+constexpr double kDivergence = 1e12;
 
-/// The contact state the kernel and the residual see at the bulk's iterate.
+/// The contact state at the bulk's iterate.
 struct ContactPoint {
   Eigen::VectorXd q_n, q_t;  ///< penetration and slip
   Eigen::VectorXd lambda, t; ///< multipliers (nodal forces)
-  std::vector<ContactKernel> kernel;
+  double residual = 0;       ///< ||R|| (header), absolute
+};
+
+/// Step (ii) at an iterate: the branch of every node, its condition for step (iii), the record.
+struct Test {
+  std::vector<NodeBranch> branch;
+  std::vector<NodeConditions> conditions;
+  IterationRecord record;
+};
+
+/// Step (iii): the linear step and the multipliers it gives at its full length.
+struct Step {
+  StepSolution solution;
+  Eigen::VectorXd lambda, t;
 };
 
 class Driver {
@@ -41,104 +58,162 @@ private:
   const ContactNewtonOptions& options_;
   const int m_;
   const bool friction_;
+  Eigen::VectorXd natural_; ///< per node: the bulk's stiffness over the weight (pressure / length)
+  ContactNewtonResult result_;
+  MeritMemory memory_{kMeritWindow};
+  CycleGuard cycles_{kCycleWindow};
+  /// How the steps are taken (header): relaxed at first; monotone once the branches cycled or the
+  /// residual stopped falling, one branch change per iteration too once they cycled again.
+  bool one_change_ = false;
+  bool monotone_ = false;
+  double best_ = 0;      ///< the least residual so far
+  int best_at_ = 0;      ///< its iteration
+  std::int8_t kind_ = 0; ///< how the last step was taken (IterationRecord::kind)
+  int escapes_ = 0;      ///< monotone iterations in a row that could not lower the residual
+  double ratio_ = 0;     ///< the last searched step's merit after over before
+  double drift_ = 0;     ///< the length of the last unheld step that nothing held
+  int drift_at_ = 0;     ///< its iteration
 
   double weight(int p) const { return s_.weight[p]; }
-
-  /// The kernel of node p at (q_n, q_t) with the multiplier lambda the test sees (penalty:
-  /// none), in pressures; on the branch `on` if given.
-  ContactKernel kernel(int p, double q_n, double q_t, double lambda, double t,
+  /// The kernel of node p at (q_n, q_t) with multipliers (lambda, t) as nodal forces (penalty:
+  /// none), augmented by r (r_t on the slip if given), on the branch `on` if given.
+  ContactKernel kernel(int p, double q_n, double q_t, double lambda, double t, double r,
+                       const NodeBranch* on = nullptr, double r_t = 0) const;
+  /// The method's test (ii): its augmentation r on the wall, and on the slip the smaller of r
+  /// and the node's natural scale where the method has multipliers (header).
+  ContactKernel tested(int p, double q_n, double q_t, double lambda, double t,
                        const NodeBranch* on = nullptr) const {
-    NodeVariables x{q_n, q_t, 0.0, 0.0};
-    if (method_.has_multipliers()) {
-      x.lambda = lambda / weight(p);
-      x.t = t / weight(p);
-    }
+    return kernel(p, q_n, q_t, lambda, t, method_.augmentation(), on, tangential_augmentation(p));
+  }
+  double tangential_augmentation(int p) const {
     const double r = method_.augmentation();
-    return on ? contact_kernel(s_.law[p], x, r, r, *on) : contact_kernel(s_.law[p], x, r, r);
+    return method_.has_multipliers() ? std::min(r, natural_[p]) : r;
   }
-
-  /// The kernels at the bulk's iterate with multipliers (lambda, t); on the branches `on` if
-  /// given.
   ContactPoint point(const Eigen::VectorXd& lambda, const Eigen::VectorXd& t,
-                     const std::vector<NodeBranch>* on = nullptr) const {
-    ContactPoint c{bulk_.penetration(), bulk_.slip(), lambda, t, {}};
-    c.kernel.reserve(m_);
-    for (int p = 0; p < m_; ++p)
-      c.kernel.push_back(kernel(p, c.q_n[p], c.q_t[p], lambda[p], t[p], on ? &(*on)[p] : nullptr));
-    return c;
-  }
+                     const std::vector<NodeBranch>* held = nullptr,
+                     const Eigen::VectorXd* origin = nullptr) const;
+  NodeConditions node_conditions(int p, const ContactKernel& k, double q_n, double q_t) const;
 
-  /// The contact forces of equilibrium: compliance plus multipliers, or penalty's springs.
-  void equilibrium_forces(const ContactPoint& c, Eigen::VectorXd& N, Eigen::VectorXd& T) const {
-    N.resize(m_);
-    T.resize(m_);
-    for (int p = 0; p < m_; ++p) {
-      const ContactKernel& k = c.kernel[p];
-      if (method_.has_multipliers()) {
-        N[p] = weight(p) * k.compliance + c.lambda[p];
-        T[p] = c.t[p];
-      } else {
-        N[p] = weight(p) * k.normal;
-        T[p] = weight(p) * k.tangential;
-      }
-    }
+  void start(ContactIterate& iterate);
+  Test test(const ContactPoint& now, const ContactIterate& iterate, bool one_change);
+  bool solve(const Test& test, const ContactPoint& now, Step& step);
+  bool trial(double alpha, const ContactPoint& now, const Step& step, ContactPoint& at);
+  double step_length(const Test& test, const ContactPoint& now, const Step& step,
+                     ContactPoint& next);
+  double unheld_length(const ContactPoint& now, const Step& step, ContactPoint& next);
+  double searched_length(const Test& test, const ContactPoint& now, const Step& step,
+                         ContactPoint& next);
+  template <class Departs>
+  std::vector<double> crossings(const ContactPoint& from, const ContactPoint& to, Departs departs,
+                                bool only_first) const;
+  double first_hold(const ContactPoint& from, const ContactPoint& to) const;
+  std::vector<double> kinks(const ContactPoint& from, const ContactPoint& to) const;
+  double monotone_length(const ContactPoint& now, const Step& step, ContactPoint& next);
+  void record(Test& test, const ContactPoint& before, const ContactPoint& now, double alpha);
+  bool stopped(int iteration, double first_residual);
+  /// The next restriction of the steps after a cycle or a stall: first one branch change per
+  /// iteration with full steps for a linear complementarity problem (frictionless Signorini on a
+  /// linear bulk, a P-matrix LCP, where Murty's rule terminates), monotone steps for the other
+  /// problems, whose full steps Murty's rule does not tame (a compliance's kink on one node); then
+  /// the other restriction too. False if none is left. The cycles are then counted afresh.
+  bool restrict_steps() {
+    if (one_change_ && monotone_) return false;
+    const bool lcp = !bulk_.nonlinear() && !s_.has_friction() &&
+                     std::none_of(s_.law.begin(), s_.law.end(),
+                                  [](const ContactLaw& l) { return l.has_compliance(); });
+    if (one_change_ || monotone_)
+      one_change_ = monotone_ = true;
+    else
+      (lcp ? one_change_ : monotone_) = true;
+    cycles_ = CycleGuard(kCycleWindow);
+    escapes_ = 0;
+    return true;
   }
-
-  /// ||R|| = ||(equilibrium, w C_n, w C_t)||, absolute.
-  double residual(const ContactPoint& c) const {
-    Eigen::VectorXd N, T;
-    equilibrium_forces(c, N, T);
-    double sum = std::pow(bulk_.equilibrium_residual(N, T), 2);
-    if (method_.has_multipliers())
-      for (int p = 0; p < m_; ++p)
-        sum += (weight(p) * c.kernel[p].complementarity).squaredNorm();
-    return std::sqrt(sum);
+  void fail(NewtonFailure why, const std::string& detail) {
+    result_.reason = why;
+    result_.failure = name(why) + ": " + detail;
   }
-
-  /// The residual of the system step (iii) linearized, at a point of its line: `c` on the
-  /// branches of (ii), whose off-wall rows are the method's condition there, lambda = 0 or
-  /// projection's Robin law lambda = (w / c) (q_n - q_n at the step's origin `origin`).
-  double held_residual(ContactPoint c, const Eigen::VectorXd& origin) const {
-    for (int p = 0; p < m_; ++p)
-      if (!c.kernel[p].wall_active)
-        c.kernel[p].complementarity[0] -=
-            off_wall_stiffness(method_, s_.law[p], weight(p)) * (c.q_n[p] - origin[p]) / weight(p);
-    return residual(c);
-  }
-
-  /// Step (iii): the condition of node p on the branch of kernel k.
-  NodeConditions node_conditions(int p, const ContactKernel& k, double q_n, double q_t) const {
-    const ContactLaw& law = s_.law[p];
-    const double w = weight(p);
-    NodeConditions c;
-    if (method_.has_multipliers() && k.wall_active) {
-      c.normal.imposed = true;
-      c.normal.value = law.depth - q_n;
-    } else {
-      c.normal.force = w * k.normal;
-      c.normal.stiffness = w * k.d_force(0, kQn) + off_wall_stiffness(method_, law, w);
-    }
-    if (!law.has_friction()) return c;
-    if (k.stick && method_.has_multipliers()) {
-      c.tangential.imposed = true;
-      c.tangential.value = -q_t;
-    } else if (k.stick) {
-      c.tangential.force = w * k.tangential;
-      c.tangential.stiffness = w * k.d_force(1, kQt);
-    } else if (k.bound_slope != 0 && c.normal.imposed) {
-      c.tangential.coupling = k.slip * k.bound_slope; // T = sigma mu N, N the wall's reaction
-    } else {
-      // T = sigma s with s the kernel's bound law: a threshold, mu p(q_n) (bound=compliance), or
-      // mu N with N the kernel's normal force law, not the projection's Robin term (a
-      // relaxation of the inactive nodes, not a contact force).
-      c.tangential.force = w * k.slip * k.bound;
-      c.tangential.cross = w * k.slip * k.d_bound(kQn);
-    }
-    return c;
-  }
+  void finish(const ContactPoint& now);
 };
 
-ContactNewtonResult Driver::run(ContactIterate& iterate) {
+/// The kernel of node p at (q_n, q_t) with multipliers (lambda, t) as nodal forces (penalty:
+/// none), augmented by r, on the branch `on` if given.
+ContactKernel Driver::kernel(int p, double q_n, double q_t, double lambda, double t, double r,
+                             const NodeBranch* on, double r_t) const {
+  NodeVariables x{q_n, q_t, 0.0, 0.0};
+  if (method_.has_multipliers()) {
+    x.lambda = lambda / weight(p);
+    x.t = t / weight(p);
+  }
+  if (r_t == 0) r_t = r;
+  return on ? contact_kernel(s_.law[p], x, r, r_t, *on) : contact_kernel(s_.law[p], x, r, r_t);
+}
+
+/// The state at the bulk's iterate with multipliers (lambda, t), and its residual
+/// ||R|| = ||(equilibrium, w C_n, w C_t)|| (header): the equilibrium with the contact forces of
+/// the iterate (compliance plus multipliers, or penalty's springs) and the Alart-Curnier
+/// functions at each node's natural augmentation; on the branches `held` of a step's test if
+/// given, whose off-wall rows are then the step's condition there (lambda = 0, or projection's
+/// Robin law from the step's origin `origin`).
+ContactPoint Driver::point(const Eigen::VectorXd& lambda, const Eigen::VectorXd& t,
+                           const std::vector<NodeBranch>* held,
+                           const Eigen::VectorXd* origin) const {
+  ContactPoint c{bulk_.penetration(), bulk_.slip(), lambda, t, 0.0};
+  Eigen::VectorXd N(m_), T(m_);
+  double complementarity = 0;
+  for (int p = 0; p < m_; ++p) {
+    const NodeBranch* on = held ? &(*held)[p] : nullptr;
+    if (method_.has_multipliers()) {
+      const ContactKernel k = kernel(p, c.q_n[p], c.q_t[p], lambda[p], t[p], natural_[p], on);
+      N[p] = weight(p) * k.compliance + lambda[p];
+      T[p] = t[p];
+      Eigen::Vector2d C = weight(p) * k.complementarity;
+      if (on && !on->wall)
+        C[0] -= off_wall_stiffness(method_, s_.law[p], weight(p)) * (c.q_n[p] - (*origin)[p]);
+      complementarity += C.squaredNorm();
+    } else { // penalty: its springs are the model, their r is not an algorithm's parameter
+      const ContactKernel k = kernel(p, c.q_n[p], c.q_t[p], 0.0, 0.0, method_.augmentation(), on);
+      N[p] = weight(p) * k.normal;
+      T[p] = weight(p) * k.tangential;
+    }
+  }
+  c.residual = std::sqrt(std::pow(bulk_.equilibrium_residual(N, T), 2) + complementarity);
+  return c;
+}
+
+/// Step (iii): the condition of node p on the branch of kernel k.
+NodeConditions Driver::node_conditions(int p, const ContactKernel& k, double q_n,
+                                       double q_t) const {
+  const ContactLaw& law = s_.law[p];
+  const double w = weight(p);
+  NodeConditions c;
+  if (method_.has_multipliers() && k.wall_active) {
+    c.normal.imposed = true;
+    c.normal.value = law.depth - q_n;
+  } else {
+    c.normal.force = w * k.normal;
+    c.normal.stiffness = w * k.d_force(0, kQn) + off_wall_stiffness(method_, law, w);
+  }
+  if (!law.has_friction()) return c;
+  if (k.stick && method_.has_multipliers()) {
+    c.tangential.imposed = true;
+    c.tangential.value = law.held_slip - q_t; // stick: back to the slip it holds, 0 or held
+  } else if (k.stick) {
+    c.tangential.force = w * k.tangential;
+    c.tangential.stiffness = w * k.d_force(1, kQt);
+  } else if (k.bound_slope != 0 && c.normal.imposed) {
+    c.tangential.coupling = k.slip * k.bound_slope; // T = sigma mu N, N the wall's reaction
+  } else {
+    // T = sigma s with s the kernel's bound law: a threshold, mu p(q_n) (bound=compliance), or
+    // mu N with N the kernel's normal force law, not the projection's Robin term (a
+    // relaxation of the inactive nodes, not a contact force).
+    c.tangential.force = w * k.slip * k.bound;
+    c.tangential.cross = w * k.slip * k.d_bound(kQn);
+  }
+  return c;
+}
+
+void Driver::start(ContactIterate& iterate) {
   if (iterate.lambda.size() == 0) iterate.lambda = Eigen::VectorXd::Zero(m_);
   if (iterate.t.size() == 0) iterate.t = Eigen::VectorXd::Zero(m_);
   SIG_VERIFY(bulk_.contacts() == m_ && s_.weight.size() == m_ && iterate.lambda.size() == m_ &&
@@ -151,153 +226,408 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
     iterate.lambda.setZero();
     iterate.t.setZero();
   }
+  natural_ = bulk_.contact_stiffness();
+  SIG_VERIFY(natural_.size() == m_,
+             "contact Newton: " << natural_.size() << " nodal stiffnesses for " << m_);
+  for (int p = 0; p < m_; ++p)
+    natural_[p] = natural_[p] > 0 ? natural_[p] / weight(p) : method_.augmentation();
+}
 
-  ContactNewtonResult result;
-  ContactPoint now = point(iterate.lambda, iterate.t);
-  double residual_norm = residual(now);
-  for (int iteration = 0; iteration < options_.max_iterations; ++iteration) {
-    // (ii) the branches at the iterate, and (iii)'s conditions on them.
-    std::vector<ContactKernel> tested(m_);
-    std::vector<NodeBranch> branch(m_);
-    std::vector<NodeConditions> conditions(m_);
-    IterationRecord record;
-    record.wall.resize(m_);
-    for (int p = 0; p < m_; ++p) {
-      const bool was_on_wall = !iterate.branch.empty() && iterate.branch[p].wall;
-      const bool was_inactive = !iterate.branch.empty() && !was_on_wall;
-      const ContactKernel& k = tested[p] =
-          kernel(p, now.q_n[p], now.q_t[p],
-                 method_.tested_multiplier(iterate.lambda[p], was_inactive), iterate.t[p]);
-      branch[p] = branch_of(k);
-      conditions[p] = node_conditions(p, k, now.q_n[p], now.q_t[p]);
-      record.active += k.wall_active ? 1 : 0;
-      record.wall[p] = k.wall_active ? 1 : 0;
-      if (k.wall_active != was_on_wall) ++(k.wall_active ? record.entered : record.left);
-      record.stick += k.stick ? 1 : 0;
-      record.slip += k.slip != 0 && k.bound > 0 ? 1 : 0;
+/// Step (ii): the branches at the iterate, and (iii)'s conditions on them. With `one_change`,
+/// only the first node (least index) whose branch differs from the last iteration's changes it,
+/// the others keep theirs: Murty's least-index rule, whose principal pivoting terminates on
+/// every P-matrix (a linear bulk's frictionless contact) where the block changes of the active
+/// set may cycle (Murty, "Note on a Bard-type scheme for solving the complementarity problem",
+/// Opsearch 11, 1974; Judice and Pires, Comput. Oper. Res. 21, 1994, as the fallback of block
+/// principal pivoting).
+Test Driver::test(const ContactPoint& now, const ContactIterate& iterate, bool one_change) {
+  Test test{std::vector<NodeBranch>(m_), std::vector<NodeConditions>(m_), {}};
+  IterationRecord& record = test.record;
+  record.wall.resize(m_);
+  result_.normal_status.resize(m_);
+  result_.friction_status.resize(m_);
+  bool changed = false;
+  for (int p = 0; p < m_; ++p) {
+    const bool was_on_wall = !iterate.branch.empty() && iterate.branch[p].wall;
+    const bool was_inactive = !iterate.branch.empty() && !was_on_wall;
+    const double lambda = method_.tested_multiplier(iterate.lambda[p], was_inactive);
+    ContactKernel k = tested(p, now.q_n[p], now.q_t[p], lambda, iterate.t[p]);
+    if (one_change && branch_of(k) != iterate.branch[p]) {
+      if (changed) k = tested(p, now.q_n[p], now.q_t[p], lambda, iterate.t[p], &iterate.branch[p]);
+      changed = true;
     }
+    test.branch[p] = branch_of(k);
+    test.conditions[p] = node_conditions(p, k, now.q_n[p], now.q_t[p]);
+    record.active += k.wall_active && !k.held ? 1 : 0;
+    record.wall[p] = k.wall_active && !k.held ? 1 : 0;
+    if (k.wall_active != was_on_wall) ++(k.wall_active ? record.entered : record.left);
+    record.stick += k.stick ? 1 : 0;
+    record.slip += k.slip != 0 && k.bound > 0 ? 1 : 0;
     // The statuses of the last test, so a failed iteration still reports where it stood.
-    result.normal_status.resize(m_);
-    result.friction_status.resize(m_);
-    for (int p = 0; p < m_; ++p) {
-      result.normal_status[p] = normal_status(tested[p]);
-      result.friction_status[p] = friction_status(s_.law[p], tested[p]);
-    }
+    result_.normal_status[p] = normal_status(k);
+    result_.friction_status[p] = friction_status(s_.law[p], k);
+  }
+  return test;
+}
 
-    // (iii) the linear step; its forces give the multipliers at the full step.
-    StepSolution step;
-    try {
-      Eigen::VectorXd N, T;
-      equilibrium_forces(now, N, T);
-      step = bulk_.solve(conditions, N);
-    } catch (const Error& e) {
-      result.failure = std::string("the generalized Jacobian could not be factorized: ") +
-                       e.what() + " (" + std::to_string(record.active) + " nodes on the wall)";
-      break;
-    }
-    Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m_), t = Eigen::VectorXd::Zero(m_);
-    if (method_.has_multipliers())
-      for (int p = 0; p < m_; ++p) {
-        const ContactLaw& law = s_.law[p];
-        if (conditions[p].normal.imposed) // the reaction, less the compliance at the wall
-          lambda[p] = step.normal_force[p] - weight(p) * compliance_pressure(law, law.depth);
-        else // projection's Robin force, 0 for the Neumann condition
-          lambda[p] = off_wall_stiffness(method_, law, weight(p)) * step.normal_increment[p];
-        if (law.has_friction()) t[p] = step.tangential_force[p];
-      }
+/// Step (iii): the linear step and the multipliers at its full length; false if its matrix
+/// cannot be factorized.
+bool Driver::solve(const Test& test, const ContactPoint& now, Step& step) {
+  try {
+    Eigen::VectorXd N = now.lambda; // the present normal forces (an obstacle's curvature)
+    for (int p = 0; p < m_; ++p)
+      N[p] += weight(p) * compliance_pressure(s_.law[p], now.q_n[p]);
+    step.solution = bulk_.solve(test.conditions, N);
+  } catch (const Error& e) {
+    fail(NewtonFailure::singular_step,
+         std::string("the generalized Jacobian could not be factorized: ") + e.what() + " (" +
+             std::to_string(test.record.active) + " nodes on the wall)");
+    return false;
+  }
+  step.lambda = Eigen::VectorXd::Zero(m_);
+  step.t = Eigen::VectorXd::Zero(m_);
+  if (!method_.has_multipliers()) return true;
+  for (int p = 0; p < m_; ++p) {
+    const ContactLaw& law = s_.law[p];
+    if (test.conditions[p].normal.imposed) // the reaction, less the compliance at the wall
+      step.lambda[p] =
+          step.solution.normal_force[p] - weight(p) * compliance_pressure(law, law.depth);
+    else // projection's Robin force, 0 for the Neumann condition
+      step.lambda[p] =
+          off_wall_stiffness(method_, law, weight(p)) * step.solution.normal_increment[p];
+    if (law.has_friction()) step.t[p] = step.solution.tangential_force[p];
+  }
+  return true;
+}
 
-    // Step length (header). A first iteration whose iterate already meets the residual test (a
-    // load step starting from the previous one's solution, the new Dirichlet values not in R)
-    // seeks no decrease: its trials would not lower it.
-    const bool nonlinear = bulk_.nonlinear();
-    const bool far = residual_norm > kSearchFar * options_.eps * bulk_.force_scale();
-    const bool search = nonlinear || (options_.line_search && far);
-    const bool seek_decrease = iteration > 0 || residual_norm > options_.eps * bulk_.force_scale();
-    // The merit of the search (header): on a nonlinear bulk, ||R|| on the branches of (ii).
-    const std::vector<NodeBranch>* held = nonlinear ? &branch : nullptr;
-    const Eigen::VectorXd origin = now.q_n;
-    const double start_merit =
-        held ? held_residual(point(iterate.lambda, iterate.t, held), origin) : residual_norm;
-    double alpha = 1, accepted = 0, accepted_residual = 0, accepted_merit = 0;
-    ContactPoint trial;
-    for (int h = 0; h <= (search ? kMaxHalvings : 0); ++h, alpha /= 2) {
-      if (!bulk_.move(alpha)) continue;
-      const Eigen::VectorXd trial_lambda = iterate.lambda + alpha * (lambda - iterate.lambda);
-      const Eigen::VectorXd trial_t = iterate.t + alpha * (t - iterate.t);
-      trial = point(trial_lambda, trial_t);
-      const double trial_residual = residual(trial);
-      if (!std::isfinite(trial_residual)) continue; // outside the domain, as an inversion is
-      const double merit =
-          held ? held_residual(point(trial_lambda, trial_t, held), origin) : trial_residual;
-      const bool decreases = merit < start_merit;
-      if (accepted == 0 || decreases || (!nonlinear && merit < accepted_merit)) {
-        bulk_.keep();
-        std::swap(now, trial);
-        accepted = alpha;
-        accepted_residual = trial_residual;
-        accepted_merit = merit;
-      }
-      if (decreases || !search || (!seek_decrease && accepted > 0)) break;
+/// The bulk moved to alpha along the step, its state in `at`; false outside the bulk's domain
+/// (an inverted element) or with a residual that is not finite.
+bool Driver::trial(double alpha, const ContactPoint& now, const Step& step, ContactPoint& at) {
+  if (!bulk_.move(alpha)) return false;
+  at = point(now.lambda + alpha * (step.lambda - now.lambda), now.t + alpha * (step.t - now.t));
+  return std::isfinite(at.residual);
+}
+
+/// The step's length (header), the bulk left at it and its state in `next`; 0 if no length is
+/// admissible (the failure set).
+double Driver::step_length(const Test& test, const ContactPoint& now, const Step& step,
+                           ContactPoint& next) {
+  if (!options_.globalize) {
+    if (!trial(1.0, now, step, next)) return 0.0;
+    bulk_.keep();
+    return 1.0;
+  }
+  if (step.solution.proximal_force > kUnheld * std::max(now.residual, 1e-300)) {
+    kind_ = 1;
+    ratio_ = 0;
+    const double alpha = unheld_length(now, step, next);
+    if (alpha > 0 || result_.reason != NewtonFailure::none) return alpha;
+  }
+  kind_ = monotone_ ? 2 : one_change_ ? 3 : 0;
+  return searched_length(test, now, step, next);
+}
+
+/// An unheld step (header): cut where a node first comes to hold the body; 0 if none does along
+/// it (the step is then searched as any other, and remembered as a drift).
+double Driver::unheld_length(const ContactPoint& now, const Step& step, ContactPoint& next) {
+  ContactPoint full;
+  if (!trial(1.0, now, step, full)) {
+    fail(NewtonFailure::divergence, "the unheld step's full length is not admissible");
+    return 0.0;
+  }
+  double alpha = first_hold(now, full);
+  if (!std::isfinite(alpha)) {
+    drift_ = bulk_.displacement_step();
+    drift_at_ = static_cast<int>(result_.history.size()) + 1;
+    return 0.0;
+  }
+  alpha = std::min(1.0, alpha * (1 + 1e-9)); // just past the kink, so the node is in
+  if (!trial(alpha, now, step, next)) return 0.0;
+  bulk_.keep();
+  return alpha;
+}
+
+/// The first alpha = 1, 1/2, ... whose trial passes the test of the mode (header): relaxed, the
+/// residual of the system the step linearized (its branches held) falls by Armijo's test and the
+/// residual itself stays below kRelaxation times the reference; monotone, the residual falls by
+/// Armijo's test. If none passes, the admissible trial of least merit.
+double Driver::searched_length(const Test& test, const ContactPoint& now, const Step& step,
+                               ContactPoint& next) {
+  const Eigen::VectorXd origin = now.q_n;
+  const std::vector<NodeBranch>* held = monotone_ ? nullptr : &test.branch;
+  const auto merit = [&](const ContactPoint& c) {
+    return held ? point(c.lambda, c.t, held, &origin).residual : c.residual;
+  };
+  const double current = merit(now);
+  const double ceiling = kRelaxation * memory_.reference();
+  // The fallback if no length passes: relaxed, the largest admissible length below the ceiling
+  // (an active-set change may raise the residual for a step), else the least residual; monotone,
+  // the least residual if it is below the present one, else none (stagnation).
+  if (monotone_) return monotone_length(now, step, next);
+  ContactPoint candidate;
+  std::vector<double> lengths;
+  for (int h = 0; h <= kMaxHalvings; ++h)
+    lengths.push_back(std::ldexp(1.0, -h));
+  double fallback = std::numeric_limits<double>::infinity(), taken = 0;
+  for (const double alpha : lengths) {
+    if (!trial(alpha, now, step, candidate)) continue;
+    const bool trusted =
+        monotone_ || one_change_ || !method_.has_multipliers() || candidate.residual <= ceiling;
+    const bool passes = trusted && sufficient_decrease(merit(candidate), current, current, alpha);
+    const double rank = held && trusted ? -alpha : candidate.residual; // lower is better
+    const bool eligible = !monotone_ || candidate.residual < current;
+    if (passes || (eligible && rank < fallback)) {
+      fallback = rank;
+      taken = alpha;
+      ratio_ = merit(candidate) / std::max(current, 1e-300);
+      std::swap(next, candidate);
+      bulk_.keep();
     }
-    if (accepted == 0) {
-      result.failure =
-          "every step length down to 2^-" + std::to_string(kMaxHalvings) +
-          " leaves the bulk's domain (an inverted element) or gives a residual that is not finite";
+    if (passes) break;
+  }
+  if (ratio_ >= 1) kind_ = 4;
+  if (taken == 0)
+    fail(NewtonFailure::divergence,
+         "every step length down to 2^-" + std::to_string(kMaxHalvings) +
+             " leaves the bulk's domain (an inverted element) or gives a residual that is not "
+             "finite");
+  return taken;
+}
+
+/// A monotone step (header): the length of least residual among the halvings and, on a linear
+/// bulk, the breakpoints of the residual along the step (each node's first kink: up to the first
+/// one the step is the Newton step of the pieces it linearized, so the residual falls there by
+/// the fraction taken, where every halving may land beyond some kink); 0 if none is admissible
+/// or none has lowered the residual kEscapes + 1 times in a row (the failure set).
+double Driver::monotone_length(const ContactPoint& now, const Step& step, ContactPoint& next) {
+  std::vector<double> lengths;
+  for (int h = 0; h <= kMaxHalvings; ++h)
+    lengths.push_back(std::ldexp(1.0, -h));
+  ContactPoint candidate;
+  if (!bulk_.nonlinear() && trial(1.0, now, step, candidate))
+    for (double kink : kinks(now, candidate))
+      if (kink > lengths.back() && kink < 1) lengths.push_back(kink);
+  // Where no length lowers it (the step is no descent at a kink of the residual) the least one
+  // is taken all the same, kEscapes times in a row at most: the next test sees other branches.
+  double least = std::numeric_limits<double>::infinity(), taken = 0;
+  for (const double alpha : lengths) {
+    if (!trial(alpha, now, step, candidate)) continue;
+    if (candidate.residual < least) {
+      least = candidate.residual;
+      taken = alpha;
+      std::swap(next, candidate);
+      bulk_.keep();
+    }
+  }
+  escapes_ = least < now.residual ? 0 : escapes_ + 1;
+  ratio_ = least / std::max(now.residual, 1e-300);
+  if (escapes_ > 0) kind_ = 4;
+  // Stuck at a kink: the next restriction, if one is left.
+  if (escapes_ > kEscapes) restrict_steps();
+  if (taken == 0)
+    fail(NewtonFailure::divergence, "every step length leaves the bulk's domain (an inverted "
+                                    "element) or gives a residual that is not finite");
+  else if (escapes_ > kEscapes)
+    fail(NewtonFailure::stagnation, "no step length lowers the residual along the Newton step (" +
+                                        std::to_string(escapes_) +
+                                        " monotone iterations in a row, the residual " +
+                                        std::to_string(now.residual / bulk_.force_scale()) + ")");
+  return escapes_ > kEscapes ? 0.0 : taken;
+}
+
+/// Along a step from `from` (alpha = 0) to `to` (alpha = 1), the node variables affine in
+/// alpha (exact on a linear bulk), per node the first alpha in (2^-60, 1] at which its kernel
+/// differs from the one it had at 2^-60 by `departs(at_start, at_alpha)` (nodes that never do
+/// are left out; with `only_first`, only crossings before the least found so far). Geometric
+/// samples up from 2^-60 (an unheld step is long), then bisection.
+template <class Departs>
+std::vector<double> Driver::crossings(const ContactPoint& from, const ContactPoint& to,
+                                      Departs departs, bool only_first) const {
+  const auto at = [&](int p, double a) {
+    const auto mix = [a](double x0, double x1) { return x0 + a * (x1 - x0); };
+    return tested(p, mix(from.q_n[p], to.q_n[p]), mix(from.q_t[p], to.q_t[p]),
+                  mix(from.lambda[p], to.lambda[p]), mix(from.t[p], to.t[p]));
+  };
+  constexpr int kFirst = 60;
+  double first = std::numeric_limits<double>::infinity();
+  std::vector<double> found;
+  for (int p = 0; p < m_; ++p) {
+    const ContactKernel start = at(p, std::ldexp(1.0, -kFirst));
+    double below = 0, above = -1;
+    for (int j = kFirst - 1; j >= 0 && above < 0; --j) {
+      const double a = std::ldexp(1.0, -j);
+      if (a >= first) break;
+      (departs(start, at(p, a)) ? above : below) = a;
+    }
+    if (above < 0) continue;
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (below + above);
+      (departs(start, at(p, mid)) ? above : below) = mid;
+    }
+    found.push_back(above);
+    if (only_first) first = std::min(first, above);
+  }
+  return found;
+}
+
+/// Along an unheld step, where a node first comes to hold more of the body: its wall becomes
+/// active, its compliance engages, or it enters the stick branch.
+double Driver::first_hold(const ContactPoint& from, const ContactPoint& to) const {
+  const auto holding = [](const ContactKernel& k) {
+    return (k.wall_active || k.compliance > 0 ? 1 : 0) + (k.stick ? 1 : 0);
+  };
+  const std::vector<double> at = crossings(
+      from, to,
+      [&](const ContactKernel& start, const ContactKernel& k) {
+        return holding(k) > holding(start);
+      },
+      true);
+  return at.empty() ? std::numeric_limits<double>::infinity()
+                    : *std::min_element(at.begin(), at.end());
+}
+
+/// Along a step, where each node first crosses a kink of its kernel: the breakpoints of the
+/// residual, piecewise smooth in alpha.
+std::vector<double> Driver::kinks(const ContactPoint& from, const ContactPoint& to) const {
+  return crossings(
+      from, to,
+      [](const ContactKernel& start, const ContactKernel& k) {
+        return branch_of(k) != branch_of(start) ||
+               (k.compliance_slope == 0) != (start.compliance_slope == 0);
+      },
+      false);
+}
+
+/// Step (iv)'s measures of the iteration that moved the state from `before` to `now`.
+void Driver::record(Test& test, const ContactPoint& before, const ContactPoint& now, double alpha) {
+  double dx2 = std::pow(bulk_.displacement_step(), 2), x2 = std::pow(bulk_.displacement_norm(), 2);
+  for (int p = 0; p < m_; ++p) {
+    const double w = weight(p);
+    dx2 += std::pow((now.lambda[p] - before.lambda[p]) / w, 2) +
+           std::pow((now.t[p] - before.t[p]) / w, 2);
+    x2 += std::pow(now.lambda[p] / w, 2) + std::pow(now.t[p] / w, 2);
+  }
+  IterationRecord& r = test.record;
+  r.residual = now.residual / bulk_.force_scale();
+  r.step = std::sqrt(dx2);
+  r.increment = r.step / std::max(std::sqrt(x2), 1e-300);
+  r.kind = kind_;
+  r.merit_ratio = kind_ == 1 ? 0.0 : ratio_;
+  result_.history.push_back(r);
+  result_.step_length.push_back(alpha);
+}
+
+/// After an accepted step: the globalization's bookkeeping, true if the solve must stop (the
+/// failure set).
+bool Driver::stopped(int iteration, double first_residual) {
+  const double residual = result_.history.back().residual * bulk_.force_scale();
+  memory_.push(residual);
+  if (residual < best_) {
+    best_ = residual;
+    best_at_ = iteration;
+  }
+  if (!(residual <= kDivergence * std::max(first_residual, bulk_.force_scale()))) {
+    fail(NewtonFailure::divergence, "the residual grew to " +
+                                        std::to_string(residual / bulk_.force_scale()) +
+                                        " of the force scale");
+    return true;
+  }
+  if (iteration - best_at_ >= kProgressWindow && !monotone_) {
+    monotone_ = true;
+    cycles_ = CycleGuard(kCycleWindow);
+  }
+  return false;
+}
+
+/// The result's forces at the last iterate: compliance plus multipliers, or penalty's springs;
+/// the failure named if the solve did not converge.
+void Driver::finish(const ContactPoint& now) {
+  // A solve that ends without converging soon after an unheld step that nothing held has
+  // drifted: the load's part along a rigid motion is not held (the load beyond the friction
+  // bound, the obstacle on the wrong side).
+  const int iterations = static_cast<int>(result_.history.size());
+  if (!result_.converged && drift_at_ > 0 && iterations - drift_at_ < kProgressWindow &&
+      (result_.reason == NewtonFailure::none || result_.reason == NewtonFailure::stagnation ||
+       result_.reason == NewtonFailure::cycling)) {
+    result_.drift = drift_;
+    result_.reason = NewtonFailure::none;
+    fail(NewtonFailure::drift,
+         "a rigid motion of the body is held by no contact and no friction: the load's part along "
+         "it moved the body by " +
+             std::to_string(drift_) + " at iteration " + std::to_string(drift_at_) +
+             "; check the load against the friction bound and the obstacle's side");
+  }
+  if (!result_.converged && result_.reason == NewtonFailure::none) {
+    if (static_cast<int>(result_.history.size()) > kProgressWindow &&
+        static_cast<int>(result_.history.size()) - best_at_ >= kProgressWindow)
+      fail(NewtonFailure::stagnation,
+           "the residual's least value, " + std::to_string(best_ / bulk_.force_scale()) + ", is " +
+               std::to_string(result_.history.size() - best_at_) + " iterations old");
+    else
+      fail(NewtonFailure::iteration_limit, "no convergence within the iteration limit");
+  }
+  result_.normal_force.resize(m_);
+  result_.tangential_force.resize(m_);
+  for (int p = 0; p < m_; ++p) {
+    const ContactKernel k = tested(p, now.q_n[p], now.q_t[p], now.lambda[p], now.t[p]);
+    result_.normal_force[p] =
+        method_.has_multipliers() ? weight(p) * k.compliance + now.lambda[p] : weight(p) * k.normal;
+    result_.tangential_force[p] = method_.has_multipliers() ? now.t[p] : weight(p) * k.tangential;
+  }
+}
+
+ContactNewtonResult Driver::run(ContactIterate& iterate) {
+  start(iterate);
+  ContactPoint now = point(iterate.lambda, iterate.t);
+  const double first_residual = best_ = now.residual;
+  memory_.push(now.residual);
+  for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
+    Test t = test(now, iterate, one_change_);
+    if (cycles_.repeats(t.branch, now.residual)) {
+      if (!options_.globalize || !restrict_steps()) {
+        fail(NewtonFailure::cycling,
+             "the active and stick/slip sets of iteration " + std::to_string(iteration) +
+                 " repeat an earlier iteration's without progress" +
+                 (options_.globalize ? ", with one change per iteration and monotone steps" : ""));
+        break;
+      }
+      t = test(now, iterate, one_change_);
+    }
+    Step step;
+    if (!solve(t, now, step)) break;
+    ContactPoint next;
+    const double alpha = step_length(t, now, step, next);
+    if (alpha == 0) {
       bulk_.move(0.0); // back to the last iterate
       break;
     }
     bulk_.restore();
-
-    // (iv) the increment of x = (u, lambda / w, t / w), the residual and the branches.
-    double dx2 = std::pow(bulk_.displacement_step(), 2),
-           x2 = std::pow(bulk_.displacement_norm(), 2);
-    for (int p = 0; p < m_; ++p) {
-      const double w = weight(p);
-      dx2 += std::pow((now.lambda[p] - iterate.lambda[p]) / w, 2) +
-             std::pow((now.t[p] - iterate.t[p]) / w, 2);
-      x2 += std::pow(now.lambda[p] / w, 2) + std::pow(now.t[p] / w, 2);
-    }
+    record(t, now, next, alpha);
+    now = std::move(next);
     iterate.lambda = now.lambda;
     iterate.t = now.t;
-    residual_norm = accepted_residual;
-    record.residual = residual_norm / bulk_.force_scale();
-    record.step = std::sqrt(dx2);
-    record.increment = record.step / std::max(std::sqrt(x2), 1e-300);
-    result.history.push_back(record);
-    result.step_length.push_back(accepted);
-
-    const bool settled = !method_.needs_settled_statuses() || branch == iterate.branch;
-    iterate.branch = branch;
-    if (record.increment <= options_.eps && record.residual <= options_.eps && settled &&
-        bulk_.settled()) {
-      result.converged = true;
+    const bool settled = !method_.needs_settled_statuses() || t.branch == iterate.branch;
+    iterate.branch = std::move(t.branch);
+    const IterationRecord& r = result_.history.back();
+    if (r.increment <= options_.eps && r.residual <= options_.eps && settled && bulk_.settled()) {
+      result_.converged = true;
       break;
     }
+    if (stopped(iteration, first_residual)) break;
   }
-  if (!result.converged && result.failure.empty())
-    result.failure = "no convergence within the iteration limit";
-  equilibrium_forces(now, result.normal_force, result.tangential_force);
-  return result;
+  finish(now);
+  return std::move(result_);
 }
 
 } // namespace
 
-ContactNewtonOptions newton_options(const ContactSolverParameters& parameters,
-                                    const std::vector<ContactLaw>& laws) {
+ContactNewtonOptions newton_options(const ContactSolverParameters& parameters) {
   SIG_VERIFY(parameters.search == "auto" || parameters.search == "yes" || parameters.search == "no",
              "line search '" << parameters.search << "' is unknown; known: auto, yes, no");
   ContactNewtonOptions o;
   o.eps = parameters.eps;
   o.max_iterations = parameters.max_iterations;
-  // Full steps for frictionless Signorini, as the thesis's tables; friction and the compliance
-  // laws cycle without a search (a compliance kink on every node near the wall). Penalty's steps
-  // are Newton's on piecewise-linear springs, stiff for a large r: a residual search would creep
-  // along them; it takes full steps unless asked.
-  const bool beyond_signorini = std::any_of(laws.begin(), laws.end(), [](const ContactLaw& l) {
-    return l.has_friction() || l.has_compliance();
-  });
-  o.line_search = parameters.search == "yes" || (parameters.search == "auto" && beyond_signorini &&
-                                                 parameters.method != "penalty");
+  o.globalize = parameters.search != "no";
   return o;
 }
 

@@ -118,6 +118,7 @@ ConvexificationResult convexify(ContactBulk& bulk, const ContactSetting& setting
     const ContactNewtonResult& last = result.last;
 
     if (!last.converged) {
+      result.reason = last.reason;
       result.failure =
           "convex solve " + std::to_string(k + 1) + " did not converge: " + last.failure;
       break;
@@ -132,6 +133,7 @@ ConvexificationResult convexify(ContactBulk& bulk, const ContactSetting& setting
       const double earlier = result.history[k - (kCycleRepeats - 1) * p].displacement_change;
       if (!(record.displacement_change < 0.5 * earlier)) {
         result.cycle = p;
+        result.reason = NewtonFailure::cycling;
         result.failure = "the statuses cycle with period " + std::to_string(p) + " over " +
                          std::to_string(kCycleRepeats) +
                          " periods and the displacement change no longer falls (" +
@@ -154,9 +156,11 @@ ConvexificationResult convexify(ContactBulk& bulk, const ContactSetting& setting
                  (1 - options.relaxation) * law.mu;
     }
   }
-  if (!result.converged && result.failure.empty())
+  if (!result.converged && result.failure.empty()) {
+    result.reason = NewtonFailure::iteration_limit;
     result.failure =
         "no convergence within " + std::to_string(options.max_iterations) + " convex solves";
+  }
   result.mu.resize(m);
   for (int p = 0; p < m; ++p)
     result.mu[p] = frozen.law[p].mu;

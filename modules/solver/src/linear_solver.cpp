@@ -10,6 +10,25 @@
 
 namespace sig {
 
+namespace {
+
+enum class Backend { cholmod, umfpack, mumps };
+
+/// The backend called `name`, in any case: the one place a backend's name is read.
+Backend backend_named(const std::string& name) {
+  std::string key = name;
+  std::transform(key.begin(), key.end(), key.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  if (key == "cholmod") return Backend::cholmod;
+  if (key == "umfpack") return Backend::umfpack;
+  if (key == "mumps") return Backend::mumps;
+  SIG_VERIFY(false,
+             "unknown linear solver '" << name << "' (choices: " << linear_solver_names << ")");
+  return Backend::cholmod;
+}
+
+} // namespace
+
 LinearSolver::~LinearSolver() = default;
 
 Eigen::MatrixXd LinearSolver::solve(const Eigen::MatrixXd& B) const {
@@ -61,19 +80,33 @@ std::string to_string(MatrixKind kind) {
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, MatrixKind kind) {
-  std::string key = name;
-  std::transform(key.begin(), key.end(), key.begin(),
-                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-  if (key == "cholmod") {
+  switch (backend_named(name)) {
+  case Backend::cholmod:
     SIG_VERIFY(kind == MatrixKind::spd, "linear solver 'cholmod' factorizes spd matrices only, not "
                                             << to_string(kind) << " ones: use umfpack or mumps");
     return std::make_unique<CholmodSolver>();
+  case Backend::umfpack:
+    return std::make_unique<UmfpackSolver>(kind);
+  case Backend::mumps:
+    return std::make_unique<MumpsSolver>(kind);
   }
-  if (key == "umfpack") return std::make_unique<UmfpackSolver>(kind);
-  if (key == "mumps") return std::make_unique<MumpsSolver>(kind);
-  SIG_VERIFY(false,
-             "unknown linear solver '" << name << "' (choices: " << linear_solver_names << ")");
   return nullptr;
+}
+
+BackendTraits backend_traits(const std::string& name) {
+  BackendTraits traits;
+  switch (backend_named(name)) {
+  case Backend::cholmod:
+    traits.cholesky = true;
+    traits.split_schur = true;
+    break;
+  case Backend::umfpack:
+    break;
+  case Backend::mumps:
+    traits.partial_schur = true;
+    break;
+  }
+  return traits;
 }
 
 } // namespace sig

@@ -219,12 +219,15 @@ void MumpsSolver::factorize(const Eigen::SparseMatrix<double>& A) {
     s.icntl(14) = std::max(2 * s.icntl(14), 40);
     s.call(job_factorize);
   }
+  if (s.infog(1) == -10) // numerically singular
+    throw FactorizationFailure("MUMPS: numeric factorization failed: INFOG(1) = -10 (" +
+                               error_text(-10) + ")");
   s.verify("numeric factorization");
   // SYM = 1 factorizes LDL^T without pivoting: a matrix that is not positive definite may
   // still factorize, and only the count of negative pivots tells.
-  SIG_VERIFY(!(s.kind == MatrixKind::spd && s.infog(12) > 0),
-             "MUMPS: matrix declared positive definite is not: INFOG(12) = " << s.infog(12)
-                                                                             << " negative pivots");
+  if (s.kind == MatrixKind::spd && s.infog(12) > 0)
+    throw FactorizationFailure("MUMPS: matrix declared positive definite is not: INFOG(12) = " +
+                               std::to_string(s.infog(12)) + " negative pivots");
   s.factorized = true;
 }
 

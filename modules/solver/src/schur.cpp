@@ -98,7 +98,8 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
   const int ni = n - m;
 
   // CHOLMOD on a positive definite K: the whole factor, the interface last (cholmod_split.hpp).
-  if (whole_positive_definite && backend_ == "cholmod" && kind == MatrixKind::spd) {
+  const BackendTraits traits = backend_traits(backend_);
+  if (whole_positive_definite && traits.split_schur && kind == MatrixKind::spd) {
     try {
       const Stopwatch factor_clock;
       Eigen::SparseMatrix<double> compressed = K;
@@ -115,7 +116,7 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
   }
 
   // MUMPS factorizes K itself; the other backends need K_ii apart.
-  const bool split_interior = backend_ != "mumps";
+  const bool split_interior = !traits.partial_schur;
   Triplets ii, ic;
   Eigen::MatrixXd K_cc = Eigen::MatrixXd::Zero(m, m);
   for (int j = 0; j < K.outerSize(); ++j)

@@ -16,10 +16,12 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
   ContactSolverParameters& p = result.parameters;
   p.method = solver.choice("method", {"linear", "alm", "penalty", "pdas", "projection"},
                            has_contact ? "pdas" : "linear");
-  if (p.method == "linear" && has_contact)
+  // method=linear is the solve without contact; every other method needs contact elements.
+  const bool linear = p.method == "linear";
+  if (linear && has_contact)
     solver.fail("method",
                 "the datafile has a CONTACT card: choose alm, penalty, pdas or projection");
-  if (p.method != "linear" && !has_contact)
+  if (!linear && !has_contact)
     solver.fail("method", "method " + p.method + " needs a CONTACT card");
   // Without a CONTACT card no stage reads FRICTION: refuse it rather than ignore it.
   if (const Card* friction = datafile.find("FRICTION"); friction != nullptr && !has_contact)
@@ -31,7 +33,7 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
   p.eps = solver.real("eps");
   p.max_iterations = static_cast<int>(solver.integer("maxit", p.max_iterations));
   p.search = solver.choice("search", {"auto", "yes", "no"});
-  // r, gamma, c, eps > 0, maxit >= 1, LOADSTEPS n >= 1: the cards' ranges (core/ranges.hpp).
+  // r, gamma, c > 0, eps, maxit and LOADSTEPS n: the cards' ranges (core/ranges.hpp).
 
   if (const Card* loop = datafile.find("CONVEXIFICATION")) {
     const Card* friction = datafile.find("FRICTION");
@@ -39,12 +41,10 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
       loop->fail("", "the convexification loop belongs to FRICTION law=nonmonotone, which this "
                      "deck does not have");
     ConvexificationOptions& o = result.convexification;
+    // eps, maxit and relaxation have their ranges in core/ranges.hpp.
     o.eps = loop->real("eps", o.eps);
-    if (!(o.eps > 0)) loop->fail("eps", "must be positive");
     o.max_iterations = static_cast<int>(loop->integer("maxit", o.max_iterations));
-    if (o.max_iterations < 1) loop->fail("maxit", "must be at least 1");
     o.relaxation = loop->real("relaxation", o.relaxation);
-    if (!(o.relaxation > 0 && o.relaxation <= 1)) loop->fail("relaxation", "must be in (0, 1]");
     // A march starts each step's loop from the previous step's slip rate (ALGORITHMS.md 3.3).
     const std::string start =
         loop->choice("start", {"rest", "slipped", "previous"}, march ? "previous" : "rest");
@@ -60,6 +60,13 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
     result.small_strain_start = steps->choice("start", {"small-strain", "rest"}) == "small-strain";
   }
   return result;
+}
+
+void refuse_load_steps(const Datafile& datafile, const std::string& why) {
+  if (const Card* steps = datafile.find("LOADSTEPS"))
+    steps->fail(steps->has("n") ? "n" : "", "LOADSTEPS would be ignored: " + why +
+                                                "; load steps are for a hyperelastic MATERIAL "
+                                                "in a static deck (remove the card)");
 }
 
 } // namespace sig

@@ -109,10 +109,11 @@ void UmfpackSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   if (status != UMFPACK_OK) {
     // A singular matrix still yields a Numeric object; it must not be used for solves.
     s.release_numeric();
-    const bool singular = status == UMFPACK_WARNING_singular_matrix;
-    SIG_VERIFY(false, "UMFPACK: numeric factorization failed: status "
-                          << status << " (" << status_text(status) << ")"
-                          << (singular ? ": the matrix is singular" : ""));
+    const std::string what = "UMFPACK: numeric factorization failed: status " +
+                             std::to_string(status) + " (" + status_text(status) + ")";
+    if (status == UMFPACK_WARNING_singular_matrix)
+      throw FactorizationFailure(what + ": the matrix is singular");
+    throw Error(what);
   }
 }
 

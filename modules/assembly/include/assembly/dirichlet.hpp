@@ -37,7 +37,9 @@ struct ReducedSystem {
   Eigen::SparseMatrix<double> restrict_matrix(const Eigen::SparseMatrix<double>& A) const;
 };
 
-/// Eliminate the Dirichlet dofs of `system` (elimination above).
-ReducedSystem reduce(const LinearSystem& system);
+/// Eliminate the Dirichlet dofs of `system` (elimination above), but those of `imposed_elsewhere`
+/// (sorted): their conditions are imposed by another part of the solve (a component of a contact
+/// node held in the node's frame by the contact solver), so they stay free unknowns.
+ReducedSystem reduce(const LinearSystem& system, const std::vector<int>& imposed_elsewhere = {});
 
 } // namespace sig

@@ -63,7 +63,8 @@ Eigen::SparseMatrix<double> assemble_mass(const Mesh& mesh, const MaterialTable&
 Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& table);
 
 /// The Dirichlet dofs and values of the DIRICHLET cards; a reference that no edge or vertex
-/// carries is an InputError on the card line and field 'ref'.
+/// carries is an InputError on the card line and field 'ref', and so is a dof that two cards
+/// give two values (on the second card's field, naming the first card's line).
 void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vector<int>& dofs,
                           Eigen::VectorXd& values);
 

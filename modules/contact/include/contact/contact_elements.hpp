@@ -70,6 +70,12 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
                                        const ContactLaw& law = {}, double thickness = 1,
                                        const std::vector<int>& excluded = {});
 
+/// The elements (indices) whose obstacle normal points along the body's outward normal at their
+/// node (the mean of its Gamma3 edges'): the obstacle faces the body from the inside there, so
+/// the node cannot reach it. A few such nodes belong to a curved Gamma3 (its upper part); most of
+/// them mean an obstacle normal given the wrong way round.
+std::vector<int> nodes_facing_away(const Mesh& mesh, const ContactElements& elements);
+
 /// B_N (size() x ndof, dof = 2 node + component): (B_N u)_i = u_n,i = -n_i . u_i.
 Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof);
 

@@ -47,7 +47,10 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
   // Normal: compliance P plus the wall's augmented multiplier Lambda.
   k.compliance = compliance_pressure(law, x.q_n);
   k.compliance_slope = d_compliance_pressure(law, x.q_n);
-  if (law.has_wall()) {
+  if (law.held_normal) { // bilateral: always on its wall, the reaction of either sign
+    k.held = k.wall_active = true;
+    k.wall = x.lambda + r_n * (x.q_n - law.depth);
+  } else if (law.has_wall()) {
     const double augmented = x.lambda + r_n * (x.q_n - law.depth);
     k.wall_active = on ? on->wall : d_positive_part(augmented) > 0;
     k.wall = on ? (on->wall ? augmented : 0.0) : positive_part(augmented);
@@ -88,9 +91,16 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
     break;
   }
   }
-  if (law.has_friction()) {
+  if (law.held_tangential) { // stuck at the held slip, whatever the force
+    k.stick = true;
+    k.tangential = x.t + r_t * (x.q_t - law.held_slip);
+    k.d_force(1, kQt) = r_t;
+    k.d_force(1, kT) = 1.0;
+  } else if (law.has_friction()) {
     const double z = x.t + r_t * x.q_t;
-    k.stick = on ? on->stick : k.bound > 0 && d_project_interval_dz(z, k.bound) > 0;
+    const bool apex_in_contact = k.bound == 0 && k.wall_active && k.bound_slope > 0;
+    k.stick =
+        on ? on->stick : (k.bound > 0 || apex_in_contact) && d_project_interval_dz(z, k.bound) > 0;
     if (k.stick) {
       k.tangential = z;
       k.d_force(1, kQt) = r_t;

@@ -159,7 +159,12 @@ std::optional<LawProblem> law_problem(const ContactLaw& law) {
     return problem("law", normal,
                    " is frictionless (its springs pull too, so no friction bound "
                    "is defined where they do): give FRICTION law=none");
-  if (!(std::isfinite(law.depth) && law.depth >= 0))
+  if (law.held_normal && law.friction != FrictionLaw::none)
+    return problem("law",
+                   "a node whose normal component a Dirichlet condition holds is out of "
+                   "contact and has no friction, got ",
+                   to_string(law.friction));
+  if (!(std::isfinite(law.depth) && (law.depth >= 0 || law.held_normal)))
     return problem("g", "must be >= 0 (the depth of the wall), got ", law.depth);
   if (!(std::isfinite(law.threshold) && law.threshold >= 0))
     return problem("threshold", "must be >= 0 (a traction), got ", law.threshold);
@@ -189,6 +194,8 @@ std::optional<LawProblem> law_problem(const ContactLaw& law) {
 
 std::string describe(const ContactLaw& law) {
   std::ostringstream out;
+  if (law.held_normal) out << "normal held at q_n=" << law.depth << ", ";
+  if (law.held_tangential) out << "slip held at q_t=" << law.held_slip << ", ";
   out << to_string(law.normal);
   if (law.has_compliance()) {
     out << " cn=" << law.cn;

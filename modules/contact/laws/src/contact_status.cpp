@@ -5,6 +5,7 @@
 namespace sig {
 
 NormalStatus normal_status(const ContactKernel& kernel) {
+  if (kernel.held) return NormalStatus::held;
   if (kernel.wall_active) return NormalStatus::unilateral;
   // != 0: a bilateral spring in tension is on its compliance branch too.
   return kernel.compliance != 0 ? NormalStatus::compliance : NormalStatus::free;
@@ -28,12 +29,15 @@ std::string label(NormalStatus status) {
     return "CN";
   case NormalStatus::unilateral:
     return "CU";
+  case NormalStatus::held:
+    return "held";
   }
   return "?";
 }
 
 std::string label(NormalStatus status, const ContactLaw& law) {
-  if (!law.in_velocity() || status == NormalStatus::free) return label(status);
+  if (!law.in_velocity() || status == NormalStatus::free || status == NormalStatus::held)
+    return label(status);
   return status == NormalStatus::compliance ? "RNI" : "CUV";
 }
 
@@ -52,8 +56,9 @@ std::string label(FrictionStatus status) {
 }
 
 NormalStatus normal_status_of_code(long code) {
-  SIG_VERIFY(code >= 0 && code <= 2,
-             "normal status code " << code << " is unknown; known: 0 = free, 1 = CN, 2 = CU");
+  SIG_VERIFY(code >= 0 && code <= 3,
+             "normal status code " << code
+                                   << " is unknown; known: 0 = free, 1 = CN, 2 = CU, 3 = held");
   return static_cast<NormalStatus>(code);
 }
 

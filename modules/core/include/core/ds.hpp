@@ -131,8 +131,9 @@ std::string fingerprint_text(std::uint64_t fingerprint);
 /// (".NAME.tmp.PID" in the same folder). Everything that writes atomically uses it, so that
 /// remove_stale_temporaries finds what a killed stage left.
 std::filesystem::path temporary_path(const std::filesystem::path& target);
-/// Remove the temporaries (temporary_path) in `folder` whose process no longer runs; returns
-/// their names. Stages call it when they start (parse_stage_args).
+/// Remove the temporaries (temporary_path: files, and the scratch folders of TemporaryFolder) in
+/// `folder` whose process no longer runs; returns their names. Stages call it when they start
+/// (parse_stage_args).
 std::vector<std::string> remove_stale_temporaries(const std::filesystem::path& folder);
 
 /// For the test suite: when $SIG_STOP_WRITING is the file name of `target`, the process stops

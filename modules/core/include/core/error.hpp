@@ -28,6 +28,14 @@ private:
   std::string field_;
 };
 
+/// A matrix a linear solver cannot factorize: singular, or not positive definite for an spd
+/// factorization (solver/linear_solver.hpp). The message is the solver's; the stage says why in
+/// the deck's words (explain_factorization_failures, core/stage.hpp).
+class FactorizationFailure : public Error {
+public:
+  using Error::Error;
+};
+
 } // namespace sig
 
 #define SIG_VERIFY(cond, msg)                                                                      \

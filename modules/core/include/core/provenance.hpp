@@ -30,6 +30,8 @@ struct ProvenanceEntry {
 void open_case(const std::filesystem::path& outdir);
 /// Forget the case (run_stage does it when the stage ends).
 void close_case();
+/// The folder of the open case, or an empty path outside a stage.
+std::filesystem::path case_folder();
 
 /// Register an input of the case read from `file`, with what it records to be built from.
 /// Does nothing outside a case or for a file outside OUTDIR. Throws sig::Error naming both files

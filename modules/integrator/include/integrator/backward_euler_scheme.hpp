@@ -9,7 +9,7 @@
 //   u_n = u_{n-1} + k w_n                                             (6.66)
 //
 // from u_0, w_0 = u_1 (INITIAL u=, v=; (6.65)). f(t) = f + change(t) holds the moving and ramped
-// loads of the TAE (assembly/time_loads.hpp).
+// loads (assembly/time_loads.hpp).
 //
 // Contact laws in the displacement on the march in velocity. A node's penetration at step n is
 // u_n,n - d = k (w_n,n - o_n) with o_n = (d - u_{n-1},n) / k, u_n,n = -n . u the normal
@@ -33,25 +33,22 @@
 // and a compliance adds its (convex) potential to E: backward Euler never gains energy
 // (ALGORITHMS.md 3.6 check 3); friction only takes more.
 #include "integrator/linear_contact_march.hpp"
-
-#include "assembly/dirichlet.hpp"
+#include "integrator/viscoelastic_problem.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 namespace sig {
 
-struct LinearSystem;
-
 class DynamicBackwardEuler final : public VelocityScheme {
 public:
-  /// The stiffness and loads of `reduced`, the viscosity V of `system` (empty: none) and the
-  /// full-size `mass` on the free dofs; k > 0; u0 and w0 on the free dofs (empty: 0); `gap` the
-  /// initial gap d of each contact node (CONT order; empty without contact). sig::Error if the
-  /// system has memory terms (ch. 6 has none) or for inconsistent sizes.
-  DynamicBackwardEuler(const LinearSystem& system, ReducedSystem reduced,
-                       const Eigen::SparseMatrix<double>& mass, double k, Eigen::VectorXd u0 = {},
-                       Eigen::VectorXd w0 = {}, Eigen::VectorXd gap = {});
+  /// The stiffness, viscosity (empty: none), mass and loads of `problem`; k > 0; u0 and w0
+  /// (empty: 0); `gap` the initial gap d of each contact node and `setting` their laws of the
+  /// displacement and weights (CONT order; both empty without contact). sig::Error if the
+  /// problem has memory terms (ch. 6 has none) or for inconsistent sizes.
+  DynamicBackwardEuler(ViscoelasticProblem problem, double k, Eigen::VectorXd u0 = {},
+                       Eigen::VectorXd w0 = {}, Eigen::VectorXd gap = {},
+                       ContactSetting setting = {});
 
   std::string name() const override { return "backward-euler"; }
   double time_step() const override { return k_; }
@@ -62,8 +59,8 @@ public:
   /// o_n = (d - u_{n-1},n) / k per contact node (header).
   Eigen::VectorXd normal_origin(int n, const VelocityContact& contact) const override;
 
-  /// The laws of `setting` (of the displacement) as laws of w_n: cn k, g / k (header).
-  ContactSetting velocity_setting(ContactSetting setting) const;
+  /// The laws of the displacement as laws of w_n: cn k, g / k (header).
+  ContactSetting velocity_setting() const;
   /// The method's parameters per unit velocity: r k, gamma k, c / k (header).
   ContactSolverParameters velocity_parameters(ContactSolverParameters parameters) const;
 
@@ -74,14 +71,17 @@ public:
   /// 1/2 w.M w and 1/2 u.K u at the last accepted step.
   double kinetic_energy() const;
   double elastic_energy() const;
+  bool has_energy() const override { return true; }
+  /// kinetic_energy(), elastic_energy(), their sum and, with contact, sum_i w_i times the
+  /// compliance's potential of the penetration u_n,i - d_i (contact/contact_kernel.hpp).
+  EnergyRecord energy(const VelocityContact* contact) const override;
 
-  const ReducedSystem& reduced() const { return reduced_; }
   const Eigen::SparseMatrix<double>& mass() const { return M_; }
 
 private:
   void update_products();
 
-  ReducedSystem reduced_; ///< K = reduced_.K, the loads
+  LoadHistory load_;
   Eigen::SparseMatrix<double> M_;
   double k_;
   Eigen::SparseMatrix<double> S_;
@@ -90,6 +90,7 @@ private:
   Eigen::VectorXd Ku_, Mw_;                       ///< K u_ and M_ w_
   double seconds_products_ = 0;
   Eigen::VectorXd gap_;
+  ContactSetting setting_; ///< the laws of the displacement
 };
 
 } // namespace sig

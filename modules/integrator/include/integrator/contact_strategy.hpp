@@ -20,11 +20,13 @@
 // or mu1 / mu2 of the penetration (8.3)), the slip being the tangential displacement over the
 // step: the velocity of (8.28) times k.
 //
-// The bulk is the time step's: CondensedBulk for a linear body (contact_march.hpp), the dynamic
-// FiniteStrainBulk for a hyperelastic one (finite_strain_march.hpp), each at the step's predictor
-// when solve() is called and at the step's solution after it. A step that does not converge is a
-// result (converged = false, failure says why), never an exception.
+// The bulk is the time step's: CondensedBulk for a linear body (elastodynamic_march.hpp: the
+// normal displacements and, with friction, the slips), the dynamic FiniteStrainBulk for a
+// hyperelastic one (stages/finite_strain_march.hpp), each at the step's predictor when solve() is
+// called and at the step's solution after it. A step that does not converge is a result (converged
+// = false, failure says why), never an exception.
 #include "contact/contact_status.hpp"
+#include "integrator/march.hpp"
 #include "solver/contact_newton.hpp"
 
 #include <Eigen/Core>
@@ -117,11 +119,29 @@ protected:
 std::unique_ptr<ContactStrategy> make_contact_strategy(const std::string& name,
                                                        const ContactStrategyParameters& p);
 
+/// What a card reader must know of a strategy before the strategy is made.
+struct ContactStrategyTraits {
+  /// A foundation stiffness r > 0 (compliance, specific-penalty, ipm).
+  bool needs_r = false;
+  /// A wall at the CONT laws' depth g (signorini, two-step; ipm: the allowed penetration); the
+  /// compliance and the specific penalty have none.
+  bool has_wall = true;
+  /// What phase (b) holds at zero is a choice (two-step: ContactStrategyParameters::persistency).
+  bool has_persistency = false;
+};
+
+/// The traits of the strategy called `name` (as make_contact_strategy); sig::Error for an
+/// unknown name.
+ContactStrategyTraits contact_strategy_traits(const std::string& name);
+
 /// The bulk's iterate (the step's predictor) already solves the step: the bulk is in
 /// equilibrium there to eps and no law gives a force (every node off the obstacle, no secant
 /// force from a penetration at the start). Free flight then costs no Newton iteration, and its
 /// states stay the scheme's exact ones.
 bool predictor_solves_step(const ContactBulk& bulk, const ContactSetting& setting, double eps);
+
+/// The forces and statuses of a step's solution as the march records them.
+ContactRecord contact_record(const ContactStepSolution& solution);
 
 /// The energy of the foundation, sum_i w_i compliance_energy(law_i, q_n,i).
 double interface_energy(const std::vector<ContactLaw>& laws, const Eigen::VectorXd& weight,

@@ -9,21 +9,14 @@
 
 #include <functional>
 #include <string>
-#include <vector>
 
 namespace sig {
-
-struct LinearSystem;
-struct Mesh;
-struct ReducedSystem;
 
 /// f(t) on the free dofs.
 using LoadHistory = std::function<Eigen::VectorXd(double)>;
 
 /// A load that does not change in time.
 LoadHistory constant_load(Eigen::VectorXd f);
-/// The loads of a reduced system, f_f(t) - K_fd u_d (ReducedSystem::load_at).
-LoadHistory reduced_load(const ReducedSystem& reduced);
 
 struct Elastodynamics {
   Eigen::SparseMatrix<double> K; ///< stiffness on the free dofs, symmetric
@@ -44,16 +37,5 @@ std::string to_string(MassChoice choice);
 
 /// The diagonal matrix of a lumped mass vector.
 Eigen::SparseMatrix<double> diagonal_mass(const Eigen::VectorXd& lumped);
-
-/// The full-size mass of `choice`: system.M, diag(system.M_lumped), or the EMM built from the
-/// consistent mass with the 0-based nodes of Gamma3 `contact_nodes` (ignored for the other
-/// choices). sig::Error if the system has no mass (every density 0).
-Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice choice,
-                                        const Mesh& mesh,
-                                        const std::vector<int>& contact_nodes = {});
-
-/// The reduced problem: K_ff, M_ff of the full-size `mass`, the loads reduced_load(reduced).
-Elastodynamics reduced_elastodynamics(const ReducedSystem& reduced,
-                                      const Eigen::SparseMatrix<double>& mass);
 
 } // namespace sig

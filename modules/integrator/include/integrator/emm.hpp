@@ -32,14 +32,12 @@
 
 namespace sig {
 
-struct Mesh;
-
 /// Me of the construction above for a full-size consistent or lumped mass M (2 dofs per node,
-/// interleaved, M = m (x) I_2) and the 0-based nodes of Gamma3. sig::Error for a node out of
-/// range or given twice, a mass that is not m (x) I_2, or if even the mass and the centre alone
-/// cannot be kept with a positive definite Me.
+/// interleaved, M = m (x) I_2), the nodes' positions (the mesh's nodes) and the 0-based nodes of
+/// Gamma3. sig::Error for a node out of range or given twice, a mass that is not m (x) I_2, or
+/// if even the mass and the centre alone cannot be kept with a positive definite Me.
 Eigen::SparseMatrix<double> equivalent_mass_matrix(const Eigen::SparseMatrix<double>& M,
-                                                   const Mesh& mesh,
+                                                   const std::vector<Eigen::Vector2d>& positions,
                                                    const std::vector<int>& contact_nodes);
 
 /// The inertia of a mass matrix seen by the affine velocity fields.

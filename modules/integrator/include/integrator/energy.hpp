@@ -12,21 +12,17 @@ namespace sig {
 struct DynamicState;
 struct Elastodynamics;
 
-/// One row of the per-step energy history (energy.csv starts with these columns).
+/// The energy part of a step's record (integrator/march.hpp; energy.csv after its step, time and
+/// iterations): the energies of the state after the step and the work done since step 0.
 struct EnergyRecord {
-  int step = 0;
-  double time = 0.0;
   double kinetic = 0.0;       ///< 1/2 v.M v
-  double elastic = 0.0;       ///< 1/2 u.K u
+  double elastic = 0.0;       ///< 1/2 u.K u (hyperelastic: sum_T |T| t W(F))
   double total = 0.0;         ///< kinetic + elastic
   double external_work = 0.0; ///< work of the loads since step 0
-  // The contact columns (integrator/contact_march.hpp); 0 without contact.
+  // The contact columns; 0 without contact.
   double contact_work = 0.0;    ///< work of the contact forces since step 0
   double max_penetration = 0.0; ///< max over the contact nodes of [u_n - d]_+ (d geometric)
   int active_nodes = 0;         ///< nodes with a positive contact force over the last step
-  /// Iterations of the step: 1 linear solve without contact (0 at step 0, the given state);
-  /// with contact those of the strategy's Newton phases, summed (0 in free flight).
-  int newton_iterations = 0;
   // The split of the contact work (ALGORITHMS.md 4.4): contact_work = friction_work + the normal
   // forces' work, and the normal work = -(interface - interface at step 0) + wall_work, so that
   //     total + interface - external_work - friction_work - wall_work
@@ -40,10 +36,21 @@ struct EnergyRecord {
   double tangential_force = 0.0;
 };
 
+/// The work done over one step, which the march loop sums into the record's work columns.
+struct StepWork {
+  double load = 0.0;     ///< f_bar . (u_{n+1} - u_n)
+  double normal = 0.0;   ///< -sum N (q_n - q_{n-1}): the normal contact forces'
+  double friction = 0.0; ///< -sum T slip: the tangential forces'
+};
+
+/// The work columns of `record` after a step of work `work` from the record `before`: the
+/// running sums, and the wall's work as the normal work not stored in the interface.
+void add_step_work(EnergyRecord& record, const EnergyRecord& before, const StepWork& work);
+
 /// The contact nodes' part of a step's record: the forces N, T over the step, the penetrations
-/// q_n before and after it, the slips over it and the interface energy after it, added to the
-/// work of the previous record `before`.
-void add_contact_step(EnergyRecord& record, const EnergyRecord& before, const Eigen::VectorXd& N,
+/// after it and the interface energy after it (the state columns), and the work of the forces
+/// over the step from the penetrations q_before and the slips (into `work`).
+void add_contact_step(EnergyRecord& record, StepWork& work, const Eigen::VectorXd& N,
                       const Eigen::VectorXd& T, const Eigen::VectorXd& q_before,
                       const Eigen::VectorXd& q_after, const Eigen::VectorXd& slip,
                       double interface);
@@ -53,8 +60,7 @@ double kinetic_energy(const Eigen::SparseMatrix<double>& M, const Eigen::VectorX
 /// 1/2 u.K u.
 double elastic_energy(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& u);
 
-/// The record of `state` at step `step`, with the work done so far.
-EnergyRecord energy_record(const Elastodynamics& problem, const DynamicState& state, int step,
-                           double external_work);
+/// The energies of `state` (kinetic, elastic, total; no work).
+EnergyRecord energy_of(const Elastodynamics& problem, const DynamicState& state);
 
 } // namespace sig

@@ -6,31 +6,27 @@
 //
 //   S   = K_A + k K_B + (k / 2) sum_m K_m                                (constant)
 //   b_n = f(t_n) - K_B u_{n-1} - k sum_m K_m P_m,n
-//   u_n = u_{n-1} + k w_n,   P_m,n+1 = exp(-beta_m k) (P_m,n + w_n)      (material/memory.hpp)
+//   u_n = u_{n-1} + k w_n,   P_m,n+1 = exp(-beta_m k) (P_m,n + w_n)      (integrator/memory.hpp)
 //
 // (ALGORITHMS.md 2.2). No mass, no density. [choices, ALGORITHMS.md C8] u_n by backward Euler,
 // not by the trapezoidal rule (5.66) names; w_0 = 0 (the memory's first term; (5.61) needs it and
 // the thesis never defines it); the memory integrand eps(du/dt(s)). f(t) = f + change(t) holds
-// the ramped and moving loads of the TAE (assembly/time_loads.hpp). Without viscosity and memory
+// the ramped and moving loads (assembly/time_loads.hpp). Without viscosity and memory
 // (eta1 = eta2 = 0, K = 0) a step is k K_B w_n = f(t_n) - K_B u_{n-1}: the static solve
 // K_B u_n = f(t_n) at every step.
 #include "integrator/linear_contact_march.hpp"
-
-#include "assembly/dirichlet.hpp"
-#include "material/memory.hpp"
+#include "integrator/memory.hpp"
+#include "integrator/viscoelastic_problem.hpp"
 
 #include <vector>
 
 namespace sig {
 
-struct LinearSystem;
-
 class QuasistaticKelvinVoigt final : public VelocityScheme {
 public:
-  /// The matrices of `system` (its V and memory terms, empty for a purely elastic body) on the
-  /// free dofs of `reduced`; k > 0; u0 the initial displacement on the free dofs (empty: 0).
-  QuasistaticKelvinVoigt(const LinearSystem& system, ReducedSystem reduced, double k,
-                         Eigen::VectorXd u0 = {});
+  /// The stiffness, viscosity and memory terms of `problem` (C and memory empty for a purely
+  /// elastic body; no mass) and its loads; k > 0; u0 the initial displacement (empty: 0).
+  QuasistaticKelvinVoigt(ViscoelasticProblem problem, double k, Eigen::VectorXd u0 = {});
 
   std::string name() const override { return "quasistatic"; }
   double time_step() const override { return k_; }
@@ -39,13 +35,8 @@ public:
   void accept(int n, const Eigen::VectorXd& w) override;
   const Eigen::VectorXd& displacement() const override { return u_; }
 
-  const ReducedSystem& reduced() const { return reduced_; }
-
 private:
-  ReducedSystem reduced_; ///< K_B = reduced_.K, the loads
-  /// The ramped loads' rate on the free dofs when they are the only loads that change: f(t) =
-  /// reduced_.f + t rate_ without a full-size pass a step; empty otherwise (reduced_.load_at).
-  Eigen::VectorXd rate_;
+  LoadHistory load_;
   double k_;
   Eigen::SparseMatrix<double> S_;
   Eigen::SparseMatrix<double> elastic_lower_;             ///< K_B's lower triangle

@@ -33,6 +33,7 @@
 //    convexification loop of a nonmonotone friction law (solver/convexification.hpp: convexify on
 //    the same bulk, setting and iterate) is a StepSolver, run inside every step.
 #include "contact/contact_status.hpp"
+#include "integrator/march.hpp"
 #include "solver/contact_method.hpp"
 #include "solver/contact_newton.hpp"
 
@@ -59,13 +60,6 @@ struct VelocityContact {
   int size() const { return static_cast<int>(dofs.size()); }
 };
 
-struct ContactElements;
-struct ReducedSystem;
-
-/// The contact elements of a CONT on the free dofs of `reduced`; sig::Error naming the node if
-/// one of them has a Dirichlet component.
-VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced);
-
 /// A one-step scheme in velocity on a linear bulk (header: the extension point).
 class VelocityScheme {
 public:
@@ -85,6 +79,11 @@ public:
   /// Per contact node, the origin of the normal variable at step n: q_n = (normal component of
   /// w_n) - origin. Default 0: the laws in velocity.
   virtual Eigen::VectorXd normal_origin(int n, const VelocityContact& contact) const;
+  /// The scheme has an energy (the dynamic march; the quasistatic one has none).
+  virtual bool has_energy() const { return false; }
+  /// The energies after the last accepted step, where has_energy(): kinetic, elastic, total and,
+  /// with contact (`contact` not null), the interface energy of the laws of the displacement.
+  virtual EnergyRecord energy(const VelocityContact* contact) const;
 };
 
 /// How a step's contact problem is solved on the restarted bulk (header); the iterate holds the
@@ -92,21 +91,10 @@ public:
 using StepSolver =
     std::function<ContactNewtonResult(ContactBulk&, const ContactSetting&, ContactIterate&)>;
 
-/// One step's outcome.
-struct VelocityStep {
-  int step = 0;
-  double time = 0;
-  ContactNewtonResult contact;     ///< converged (true without contact), history, forces, statuses
-  Eigen::VectorXd normal_velocity; ///< v_n per contact node (towards the obstacle)
-  Eigen::VectorXd tangential_velocity; ///< v_t per contact node (along t = (n2, -n1))
-  double seconds = 0;                  ///< wall time of the step
-  double seconds_right_side = 0;       ///< of it: the scheme's b_n
-  double seconds_contact = 0; ///< of it: the contact problem on the condensed bulk (the rest:
-                              ///< b_n's condensation and the velocity's expansion, or the solve)
-  bool converged() const { return contact.converged; }
-};
-
-class LinearContactMarch {
+/// The scheme hook of the march loop (integrator/march.hpp) for a VelocityScheme: its steps
+/// record per contact node the velocities, forces and statuses, and the energies where the
+/// scheme has them.
+class LinearContactMarch final : public MarchScheme {
 public:
   /// Factorizes and condenses the scheme's step matrix (once). `contact` null: a march without
   /// contact. parameters: the contact method and its Newton options (solver/contact_method.hpp);
@@ -119,9 +107,13 @@ public:
   LinearContactMarch(const LinearContactMarch&) = delete;
   LinearContactMarch& operator=(const LinearContactMarch&) = delete;
 
-  /// The next step (1, 2, ...). A step whose contact solve does not converge is returned as it
-  /// stands (converged() false, the scheme's history unchanged), never thrown.
-  VelocityStep step();
+  MarchRecords records() const override;
+  StepRecord start() const override;
+  /// Step n = steps_done() + 1. A step whose contact solve does not converge is returned as it
+  /// stands (converged false, the scheme's history unchanged), never thrown.
+  StepRecord step(int n) override;
+  /// u and w after the last accepted step, at t = steps_done() k.
+  DynamicState state() const override;
 
   /// w of the last step (free dofs; 0 before the first).
   const Eigen::VectorXd& velocity() const { return w_; }
@@ -150,25 +142,5 @@ private:
   int done_ = 0;
   double seconds_factorize_ = 0;
 };
-
-/// What a march leaves: every step's contact state, and the whole state at the kept steps.
-struct VelocityHistory {
-  std::vector<VelocityStep> steps;       ///< 1 .. the last step done (or failed)
-  std::vector<int> output_step;          ///< 0, every output_every-th step and the last done
-  std::vector<Eigen::VectorXd> output_u; ///< u (free dofs) at the kept steps
-  std::vector<Eigen::VectorXd> output_w; ///< w (free dofs) at the kept steps (0 at step 0)
-  bool converged = true;                 ///< false: a step failed, the march stopped there
-  std::string failure;                   ///< names the step and why
-  double seconds = 0;                    ///< wall time of the steps (factorization apart)
-};
-
-/// Called after each converged step.
-using VelocityObserver = std::function<void(const VelocityStep&)>;
-
-/// `steps` steps of `march`, keeping the state every output_every-th step (>= 1). A step that
-/// does not converge stops the march: the history ends with it, converged = false.
-VelocityHistory march_in_velocity(LinearContactMarch& march, const VelocityScheme& scheme,
-                                  int steps, int output_every,
-                                  const VelocityObserver& observer = {});
 
 } // namespace sig

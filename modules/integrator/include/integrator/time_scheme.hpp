@@ -67,10 +67,29 @@ private:
   std::unique_ptr<LinearSolver> solver_;
 };
 
-/// Card field `TIME scheme=midpoint|newmark`.
-inline constexpr const char* time_scheme_names = "midpoint|newmark";
+/// Card field `TIME scheme=`: the schemes of elastodynamics above and of the marches in velocity.
+inline constexpr const char* time_scheme_names = "midpoint|newmark|quasistatic|backward-euler";
 
-/// The scheme called `name` (time_scheme_names); sig::Error listing the choices otherwise.
+/// The march that steps a TIME scheme.
+enum class MarchKind {
+  elastodynamics,     ///< midpoint, newmark: a TimeScheme (above) on M a + K u = f
+  quasistatic,        ///< ch. 5, no inertia: the march in velocity of kelvin_voigt_scheme.hpp
+  viscoelastodynamics ///< ch. 6: the march in velocity of backward_euler_scheme.hpp
+};
+
+/// What a stage must know of a TIME scheme before it builds its march.
+struct TimeSchemeTraits {
+  MarchKind march = MarchKind::elastodynamics;
+  /// A hyperelastic body may march with it (large deformation: the midpoint rule only).
+  bool large_deformation = false;
+};
+
+/// The traits of the scheme called `name` (time_scheme_names); sig::Error listing the choices
+/// for an unknown name.
+TimeSchemeTraits time_scheme_traits(const std::string& name);
+
+/// The scheme of elastodynamics called `name` (midpoint or newmark); sig::Error listing the
+/// choices for an unknown name or a scheme of a march in velocity.
 std::unique_ptr<TimeScheme> make_time_scheme(const std::string& name, Elastodynamics problem,
                                              double k,
                                              const std::string& linear_solver = "cholmod");

@@ -23,9 +23,24 @@ inline std::uint64_t edge_key(int a, int b) {
 /// orientation can mend: the readers report it with its line in the file.
 int orient_counter_clockwise(Mesh& mesh, std::vector<int>* flipped = nullptr);
 
-/// orient_counter_clockwise for the reader of a text mesh file: a degenerate triangle is an
-/// InputError naming `file` and its line (`lines[t]`), the reoriented ones a warning naming them.
+/// orient_counter_clockwise for the reader of a text mesh file: a degenerate triangle, or two
+/// that overlap (find_overlap), is an InputError naming `file` and its line (`lines[t]`), the
+/// reoriented ones a warning naming them.
 void orient_triangles_of_file(Mesh& mesh, const std::string& file, const std::vector<int>& lines);
+
+/// Two triangles covering the same ground: listed twice (the same three nodes) or folded over
+/// one another (on the same side of a common side). Meshes must tile their domain.
+struct TriangleOverlap {
+  int first = -1, second = -1; ///< 0-based, first < second; -1: none
+  std::string what;            ///< "triangles 3 and 7 (1-based) ...", "" if none
+};
+/// The first overlap of the counter-clockwise triangles of `mesh` (orient_counter_clockwise).
+TriangleOverlap find_overlap(const Mesh& mesh);
+
+/// The first two referenced edges on one side with different references (0-based indices, the
+/// second after the first), or {-1, -1}: a side carries one reference (NOPO's edges), so a file
+/// giving it two is refused rather than one of them dropped.
+std::pair<int, int> side_with_two_references(const Mesh& mesh);
 
 /// Point every referenced edge that is a side of exactly one triangle in the direction it has in
 /// that (counter-clockwise) triangle, so the domain lies on its left; an interface edge (two

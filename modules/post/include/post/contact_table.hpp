@@ -37,10 +37,12 @@ struct ContactRow {
 std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds& solution);
 
 /// contact.csv: header `node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,
-/// friction_status,tangential_multiplier,tangential_pressure,slip`, status written as the word
-/// `contact` or `free`, the statuses as the thesis's labels (free, CN, CU; -, S=, S+, S-),
-/// numbers with 17 significant digits.
-std::string contact_csv(const std::vector<ContactRow>& rows);
+/// friction_status,tangential_multiplier,tangential_pressure,slip,converged`, status written as
+/// the word `contact`, `free` or `held` (a Dirichlet condition holds the normal component), the
+/// statuses as the thesis's labels (free, CN, CU, held; -, S=, S+, S-), numbers with 17
+/// significant digits; `converged` is 0 on every row of a solve that did not converge (Nv), so
+/// that no row reads as a result.
+std::string contact_csv(const std::vector<ContactRow>& rows, bool converged);
 
 /// The rows as Hertz samples, x measured from the vertical line x1 = centre_x1.
 std::vector<PressureSample> pressure_samples(const std::vector<ContactRow>& rows, double centre_x1);

@@ -1,12 +1,13 @@
 #pragma once
 // A dynamic case for ParaView: the states that sig-march kept in its DS "HIST"
-// (integrator/history_io.hpp: output_time, u and v of shape {outputs, ndof}) as one .vtu per
+// (stages/history_io.hpp: output_time, u and v of shape {outputs, ndof}) as one .vtu per
 // state and a .pvd collection with the output times, so that ParaView plays the motion. A march
 // with contact also left contact_node (1-based mesh nodes of Gamma3, p values) and pressure
-// (shape {outputs, p}): each state then shows the contact pressure of Fig 8.2. A march in
-// velocity (integrator/velocity_history_io.hpp) adds per step the statuses and the tangential
-// force: each state then also shows normal_status (0 free, 1 RNI, 2 CUV), friction_status (0 none,
-// 1 S=, 2 S+, 3 S-) and tangential_pressure.
+// (shape {outputs, p}), with friction tangential_pressure: each state then shows the contact
+// pressure of Fig 8.2 and the tangential traction. A march in velocity adds per step the
+// statuses and forces: each state then also shows normal_status (0 free, 1 RNI, 2 CUV),
+// friction_status (0 none, 1 S=, 2 S+, 3 S-) and, without tangential_pressure (frictionless, or a
+// case.hist written before the one layout), force_t / weight as tangential_pressure.
 #include "core/ds.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // A load-stepped (large-deformation) case for ParaView: the state of every converged load step
-// that sig-solve kept in case.b (solver/finite_strain_stage.hpp: step_load, step_u and, with
+// that sig-solve kept in case.b (stages/finite_strain_stage.hpp: step_load, step_u and, with
 // contact, step_multiplier and step_status) as one .vtu each, in a .pvd whose pseudo-time is the
 // load factor, so that ParaView plays the ring being crushed step by step (scene 7b).
 #include "core/ds.hpp"

@@ -10,13 +10,13 @@
 
 namespace sig {
 
-/// DS B of sig-solve (solver/solution_ds.hpp): converged in {0, 1}, iterations >= 0, dofs
+/// DS B of sig-solve (stages/solution_ds.hpp): converged in {0, 1}, iterations >= 0, dofs
 /// between the mesh's dofs and those plus two per contact element, u of the mesh's size, the
 /// statuses of every contact element among their codes, the histories of one length with counts
 /// of contact nodes in 0..m.
 void verify_solution_ds(const Ds& b, const Mesh& mesh);
 
-/// DS HIST of sig-march (integrator/history_io.hpp): k, T, output_every in the TIME card's
+/// DS HIST of sig-march (stages/history_io.hpp): k, T, output_every in the TIME card's
 /// ranges, steps = T / k, ndof the mesh's dofs, u and v of shape {outputs, ndof}, output_step
 /// increasing within the steps done and output_time = time[output_step], the per-step arrays
 /// (energies of an elastodynamic march; those of a march in velocity) of one length (steps + 1,

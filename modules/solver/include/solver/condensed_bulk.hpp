@@ -54,6 +54,7 @@ public:
   Eigen::VectorXd slip() const override;
   double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const override;
   double force_scale() const override;
+  Eigen::VectorXd contact_stiffness() const override;
   StepSolution solve(const std::vector<NodeConditions>& conditions,
                      const Eigen::VectorXd& normal_force) override;
   bool move(double alpha) override;

@@ -4,7 +4,7 @@
 // w_n towards the obstacle), the bulk residual, and one linearized solve with a condition on
 // each of those components. Two bulks implement it:
 //   CondensedBulk (condensed_bulk.hpp)  a linear bulk condensed once onto the contact dofs
-//   FiniteStrainBulk (solve stage)      the hyperelastic residual and tangent of the assembly
+//   FiniteStrainBulk (stages/)          the hyperelastic residual and tangent of the assembly
 //
 // Sign convention of a linearized step (frames at the contact nodes): with r the bulk residual
 // (internal minus external force), dw the increment and N, T the nodal contact forces after the
@@ -41,6 +41,10 @@ struct StepSolution {
   Eigen::VectorXd normal_increment; ///< dw_n per contact node
   Eigen::VectorXd normal_force;     ///< N after the step, per node
   Eigen::VectorXd tangential_force; ///< T after the step, per node
+  /// ||eps dw||, the force of a proximal term eps dw the step carries (0 without one): where it
+  /// balances a part of the residual, the conditions hold no rigid motion of the body that the
+  /// load pushes (the driver's unheld steps, contact_newton.hpp).
+  double proximal_force = 0;
 };
 
 class ContactBulk {
@@ -61,6 +65,10 @@ public:
   virtual double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const = 0;
   /// The force the residual test divides by.
   virtual double force_scale() const = 0;
+  /// Per contact node, the bulk's stiffness of its normal component (force per length, > 0): the
+  /// diagonal entry of the node's normal displacement. It scales the driver's complementarity
+  /// residual (contact_newton.hpp), so that every row of the residual is a force.
+  virtual Eigen::VectorXd contact_stiffness() const = 0;
 
   /// The linearized step at the iterate under `conditions` (one per contact node); `normal_force`
   /// holds the present normal forces (a curved obstacle turns them into stiffness). Throws

@@ -14,35 +14,47 @@
 //         pressures, R = (equilibrium, w C_n, w C_t) relative to the bulk's force scale.
 // A solve that does not converge is a result: converged = false, failure and the history.
 //
-// Step length: alpha = 1, 1/2, ... 2^-12 of the step (u and the multipliers), the first that lowers
-// the search's merit; a trial outside the bulk's domain (an inverted element) or with a residual
-// that is not finite is never taken.
-//  - A nonlinear bulk always searches, on the residual of the system (iii) linearized: ||R|| with
-//    the branches of (ii) held (the kernel's smooth piece, contact_kernel.hpp) and, off the wall,
-//    the method's condition there (lambda = 0, or projection's Robin law). The step is the exact
-//    Newton step of that smooth system, so a short enough step lowers it, and the search acts on
-//    the bulk's nonlinearity alone while the active set is (ii)'s business, as in the thesis's
-//    loop. On each trial's own branches instead, a node the step leaves penetrating while off the
-//    wall counts r_n times its penetration, and r_n = gamma is the parameter the thesis finds
-//    without influence (Table 7.5): at gamma >= 1e4 the search then refused the full steps whose
-//    penetrations the next (ii) puts right, and crept on steps of 2^-5 ... 2^-11 (the ring of
-//    scene 7b in one load step at N = 256: 81 iterations; 24 for every gamma with the branches
-//    held, projection 23). If no alpha lowers the merit, the largest admissible one is taken (an
-//    active-set change may raise the residual for one step).
-//  - A linear bulk searches when `line_search` says so, while its relative residual is above
-//    1e3 eps, on ||R|| at each trial's own branches, and, if no alpha lowers it, takes the one of
-//    least ||R||: its search is there to damp the branch changes themselves (held, they would
-//    make every full step exact). Friction needs it where the tangential rigid motion of the body
-//    is held by friction alone, since a full step that leaves every node slipping holds nothing
-//    sideways and drifts by the tangential load over the proximal term of condensed_bulk.hpp, a
-//    state the stick tests never leave again; the compliance laws need it too, whose kink at the
-//    obstacle surface makes full steps cycle between two branches. The thesis's methods take
-//    full steps on frictionless Signorini contact (Tables 7.1, 7.2), and so do we.
+// Globalization (newton_guard.hpp), for every method and bulk, measured on the natural residual
+//     ||R|| = ||(equilibrium, w C_n, w C_t)||,
+// C_n, C_t the Alart-Curnier functions of contact_kernel.hpp at each node's natural augmentation
+// k / w, k the bulk's stiffness of the node's own component (ContactBulk::contact_stiffness):
+// every row is then a force, w C = lambda - [lambda + k (q_n - g)]_+ the force that would put the
+// node right, and the residual does not depend on the method's parameter (r, gamma, c only steer
+// the steps; a merit scaled by them refused at gamma >= 1e4 the full steps whose penetrations the
+// next test puts right). The same ||R|| relative to the bulk's force scale is test (iv)'s.
+//  - Step length: the nonmonotone Armijo test of Grippo, Lampariello and Lucidi on ||R||^2 / 2,
+//    halving from the full step (alpha = 1, 1/2, ... 2^-12); if no length passes, the one of
+//    least residual. A trial outside the bulk's domain (an inverted element) or with a residual
+//    that is not finite is never taken.
+//  - Unheld steps: where the active, stick and slip sets hold no rigid motion of the body (a body
+//    held by contact and friction alone, from rest, or with every node slipping one way), the
+//    step exists only through the bulk's proximal term (condensed_bulk.hpp) and its rigid part is
+//    the unbalanced load over that term: an unbounded motion. Such a step is cut where a node
+//    first comes to hold the body (its wall becomes active, its compliance engages or it enters
+//    stick), the ratio test of a primal active-set method; without any, the load is not held
+//    and the solve stops with `drift`.
+//  - Cycles and stalls: a branch set that repeats without progress restricts the steps: a linear
+//    complementarity problem (frictionless Signorini on a linear bulk, a P-matrix) changes one
+//    branch per iteration with full steps (Murty's least-index rule, finite there), the others
+//    take monotone steps (the least residual over the halvings and the residual's breakpoints
+//    along the step); a second cycle, or a monotone step that cannot lower the residual four
+//    times in a row, adds the other restriction; past both, `cycling` or `stagnation`. Ten
+//    iterations without a new least residual also make the steps monotone.
+//  - The slip test's augmentation: the tangential test (ii) of a method with multipliers
+//    augments the slip by min(r, k_t / w), k_t the node's natural stiffness [choice]. Its trial
+//    traction t + r q_t predicts the traction of a node held in place; a bulk resists a slip with
+//    about k_t, so an r far above it declares slipping every node whose slip the bulk's own
+//    elasticity would absorb (at r = 30 k the frictional Hertz deck kept every node slipping and
+//    drifted, 1 of 15 nodes entering stick per unheld cut), while below it the test is the
+//    thesis's. The solution does not depend on r_t; the wall's test keeps r.
+// A solve that does not converge is a result: converged = false, the reason (NewtonFailure),
+// the failure's text and the history.
 #include "contact/contact_kernel.hpp"
 #include "contact/contact_law.hpp"
 #include "contact/contact_status.hpp"
 #include "solver/contact_bulk.hpp"
 #include "solver/contact_method.hpp"
+#include "solver/newton_guard.hpp"
 
 #include <Eigen/Core>
 
@@ -80,6 +92,14 @@ struct IterationRecord {
   double residual = 0;  ///< relative residual after the iteration
   double increment = 0; ///< relative increment ||x(k+1) - x(k)|| / ||x(k+1)||
   double step = 0;      ///< E_k = ||x(k+1) - x(k)||, the measure of the thesis's Figs 7.14-7.16
+  /// How the step was taken (header): 0 full or searched (relaxed), 1 an unheld step cut where a
+  /// node first holds the body, 2 monotone, 3 one branch change (after a cycle), 4 an escape: no
+  /// length lowered the search's merit, the least (or the largest trusted) was taken
+  std::int8_t kind = 0;
+  /// The search's merit after the step over before it: the residual of the system the step
+  /// linearized (relaxed, one change) or the residual itself (monotone); < 1 but for escapes
+  /// (0 for an unheld step's cut, which has no merit to lower)
+  double merit_ratio = 0;
   /// Per contact node, 1 if on the wall in the iteration's step: the active set itself, to see
   /// where it moves (a contact patch travelling one node per iteration, scene 7b).
   std::vector<std::int8_t> wall;
@@ -88,16 +108,19 @@ struct IterationRecord {
 struct ContactNewtonOptions {
   double eps = 1e-5;
   int max_iterations = 100;
-  bool line_search = false; ///< on a linear bulk (a nonlinear one always searches)
+  /// False: full Newton steps whatever their residual, the methods as the thesis states them
+  /// (SOLVER search=no, for studies); true: the globalization of the header.
+  bool globalize = true;
 };
 
-/// The options of `parameters`, the line search resolved for a problem of these `laws`.
-ContactNewtonOptions newton_options(const ContactSolverParameters& parameters,
-                                    const std::vector<ContactLaw>& laws);
+/// The options of `parameters`.
+ContactNewtonOptions newton_options(const ContactSolverParameters& parameters);
 
 struct ContactNewtonResult {
   bool converged = false;
-  std::string failure; ///< why it stopped without converging
+  NewtonFailure reason = NewtonFailure::none; ///< why it stopped without converging
+  std::string failure;                        ///< the reason's name and its details
+  double drift = 0; ///< reason drift: the length of the unbounded step that showed it
   std::vector<IterationRecord> history;
   std::vector<double> step_length;  ///< line-search alpha per iteration (1 for linear bulks)
   Eigen::VectorXd normal_force;     ///< N per node at the end (nodal force, >= 0 at a solution)

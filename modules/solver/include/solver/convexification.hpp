@@ -69,7 +69,8 @@ struct OuterRecord {
 
 struct ConvexificationResult {
   bool converged = false;
-  std::string failure; ///< why it stopped without converging
+  NewtonFailure reason = NewtonFailure::none; ///< the loop's cycle, a convex solve's failure, ...
+  std::string failure;                        ///< why it stopped without converging
   std::vector<OuterRecord> history;
   int cycle = 0;            ///< period p >= 2 of the statuses' cycle, 0 if none was seen
   ContactNewtonResult last; ///< the last convex solve

@@ -3,6 +3,8 @@
 // module": a caller picks CHOLMOD, UMFPACK or MUMPS by name at run time and nothing else changes.
 // The symbolic analysis (ordering, elimination tree) depends on the pattern only, so a Newton or
 // active-set loop calls analyze() once and factorize() at every iteration.
+#include "core/error.hpp"
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
@@ -23,8 +25,8 @@ public:
   virtual void analyze(const Eigen::SparseMatrix<double>& A) = 0;
   /// Numeric factorization. Analyzes first if nothing is analyzed or the pattern changed
   /// (pattern_fingerprint), so a new pattern costs an analysis, never a wrong factor.
-  /// Throws sig::Error with the backend's status if the matrix is singular or, for an spd
-  /// factorization, not positive definite.
+  /// Throws FactorizationFailure with the backend's status if the matrix is singular or, for
+  /// an spd factorization, not positive definite (sig::Error for the backend's other failures).
   virtual void factorize(const Eigen::SparseMatrix<double>& A) = 0;
   /// x = A^{-1} b with the last factorization.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
@@ -50,6 +52,28 @@ inline constexpr const char* linear_solver_names = "cholmod|umfpack|mumps";
 /// `name` is one of cholmod|umfpack|mumps; an unknown name, or a kind the backend cannot
 /// factorize (CHOLMOD is spd only), is a sig::Error that lists the choices.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, MatrixKind kind);
+
+/// What a backend offers beyond the LinearSolver interface, for the callers that choose how to
+/// use it (the Schur complement's path, the kind of a symmetric matrix): they ask here, never
+/// compare the backend's name.
+struct BackendTraits {
+  /// A Cholesky only (CHOLMOD): it factorizes spd matrices, so a symmetric matrix goes to it as
+  /// spd (and fails if it is indefinite).
+  bool cholesky = false;
+  /// Factorizes a whole spd matrix with chosen unknowns ordered last and reads their Schur
+  /// complement off the factor (CHOLMOD, solver/cholmod_split.hpp).
+  bool split_schur = false;
+  /// Forms a Schur complement by one partial factorization of the whole matrix (MUMPS,
+  /// ICNTL(19), solver/mumps_solver.hpp).
+  bool partial_schur = false;
+
+  /// The kind a symmetric matrix is factorized as: spd on a Cholesky, symmetric (LDL^T) otherwise.
+  MatrixKind symmetric_kind() const { return cholesky ? MatrixKind::spd : MatrixKind::symmetric; }
+};
+
+/// The traits of the backend `name` (as make_linear_solver); sig::Error listing the choices for
+/// an unknown name.
+BackendTraits backend_traits(const std::string& name);
 
 std::string to_string(MatrixKind kind);
 

@@ -33,4 +33,9 @@ struct SolverCard {
 /// reader looking up TIME, so that each stage reads only the cards its --help lists.
 SolverCard read_solver_card(const Datafile& datafile, bool march = false);
 
+/// LOADSTEPS belongs to the large-deformation static solve (a hyperelastic MATERIAL in
+/// sig-solve): anywhere else it would be ignored, so a LOADSTEPS card is refused, saying `why`
+/// the run has no load steps.
+void refuse_load_steps(const Datafile& datafile, const std::string& why);
+
 } // namespace sig

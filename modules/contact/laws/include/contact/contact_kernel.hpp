@@ -19,9 +19,13 @@
 // stiffness: N and T are then the penalty forces.
 //
 // Branches (the generalized derivative is the one of the branch, kinks as complementarity.hpp):
-// the wall is active (chi = 1) iff lambda + r_n (q_n - g) >= 0; the node sticks iff s > 0 and
-// |t + r_t q_t| <= s, otherwise it slips with sigma = sign(t + r_t q_t) (0 when that is 0, a node
-// with s = 0 that does not move).
+// the wall is active (chi = 1) iff lambda + r_n (q_n - g) >= 0; the node sticks iff
+// |t + r_t q_t| <= s and either s > 0 or the node sits at the apex of the Coulomb cone on an
+// active wall (s = mu N = 0, chi = 1: a node that just touches, as every node in contact at rest
+// does), otherwise it slips with sigma = sign(t + r_t q_t) (0 when that is 0, a node with s = 0
+// that does not move). The apex is a kink of the projection like |z| = s, and belongs to the
+// stick side as every kink belongs to contact: its slip element, T = 0, would hold nothing
+// sideways, and a body held by friction alone would start from a step that drifts.
 #include "contact/contact_law.hpp"
 
 #include <Eigen/Core>
@@ -46,6 +50,7 @@ struct ContactKernel {
   Eigen::Vector2d complementarity = Eigen::Vector2d::Zero(); ///< (C_n, C_t)
 
   bool wall_active = false;    ///< chi
+  bool held = false;           ///< the normal component is held (ContactLaw::held_normal)
   bool stick = false;          ///< s > 0 and |t + r_t q_t| <= s
   int slip = 0;                ///< sigma on the slip branch (-1, 0, 1); 0 when sticking
   double compliance_slope = 0; ///< kappa = dP/dq_n

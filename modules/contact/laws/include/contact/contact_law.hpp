@@ -130,17 +130,25 @@ struct ContactLaw {
   double b = 0;                                ///< nonmonotone: mu at large slip, >= 0
   double alpha = 0;                   ///< nonmonotone: decay per unit slip (or slip rate), >= 0
   SlipMeasure of = SlipMeasure::slip; ///< nonmonotone: what r measures
+  /// Components of the node that a Dirichlet condition holds (a roller on a contact node), set by
+  /// the solve stage from the deck's DIRICHLET cards, never stored in CONT. A held normal takes
+  /// the node out of contact: a bilateral wall at q_n = depth whose reaction may pull, no
+  /// compliance; a held tangential component sticks at the slip q_t = held_slip whatever its
+  /// force (no bound: the condition's reaction, not friction).
+  bool held_normal = false;
+  bool held_tangential = false;
+  double held_slip = 0;
 
   bool has_wall() const {
     return normal == NormalLaw::signorini || normal == NormalLaw::compliance_unilateral ||
-           normal == NormalLaw::damped_unilateral;
+           normal == NormalLaw::damped_unilateral || held_normal;
   }
-  bool has_compliance() const { return normal != NormalLaw::signorini; }
+  bool has_compliance() const { return normal != NormalLaw::signorini && !held_normal; }
   /// A law of the velocity (damped, damped-unilateral): q_n, q_t are velocities, g a velocity.
   bool in_velocity() const {
     return normal == NormalLaw::damped || normal == NormalLaw::damped_unilateral;
   }
-  bool has_friction() const { return friction != FrictionLaw::none; }
+  bool has_friction() const { return friction != FrictionLaw::none || held_tangential; }
   /// The bound is a coefficient times a pressure (coulomb, nonmonotone, mu1, mu2), not a given
   /// traction.
   bool has_coefficient() const {

@@ -1,0 +1,71 @@
+#pragma once
+// The scheme hook (integrator/march.hpp) of linear elastodynamics, M a + K u = f, stepped by a
+// TimeScheme (midpoint, Newmark), without or with node-to-rigid contact. With contact each step
+// is the scheme's step plus the end-of-step contact forces of a strategy
+// (integrator/contact_strategy.hpp), on the condensed problem of integrator/dynamic_contact.hpp:
+//   1. the free step d_free = S^{-1} (2 f_bar - 2 K u_n + (4 / k) M v_n) (one sparse solve);
+//   2. the strategy's forces lambda on the step condensed onto the components x = G u of the p
+//      contact nodes, their normal displacements and, when a law has friction, their slips (a
+//      CondensedBulk of the one contact driver, p or 2p unknowns), from x_n and
+//      x_free = G (u_n + d_free);
+//   3. d = d_free - 2 Z lambda, v_{n+1} = (2 / k) d - v_n (dense, Z kept from the start).
+// Friction is that of the hyperelastic march (stages/finite_strain_march.hpp, ALGORITHMS.md 4.3):
+// each strategy's phases carry the CONT friction law (Tresca, Coulomb with the whole normal
+// force, mu1 / mu2 of the penetration), the slip of a node over a step being the increment of
+// its tangential displacement, t . (u_{n+1} - u_n). Where a linear body differs: the frame
+// (n, t) of a node is the obstacle's at the node's reference position, as the penetration
+// B u - d is linear in u (small displacements; on a plane the same as the hyperelastic march's
+// current frame), and the balance E + interface - friction work - wall work = E0 holds to
+// round-off whatever the Newton tolerance, the state being the exact linear response to the
+// forces found (for a hyperelastic body it holds to the Newton tolerance).
+// Per step the record holds the energy (8.33), the work of the load and of the contact forces
+// over the step (which the march loop sums and splits as energy.hpp says), the maximal
+// penetration [x_{n+1} - d]_+, the nodes with N > 0, the forces and statuses per node and the
+// strategy's iterations (1, the linear solve, without contact).
+#include "integrator/dynamic_contact.hpp"
+#include "integrator/march.hpp"
+
+namespace sig {
+
+class ContactStrategy;
+
+class ElastodynamicSteps final : public MarchScheme {
+public:
+  /// Without contact, from `initial` (free dofs).
+  ElastodynamicSteps(const TimeScheme& scheme, DynamicState initial);
+  /// With the contact of `boundary` and the forces of `strategy` (both must outlive the hook):
+  /// the step operator condensed onto the contact nodes once. sig::Error for inconsistent
+  /// input.
+  ElastodynamicSteps(const TimeScheme& scheme, const ContactBoundary& boundary,
+                     const ContactStrategy& strategy, DynamicState initial);
+
+  MarchRecords records() const override { return {.energy = true, .balance = true}; }
+  StepRecord start() const override;
+  StepRecord step(int n) override;
+  DynamicState state() const override { return state_; }
+
+private:
+  const TimeScheme& scheme_;
+  const ContactBoundary* boundary_ = nullptr;
+  const ContactStrategy* strategy_ = nullptr;
+  CondensedContact condensed_;
+  std::vector<int> normal_dof_;     ///< 0 .. p - 1: the normal displacements
+  std::vector<int> tangential_dof_; ///< p .. 2p - 1 with friction: the slips
+  DynamicState state_;
+  Eigen::VectorXd x_now_; ///< the condensed components of the state (G u)
+  Eigen::VectorXd q_now_; ///< the penetrations of the state
+};
+
+/// Without contact: `steps` steps of `scheme` from `initial`, the work of the loads accumulating
+/// step_load(t_n) . (u_{n+1} - u_n) (the march loop of integrator/march.hpp on
+/// ElastodynamicSteps).
+MarchHistory march(const TimeScheme& scheme, const DynamicState& initial, int steps,
+                   int output_every = 0, const StepObserver& observer = {});
+
+/// `steps` steps of `scheme` with the contact of `boundary` and `strategy` (the march loop of
+/// integrator/march.hpp on ElastodynamicSteps).
+MarchHistory march_with_contact(const TimeScheme& scheme, const ContactBoundary& boundary,
+                                const ContactStrategy& strategy, const DynamicState& initial,
+                                int steps, int output_every = 0, const StepObserver& observer = {});
+
+} // namespace sig

@@ -1,0 +1,132 @@
+#include "integrator/elastodynamic_march.hpp"
+
+#include "core/error.hpp"
+#include "integrator/contact_strategy.hpp"
+#include "solver/condensed_bulk.hpp"
+
+#include <numeric>
+#include <sstream>
+
+namespace sig {
+
+ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, DynamicState initial)
+    : scheme_(scheme), state_(std::move(initial)) {}
+
+ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBoundary& boundary,
+                                       const ContactStrategy& strategy, DynamicState initial)
+    : scheme_(scheme), boundary_(&boundary), strategy_(&strategy), state_(std::move(initial)) {
+  SIG_VERIFY(boundary.size() > 0, "march: a contact boundary without nodes");
+  SIG_VERIFY(boundary.B.cols() == scheme.problem().num_dofs(),
+             "march: the contact boundary has " << boundary.B.cols() << " dofs, the problem "
+                                                << scheme.problem().num_dofs());
+  SIG_VERIFY(boundary.tangential.rows() == boundary.size() &&
+                 boundary.tangential.cols() == boundary.B.cols(),
+             "march: a tangential operator of " << boundary.tangential.rows() << " x "
+                                                << boundary.tangential.cols() << " for "
+                                                << boundary.size() << " contact nodes");
+  condensed_ = condense_contact(scheme, boundary);
+  const int p = boundary.size();
+  normal_dof_.resize(p);
+  std::iota(normal_dof_.begin(), normal_dof_.end(), 0);
+  if (condensed_.G.rows() > p) {
+    tangential_dof_.resize(p);
+    std::iota(tangential_dof_.begin(), tangential_dof_.end(), p);
+  }
+  x_now_ = condensed_.G * state_.u;
+  q_now_ = x_now_.head(p) - boundary.geometric_gap;
+}
+
+StepRecord ElastodynamicSteps::start() const {
+  StepRecord r;
+  r.time = state_.time;
+  r.energy = energy_of(scheme_.problem(), state_);
+  if (boundary_ != nullptr) {
+    // No secant law before the first step: no interface energy.
+    r.energy.max_penetration = std::max(q_now_.maxCoeff(), 0.0);
+    r.contact.normal_force = r.contact.tangential_force = Eigen::VectorXd::Zero(boundary_->size());
+  }
+  return r;
+}
+
+StepRecord ElastodynamicSteps::step(int) {
+  const double k = scheme_.time_step();
+  StepRecord r;
+  r.time = state_.time + k;
+  r.iterations = 1;
+  // 1. The step without contact force.
+  const Eigen::VectorXd f_bar = scheme_.step_load(state_.time);
+  DynamicState next = scheme_.advance(state_, f_bar);
+  if (boundary_ != nullptr) {
+    const ContactBoundary& boundary = *boundary_;
+    const int p = boundary.size();
+    const Eigen::VectorXd x_free = condensed_.G * next.u;
+
+    // 2. The strategy's forces at the end of the step, on the step condensed onto the normal
+    //    displacements and the slips (dynamic_contact.hpp) written for the increment
+    //    w = x - x_now: A w + lambda = A (x_free - x_now), q_n = w_n - (d - x_now,n), the slip
+    //    w_t the tangential displacement over the step; starting from the free step.
+    CondensedProblem problem;
+    problem.S = condensed_.A;
+    problem.f = condensed_.A * (x_free - x_now_);
+    problem.normal_dof = normal_dof_;
+    problem.tangential_dof = tangential_dof_;
+    problem.gap = boundary.geometric_gap - x_now_.head(p);
+    CondensedBulk bulk(std::move(problem), {}, x_free - x_now_);
+    const ContactStepStart start{q_now_, boundary.B * state_.v, k};
+    const ContactStepSolution forces = strategy_->solve(bulk, boundary.setting, start);
+    r.iterations = forces.iterations;
+    r.contact = contact_record(forces);
+    if (!forces.converged) {
+      std::ostringstream why;
+      why << strategy_->name() << " did not converge after " << forces.iterations
+          << " iterations: " << forces.failure;
+      r.converged = false;
+      r.failure = why.str();
+      return r;
+    }
+
+    // 3. Their response: d = d_free - 2 Z lambda. In free flight lambda = 0 and the free step is
+    //    the step.
+    Eigen::VectorXd lambda = forces.normal_force;
+    if (!tangential_dof_.empty()) {
+      lambda.resize(2 * p);
+      lambda << forces.normal_force, forces.tangential_force;
+    }
+    if ((lambda.array() != 0.0).any()) {
+      const Eigen::VectorXd correction = condensed_.Z * lambda;
+      next.u -= 2.0 * correction;
+      next.v -= (4.0 / k) * correction;
+    }
+    const Eigen::VectorXd x_next = condensed_.G * next.u;
+    const Eigen::VectorXd q_next = x_next.head(p) - boundary.geometric_gap;
+    const Eigen::VectorXd slip = tangential_dof_.empty()
+                                     ? Eigen::VectorXd(Eigen::VectorXd::Zero(p))
+                                     : Eigen::VectorXd(x_next.tail(p) - x_now_.tail(p));
+    r.work.load = f_bar.dot(next.u - state_.u);
+    r.energy = energy_of(scheme_.problem(), next);
+    add_contact_step(r.energy, r.work, forces.normal_force, forces.tangential_force, q_now_, q_next,
+                     slip, interface_energy(forces.law, boundary.setting.weight, q_next));
+    x_now_ = x_next;
+    q_now_ = q_next;
+  } else {
+    r.work.load = f_bar.dot(next.u - state_.u);
+    r.energy = energy_of(scheme_.problem(), next);
+  }
+  state_ = std::move(next);
+  return r;
+}
+
+MarchHistory march(const TimeScheme& scheme, const DynamicState& initial, int steps,
+                   int output_every, const StepObserver& observer) {
+  ElastodynamicSteps hook(scheme, initial);
+  return march(hook, steps, output_every, observer);
+}
+
+MarchHistory march_with_contact(const TimeScheme& scheme, const ContactBoundary& boundary,
+                                const ContactStrategy& strategy, const DynamicState& initial,
+                                int steps, int output_every, const StepObserver& observer) {
+  ElastodynamicSteps hook(scheme, boundary, strategy, initial);
+  return march(hook, steps, output_every, observer);
+}
+
+} // namespace sig

@@ -1,0 +1,104 @@
+#pragma once
+// The bookkeeping of the contact Newton driver's globalization (contact_newton.hpp): which merit
+// a step must beat, whether the branches cycle, and the name of a failure. Pure logic on the
+// merits and the branch sets the driver hands in, so that each rule is tested alone.
+//
+//  - Nonmonotone Armijo (Grippo, Lampariello and Lucidi, "A nonmonotone line search technique
+//    for Newton's method", SIAM J. Numer. Anal. 23, 1986): a step of length alpha is accepted
+//    when its merit theta = ||R||^2 / 2 satisfies
+//        theta(x + alpha d) <= max_{0 <= j < M} theta(x_{k-j}) - 2 sigma alpha theta(x_k),
+//    the Newton direction's slope being -2 theta(x_k). The maximum over the last M iterates lets
+//    a full step raise the residual for a while, as an active-set change does before the next
+//    test puts it right, and never rejects a full step that keeps below the recent merits.
+//  - Cycling: the semi-smooth Newton of a complementarity problem can return to a branch set
+//    (active set, stick and slip) it left without any progress (PDAS cycles on P-matrices that are
+//    not M-matrices; Coulomb friction is not even monotone). A branch set that repeats one of the
+//    last iterations' while the best merit has not fallen below the merit it had then is a cycle;
+//    the driver answers the first with monotone steps (M = 1), whose strictly falling merit
+//    cannot revisit a point, and names a second one a failure.
+//  - Stagnation: the best merit has not halved over the last kStagnationWindow iterations.
+#include "contact/contact_kernel.hpp"
+
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace sig {
+
+/// Why a contact solve stopped without converging (summary.json's `failure`).
+enum class NewtonFailure {
+  none,
+  cycling,         ///< the branch sets repeat without progress, monotone steps included
+  stagnation,      ///< the residual no longer falls
+  divergence,      ///< the residual or the iterate grew without bound, or is not finite
+  drift,           ///< a rigid motion that no contact or friction holds (the load is not held)
+  iteration_limit, ///< still progressing at the iteration limit
+  singular_step,   ///< the step's matrix could not be factorized
+};
+
+/// "cycling", "stagnation", "divergence", "drift", "iteration-limit", "singular-step".
+std::string name(NewtonFailure failure);
+
+/// The merits the nonmonotone Armijo test compares with (header).
+class MeritMemory {
+public:
+  /// `window` M >= 1 merits remembered.
+  explicit MeritMemory(int window);
+  /// The merit ||R|| of an accepted iterate.
+  void push(double residual);
+  /// max_j theta(x_{k-j}) over the window, as ||R|| (theta's square root).
+  double reference() const;
+  /// From now on M = 1: every step must lower the merit of the last iterate.
+  void make_monotone();
+  bool monotone() const { return window_ == 1; }
+
+private:
+  int window_;
+  std::deque<double> residuals_;
+};
+
+/// Armijo's constant sigma of the sufficient decrease.
+inline constexpr double kArmijo = 1e-4;
+
+/// The nonmonotone Armijo test of a trial residual at step length alpha (header), in norms:
+/// ||R_trial||^2 <= reference^2 - 2 sigma alpha ||R_k||^2.
+bool sufficient_decrease(double trial, double reference, double current, double alpha);
+
+/// Detects cycles of the branch sets (header).
+class CycleGuard {
+public:
+  /// Remember `window` iterations.
+  explicit CycleGuard(int window);
+  /// The iterate at which the branches `branch` were tested had merit `residual`. True if that
+  /// branch set is one of the window's but the last (a period of at least two) and no merit
+  /// since then fell below (1 - kProgress) times the merit it had.
+  bool repeats(const std::vector<KernelBranch>& branch, double residual);
+
+  /// Relative fall of the merit that counts as progress between two visits of a branch set.
+  static constexpr double kProgress = 1e-3;
+
+private:
+  struct Visit {
+    std::uint64_t hash;
+    std::vector<KernelBranch> branch;
+    double residual;
+    double lowest_since; ///< the lowest merit seen after this visit
+  };
+  int window_;
+  std::deque<Visit> visits_;
+};
+
+/// Iterates the relaxed test's reference remembers (M).
+inline constexpr int kMeritWindow = 5;
+/// The factor C by which a relaxed step may raise the residual over the reference.
+inline constexpr double kRelaxation = 10;
+/// Iterations a branch set is remembered for the cycle test.
+inline constexpr int kCycleWindow = 30;
+/// Monotone iterations in a row that may take a step that lowers nothing (an escape from a
+/// kink where the Newton step is no descent) before the solve stagnates.
+inline constexpr int kEscapes = 3;
+/// Iterations without a new least residual after which the steps must be monotone.
+inline constexpr int kProgressWindow = 10;
+
+} // namespace sig

@@ -1,0 +1,68 @@
+#pragma once
+// The static problem of sig-solve: a linear elastic bulk, with or without node-to-rigid contact.
+// Without contact it is one factorization and one solve. With contact the stiffness is turned
+// into nodal frames (tangent, normal) at the contact nodes and condensed once onto their normal
+// displacements, and their slips when some element has friction (one sparse factorization,
+// solver/schur.hpp); the contact method then iterates on the small dense problem
+// (solver/condensed_bulk.hpp) with the one Newton driver (solver/contact_newton.hpp). A
+// nonmonotone friction law runs the convexification loop (solver/convexification.hpp) on that
+// one condensed problem, its outer test in the norm ||eps(u)||_L2 of the whole body.
+#include "assembly/system.hpp"
+#include "contact/contact_elements.hpp"
+#include "contact/contact_status.hpp"
+#include "solver/contact_method.hpp"
+#include "solver/contact_newton.hpp"
+#include "solver/convexification.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace sig {
+
+struct Mesh;
+
+struct StaticSolution {
+  Eigen::VectorXd u;          ///< full displacement (2 dofs per node)
+  Eigen::VectorXd multiplier; ///< normal contact force per element (empty without contact)
+  Eigen::VectorXd tangential; ///< tangential contact force per element
+  std::vector<NormalStatus> normal_status;
+  std::vector<FrictionStatus> friction_status;
+  bool converged = true;
+  NewtonFailure reason = NewtonFailure::none; ///< why it did not converge (newton_guard.hpp)
+  std::string failure;
+  double drift = 0;                     ///< reason drift: the length of the unbounded step
+  std::vector<IterationRecord> history; ///< every Newton iteration (of every convex solve)
+  std::optional<ConvexificationResult> convexification; ///< with a nonmonotone law
+  int unknowns = 0;                      ///< dofs of the Newton vector, as the thesis counts them
+  std::map<std::string, double> seconds; ///< factorize, frames, schur, solve
+};
+
+/// The convexification loop of a nonmonotone law: its options, and the mesh whose ||eps(u)||_L2
+/// is the norm of V in its outer test (null: the Euclidean norm of the nodal displacements).
+struct StaticConvexification {
+  ConvexificationOptions options;
+  const Mesh* mesh = nullptr;
+};
+
+StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::string& backend);
+
+/// The Dirichlet conditions of `system` on contact nodes (a roller on a corner of Gamma3) moved
+/// into the laws of `contact`, each in the node's frame: a held normal component takes the node
+/// out of contact (ContactLaw::held_normal, a warning naming it), a held tangential one sticks
+/// at its slip (held_tangential). Returns the held dofs, sorted: the contact solve imposes them,
+/// so the reduced system keeps them free. sig::Error naming the node for a held component that is
+/// neither the node's normal nor its tangent.
+std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElements& contact);
+
+/// `start` (empty: 0) is the first iterate of the displacement, 2 dofs per node: a warm start.
+/// A nonmonotone law runs the loop with `loop`. Dirichlet conditions on contact nodes are held
+/// in the nodes' frames (hold_on_contact_nodes). Non-convergence of the method (or of the loop)
+/// is returned; a body with a rigid motion that neither its
+/// Dirichlet conditions nor its contact laws can hold (no equilibrium exists) is a sig::Error.
+StaticSolution solve_static_contact(const LinearSystem& system, ContactElements contact,
+                                    const ContactSolverParameters& parameters,
+                                    const std::string& backend, const Eigen::VectorXd& start = {},
+                                    const StaticConvexification& loop = {});
+
+} // namespace sig

@@ -1,0 +1,70 @@
+// Load stepping of the large-deformation contact solve (finite_strain_contact.hpp).
+#include "stages/finite_strain_contact.hpp"
+
+#include "core/error.hpp"
+#include "mesh/mesh.hpp"
+
+#include <algorithm>
+
+namespace sig {
+
+bool FiniteStrainSolution::converged() const {
+  return !steps.empty() &&
+         std::all_of(steps.begin(), steps.end(), [](const auto& s) { return s.converged; });
+}
+
+int FiniteStrainSolution::total_iterations() const {
+  int n = 0;
+  for (const LoadStepResult& s : steps)
+    n += s.iterations();
+  return n;
+}
+
+FiniteStrainSolution solve_finite_strain_contact(const FiniteStrainProblem& problem,
+                                                 const FiniteStrainOptions& options) {
+  SIG_VERIFY(options.load_steps >= 1, "load_steps must be >= 1, not " << options.load_steps);
+  FiniteStrainProblem checked = problem;
+  if (problem.contact && problem.contact->size() == 0) checked.contact = nullptr;
+  ContactSetting setting;
+  if (checked.contact) {
+    setting = {checked.contact->law, checked.contact->weight};
+    SIG_VERIFY(!setting.has_friction(),
+               "friction in large deformation is not implemented: the hyperelastic solve is "
+               "frictionless (remove the FRICTION card)");
+  }
+  const std::unique_ptr<ContactMethod> method = make_contact_method(options.contact);
+  FiniteStrainBulk bulk(checked, options.backend, options.contact.eps);
+
+  FiniteStrainSolution solution;
+  solution.unknowns = static_cast<int>(bulk.displacement().size()) +
+                      setting.size() * method->multiplier_unknowns(false);
+  if (options.small_strain_start)
+    solution.start = start_from_small_strain(bulk, checked, 1.0 / options.load_steps,
+                                             options.contact, options.backend);
+  ContactIterate iterate;
+  if (solution.start.multiplier.size() == setting.size())
+    iterate.lambda = solution.start.multiplier;
+  for (int k = 1; k <= options.load_steps; ++k) {
+    const double s = static_cast<double>(k) / options.load_steps;
+    bulk.set_load_factor(s);
+    const int evaluations = bulk.evaluations();
+    const ContactNewtonResult c =
+        solve_contact(bulk, setting, *method, newton_options(options.contact), iterate);
+    LoadStepResult step;
+    step.load_factor = s;
+    step.converged = c.converged;
+    step.reason = c.reason;
+    step.failure = c.failure;
+    step.history = c.history;
+    step.step_length = c.step_length;
+    step.u = bulk.displacement();
+    step.multiplier = c.normal_force;
+    step.normal_status = c.normal_status;
+    step.bulk_evaluations = bulk.evaluations() - evaluations;
+    solution.steps.push_back(step);
+    if (!step.converged) break; // later steps start from a wrong state
+  }
+  return solution;
+}
+
+} // namespace sig

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Requirement (issue 23): a body held by friction alone converges from rest, with no INITIAL card
+# (a 2 x 1 block under the traction (0.2, -1), Coulomb mu = 0.3), with pdas, alm and projection;
+# the same block pushed beyond its friction bound (traction (0.5, -1): Q = 1 > mu P = 0.6) has no
+# equilibrium, and every output a user opens says so: sig-solve's Nv line, case.b's
+# failure_reason, summary.json's failure "drift" with its size, contact.csv's converged column
+# (0 on every row), the .vtu's field data converged = 0; a CONTACT card whose obstacle faces
+# Gamma3 from inside the body is warned about.
+set -euo pipefail
+bin=${SIG_BIN:?SIG_BIN is not set}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() {
+  echo "robust_newton: $*" >&2
+  exit 1
+}
+
+block() { # block FILE TRACTION METHOD [CONTACT_OVERRIDE]
+  cat >"$1" <<EOF
+TITLE block held by friction alone
+# Units: GPa and m. No Dirichlet condition and no INITIAL card.
+MESH generator=rectangle lx=2 ly=1 nx=16 ny=8
+MATERIAL law=hooke E=100 nu=0.3 plane=strain
+TRACTION ref=2 f=$2
+${4:-CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=signorini}
+FRICTION ref=3 law=coulomb mu=0.3
+SOLVER method=$3 gamma=100 r=100 c=0.01 eps=1e-10 maxit=100
+OUTPUT vtk=yes
+EOF
+}
+
+for method in pdas alm projection; do
+  dir=$work/held_$method
+  block "$dir.dat" 0.2,-1 "$method"
+  SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; fail "$method: the chain failed"; }
+  grep -q "converged in" "$dir.log" || { grep sig-solve "$dir.log"; fail "$method: the block held by friction did not converge from rest"; }
+  /usr/bin/python3 - "$dir/contact.csv" <<'PY' || fail "$method: not an equilibrium of the block"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+N = sum(float(r["multiplier"]) for r in rows)
+T = sum(float(r["tangential_multiplier"]) for r in rows)
+assert abs(N - 2.0) < 1e-8 and abs(T - 0.4) < 1e-8, (N, T)  # P = 2 x 1, Q = 2 x 0.2
+assert all(r["converged"] == "1" for r in rows)
+assert all(abs(float(r["tangential_multiplier"])) <= 0.3 * float(r["multiplier"]) + 1e-12 for r in rows)
+PY
+  echo "robust_newton: $method: the block held by friction converges from rest ($(grep -o 'converged in [0-9]* iterations' "$dir.log"))"
+done
+
+dir=$work/slides
+block "$dir.dat" 0.5,-1 pdas
+SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; fail "sliding block: the chain failed"; }
+grep -q "sig-solve: Nv, drift:" "$dir.log" || { grep sig-solve "$dir.log"; fail "sliding block: sig-solve did not name the drift"; }
+"$bin/sig-dump" "$dir/case.b" | grep -q 'failure_reason.*"drift"' || fail "sliding block: case.b has no failure_reason drift"
+/usr/bin/python3 - "$dir" <<'PY' || fail "sliding block: an output does not say Nv"
+import csv, json, sys
+from pathlib import Path
+out = Path(sys.argv[1])
+s = json.loads((out / "summary.json").read_text())
+assert s["converged"] is False and s["failure"] == "drift" and s["drift"] > 0, s
+assert all(r["converged"] == "0" for r in csv.DictReader(open(out / "contact.csv")))
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+reader = vtkXMLUnstructuredGridReader()
+reader.SetFileName(str(next(out.glob("*_0000.vtu"))))
+reader.Update()
+assert reader.GetOutput().GetFieldData().GetArray("converged").GetValue(0) == 0
+PY
+echo "robust_newton: the block beyond its friction bound is a drift in every output"
+
+dir=$work/facing
+block "$dir.dat" 0.2,-1 pdas "CONTACT ref=3 obstacle=plane point=0,2 normal=0,-1 law=signorini"
+"$bin/sig-mesh" "$dir.dat" -o "$dir" >/dev/null
+"$bin/sig-contact" "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || true
+grep -q "contact nodes face the obstacle from inside the body" "$dir.log" || { cat "$dir.log"; fail "no warning for an obstacle facing Gamma3 from inside"; }
+echo "robust_newton: an obstacle facing Gamma3 from inside the body is warned about"
