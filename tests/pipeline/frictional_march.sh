@@ -5,6 +5,7 @@
 # obliquely at (2, -10) m/s onto the plane x2 = 14, its bottom quarter in contact, Coulomb
 # mu = 0.3, over 0.2 s of k = 0.01 s:
 #  - the deck runs (exit 0, every step converged) with each of its friction laws in turn, and
+#    Coulomb's with every strategy (signorini, compliance, specific-penalty, two-step, ipm), and
 #    energy.csv keeps the balance E + interface - friction work - wall work = E0 to 1e-9 E0 with
 #    a friction work that never grows and ends negative;
 #  - case.hist has the kept tangential pressures and sig-post shows them;
@@ -34,19 +35,25 @@ run() {
 }
 
 deck coulomb "strategy=signorini" "FRICTION ref=3 law=coulomb mu=0.3"
+# Coulomb with every other strategy of the linear march.
+deck coulomb_compliance "strategy=compliance r=1e5" "FRICTION ref=3 law=coulomb mu=0.3"
+deck coulomb_penalty "strategy=specific-penalty r=1e5" "FRICTION ref=3 law=coulomb mu=0.3"
+deck coulomb_two_step "strategy=two-step r=1e5" "FRICTION ref=3 law=coulomb mu=0.3"
+deck coulomb_ipm "strategy=ipm r=1e5 g=0.002" "FRICTION ref=3 law=coulomb mu=0.3"
 deck tresca "strategy=specific-penalty r=1e5" "FRICTION ref=3 law=tresca threshold=20"
 deck mu2 "strategy=ipm r=1e5 g=0.002" "FRICTION ref=3 law=mu2 mu=0.3"
 deck frictionless "strategy=signorini" ""
 deck zero "strategy=signorini" "FRICTION ref=3 law=coulomb mu=0"
-for name in coulomb tresca mu2 frictionless zero; do run $name; done
+strategies="coulomb coulomb_compliance coulomb_penalty coulomb_two_step coulomb_ipm"
+for name in $strategies tresca mu2 frictionless zero; do run $name; done
 
-python3 - "$work" <<'PY' || failures=$((failures + 1))
+python3 - "$work" $strategies <<'PY' || failures=$((failures + 1))
 import csv, sys
 work = sys.argv[1]
 def rows(name):
     return list(csv.DictReader(open(f"{work}/{name}/energy.csv")))
 ok = True
-for name in ("coulomb", "tresca", "mu2"):
+for name in sys.argv[2:] + ["tresca", "mu2"]:
     r = rows(name)
     e0 = float(r[0]["total"])
     balance = max(abs(float(x["total"]) + float(x["interface"]) - float(x["friction_work"])
