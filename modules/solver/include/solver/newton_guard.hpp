@@ -14,9 +14,12 @@
 //    (active set, stick and slip) it left without any progress (PDAS cycles on P-matrices that are
 //    not M-matrices; Coulomb friction is not even monotone). A branch set that repeats one of the
 //    last iterations' while the best merit has not fallen below the merit it had then is a cycle;
-//    the driver answers the first with monotone steps (M = 1), whose strictly falling merit
-//    cannot revisit a point, and names a second one a failure.
-//  - Stagnation: the best merit has not halved over the last kStagnationWindow iterations.
+//    the driver answers it by restricting the steps (Murty's one change per iteration on an LCP,
+//    monotone steps, M = 1, whose strictly falling merit cannot revisit a point, otherwise), then
+//    by the other restriction, and names a cycle with no restriction left a failure.
+//  - Stagnation: no new least merit for kProgressWindow iterations makes the steps monotone;
+//    monotone steps that cannot lower the merit kEscapes + 1 times in a row, or a least merit
+//    kProgressWindow iterations old at the iteration limit, are a stagnation.
 #include "contact/contact_kernel.hpp"
 
 #include <cstdint>
