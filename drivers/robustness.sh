@@ -9,7 +9,7 @@
 # the theory's reason where a method or a law leaves what it covers.
 #
 #   full:    about 1300 solves
-#   --quick: the Hertz and Coulomb decks and the ring, one mesh and one start each, pdas, alm
+#   --quick: the Hertz, Coulomb and Tresca decks and the ring, one mesh and one start each, pdas, alm
 #            and projection at 1e-2, 1, 1e2, 1e4 (the CI's variant)
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
@@ -18,7 +18,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 usage() {
   cat <<USAGE
 usage: drivers/robustness.sh [--quick] [-o OUTDIR]
-  --quick     the CI's map (3 decks, 3 methods, 4 parameters) instead of the full one
+  --quick     the CI's map (4 decks, 3 methods, 4 parameters) instead of the full one
   -o OUTDIR   results folder (default out/robustness)
   -h, --help  this message
 USAGE

@@ -88,7 +88,7 @@ DECKS = [
     DeckSpec("coulomb", "datafiles/friction/hertz_coulomb.dat", "N", [64, 128], ["rest", "scene"],
              quick_mesh=64, law="Coulomb mu = 0.4"),
     DeckSpec("tresca", "datafiles/friction/hertz_coulomb.dat", "N", [64, 128], ["rest", "scene"],
-             edit=tresca, law="Tresca threshold 1"),
+             edit=tresca, quick_mesh=64, law="Tresca threshold 1"),
     DeckSpec("ball", "datafiles/scene4/ball.dat", "N", [256, 512], ["rest"],
              law="compliance + wall, non-monotone friction"),
     DeckSpec("square", "datafiles/scene4/square.dat", "nx", [16, 32], ["rest"],
@@ -98,7 +98,7 @@ DECKS = [
     DeckSpec("ring14", "datafiles/scene7b/ring.dat", "N", [64, 128], ["rest", "scene"],
              edit=fourteen_steps, law="Signorini, Ciarlet-Geymonat, 14 load steps"),
 ]
-QUICK = {"hertz": ("rest",), "coulomb": ("rest",), "ring": ("scene",)}
+QUICK = {"hertz": ("rest",), "coulomb": ("rest",), "tresca": ("scene",), "ring": ("scene",)}
 QUICK_METHODS = ("pdas", "alm", "projection")
 
 

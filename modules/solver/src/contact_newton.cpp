@@ -80,13 +80,22 @@ private:
   ContactKernel kernel(int p, double q_n, double q_t, double lambda, double t, double r,
                        const NodeBranch* on = nullptr, double r_t = 0) const;
   /// The method's test (ii): its augmentation r on the wall, and on the slip the smaller of r
-  /// and the node's natural scale where the method has multipliers (header).
+  /// and the node's natural scale where the method has multipliers (header). Once the steps are
+  /// monotone, a method with multipliers tests at the natural scale on both: its step is then
+  /// the Newton step of the merit itself, a descent direction wherever the merit is smooth,
+  /// which a step tested at another augmentation is not where the two tests choose different
+  /// branches (a monotone search along it stalls there: Tresca's half disc at r = 316 E / h).
   ContactKernel tested(int p, double q_n, double q_t, double lambda, double t,
                        const NodeBranch* on = nullptr) const {
-    return kernel(p, q_n, q_t, lambda, t, method_.augmentation(), on, tangential_augmentation(p));
+    return kernel(p, q_n, q_t, lambda, t, normal_augmentation(p), on, tangential_augmentation(p));
+  }
+  bool tests_the_merit() const { return monotone_ && method_.has_multipliers(); }
+  double normal_augmentation(int p) const {
+    return tests_the_merit() ? natural_[p] : method_.augmentation();
   }
   double tangential_augmentation(int p) const {
     const double r = method_.augmentation();
+    if (tests_the_merit()) return natural_[p];
     return method_.has_multipliers() ? std::min(r, natural_[p]) : r;
   }
   ContactPoint point(const Eigen::VectorXd& lambda, const Eigen::VectorXd& t,
