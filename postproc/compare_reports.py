@@ -4,11 +4,13 @@
     /usr/bin/python3 postproc/compare_reports.py OLD_DIR NEW_DIR [--rtol 1e-9] [--skip REGEX]
 
 Every markdown table of OLD_DIR/report.md and every .csv file under OLD_DIR is matched with its
-namesake in NEW_DIR (tables by their header row and their order); cell by cell, integers must be
+namesake in NEW_DIR (tables by their order, csv columns by name: a column the new run adds is
+new output and left out, one it drops is reported); cell by cell, integers must be
 equal and reals agree to rtol relative (an absolute floor of rtol times the column's largest
 magnitude, so that a round-off around zero is not a change). Columns whose header names a time
 (seconds, "(s)", "ms", "speed", "time", "x one factorization") are measurements, not results,
-and are skipped, as is every column matching --skip. Prints one line per cell that moved and a
+and are skipped, as is every column matching --skip and every table whose caption (the line
+above it) names a time. Prints one line per cell that moved and a
 summary; exit 1 if any moved, 2 if the two runs do not have the same tables.
 """
 import argparse
@@ -24,25 +26,40 @@ NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
 def markdown_tables(path):
-    """The tables of a markdown file: (header cells, rows of cells), in order."""
-    tables, header, rows = [], None, []
+    """The tables of a markdown file: (header cells, rows of cells, caption), in order; the
+    caption is the last paragraph line above the table."""
+    tables, header, rows, caption, last = [], None, [], "", ""
     for line in path.read_text().splitlines() + [""]:
         if line.startswith("|"):
             cells = [c.strip() for c in line.strip().strip("|").split("|")]
             if header is None:
-                header = cells
+                header, caption = cells, last
             elif not all(re.fullmatch(r":?-+:?", c) for c in cells if c):
                 rows.append(cells)
-        elif header is not None:
-            tables.append((header, rows))
-            header, rows = None, []
+        else:
+            if header is not None:
+                tables.append((header, rows, caption))
+                header, rows = None, []
+            if line.strip():
+                last = line
     return tables
 
 
 def csv_table(path):
     with path.open(newline="") as f:
         lines = list(csv.reader(f))
-    return (lines[0], lines[1:]) if lines else ([], [])
+    return (lines[0], lines[1:], "") if lines else ([], [], "")
+
+
+def common_columns(old, new):
+    """The two tables restricted to the columns both have (a column added by the change, such
+    as contact.csv's `converged`, is new output, not a moved result), and the names dropped."""
+    (head_old, rows_old, caption), (head_new, rows_new, _) = old, new
+    names = [h for h in head_old if h in head_new]
+    pick = lambda head, rows: [[r[head.index(h)] if head.index(h) < len(r) else "" for h in names]
+                               for r in rows]
+    dropped = [h for h in head_old if h not in head_new]
+    return (names, pick(head_old, rows_old), caption), (names, pick(head_new, rows_new), ""), dropped
 
 
 def numbers(cell):
@@ -51,7 +68,9 @@ def numbers(cell):
 
 def compare_table(where, old, new, rtol, skip):
     """Moved cells of one table, as printable lines."""
-    (head_old, rows_old), (head_new, rows_new) = old, new
+    (head_old, rows_old, caption), (head_new, rows_new, _) = old, new
+    if TIMED.search(caption):  # a table of timings
+        return []
     if head_old != head_new or len(rows_old) != len(rows_new):
         return [f"{where}: the table's header or row count changed "
                 f"({len(rows_old)} rows -> {len(rows_new)})"]
@@ -99,6 +118,9 @@ def main():
             return 2
         for k, (o, n) in enumerate(zip(old_tables, new_tables)):
             compared += 1
+            if old_file.suffix == ".csv":
+                o, n, dropped = common_columns(o, n)
+                moved += [f"{rel}: column '{h}' dropped" for h in dropped]
             moved += compare_table(f"{rel} table {k + 1}", o, n, a.rtol, a.skip)
     for line in moved:
         print(line)
