@@ -20,7 +20,7 @@ import re
 import sys
 from pathlib import Path
 
-TIMED = re.compile(r"second|\(s\)|\bms\b|speed|time|factori[sz]ation|wall|\bs/|per s\b",
+TIMED = re.compile(r"(^|\s)s$|second|\(s\)|\bms\b|speed|time|factori[sz]ation|wall|\bs/|per s\b",
                    re.IGNORECASE)
 NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
