@@ -211,9 +211,10 @@ const std::vector<CardSpec>& card_schema() {
            {"maxit", "maximum number of nonlinear iterations: of the solve (sig-solve, default "
                      "100), of each Newton phase of a time step (sig-march, default 50)"},
            {"search",
-            "auto | yes | no: line search on the residual of a linear contact solve "
-            "(auto: with friction or a compliance law, for alm, pdas and projection; "
-            "the large-deformation solve always searches)",
+            "auto | yes | no: globalization of the contact Newton (modules/solver/NEWTON.md): "
+            "auto and yes (the same) take steps that a merit and a cycle guard accept, for "
+            "every method and bulk; no takes full steps, the thesis's algorithm, a cycle then "
+            "ending the solve",
             "auto"},
        }},
       {"CONVEXIFICATION",
