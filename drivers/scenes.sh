@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# drivers/scenes.sh [-o OUTDIR] [NAME...]: every scene's quick variant, one after the other, then
-# the index of them all, OUTDIR/index.md and OUTDIR/index.html (postproc/scene_index.py: each
-# scene's checks, key table, charts, links to its report and ParaView files).
+# drivers/scenes.sh [--tee] [-o OUTDIR] [NAME...]: every scene's quick variant, one after the
+# other, then the index of them all, OUTDIR/index.md and OUTDIR/index.html
+# (postproc/scene_index.py: each scene's checks, key table, charts, links to its report, its
+# ParaView files and its notes, datafiles/<scene>/README.md).
 #
 # The scenes are the drivers drivers/scene[0-9]*.sh and drivers/friction_hertz.sh: a new scene's
 # driver drivers/sceneX.sh (with --quick and -o, lib/scene.sh's parse_quick_out) is picked up
 # without editing this file. NAME... runs those only (e.g. scene7a friction_hertz). Each runs as
-#   drivers/NAME.sh --quick -o OUTDIR/NAME        (its output in OUTDIR/NAME.log)
+#   drivers/NAME.sh --quick -o OUTDIR/NAME        (its output in OUTDIR/NAME.log; with --tee on the
+#                                                 terminal too: drivers/run.sh's default scene)
 # A driver that fails does not stop the others: the index shows it as a FAIL, as it does a scene
 # whose report wrote no scene.json, and the script exits 1.
 #
@@ -17,16 +19,18 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 
 usage() {
   cat <<EOF
-usage: drivers/scenes.sh [-o OUTDIR] [NAME...]
+usage: drivers/scenes.sh [--tee] [-o OUTDIR] [NAME...]
   -o OUTDIR   results folder (default out): OUTDIR/NAME/ per scene, OUTDIR/index.md, index.html
+  --tee       each driver's output on the terminal too, not only in OUTDIR/NAME.log
   NAME...     these scenes only (default: every drivers/scene[0-9]*.sh and friction_hertz.sh)
   -h, --help  this message
 EOF
 }
 
 out=out
+tee=0
 names=()
-parse_options -o=out @names -- "$@"
+parse_options -o=out --tee:tee=1 @names -- "$@"
 
 driver_dir=${SIG_SCENE_DRIVERS:-$root/drivers}
 drivers=()
@@ -54,10 +58,14 @@ for driver in "${drivers[@]}"; do
   echo "scenes.sh: $command (log: $out/$name.log)"
   t0=$SECONDS
   status=0
-  bash "$driver" --quick -o "$out/$name" >"$out/$name.log" 2>&1 || status=$?
+  if [ "$tee" = 1 ]; then
+    bash "$driver" --quick -o "$out/$name" 2>&1 | tee "$out/$name.log" || status=$?
+  else
+    bash "$driver" --quick -o "$out/$name" >"$out/$name.log" 2>&1 || status=$?
+  fi
   printf '%s\t%s\t%s\t%s\t%s\n' "$name" "$command" "$status" "$((SECONDS - t0))" "$name.log" >>"$runs"
   if [ $status -ne 0 ]; then
-    tail -n 5 "$out/$name.log" | sed 's/^/    /'
+    [ "$tee" = 1 ] || tail -n 5 "$out/$name.log" | sed 's/^/    /'
     progress_step "$name FAILED (exit $status)"
   else
     progress_step "$name"

@@ -428,7 +428,7 @@ def main():
                                 for n in info["meshes"]))
     agreement, ok = section_agreement(runs, data, info, checks)
     passed = ok and pdas_converged
-    title = "Frictional Hertz: a half disc held by Coulomb friction (issue 10)"
+    title = "Frictional Hertz: a half disc held by Coulomb friction"
     lines = [f"# {title}", "",
              f"Produced by `{info['command']}` on {info.get('date', '?')} ({info.get('host', '?')}, "
              f"revision {info.get('revision', '?')}); this report by "

@@ -40,8 +40,8 @@ STATUS_COLOURS = {"CU/S=": "#d62728", "CN/S=": "#1f77b4", "CN/S+": "#2ca02c", "C
                   "CU/S+": "#ff7f0e", "CU/S-": "#9467bd", "CN/-": "#7f7f7f", "CU/-": "#8c564b"}
 PATTERN_42 = ["CN/S+", "CN/S=", "CU/S=", "CN/S=", "CN/S+"]
 PARAMETER = {"pdas": "gamma", "alm": "r", "projection": "c", "penalty": "r"}
-# The inner methods' parameters in the deck's units (GPa and m, README "Parameters in the
-# thesis's units"): gamma and r act on the contact pressure, c is their inverse.
+# The inner methods' parameters in the deck's units (GPa and m, modules/solver/README.md,
+# "Parameters in the thesis's units"): gamma and r act on the contact pressure, c is their inverse.
 PARAMETER_UNIT = {"pdas": "GPa/m", "alm": "GPa/m", "projection": "m/GPa", "penalty": "GPa/m"}
 INNER_VARIANTS = (("pdas", False), ("alm", False), ("projection", False), ("penalty", False),
                   ("penalty", True))

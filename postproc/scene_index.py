@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The index of all scenes: OUTDIR/index.md and OUTDIR/index.html, one page listing each scene's
-checks (PASS/FAIL), its key table "ours (thesis)", its charts and links to its report and ParaView
-files, from the entries OUTDIR/<folder>/scene.json that the scene reports write (postproc/sigreport/scene.py).
+checks (PASS/FAIL), its key table "ours (thesis)", its charts and links to its report, its ParaView
+files and its notes (datafiles/<scene>/README.md of the source tree), from the entries OUTDIR/<folder>/scene.json that the scene reports write (postproc/sigreport/scene.py).
 
     scene_index.py OUTDIR [--runs FILE]
 
@@ -16,6 +16,7 @@ import argparse
 import datetime
 import html
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -27,6 +28,8 @@ from sigreport.files import write_text_atomically  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 CHART_TITLES = {"speed_accuracy": "speed against accuracy", "stability": "stability"}
+# The scene folders whose notes, datafiles/<name>/README.md, are named otherwise.
+NOTES_FOLDERS = {"friction_hertz": "friction"}
 
 
 class Scene:
@@ -87,6 +90,14 @@ class Scene:
         without one (still worth a link); None when there is none."""
         name = (self.entry or {}).get("report") or "report.md"
         return name if (out / self.folder / name).is_file() else None
+
+    def notes(self, out):
+        """(URL relative to OUTDIR, path in the source tree) of the scene's notes, its narrative
+        and benchmark tables (datafiles/<scene>/README.md); None when it has none."""
+        path = Path("datafiles") / NOTES_FOLDERS.get(self.folder, self.folder) / "README.md"
+        if not (ROOT / path).is_file():
+            return None
+        return quote(os.path.relpath(ROOT / path, out.resolve())), str(path)
 
     def link(self, path):
         """A path of the scene (relative to its folder) as a URL relative to OUTDIR."""
@@ -160,6 +171,9 @@ def markdown(out, scenes, stamp):
             lines += [f"Command: `{command}` ({s.seconds()})", ""]
         if s.report(out):
             lines += [f"[Report]({s.link(s.report(out))})", ""]
+        if s.notes(out):
+            url, path = s.notes(out)
+            lines += [f"Notes: [{path}]({url})", ""]
         if s.entry is None:
             continue
         if s.checks:
@@ -230,6 +244,9 @@ def page(out, scenes, stamp):
             body.append(f"<p>Command: <code>{html.escape(command)}</code> ({s.seconds()})</p>")
         if s.report(out):
             body.append(f'<p><a href="{s.link(s.report(out))}">Report</a></p>')
+        if s.notes(out):
+            url, path = s.notes(out)
+            body.append(f'<p>Notes: <a href="{url}">{html.escape(path)}</a></p>')
         if s.entry is None:
             continue
         if s.checks:

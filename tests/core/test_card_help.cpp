@@ -67,6 +67,42 @@ TEST(CardHelp, ACardShowsEveryFieldWithItsHelpAndDefault) {
         << spec.keyword;
 }
 
+TEST(CardReference, MarkdownHasEveryCardAndFieldWithDefaultAndRange) {
+  const std::string text = card_reference_markdown();
+  for (const CardSpec& spec : card_schema()) {
+    EXPECT_NE(text.find(std::string("\n## ") + spec.keyword + "\n"), std::string::npos)
+        << spec.keyword;
+    for (const FieldSpec& field : spec.fields)
+      EXPECT_NE(text.find(std::string("- `") + field.name + "`"), std::string::npos)
+          << spec.keyword << " " << field.name;
+  }
+  // The fields and laws the hand-written table once lacked, and a default and a range together,
+  // in the text with its line breaks and indents as single spaces (wrapping moves them).
+  std::istringstream words(text);
+  std::string flat;
+  for (std::string word; words >> word;)
+    flat += " " + word;
+  for (const char* expected :
+       {"- `search` (default `auto`)", "- `exclude`: boundary references", "damped (1.25)",
+        "damped-unilateral (1.28)", "- `nu` (range in (-1, 0.5)):",
+        "- `maxit` (range in [1, 10000]):", "- `eps` (default `1e-5`; range in [1e-14, 1)):"})
+    EXPECT_NE(flat.find(expected), std::string::npos) << expected;
+}
+
+TEST(CardReference, WrappedLinesNeverOpenAMarkdownBlock) {
+  // "I1 - 3" wrapped before "-" would turn the rest of a field's text into a nested list item.
+  std::istringstream lines(card_reference_markdown());
+  bool in_code = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("```", 0) == 0) in_code = !in_code;
+    if (in_code) continue;
+    if (line.rfind("  ", 0) == 0) { // a list item's continuation
+      const std::string rest = line.substr(line.find_first_not_of(' '));
+      EXPECT_EQ(std::string("-+*>#=|").find(rest.front()), std::string::npos) << line;
+    }
+  }
+}
+
 TEST(StageHelp, ListsFilesOptionsAndEveryCardAndRefusesAnUnknownCard) {
   const StageHelp help{.name = "sig-x",
                        .purpose = "Does x.",

@@ -6,7 +6,11 @@
 #  - a scene whose checks all pass is a PASS; one failed check, a driver that crashed, a driver
 #    that wrote no scene.json, a scene.json pointing at a missing chart: each a FAIL with its
 #    reason, none skipped; a scene.json of a scene run on its own is picked up too;
-#  - the key tables, charts (relative <img>) and .pvd links are on the page, HTML-escaped.
+#  - the key tables, charts (relative <img>) and .pvd links are on the page, HTML-escaped;
+#  - a scene with notes (datafiles/<scene>/README.md) links them, by a path that leads from
+#    OUTDIR to the source tree;
+#  - --tee NAME (drivers/run.sh's default scene) shows the driver's output on the terminal as
+#    well as in its log, and the index lists that scene.
 # The page in a real browser: index_browser.sh.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -41,10 +45,10 @@ done
 grep -q "bench-x" "$work/log" && fail "scenes.sh ran bench-x.sh, which is no scene driver"
 [ -s "$out/index.md" ] && [ -s "$out/index.html" ] || fail "no index.md / index.html"
 
-"$python" - "$out" <<'PY'
+"$python" - "$out" "$root" <<'PY'
 import re, sys
 from pathlib import Path
-out = Path(sys.argv[1])
+out, root = Path(sys.argv[1]), Path(sys.argv[2])
 md, page = (out / "index.md").read_text(), (out / "index.html").read_text()
 failures = []
 
@@ -74,9 +78,23 @@ check('href="scene1/N8/run/case.pvd"' in page, ".pvd linked")
 check("Table 7.1: ours (thesis)" in page and "<td>12 (11)</td>" in page, "the key table")
 check("Fake scene scene1 &lt;&amp;&gt;" in page and "<&>" not in page.split("<body>")[1]
       .replace("&lt;&amp;&gt;", ""), "titles escaped")
+notes = "datafiles/friction/README.md"
+check(f"Notes: [{notes}](" in md and f">{notes}</a>" in page, "friction_hertz's notes linked")
+link = re.search(r'href="([^"]*friction/README\.md)"', page)
+check(link is not None and (out / link.group(1)).resolve() == root / notes,
+      f"the notes' link leads from OUTDIR to the source tree ({link and link.group(1)})")
+check("datafiles/scene1/" not in page, "no notes link for a scene without notes")
 check("no_such_chart.png is missing" in page and '<img src="scene5/no_such_chart.png"' not in page,
       "no <img> for a missing chart")
 if failures:
     sys.exit(f"scene_index: {len(failures)} check(s) failed")
 PY
+# --tee: drivers/run.sh's way of running its one scene.
+tee_out=$work/tee
+SIG_SCENE_DRIVERS=$work/drivers bash "$root/drivers/scenes.sh" --tee -o "$tee_out" scene1 \
+  >"$work/tee.log" 2>&1 || fail "scenes.sh --tee scene1 failed: $(cat "$work/tee.log")"
+grep -q "^fake scene1: pass" "$work/tee.log" || fail "--tee: the driver's output not on the terminal"
+grep -q "^fake scene1: pass" "$tee_out/scene1.log" || fail "--tee: the driver's output not in its log"
+grep -q "scene1/report.md" "$tee_out/index.html" || fail "--tee: the index does not list scene1"
+grep -q "scene2" "$tee_out/index.html" && fail "--tee scene1: the index lists scene2, not run"
 echo "scene_index: ok"

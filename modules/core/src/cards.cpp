@@ -3,7 +3,7 @@
 namespace sig {
 
 // Every card a stage reads. Choices are checked where they are read (Card::choice), so the help
-// text lists them for the README's card table.
+// text lists them for the card reference (datafiles/CARDS.md, sig-dump --cards-markdown).
 const std::vector<CardSpec>& card_schema() {
   static const std::vector<CardSpec> schema = {
       {"TITLE",

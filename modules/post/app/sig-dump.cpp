@@ -1,10 +1,12 @@
 // sig-dump: print a DS file (header and arrays) or a NOPO mesh, as MODULEF printed its
 // structures; --json gives stable keys for scripts, --values adds the arrays' values to it (the
 // one way the report scripts read a DS: postproc/sigreport/ds.py). --cards prints the card
-// schema, --chain the stages a datafile's chain runs (drivers/chain.sh).
+// schema, --cards-markdown the same as the Markdown card reference (datafiles/CARDS.md), --chain
+// the stages a datafile's chain runs (drivers/chain.sh).
 //
 //   sig-dump [--json [--values | --values=NAME,NAME...]] FILE
 //   sig-dump --cards [CARD...]
+//   sig-dump --cards-markdown
 //   sig-dump --chain DATAFILE
 #include "core/card_help.hpp"
 #include "core/datafile.hpp"
@@ -29,20 +31,22 @@ int main(int argc, char** argv) {
                 "NOPO mesh (with --json --values: its coordinates, triangles and edges)"},
       .writes = {"standard output"},
       .cards = {},
-      .usage = "[--json [--values | --values=NAME,NAME...]] FILE | --cards [CARD...] | --chain "
-               "DATAFILE",
+      .usage = "[--json [--values | --values=NAME,NAME...]] FILE | --cards [CARD...] | "
+               "--cards-markdown | --chain DATAFILE",
       .options = {{"--json", "stable keys for scripts (JSON) instead of text"},
                   {"--values", "with --json: the values of every array too (one line)"},
                   {"--values=A,B", "with --json: the values of the arrays named"},
                   {"--cards", "every card with a one-line help; --cards CARD...: those cards' "
                               "fields, help texts and defaults"},
+                  {"--cards-markdown", "every card, field, default and range as the Markdown card "
+                                       "reference (datafiles/CARDS.md)"},
                   {"--chain", "the stages the datafile's chain runs, one per line, as the "
                               "stages read the deck (drivers/chain.sh)"}}};
   return sig::run_stage("sig-dump", [&] {
     // 1. Command line.
     sig::handle_help_and_version(argc, argv, help);
     const std::string usage = "usage: sig-dump " + help.usage;
-    bool json = false, cards = false, chain = false;
+    bool json = false, cards = false, cards_markdown = false, chain = false;
     bool values_given = false;
     sig::DumpValues values;
     std::vector<std::string> names;
@@ -52,6 +56,8 @@ int main(int argc, char** argv) {
         json = true;
       } else if (arg == "--cards") {
         cards = true;
+      } else if (arg == "--cards-markdown") {
+        cards_markdown = true;
       } else if (arg == "--chain") {
         chain = true;
       } else if (arg == "--values") {
@@ -68,7 +74,12 @@ int main(int argc, char** argv) {
       }
     }
 
-    // 2. The card schema: all cards, or the named ones.
+    // 2. The card schema: all cards, or the named ones; or all as Markdown.
+    if (cards_markdown) {
+      SIG_VERIFY(!cards && !json && !values_given && !chain && names.empty(), usage);
+      std::cout << sig::card_reference_markdown();
+      return;
+    }
     if (cards) {
       SIG_VERIFY(!json && !values_given && !chain, usage);
       if (names.empty())

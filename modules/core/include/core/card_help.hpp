@@ -14,6 +14,12 @@ std::string card_help(const CardSpec& spec);
 /// One line per card of the schema: keyword and help.
 std::string card_index();
 
+/// The whole schema as a Markdown card reference (datafiles/CARDS.md, `sig-dump
+/// --cards-markdown`): an index of the cards, then per card its help and one item per field with
+/// its default and its range (core/ranges.hpp), lines wrapped at 100 columns. Deterministic (no
+/// date, no revision), so that the committed file can be diffed against a fresh one.
+std::string card_reference_markdown();
+
 /// `text` wrapped at word boundaries into lines ending by column `width`: the first line starts
 /// at column `start` (the caller printed what comes before it), the others are indented by
 /// `indent` spaces; a word longer than a line stays whole. Ends with a newline.

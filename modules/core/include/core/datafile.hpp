@@ -81,7 +81,8 @@ struct CardSpec {
   const char* help;
   std::vector<FieldSpec> fields;
 };
-/// Every card any stage reads, with its fields and help text (README's card table).
+/// Every card any stage reads, with its fields and help text (the card reference,
+/// datafiles/CARDS.md).
 const std::vector<CardSpec>& card_schema();
 /// The schema of a card (keyword case-insensitive), nullptr if there is none.
 const CardSpec* find_card_spec(const std::string& keyword);
