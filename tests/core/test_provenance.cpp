@@ -45,7 +45,7 @@ TEST(Provenance, ADsRecordsItsInputsAndTheirsTransitively) {
     write_ds(tae, small("TAE", 2));
   }
   const Ds t = read_ds(tae, "TAE");
-  const auto entries = parse_provenance(t.text("provenance"), t.source);
+  const auto entries = parse_provenance(t.text("provenance"), t.source).inputs;
   ASSERT_EQ(entries.size(), 2u);
   EXPECT_EQ(entries[0].kind, "NOPO");
   EXPECT_EQ(entries[0].fingerprint, 0x1234u);
@@ -58,7 +58,7 @@ TEST(Provenance, ADsRecordsItsInputsAndTheirsTransitively) {
     write_ds(b, small("B", 3));
   }
   // B was built from TAE, and through it from MILI and NOPO.
-  const auto b_entries = parse_provenance(read_ds(b).text("provenance"), b.string());
+  const auto b_entries = parse_provenance(read_ds(b).text("provenance"), b.string()).inputs;
   std::vector<std::string> kinds;
   for (const auto& e : b_entries)
     kinds.push_back(e.kind);
@@ -122,15 +122,22 @@ TEST(Provenance, OnlyTheCaseFolderCounts) {
 }
 
 TEST(Provenance, TextRoundTripsAndBadLinesAreRefused) {
-  const std::vector<ProvenanceEntry> entries = {
-      {"NOPO", 0xfedcba9876543210ull, "out/a b/case.nopo"}, {"TAE", 7, "case.tae"}};
+  const Provenance entries{
+      {{"NOPO", 0xfedcba9876543210ull, "out/a b/case.nopo"}, {"TAE", 7, "case.tae"}},
+      {{"FRICTION", 0x0123456789abcdefull, "ref=3 law=coulomb mu=0.4"}}};
   const auto back = parse_provenance(provenance_text(entries), "x");
-  ASSERT_EQ(back.size(), 2u);
-  EXPECT_EQ(back[0].fingerprint, entries[0].fingerprint);
-  EXPECT_EQ(back[0].file, "out/a b/case.nopo");
-  EXPECT_EQ(back[1].kind, "TAE");
-  for (const char* bad : {"NOPO 12 case.nopo", "TOOLONG 0000000000000007 f",
-                          "NOPO 000000000000000g f", "NOPO 0000000000000007", ""})
+  ASSERT_EQ(back.inputs.size(), 2u);
+  EXPECT_EQ(back.inputs[0].fingerprint, entries.inputs[0].fingerprint);
+  EXPECT_EQ(back.inputs[0].file, "out/a b/case.nopo");
+  EXPECT_EQ(back.inputs[1].kind, "TAE");
+  ASSERT_EQ(back.cards.size(), 1u);
+  EXPECT_EQ(back.cards[0].keyword, "FRICTION");
+  EXPECT_EQ(back.cards[0].fingerprint, 0x0123456789abcdefull);
+  EXPECT_EQ(back.cards[0].values, "ref=3 law=coulomb mu=0.4");
+  for (const char* bad :
+       {"NOPO 12 case.nopo", "TOOLONG 0000000000000007 f", "NOPO 000000000000000g f",
+        "NOPO 0000000000000007", "", "CARD MESH 0000000000000007", "CARD MESH 7 N=16", "CARD",
+        "CARD  0000000000000007 N=16"})
     EXPECT_NE(error_of([&] { parse_provenance(std::string(bad) + "\n", "x.ds"); }).find("x.ds"),
               std::string::npos)
         << bad;
