@@ -6,6 +6,7 @@
 #include "text_case.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -109,6 +110,7 @@ std::string canonical_value(const Card& card, const std::string& field, const st
 
 std::string canonical_card(const Card& card) {
   const CardSpec* spec = find_card_spec(card.keyword);
+  if (spec != nullptr && spec->fields.empty()) return "text=" + escaped(card.text_value); // TITLE
   std::string out;
   if (spec != nullptr)
     for (const FieldSpec& field : spec->fields) {
@@ -152,6 +154,22 @@ std::vector<std::string> split(const std::string& text, const std::string& by) {
   }
 }
 
+// The value as the user wrote it, for messages.
+std::string unescaped(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '%' && i + 2 < text.size() &&
+        std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(text[i + 2]))) {
+      out += static_cast<char>(std::stoi(text.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
 using Fields = std::vector<std::pair<std::string, std::string>>;
 
 Fields fields_of(const std::string& instance) {
@@ -167,7 +185,7 @@ Fields fields_of(const std::string& instance) {
 
 std::string value_in(const Fields& fields, const std::string& name) {
   for (const auto& [field, value] : fields)
-    if (field == name) return value;
+    if (field == name) return unescaped(value);
   return "(not given)";
 }
 
@@ -197,11 +215,12 @@ differing_fields(const std::string& keyword, const std::string& before, const st
   return {old_text, new_text};
 }
 
+// "(line 5)", "(lines 5, 9)".
 std::string lines_of(const std::vector<Instance>& cards) {
-  std::string out;
+  std::string out = cards.size() == 1 ? "(line " : "(lines ";
   for (const Instance& card : cards)
-    out += (out.empty() ? "" : ", ") + std::to_string(card.line);
-  return out;
+    out += (&card == &cards.front() ? "" : ", ") + std::to_string(card.line);
+  return out + ")";
 }
 
 } // namespace
@@ -226,14 +245,14 @@ std::string card_change(const CardRecord& recorded, const Datafile& deck) {
       return "without a " + key + " card, but " + where + std::to_string(now[0].line) +
              " now has " + key + " " + now[0].text;
     return "without a " + key + " card, but " + deck.path + " now has " +
-           std::to_string(now.size()) + " " + key + " cards (lines " + lines_of(now) + ")";
+           std::to_string(now.size()) + " " + key + " cards " + lines_of(now);
   }
   if (now.empty())
     return "with " + key + " " + recorded.values + ", but " + deck.path + " has no " + key +
            " card now";
   if (before.size() != now.size())
     return "with " + std::to_string(before.size()) + " " + key + " cards, but " + deck.path +
-           " now has " + std::to_string(now.size()) + " (lines " + lines_of(now) + ")";
+           " now has " + std::to_string(now.size()) + " " + lines_of(now);
   std::size_t k = 0;
   while (k + 1 < now.size() && before[k] == now[k].text)
     ++k;

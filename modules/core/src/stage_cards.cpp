@@ -48,7 +48,9 @@ const StageCards& stage_cards(const std::string& name) {
 
 std::vector<std::string> dependency_cards(const StageCards& stage) {
   std::vector<std::string> cards = stage.cards;
-  std::erase(cards, std::string("TITLE"));
+  // The title is in the headers of the DS files, which no stage reads back; sig-post's files
+  // (summary.json, the .vtu) show it to the user.
+  if (stage.name != "post") std::erase(cards, std::string("TITLE"));
   return cards;
 }
 

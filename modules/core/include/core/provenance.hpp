@@ -6,7 +6,7 @@
 //     KIND FINGERPRINT FILE          one line per input file,  e.g.
 //     NOPO 6c2f0e4b1d9a8e37 out/hertz/case.nopo
 //     CARD KEYWORD FINGERPRINT VALUES  one line per card keyword it depends on, e.g.
-//     CARD FRICTION 0d4c9a3e5b1f2a77 ref=3 law=coulomb mu=0.4 bound=normal of=slip
+//     CARD FRICTION abbb4f06e393644d ref=3 law=coulomb mu=0.4 bound=normal of=slip
 // The inputs of the inputs are recorded too, and so are their cards: the provenance of a file is
 // its own stage's cards (core/stage_cards.hpp) plus everything its inputs record (B records TAE,
 // CONT, MILI and NOPO, and the cards of sig-solve, sig-assemble, sig-contact, sig-material and

@@ -28,8 +28,8 @@ const std::vector<StageCards>& stage_table();
 /// The stage called `name` ("contact" or "sig-contact"); throws sig::Error for another name.
 const StageCards& stage_cards(const std::string& name);
 
-/// The cards the files a stage writes depend on: its cards but TITLE (a name for headers and
-/// reports, no number of the result).
+/// The cards the files a stage writes depend on: its cards, but TITLE for all but sig-post (the
+/// title is a name in the DS headers, which no stage reads back; sig-post's files show it).
 std::vector<std::string> dependency_cards(const StageCards& stage);
 
 /// The stage of the chain that writes DS kind `kind` (MILI: material), nullptr if none.
