@@ -26,22 +26,52 @@ StageArgs parse(std::vector<std::string> words) {
   return parse_stage_args(static_cast<int>(argv.size()), argv.data(), {.name = "mesh"});
 }
 
+// The stages read their datafile with their arguments: a small deck at `path`.
+void write_deck(const std::filesystem::path& path) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path) << "# a deck\nMESH generator=square lx=1 nx=2\n";
+}
+
+// Runs the test's body in `dir` (the stages take relative paths from the working folder).
+struct WorkingFolder {
+  explicit WorkingFolder(const std::filesystem::path& dir) { std::filesystem::current_path(dir); }
+  ~WorkingFolder() { std::filesystem::current_path(cwd); }
+  std::filesystem::path cwd = std::filesystem::current_path();
+};
+
 TEST(Stage, ExplicitOutputFolderIsCreated) {
   ScratchFolder dir;
+  const WorkingFolder here(dir.path());
+  write_deck("decks/hertz.dat");
+  write_deck("x.dat");
   const auto out = dir / "runs" / "n8";
   const StageArgs args = parse({"sig-mesh", "decks/hertz.dat", "-o", out.string()});
   EXPECT_EQ(args.datafile, std::filesystem::path("decks/hertz.dat"));
   EXPECT_EQ(args.outdir, out);
   EXPECT_TRUE(std::filesystem::is_directory(out));
   EXPECT_EQ(args.ds_path("nopo"), out / "case.nopo");
+  ASSERT_EQ(args.deck.cards().size(), 1u); // the datafile, read
+  EXPECT_EQ(args.deck.cards()[0].keyword, "MESH");
   // -o may come first.
   EXPECT_EQ(parse({"sig-mesh", "-o", out.string(), "x.dat"}).outdir, out);
+}
+
+TEST(Stage, AMissingDatafileIsAnErrorNamingIt) {
+  ScratchFolder dir;
+  const WorkingFolder here(dir.path());
+  try {
+    parse({"sig-mesh", "nowhere.dat", "-o", "out"});
+    ADD_FAILURE() << "nowhere.dat accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("nowhere.dat"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Stage, DefaultOutputFolderIsOutSlashStem) {
   ScratchFolder dir;
   const auto cwd = std::filesystem::current_path();
   std::filesystem::current_path(dir.path());
+  write_deck("datafiles/hertz_n8.dat");
   StageArgs args;
   EXPECT_NO_THROW(args = parse({"sig-mesh", "datafiles/hertz_n8.dat"}));
   const bool created = std::filesystem::is_directory(dir / "out" / "hertz_n8");

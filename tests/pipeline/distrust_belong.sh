@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Requirement (issue 16): the files of a case belong together, and case.nopo is checked. Every DS
-# records the fingerprints of the mesh and of the DS it was built from (core/provenance.hpp): a
-# stage given another case's case.mili or a foreign case.nopo refuses, naming both files.
-# case.nopo carries the fingerprint of its mesh records: a node moved by 0.5 or a byte damaged
-# mid-file is refused by the next stage that reads it. No file of the case changes.
+# Requirement (issues 16 and 25): the files of a case belong together, to the deck, and case.nopo
+# is checked. Every DS records the fingerprints of the mesh and of the DS it was built from, and
+# the values of the deck's cards it was made from (core/provenance.hpp); case.nopo's record is
+# case.nopo.prov. A stage given another case's case.mili (another MATERIAL card) refuses naming
+# the card; files of one deck that do not belong together (a stage rerun alone) are refused
+# naming both files; a foreign case.nopo is refused without its record (it is not the mesh the
+# record describes) and with it (another MESH card). case.nopo carries the fingerprint of its
+# mesh records: a node moved by 0.5 or a byte damaged mid-file is refused by the next stage that
+# reads it. No file of the case changes.
 set -euo pipefail
 name=distrust_belong
 work=$(mktemp -d)
@@ -21,17 +25,28 @@ chain "$work/fine.dat" "$work/fine"
 cp -r "$work/a" "$work/mili"
 cp "$work/b/case.mili" "$work/mili/case.mili"
 expect_refusal "another case's case.mili" post "$work/a.dat" "$work/mili" \
-  "do not belong together" "mili/case.b was built from the MILI" "mili/case.mili is the MILI"
+  "mili/case.mili was made with MATERIAL E=210, but" "a.dat:18 now says MATERIAL E=150" \
+  "rerun sig-material"
 
-# A foreign case.nopo: sig-assemble refuses it against case.mili; sig-contact, which reads only
-# the mesh, builds a CONT of it, and sig-solve refuses that against case.tae.
+# Files of the deck that do not belong together: sig-assemble rerun alone writes another
+# case.tae (its phase times differ), which case.b was not built from.
+cp -r "$work/a" "$work/alone"
+"$bin/sig-assemble" "$work/a.dat" -o "$work/alone" > /dev/null 2>&1 || fail "sig-assemble failed"
+expect_refusal "a case.tae rerun alone" post "$work/a.dat" "$work/alone" \
+  "do not belong together" "alone/case.b was built from the TAE" "alone/case.tae is the TAE"
+
+# A foreign case.nopo copied in alone is not the mesh its record describes: sig-assemble and
+# sig-contact, which reads only the mesh, refuse it.
 cp -r "$work/a" "$work/nopo"
 cp "$work/fine/case.nopo" "$work/nopo/case.nopo"
-expect_refusal "a foreign case.nopo" assemble "$work/a.dat" "$work/nopo" \
-  "do not belong together" "nopo/case.mili was built from the NOPO" "nopo/case.nopo is the NOPO"
-"$bin/sig-contact" "$work/a.dat" -o "$work/nopo" > /dev/null 2>&1 || fail "sig-contact failed"
-expect_refusal "a CONT of a foreign mesh" solve "$work/a.dat" "$work/nopo" \
-  "do not belong together" "nopo/case.cont" "nopo/case.tae"
+for stage in assemble contact; do
+  expect_refusal "a foreign case.nopo (sig-$stage)" $stage "$work/a.dat" "$work/nopo" \
+    "nopo/case.nopo is not the NOPO that" "nopo/case.nopo.prov records" "rerun sig-mesh"
+done
+# With its record, it is the mesh of another MESH card.
+cp "$work/fine/case.nopo.prov" "$work/nopo/case.nopo.prov"
+expect_refusal "a foreign case.nopo with its record" contact "$work/a.dat" "$work/nopo" \
+  "nopo/case.nopo was made with MESH N=32, but" "a.dat:17 now says MESH N=16" "rerun sig-mesh"
 
 # case.nopo's integrity: a node moved by 0.5 (x of node 1: i8r8 records, byte 636).
 cp -r "$work/a" "$work/moved"

@@ -9,6 +9,7 @@
 #include "mesh/nopo.hpp"
 #include "post_test_mesh.hpp"
 #include "scratch_folder.hpp"
+#include "stage_scope.hpp"
 
 #include <gtest/gtest.h>
 #include <vtkDataArray.h>
@@ -153,15 +154,24 @@ TEST_F(LoadStepVtk, SigPostWritesOneStatePerLoadStep) {
   if (!fs::exists(exe)) GTEST_SKIP() << "no " << exe;
   const Mesh mesh = test::small_mesh();
   std::ofstream(dir_ / "block.dat") << "TITLE stepped block\nOUTPUT vtk=yes\n";
-  write_nopo(dir_ / "case.nopo", mesh, NopoVariant::i8r8, "block", "test");
-  write_mili(dir_ / "case.mili", test::two_materials(0.3), "block");
+  {
+    const testing::StageScope stage(dir_, dir_ / "block.dat", "mesh");
+    write_nopo(dir_ / "case.nopo", mesh, NopoVariant::i8r8, "block", "test");
+  }
+  {
+    const testing::StageScope stage(dir_, dir_ / "block.dat", "material");
+    write_mili(dir_ / "case.mili", test::two_materials(0.3), "block");
+  }
   Ds b = load_stepped(mesh, 3, 3);
   b.put_text("linear", "umfpack");
   b.put_int("converged", 1);
   b.put_int("iterations", 6);
   b.put_int("dofs", 10);
   b.put_int("finite_strain", 1);
-  write_ds(dir_ / "case.b", b);
+  {
+    const testing::StageScope stage(dir_, dir_ / "block.dat", "solve");
+    write_ds(dir_ / "case.b", b);
+  }
   const std::string command = exe.string() + " " + (dir_ / "block.dat").string() + " -o " +
                               dir_.string() + " > " + (dir_ / "log").string() + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0);

@@ -5,6 +5,7 @@
 #include "mesh/nopo.hpp"
 #include "post_test_mesh.hpp"
 #include "scratch_folder.hpp"
+#include "stage_scope.hpp"
 
 #include <gtest/gtest.h>
 
@@ -25,7 +26,11 @@ protected:
     exe_ = fs::path(SIG_BINARY_DIR) / "bin" / "sig-post";
     if (!fs::exists(exe_)) GTEST_SKIP() << "no " << exe_;
     std::ofstream(dir_ / "block.dat") << "TITLE three triangles\nOUTPUT vtk=yes\n";
-    write_nopo(dir_ / "case.nopo", test::small_mesh(), NopoVariant::i8r8, "block", "test");
+    {
+      const testing::StageScope mesh(dir_, dir_ / "block.dat", "mesh");
+      write_nopo(dir_ / "case.nopo", test::small_mesh(), NopoVariant::i8r8, "block", "test");
+    }
+    const testing::StageScope material(dir_, dir_ / "block.dat", "material");
     write_mili(dir_ / "case.mili", test::two_materials(0.3), "block");
   }
   void write_solution(const std::vector<double>& u) {
@@ -37,6 +42,7 @@ protected:
     b.put_int("iterations", 0);
     b.put_int("dofs", 10);
     b.put_scalar("time_solve", 0.5);
+    const testing::StageScope solve(dir_, dir_ / "block.dat", "solve");
     write_ds(dir_ / "case.b", b);
   }
   int run(std::string& output) {

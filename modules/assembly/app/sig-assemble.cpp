@@ -5,6 +5,7 @@
 #include "core/datafile.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
@@ -18,11 +19,11 @@ int main(int argc, char** argv) {
                  "matrices, load vectors and Dirichlet dofs of the case.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)", "OUTDIR/case.mili (sig-material)"},
       .writes = {"OUTDIR/case.tae (dof numbering, K, M, loads, Dirichlet dofs and values)"},
-      .cards = {"TITLE", "DIRICHLET", "TRACTION", "PRESSURE", "BODYFORCE", "MOVINGLOAD"}};
+      .cards = sig::stage_cards("assemble").cards};
   return sig::run_stage("sig-assemble", [&] {
     // 1. Command line and inputs.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
     // A hyperelastic law is solved in large deformation by sig-solve (it reads the laws from the

@@ -8,6 +8,7 @@
 #include "core/ds.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "mesh/nopo.hpp"
 
 #include <filesystem>
@@ -24,11 +25,11 @@ int main(int argc, char** argv) {
                                        "earlier run).",
                             .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)"},
                             .writes = {"OUTDIR/case.cont (contact elements)"},
-                            .cards = {"TITLE", "CONTACT", "FRICTION"}};
+                            .cards = sig::stage_cards("contact").cards};
   return sig::run_stage("sig-contact", [&] {
     // 1. Arguments, datafile and mesh.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
     const std::filesystem::path cont_path = args.ds_path("cont");
 
     // 2. Contact elements from the CONTACT card, if any.

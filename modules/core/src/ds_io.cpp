@@ -242,7 +242,7 @@ void write_ds(const std::filesystem::path& path, const Ds& ds) {
   for (const DsArray& a : ds.arrays())
     if (a.name != provenance_array) arrays.push_back(&a);
   Ds stamp;
-  if (const auto inputs = case_provenance(ds.header.kind); !inputs.empty()) {
+  if (const Provenance inputs = case_provenance(ds.header.kind); !inputs.empty()) {
     stamp.put_text(provenance_array, provenance_text(inputs));
     arrays.push_back(&stamp.arrays().front());
   }
@@ -317,8 +317,14 @@ Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) 
   Ds ds = read_all(in, expected_kind);
   note_case_input(ds.header.kind, path, ds.fingerprint,
                   ds.has(provenance_array) ? parse_provenance(ds.text(provenance_array), ds.source)
-                                           : std::vector<ProvenanceEntry>{});
+                                           : Provenance{});
   return ds;
+}
+
+Ds read_ds_record(const std::filesystem::path& path, const std::string& expected_kind) {
+  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
+  DsReader in(path);
+  return read_all(in, expected_kind);
 }
 
 Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind) {

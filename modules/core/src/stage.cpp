@@ -166,7 +166,8 @@ StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help) {
   // What a killed stage left: its temporaries would otherwise pile up in OUTDIR forever.
   for (const std::string& name : remove_stale_temporaries(args.outdir))
     log_info("removed " + (args.outdir / name).string() + ", left by a stage that was killed");
-  open_case(args.outdir);
+  args.deck = Datafile::read(args.datafile);
+  open_case(args.outdir, args.deck, help.name);
   return args;
 }
 

@@ -3,6 +3,7 @@
 #include "core/datafile.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
@@ -16,11 +17,11 @@ int main(int argc, char** argv) {
                                        "from the MATERIAL cards, checked against the mesh.",
                             .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)"},
                             .writes = {"OUTDIR/case.mili (law and parameters per sub-domain)"},
-                            .cards = {"TITLE", "MATERIAL", "MEMORY"}};
+                            .cards = sig::stage_cards("material").cards};
   return sig::run_stage("sig-material", [&] {
     // 1. Command line and inputs.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
 
     // 2. One law per sub-domain, checked against the mesh.

@@ -3,6 +3,7 @@
 // variant (double-precision coordinates, so later stages see the exact generator nodes).
 #include "core/datafile.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "mesh/mesh_card.hpp"
 #include "mesh/nopo.hpp"
 
@@ -42,12 +43,13 @@ int main(int argc, char** argv) {
       .reads = {"DATAFILE, and the mesh file its MESH card names (file=, relative to the "
                 "datafile's folder)"},
       .writes = {"OUTDIR/case.nopo (NOPO mesh: nodes, triangles, sub-domains, references of "
-                 "vertices and edges)"},
-      .cards = {"TITLE", "MESH"}};
+                 "vertices and edges)",
+                 "OUTDIR/case.nopo.prov (what case.nopo was made from: the MESH card's values)"},
+      .cards = sig::stage_cards("mesh").cards};
   return sig::run_stage("sig-mesh", [&] {
     // 1. Command line and datafile.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
 
     // 2. Mesh from the MESH card (generator or file), relative paths from the datafile folder.
     const sig::Card& card = datafile.require("MESH");

@@ -116,7 +116,7 @@ std::string read_bytes(const std::filesystem::path& path) {
 
 NopoFile read_nopo_file(const std::filesystem::path& path) {
   NopoFile result = parse_nopo_file(path.string(), read_bytes(path));
-  note_case_input("NOPO", path, result.fingerprint, {}); // a stage's case.nopo: an input
+  note_case_file("NOPO", path, result.fingerprint); // a stage's case.nopo: an input
   return result;
 }
 

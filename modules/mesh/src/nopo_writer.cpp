@@ -1,5 +1,6 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/provenance.hpp"
 #include "core/stage.hpp"
 #include "fortran_records.hpp"
 #include "mesh/nopo.hpp"
@@ -171,7 +172,12 @@ void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant
   NopoWriteOptions options;
   options.text = {title, ds_date(), creator};
   options.stamp_fingerprint = true;
-  write_nopo(path, mesh, variant, options);
+  const std::string file = encode_nopo(mesh, variant, options);
+  write_file_atomically(path, file);
+  // Written after the mesh: a stage killed between the two leaves a record of another mesh,
+  // which the next stage refuses.
+  write_provenance_beside(
+      path, "NOPO", nopo_fingerprint(split_fortran_records(file, "NOPO writer")), title, creator);
 }
 
 } // namespace sig

@@ -2,17 +2,20 @@
 // structures; --json gives stable keys for scripts, --values adds the arrays' values to it (the
 // one way the report scripts read a DS: postproc/sigreport/ds.py). --cards prints the card
 // schema, --cards-markdown the same as the Markdown card reference (datafiles/CARDS.md), --chain
-// the stages a datafile's chain runs (drivers/chain.sh).
+// the stages a datafile's chain runs and --stale those of them whose files in a case folder are
+// not up to date for the datafile (drivers/chain.sh).
 //
 //   sig-dump [--json [--values | --values=NAME,NAME...]] FILE
 //   sig-dump --cards [CARD...]
 //   sig-dump --cards-markdown
 //   sig-dump --chain DATAFILE
+//   sig-dump --stale DATAFILE OUTDIR
 #include "core/card_help.hpp"
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/stage.hpp"
+#include "core/stale.hpp"
 #include "mesh/nopo.hpp"
 #include "post/dump.hpp"
 
@@ -32,7 +35,7 @@ int main(int argc, char** argv) {
       .writes = {"standard output"},
       .cards = {},
       .usage = "[--json [--values | --values=NAME,NAME...]] FILE | --cards [CARD...] | "
-               "--cards-markdown | --chain DATAFILE",
+               "--cards-markdown | --chain DATAFILE | --stale DATAFILE OUTDIR",
       .options = {{"--json", "stable keys for scripts (JSON) instead of text"},
                   {"--values", "with --json: the values of every array too (one line)"},
                   {"--values=A,B", "with --json: the values of the arrays named"},
@@ -41,12 +44,16 @@ int main(int argc, char** argv) {
                   {"--cards-markdown", "every card, field, default and range as the Markdown card "
                                        "reference (datafiles/CARDS.md)"},
                   {"--chain", "the stages the datafile's chain runs, one per line, as the "
-                              "stages read the deck (drivers/chain.sh)"}}};
+                              "stages read the deck (drivers/chain.sh)"},
+                  {"--stale", "the stages of the datafile's chain to rerun for the case in "
+                              "OUTDIR, one per line as 'STAGE: why' (a file missing, made "
+                              "from other card values or other inputs; drivers/chain.sh runs "
+                              "these only); nothing when the case is up to date"}}};
   return sig::run_stage("sig-dump", [&] {
     // 1. Command line.
     sig::handle_help_and_version(argc, argv, help);
     const std::string usage = "usage: sig-dump " + help.usage;
-    bool json = false, cards = false, cards_markdown = false, chain = false;
+    bool json = false, cards = false, cards_markdown = false, chain = false, stale = false;
     bool values_given = false;
     sig::DumpValues values;
     std::vector<std::string> names;
@@ -60,6 +67,8 @@ int main(int argc, char** argv) {
         cards_markdown = true;
       } else if (arg == "--chain") {
         chain = true;
+      } else if (arg == "--stale") {
+        stale = true;
       } else if (arg == "--values") {
         values_given = values.all = true;
       } else if (arg.starts_with("--values=")) {
@@ -76,12 +85,12 @@ int main(int argc, char** argv) {
 
     // 2. The card schema: all cards, or the named ones; or all as Markdown.
     if (cards_markdown) {
-      SIG_VERIFY(!cards && !json && !values_given && !chain && names.empty(), usage);
+      SIG_VERIFY(!cards && !json && !values_given && !chain && !stale && names.empty(), usage);
       std::cout << sig::card_reference_markdown();
       return;
     }
     if (cards) {
-      SIG_VERIFY(!json && !values_given && !chain, usage);
+      SIG_VERIFY(!json && !values_given && !chain && !stale, usage);
       if (names.empty())
         std::cout << "Cards of the datafiles (sig-dump --cards CARD):\n" << sig::card_index();
       for (const std::string& name : names) {
@@ -90,6 +99,16 @@ int main(int argc, char** argv) {
                                                << sig::card_index());
         std::cout << sig::card_help(*spec);
       }
+      return;
+    }
+    if (stale) {
+      SIG_VERIFY(!json && !values_given && !chain && names.size() == 2, usage);
+      const auto nopo_fingerprint = [](const std::filesystem::path& path) {
+        return sig::read_nopo_file(path).fingerprint;
+      };
+      for (const sig::StaleStage& s :
+           sig::stale_stages(sig::Datafile::read(names[0]), names[1], nopo_fingerprint))
+        std::cout << s.stage << ": " << s.why << "\n";
       return;
     }
     SIG_VERIFY(names.size() == 1, usage);

@@ -19,6 +19,7 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "material/mili.hpp"
 #include "mesh/nopo.hpp"
 #include "post/contact_table.hpp"
@@ -55,6 +56,22 @@ sig::Json hertz_comparison(const sig::Card& compare, const sig::MaterialTable& m
   return sig::hertz_json(data, sig::hertz_pressure_error(data, samples));
 }
 
+// Prints the files sig-post wrote, then records them in case.post with what they were made from
+// (core/provenance.hpp): the inputs and cards that drivers/chain.sh compares with the deck to know
+// whether the outputs are up to date. Written last: a sig-post stopped before the end leaves the
+// record of its previous run, which matches the case only if that run had the same inputs.
+void record_outputs(const sig::StageArgs& args, const sig::Datafile& datafile,
+                    const std::vector<std::filesystem::path>& written) {
+  std::string names;
+  for (const auto& file : written) {
+    std::cout << file.string() << "\n";
+    names += file.filename().string() + "\n";
+  }
+  sig::Ds record("POST", datafile.title(), "sig-post");
+  record.put_text("files", names);
+  sig::write_ds(args.ds_path("post"), record);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -69,12 +86,14 @@ int main(int argc, char** argv) {
                  "step or kept time step)",
                  "OUTDIR/summary.json (method, convergence, sizes, histories, times, energies, "
                  "Hertz comparison)",
-                 "OUTDIR/contact.csv (one row per contact node; contact cases)"},
-      .cards = {"TITLE", "OUTPUT", "TIME", "CONTACT", "COMPARE"}};
+                 "OUTDIR/contact.csv (one row per contact node; contact cases)",
+                 "OUTDIR/case.post (the files above and what they were made from: the inputs "
+                 "and the deck's cards, for drivers/chain.sh)"},
+      .cards = sig::stage_cards("post").cards};
   return sig::run_stage("sig-post", [&] {
     // 1. Command line, datafile and the OUTPUT card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
     const sig::Card* output = datafile.find("OUTPUT");
     const bool write_vtk = output == nullptr || output->choice("vtk", {"yes", "no"}) == "yes";
 
@@ -83,6 +102,7 @@ int main(int argc, char** argv) {
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
     const std::string stem = output ? output->file_name("name", datafile.stem()) : datafile.stem();
+    std::vector<std::filesystem::path> written;
     if (datafile.find("TIME") != nullptr) {
       const sig::Ds hist = sig::read_ds(args.ds_path("hist"), "HIST");
       sig::verify_history_ds(hist, mesh);
@@ -90,7 +110,8 @@ int main(int argc, char** argv) {
         for (const auto& file :
              sig::write_history_vtk(args.outdir, stem, mesh, materials, hist,
                                     {{"title", datafile.title()}, {"scheme", hist.text("scheme")}}))
-          std::cout << file.string() << "\n";
+          written.push_back(file);
+      record_outputs(args, datafile, written);
       return;
     }
 
@@ -115,7 +136,7 @@ int main(int argc, char** argv) {
       const sig::VtkText data{{"title", datafile.title()}, {"method", solution.text("method")}};
       for (const auto& file : sig::write_load_step_vtk(args.outdir, stem, mesh, materials, solution,
                                                        contact_case ? &cont : nullptr, data))
-        std::cout << file.string() << "\n";
+        written.push_back(file);
     } else if (write_vtk) {
       const sig::SolutionFields fields = sig::solution_fields(mesh, u, materials, contact);
       const std::string vtu = stem + "_0000.vtu";
@@ -128,8 +149,8 @@ int main(int argc, char** argv) {
             converged ? "converged" : "NOT converged (Nv): " + solution.text("failure")}},
           {{"converged", converged ? 1.0 : 0.0}});
       sig::write_pvd(args.outdir / (stem + ".pvd"), {{0.0, vtu}});
-      std::cout << (args.outdir / (stem + ".pvd")).string() << "\n"
-                << (args.outdir / vtu).string() << "\n";
+      written.push_back(args.outdir / (stem + ".pvd"));
+      written.push_back(args.outdir / vtu);
     }
 
     // 6. summary.json with the times of every stage that recorded some.
@@ -158,16 +179,17 @@ int main(int argc, char** argv) {
       summary.set("hertz", hertz_comparison(*compare, materials, contact));
     const auto summary_path = args.outdir / "summary.json";
     sig::write_file_atomically(summary_path, summary.dump() + "\n");
-    std::cout << summary_path.string() << "\n";
+    written.push_back(summary_path);
 
     // 7. contact.csv; a stale one from an earlier contact variant would mislead, so remove it.
     const auto csv_path = args.outdir / "contact.csv";
     if (contact_case) {
       sig::write_file_atomically(csv_path,
                                  sig::contact_csv(contact, solution.integer("converged") != 0));
-      std::cout << csv_path.string() << "\n";
+      written.push_back(csv_path);
     } else {
       std::filesystem::remove(csv_path);
     }
+    record_outputs(args, datafile, written);
   });
 }

@@ -24,6 +24,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
@@ -62,7 +63,7 @@ int main(int argc, char** argv) {
       .reads = {"DATAFILE", "OUTDIR/case.nopo, case.mili, case.tae, case.cont (as sig-solve)"},
       .writes = {"OUTDIR/bench.json (solve seconds of each run and their median, floor, analysis, "
                  "assembly, iterations, reactions)"},
-      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION"},
+      .cards = sig::stage_cards("bench-finite-strain").cards,
       .usage = "DATAFILE [-o OUTDIR] [--repeat K] [--time-limit SECONDS]",
       .options = {{"--repeat K", "timed runs of the solve (default 3); the floor gets two "
                                  "factorizations + solves after each"}}};
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
     // 1. Arguments: --repeat K, the rest as every stage.
     const sig::BenchArgs args = sig::parse_bench_args(argc, argv, help);
     const int repeat = args.repeat;
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
 
     // 2. The SOLVER and LOADSTEPS cards, as sig-solve reads them.
     const sig::SolverCard card = sig::read_solver_card(datafile);

@@ -18,6 +18,7 @@
 #include "core/json.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "integrator/kelvin_voigt_scheme.hpp"
 #include "integrator/linear_contact_march.hpp"
 #include "integrator/time_scheme.hpp"
@@ -41,14 +42,13 @@ int main(int argc, char** argv) {
       .reads = {"DATAFILE", "OUTDIR/case.nopo, case.mili, case.tae, case.cont (as sig-march)"},
       .writes = {"OUTDIR/bench.json (setup and march seconds per run, medians per step and of "
                  "its parts, the floor, the ratio, the factorization and iteration counts)"},
-      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "CONVEXIFICATION",
-                "LOADSTEPS", "MATERIAL"},
+      .cards = sig::stage_cards("bench-quasistatic").cards,
       .usage = "DATAFILE [-o OUTDIR] [--repeat K] [--time-limit SECONDS]",
       .options = {{"--repeat K", "timed marches (default 3)"}}};
   return sig::run_stage("bench-quasistatic", [&] {
     const sig::BenchArgs args = sig::parse_bench_args(argc, argv, help);
     const int repeat = args.repeat;
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
     const sig::TimeParameters time = sig::time_parameters(datafile.require("TIME"), true);
     SIG_VERIFY(sig::time_scheme_traits(time.scheme).march == sig::MarchKind::quasistatic,
                args.datafile.string() << ": the deck's TIME card is not scheme=quasistatic");

@@ -30,12 +30,14 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "integrator/contact_strategy.hpp"
 #include "integrator/elastodynamic_march.hpp"
 #include "integrator/time_scheme.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
+#include "solver/solver_card.hpp"
 #include "stages/contact_card.hpp"
 #include "stages/dynamic_stage.hpp"
 #include "stages/finite_strain_march.hpp"
@@ -46,7 +48,6 @@
 #include "stages/march_tables.hpp"
 #include "stages/quasistatic_stage.hpp"
 #include "stages/time_card.hpp"
-#include "solver/solver_card.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -87,13 +88,12 @@ int main(int argc, char** argv) {
            "OUTDIR/steps.csv (quasistatic, backward-euler: one row per step: Newton iterations, "
            "status counts, largest velocity, normal displacement and pressure; "
            "backward-euler: the energies and the convexification counts)"},
-      .cards = {"TITLE", "TIME", "INITIAL", "CONTACT", "FRICTION", "SOLVER", "CONVEXIFICATION",
-                "LOADSTEPS", "MATERIAL", "MEMORY"}};
+      .cards = sig::stage_cards("march").cards};
   return sig::run_stage("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
     sig::refuse_load_steps(datafile, "a march's loads follow the time of the TIME card");
     const sig::Card* contact = datafile.find("CONTACT");
     const sig::TimeParameters time =

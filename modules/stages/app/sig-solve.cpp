@@ -22,6 +22,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/stage.hpp"
+#include "core/stage_cards.hpp"
 #include "material/mili.hpp"
 #include "mesh/nopo.hpp"
 #include "solver/solver_card.hpp"
@@ -44,12 +45,11 @@ int main(int argc, char** argv) {
                 "convexification loop)"},
       .writes = {"OUTDIR/case.b (displacement, multipliers, statuses, iteration history, phase "
                  "times; per load step in large deformation)"},
-      .cards = {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION", "INITIAL",
-                "TRACTION", "PRESSURE", "BODYFORCE"}};
+      .cards = sig::stage_cards("solve").cards};
   return sig::run_stage("solve", [&] {
     // 1. Arguments and the SOLVER card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
-    const sig::Datafile datafile = sig::Datafile::read(args.datafile);
+    const sig::Datafile& datafile = args.deck;
     const sig::Card* contact_card = datafile.find("CONTACT");
     const bool has_contact = contact_card != nullptr;
     // strategy= and r= of CONTACT belong to time marching (sig-march); a static deck has none.

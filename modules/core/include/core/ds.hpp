@@ -11,9 +11,11 @@
 //    (none today) is put with Finite::not_required and read with reals_any.
 //  - Provenance: inside a stage (core/provenance.hpp) every DS of the case that read_ds reads,
 //    and the mesh, is an input with a fingerprint; write_ds records them all in the DS it writes
-//    (Text array "provenance", one line "KIND FINGERPRINT FILE" each, transitively), and read_ds
-//    refuses a DS whose recorded inputs are not the files this stage reads (another case's
-//    case.mili, a foreign case.nopo), naming both files.
+//    (Text array "provenance", one line "KIND FINGERPRINT FILE" each, transitively), with the
+//    deck's cards the DS depends on (one line "CARD KEYWORD FINGERPRINT VALUES" each), and
+//    read_ds refuses a DS whose recorded inputs are not the files this stage reads (another
+//    case's case.mili, a foreign case.nopo), naming both files, or whose recorded cards are not
+//    the deck's (a stale DS), naming the card and the stage to rerun.
 //  - Value ranges: readers check what a DS array means with the ranges of the card schema
 //    (core/ranges.hpp), the same ranges the datafile reader enforces.
 //
@@ -110,6 +112,10 @@ void write_ds(const std::filesystem::path& path, const Ds& ds);
 /// header type must match. Errors name the file and the array. Inside a stage, a DS of the case
 /// is also checked against the other inputs of the stage (core/provenance.hpp).
 Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind = "");
+
+/// read_ds without registering the DS as an input of the case: a record kept beside another file
+/// (core/provenance.hpp), a case's files looked at from outside (core/stale.hpp).
+Ds read_ds_record(const std::filesystem::path& path, const std::string& expected_kind = "");
 
 /// The same checks on the bytes of a file called `name` (tests, fuzzing); registers no input.
 Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind = "");

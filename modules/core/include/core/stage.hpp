@@ -2,6 +2,8 @@
 // What every stage main shares: the command line `sig-<stage> DATAFILE [-o OUTDIR]` with --help
 // and --version, the output folder (default out/<datafile stem>/), the DS paths in it, and the
 // catch-all that turns any exception into a message and a non-zero exit.
+#include "core/datafile.hpp"
+
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -41,6 +43,7 @@ void handle_help_and_version(int argc, char** argv, const StageHelp& help);
 struct StageArgs {
   std::filesystem::path datafile;
   std::filesystem::path outdir;
+  Datafile deck; ///< the datafile, read (parse_stage_args)
   /// Path of a DS of this case in outdir: ds_path("nopo") -> OUTDIR/case.nopo
   std::filesystem::path ds_path(const std::string& extension) const;
 };
@@ -50,9 +53,10 @@ double parse_time_limit(const std::string& text);
 
 /// Parse `DATAFILE [-o OUTDIR] [--time-limit SECONDS]` (after handle_help_and_version) and start
 /// the time limit (core/stage_guard.hpp); creates OUTDIR, removes the
-/// temporaries killed stages left in it (remove_stale_temporaries) and opens the case: the DS
-/// files in OUTDIR the stage reads are checked to belong together (core/provenance.hpp). Throws
-/// sig::Error with the usage line.
+/// temporaries killed stages left in it (remove_stale_temporaries), reads the datafile and opens
+/// the case: the DS files in OUTDIR the stage reads are checked to belong together and to the
+/// deck, and the ones it writes record the cards it reads (help.name in core/stage_cards.hpp;
+/// core/provenance.hpp). Throws sig::Error with the usage line, or the datafile's errors.
 StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help);
 
 /// Run `body`, printing "stage: error: ..." and returning 1 on any exception, 0 otherwise
@@ -61,8 +65,6 @@ StageArgs parse_stage_args(int argc, char** argv, const StageHelp& help);
 /// SIG_CARD_TRACE=FILE in the environment (the test suite) it appends "STAGE KEYWORD" to FILE for
 /// every card the stage looked up.
 int run_stage(const std::string& stage, const std::function<void()>& body);
-
-class Datafile;
 
 /// The stages a datafile's chain runs, in order, as the stages' own parser reads the deck
 /// (drivers/chain.sh asks `sig-dump --chain`, so that a deck with CR line ends or a lower-case

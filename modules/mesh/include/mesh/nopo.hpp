@@ -19,8 +19,10 @@
 // with the fingerprint in NOP0's creator field ("sig-mesh" + 16 hex digits, the layout
 // unchanged, so other MODULEF readers still read it); the reader recomputes it and refuses a file
 // that no longer matches (a node moved, bytes damaged). Inside a stage the reader registers the
-// mesh as an input of the case (core/provenance.hpp): every DS built from it records its
-// fingerprint, and a DS of another mesh is refused.
+// mesh as an input of the case (core/provenance.hpp) with the provenance sig-mesh wrote beside it
+// (case.nopo.prov: the MESH card it was made from; the NOPO layout has no room for it): every DS
+// built from it records its fingerprint and its MESH card, a DS of another mesh is refused, and
+// so is a case.nopo made from another MESH card than the deck's.
 #include "mesh/mesh.hpp"
 
 #include <array>
@@ -80,7 +82,9 @@ struct NopoWriteOptions {
 std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOptions& options);
 
 /// Write `mesh` atomically (temporary file + rename) with today's date and its fingerprint after
-/// `creator` (its first 8 characters): the case.nopo of a stage.
+/// `creator` (its first 8 characters): the case.nopo of a stage. Inside a stage, its provenance
+/// (the cards of the stage and what its inputs record) goes beside it to PATH.prov
+/// (core/provenance.hpp).
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
                 const std::string& title, const std::string& creator);
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
