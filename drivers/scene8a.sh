@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# drivers/scene8a.sh [--quick] [--study] [-o OUTDIR]: the elastic ball impact of thesis ch. 8.5 (scene 8a,
-# ../shared/SCENES.md, datafiles/scene8a/ball.dat) with every contact strategy of issue 5, then
-# its report (postproc/scene8a_report.py: Figs 8.3-8.5, tables, speed and stability charts).
+# drivers/scene8a.sh [--quick] [--study] [-o OUTDIR]: the elastic ball impact of thesis ch. 8.5
+# (scene 8a, ../shared/SCENES.md, datafiles/scene8a/ball.dat) with every contact strategy of
+# issue 5, then its report (postproc/scene8a_report.py: Figs 8.3-8.5, tables, speed and stability
+# charts, the closed form of a bar, the readings of the thesis's data and the study of issue 30).
 #
 # Two meshes of the ball, both with the thesis's 128 contact nodes on the whole circle
 # (meshes/ball.geo): "deck" = datafiles/scene8a/ball.msh (2428 nodes), "thesis" = the thesis's
@@ -309,7 +310,8 @@ if [ $study -eq 1 ]; then
   for mesh in "${study_meshes[@]}"; do
     for k in "${study_k[@]}"; do
       for method in "${study_methods[@]}"; do
-        post=no run "$out/study/$mesh/${method}_k$k" "$mesh" "$window_plane" "$method" "$study_T" "$k"
+        post=no run "$out/study/$mesh/${method}_k$k" "$mesh" "$window_plane" "$method" \
+          "$study_T" "$k"
       done
     done
   done

@@ -9,8 +9,8 @@ sweep/<method>_k<k>, readings/<reading>, study/<mesh>/<method>_k<k>) holding bal
 deck), method.txt, energy.csv and case.hist (sig-march), march.log and wall.txt (the stage's
 wall-clock seconds), and bar/<run> (bar.dat, energy.csv: the closed-form check). Writes
 OUTDIR/report.md, OUTDIR/methods.csv, OUTDIR/sweep.csv, OUTDIR/study.csv, OUTDIR/scene.json (the
-scene index entry) and the PNGs the report shows. The thesis's values come from the 8a rows of postproc/thesis_values.csv. Every number in
-the report is read from those files or computed from them here (with the report library
+scene index entry) and the PNGs the report shows. The thesis's values come from the 8a rows of
+postproc/thesis_values.csv. Every number in the report is read from those files or computed from them here (with the report library
 postproc/sigreport: decks, case.hist through sig-dump, thesis values, checks, charts).
 """
 import argparse
@@ -561,8 +561,8 @@ class Found:
 
 def percent(share):
     """A share in whole percent, without a negative zero."""
-    return f"{100 * share:.0f}".replace("-0", "0") if abs(100 * share) < 0.5 else \
-        f"{100 * share:.0f}"
+    text = f"{100 * share:.0f}"
+    return "0" if text == "-0" else text
 
 
 def close_to(change, loss):

@@ -18,9 +18,9 @@ import csv
 import math
 from pathlib import Path
 
-from sigreport import (Checks, Deck, MapCell, MapPanel, Mesh, Series, Table, energy_chart, load_thesis,
-                       main_guard, markdown_table, pyplot, read_command, read_ds, save_figure,
-                       speed_accuracy_chart, stability_map, write_report)
+from sigreport import (Checks, Deck, MapCell, MapPanel, Mesh, Series, Table, energy_chart,
+                       load_thesis, main_guard, markdown_table, pyplot, read_command, read_ds,
+                       save_figure, speed_accuracy_chart, stability_map, write_report)
 from sigreport import fmt_spec as fmt
 from sigreport.impact import (energy_curves, energy_measures, hist_scalars, impact_window,
                               read_energy_rows, speed_point, stability_status, wall_seconds)

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The index of all scenes: OUTDIR/index.md and OUTDIR/index.html, one page listing each scene's
 checks (PASS, FAIL, erratum: a thesis claim an independent reference contradicts, counted apart
-from the FAILs and no FAIL of the scene), its key table "ours (thesis)", its charts and links to its report and ParaView
-files, from the entries OUTDIR/<folder>/scene.json that the scene reports write (postproc/sigreport/scene.py).
+from the FAILs and no FAIL of the scene), its key table "ours (thesis)", its charts and links to
+its report and ParaView files, from the entries OUTDIR/<folder>/scene.json that the scene reports
+write (postproc/sigreport/scene.py).
 
     scene_index.py OUTDIR [--runs FILE]
 
@@ -177,7 +178,8 @@ def summary_text(scenes):
     errata = sum(s.counts()[2] for s in scenes)
     return (f"{ok} of {len(scenes)} scenes pass all their checks"
             + (f" ({errata} {'erratum' if errata == 1 else 'errata'} of the thesis: claims an "
-               "independent reference contradicts, counted apart from the FAILs)" if errata else ""))
+               "independent reference contradicts, counted apart from the FAILs)"
+               if errata else ""))
 
 
 def markdown(out, scenes, stamp):
