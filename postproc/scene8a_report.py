@@ -10,8 +10,9 @@ deck), method.txt, energy.csv and case.hist (sig-march), march.log and wall.txt 
 wall-clock seconds), and bar/<run> (bar.dat, energy.csv: the closed-form check). Writes
 OUTDIR/report.md, OUTDIR/methods.csv, OUTDIR/sweep.csv, OUTDIR/study.csv, OUTDIR/scene.json (the
 scene index entry) and the PNGs the report shows. The thesis's values come from the 8a rows of
-postproc/thesis_values.csv. Every number in the report is read from those files or computed from them here (with the report library
-postproc/sigreport: decks, case.hist through sig-dump, thesis values, checks, charts).
+postproc/thesis_values.csv. Every number in the report is read from those files or computed
+from them here (with the report library postproc/sigreport: decks, case.hist through sig-dump,
+thesis values, checks, charts).
 """
 import argparse
 import math
