@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """The index of all scenes: OUTDIR/index.md and OUTDIR/index.html, one page listing each scene's
-checks (PASS/FAIL), its key table "ours (thesis)", its charts and links to its report, its ParaView
-files and its notes (datafiles/<scene>/README.md of the source tree), from the entries OUTDIR/<folder>/scene.json that the scene reports write (postproc/sigreport/scene.py).
+checks (PASS, FAIL, erratum: a thesis claim an independent reference contradicts, counted apart
+from the FAILs and no FAIL of the scene), its key table "ours (thesis)", its charts and links to
+its report, its ParaView files and its notes (datafiles/<scene>/README.md of the source tree),
+from the entries OUTDIR/<folder>/scene.json that the scene reports write
+(postproc/sigreport/scene.py).
 
     scene_index.py OUTDIR [--runs FILE]
 
@@ -54,20 +57,25 @@ class Scene:
         return (self.entry or {}).get("checks") or []
 
     def counts(self):
+        """(passed, failed, errata, not run): an erratum is a failed claim with its reference,
+        counted apart."""
         passed = sum(c.get("pass") is True for c in self.checks)
-        failed = sum(c.get("pass") is False for c in self.checks)
-        return passed, failed, len(self.checks) - passed - failed
+        errata = sum(is_erratum(c) for c in self.checks)
+        failed = sum(c.get("pass") is False for c in self.checks) - errata
+        return passed, failed, errata, len(self.checks) - passed - failed - errata
 
     @property
     def ok(self):
-        passed, failed, _ = self.counts()
-        return not self.problems and failed == 0 and passed > 0
+        passed, failed, errata, _ = self.counts()
+        return not self.problems and failed == 0 and passed + errata > 0
 
     def verdict(self):
-        passed, failed, not_run = self.counts()
+        passed, failed, errata, not_run = self.counts()
         if self.entry is None:
             return "FAIL: " + "; ".join(self.problems)
         text = f"{passed}/{len(self.checks)} checks pass"
+        if errata:
+            text += f", {errata} erratum"
         if failed:
             text += f", {failed} FAIL"
         if not_run:
@@ -143,8 +151,29 @@ def load(out, scene):
         entry["checks"] = []
 
 
+def is_erratum(check):
+    return check.get("pass") is False and bool(check.get("erratum"))
+
+
 def check_text(check):
+    if is_erratum(check):
+        return "erratum"
     return {True: "PASS", False: "FAIL"}.get(check.get("pass"), "not run")
+
+
+def check_class(check):
+    """The HTML class of a check's result."""
+    return {"PASS": "pass", "FAIL": "fail", "erratum": "erratum"}.get(check_text(check), "notrun")
+
+
+def check_detail(check):
+    """The detail, with the erratum's reference or the FAIL's study after it."""
+    detail = check.get("detail", "")
+    if is_erratum(check):
+        return f"{detail}; reference: {check['erratum']}"
+    if check.get("study"):
+        return f"{detail}; study: {check['study']}"
+    return detail
 
 
 def revision():
@@ -155,10 +184,19 @@ def revision():
         return "unknown"
 
 
-def markdown(out, scenes, stamp):
+def summary_text(scenes):
+    """"5 of 8 scenes pass all their checks", and the errata apart when there are some."""
     ok = sum(s.ok for s in scenes)
+    errata = sum(s.counts()[2] for s in scenes)
+    return (f"{ok} of {len(scenes)} scenes pass all their checks"
+            + (f" ({errata} {'erratum' if errata == 1 else 'errata'} of the thesis: claims an "
+               "independent reference contradicts, counted apart from the FAILs)"
+               if errata else ""))
+
+
+def markdown(out, scenes, stamp):
     lines = ["# Signorini: the scenes", "",
-             f"{stamp}. {ok} of {len(scenes)} scenes pass all their checks.", "",
+             f"{stamp}. {summary_text(scenes)}.", "",
              markdown_table(["scene", "title", "result", "time", "report"],
                             [[s.name, s.title, s.verdict(), s.seconds(),
                               f"[report]({s.link(s.report(out))})" if s.report(out) else "—"]
@@ -178,7 +216,7 @@ def markdown(out, scenes, stamp):
             continue
         if s.checks:
             lines += [markdown_table(["check", "result", "detail"],
-                                     [[c.get("name", ""), check_text(c), c.get("detail", "")]
+                                     [[c.get("name", ""), check_text(c), check_detail(c)]
                                       for c in s.checks]), ""]
         table = s.entry.get("key_table")
         if isinstance(table, dict) and table.get("header"):
@@ -201,6 +239,7 @@ th { background: #eee; }
 .pass { color: #060; font-weight: bold; }
 .fail { color: #b00; font-weight: bold; }
 .notrun { color: #666; }
+.erratum { color: #a60; font-weight: bold; }
 .charts { display: flex; flex-wrap: wrap; gap: 1em; }
 figure { margin: 0; flex: 1 1 30em; max-width: 100%; }
 figcaption { font-weight: bold; margin-bottom: 0.3em; }
@@ -228,9 +267,8 @@ def anchor(scene):
 
 
 def page(out, scenes, stamp):
-    ok = sum(s.ok for s in scenes)
     body = ["<h1>Signorini: the scenes</h1>",
-            f"<p>{html.escape(stamp)}. {ok} of {len(scenes)} scenes pass all their checks.</p>",
+            f"<p>{html.escape(stamp)}. {html.escape(summary_text(scenes))}.</p>",
             html_table(["scene", "title", "result", "time", "report"],
                        [[f'<a href="#{anchor(s)}">{html.escape(s.name)}</a>', s.title,
                          verdict_html(s), s.seconds(),
@@ -255,9 +293,8 @@ def page(out, scenes, stamp):
                         f"</summary>")
             body.append(html_table(
                 ["check", "result", "detail"],
-                [[c.get("name", ""),
-                  f'<span class="{ {True: "pass", False: "fail"}.get(c.get("pass"), "notrun")}">'
-                  f"{check_text(c)}</span>", c.get("detail", "")] for c in s.checks],
+                [[c.get("name", ""), f'<span class="{check_class(c)}">{check_text(c)}</span>',
+                  check_detail(c)] for c in s.checks],
                 raw_columns=(1,)))
             body.append("</details>")
         table = s.entry.get("key_table")

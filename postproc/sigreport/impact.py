@@ -10,6 +10,8 @@ of it, and the status of a run in their stability maps.
     energy_curves(runs, label_of, marker_of)      # the curves of charts.energy_chart
     speed_point(run, "k=1e-2")               # wall time per simulated second, |dE| / E0 (%)
     stability_status(run, gain=0.1, loss=1.0)     # "Nv", "ok" or "gain", "dissipates", ...
+    bar = Bar.of_deck(Deck.read("bar.dat"))   # the closed form of a bar striking a wall
+    bar.measures(rows)                        # its run against it: energy, contact time, impulse
 """
 import csv
 import math
@@ -112,3 +114,47 @@ def stability_status(run, gain, loss, chatter=False):
     if chatter:
         flags.append("chatter")
     return "+".join(flags) or "ok"
+
+
+class Bar:
+    """The closed form of a bar of length L, density rho, modulus E (nu = 0: E' = E in plane
+    stress and strain), cross-section `width` (per metre of thickness), thrown at speed v along
+    its axis onto a rigid wall: contact lasts 2 L / c (c = sqrt(E / rho)), the wall's impulse is
+    2 m v (m = rho L width), the bar leaves at +v with all its energy 1/2 m v^2."""
+
+    def __init__(self, length, width, rho, E, v):
+        self.length, self.width, self.rho, self.E, self.v = length, width, rho, E, v
+        self.c = math.sqrt(E / rho)
+        self.mass = rho * length * width
+        self.contact_time = 2 * length / self.c
+        self.impulse = 2 * self.mass * v
+        self.energy = 0.5 * self.mass * v * v
+
+    @classmethod
+    def of_deck(cls, deck):
+        """The bar of a deck (MESH generator=rectangle along x2, lx the width, ly the length;
+        MATERIAL E, rho; INITIAL v along x2)."""
+        return cls(deck.number("MESH", "ly"), deck.number("MESH", "lx"),
+                   deck.number("MATERIAL", "rho"), deck.number("MATERIAL", "E"),
+                   math.hypot(*deck.numbers("INITIAL", "v")))
+
+    def measures(self, rows):
+        """A run (energy.csv rows) against the closed form: energy change (relative), contact
+        steps (steps with an active node) and their time against 2 L / c (in steps), the wall's
+        impulse k sum N (each step's momentum balance M (v_n - v_{n-1}) = k (N_n - K u_{n-1/2}),
+        1^T K = 0) over 2 m v."""
+        k = rows[1]["time"] - rows[0]["time"]
+        active = [r for r in rows if r["active_nodes"] > 0]
+        return {
+            "k": k,
+            "energy_change": (rows[-1]["total"] - rows[0]["total"]) / rows[0]["total"],
+            "energy_excursion": max(abs(r["total"] - rows[0]["total"]) for r in rows)
+            / rows[0]["total"],
+            "contact_steps": len(active),
+            "closed_form_steps": self.contact_time / k,
+            "contact_time": len(active) * k,
+            "impulse_ratio": k * sum(r["normal_force"] for r in rows) / self.impulse,
+            "e0_ratio": rows[0]["total"] / self.energy,
+            "penetration": max(r["max_penetration"] for r in rows),
+            "left": rows[-1]["active_nodes"] == 0,
+        }

@@ -4,14 +4,17 @@ time of a run, and the scene index entry out/<scene>/scene.json that every scene
 
     {"scene": "7a", "title": "...", "report": "report.md", "command": "drivers/scene7a.sh --quick",
      "seconds": 12.3,
-     "checks": [{"name": "...", "pass": true, "detail": "..."}],
+     "checks": [{"name": "...", "pass": true, "detail": "..."},
+                {"name": "...", "pass": false, "detail": "...", "erratum": "<reference>: <number>"},
+                {"name": "...", "pass": false, "detail": "...", "study": "..."}],
      "key_table": {"caption": "...", "header": ["...", ...], "rows": [["ours (thesis)", ...], ...]},
      "charts": {"speed_accuracy": "speed_accuracy.png", "stability": "stability.png", ...},
      "pvd": ["N256/pdas_1e2/hertz.pvd", ...]}
 
 Paths are relative to out/<scene>/. `seconds` is the driver's wall time for its runs (the
 `seconds:` line scene drivers append to command.txt; null when absent); `pass` is null for a check
-that was not run.
+that was not run; a failed thesis claim carries its "erratum" (an independent reference contradicts
+the thesis: the index counts it apart from the FAILs) or its "study" (sigreport.checks).
 
     info = read_command(out, required=("command", "meshes"))   # {"command": ..., "seconds": "53"}
     summary = read_summary(run_dir)                             # summary.json of sig-post
@@ -119,6 +122,18 @@ def _seconds(value):
         raise ReportError(f"scene.json: seconds '{value}' is not a number") from None
 
 
+def valid_check(check):
+    """A check entry of scene.json: {name, pass, detail}, and for a failed claim either
+    "erratum" (the independent reference that contradicts the thesis, with its number) or
+    "study" (what was tried); sigreport.checks writes them."""
+    if not isinstance(check, dict) or not {"name", "pass", "detail"} <= set(check):
+        return False
+    extra = set(check) - {"name", "pass", "detail"}
+    if check["pass"] not in (True, False, None) or extra not in (set(), {"erratum"}, {"study"}):
+        return False
+    return not extra or (check["pass"] is False and bool(check[extra.pop()]))
+
+
 def write_scene_json(out, scene, title, command, checks=(), key_table=None, charts=None,
                      pvd=None, seconds=None, report="report.md"):
     """Write out/<scene>/scene.json (the module docstring's format) and return its path.
@@ -150,9 +165,9 @@ def write_scene_json(out, scene, title, command, checks=(), key_table=None, char
         "pvd": [str(p) for p in pvd],
     }
     for check in entry["checks"]:
-        if set(check) != {"name", "pass", "detail"} or check["pass"] not in (True, False, None):
+        if not valid_check(check):
             raise ReportError(f"scene.json: a check is {{name, pass: true|false|null, detail}}, "
-                              f"got {check}")
+                              f"with an erratum (pass false) or a study (pass false), got {check}")
     return write_text_atomically(out / "scene.json",
                                  json.dumps(entry, indent=1, ensure_ascii=False) + "\n")
 

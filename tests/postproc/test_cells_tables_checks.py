@@ -1,6 +1,8 @@
 """sigreport.cells, .table, .checks: the "ours (thesis)" cells, markdown tables, PASS/FAIL."""
 import math
 
+import pytest
+
 from sigreport import (Checks, Table, fmt, markdown_table, ours_thesis, pct, run_cell,
                        tolerance_text, within)
 
@@ -51,3 +53,42 @@ def test_checks_collected_once():
         {"name": "contact nodes", "pass": True, "detail": "ours 30, target 29, tolerance +-1"},
         {"name": "p_max", "pass": False, "detail": "ours 15.0, target 14.49, tolerance 2 %"},
         {"name": "slope", "pass": None, "detail": "fewer than two meshes"}]
+
+
+def test_erratum_is_an_outcome_apart():
+    """A thesis claim we do not reproduce and an independent reference contradicts is an
+    erratum, named with the reference and its number; without a reference it stays a FAIL, with
+    its study beside it."""
+    checks = Checks()
+    checks.add("free flight exact", True, ours="1e-13")
+    checks.add("two-step penetration 0.071 m", False, ours="0.0184 m",
+               erratum="closed form k v / 2 = 0.0167 m")
+    checks.add("IPM + EMM loses 0.1 %", False, ours="0.46 %",
+               study="no reading of k, r, g gives it")
+    assert (checks.passed, checks.failed, checks.errata, checks.not_run) == (1, 1, 1, 0)
+    assert checks.summary() == "1 PASS, 1 erratum, 1 FAIL" and not checks.ok
+    assert [c.result for c in checks] == ["PASS", "erratum", "FAIL"]
+    assert checks.table(("name", "result", "basis")).markdown().split("\n") == [
+        "| check | result | reference (erratum) or study (FAIL) |", "|---|---|---|",
+        "| free flight exact | PASS | — |",
+        "| two-step penetration 0.071 m | erratum | reference: closed form k v / 2 = 0.0167 m |",
+        "| IPM + EMM loses 0.1 % | FAIL | study: no reading of k, r, g gives it |"]
+    assert checks.as_json()[1:] == [
+        {"name": "two-step penetration 0.071 m", "pass": False, "detail": "ours 0.0184 m",
+         "erratum": "closed form k v / 2 = 0.0167 m"},
+        {"name": "IPM + EMM loses 0.1 %", "pass": False, "detail": "ours 0.46 %",
+         "study": "no reading of k, r, g gives it"}]
+    # Errata and passes settle a scene; a FAIL does not.
+    settled = Checks()
+    settled.add("a", True)
+    settled.add("b", False, erratum="GetFEM: 1.23")
+    assert settled.ok and settled.summary() == "1 PASS, 1 erratum, 0 FAIL"
+
+
+def test_erratum_needs_a_failed_claim():
+    with pytest.raises(ValueError, match="needs a failed claim"):
+        Checks().add("passes", True, erratum="closed form: 2")
+    with pytest.raises(ValueError, match="needs a failed claim"):
+        Checks().add("not run", None, erratum="closed form: 2")
+    with pytest.raises(ValueError, match="not both"):
+        Checks().add("both", False, erratum="closed form: 2", study="a table")

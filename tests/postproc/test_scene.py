@@ -65,3 +65,24 @@ def test_scene_json_refuses_paths_it_did_not_write(scene):
         write_scene_json(scene, "7a", "t", "cmd", checks=[{"name": "x", "pass": "yes",
                                                           "detail": ""}])
     assert not (scene / "scene.json").exists()
+
+
+def test_scene_json_keeps_errata_and_studies(scene):
+    (scene / "report.md").write_text("# report\n")
+    checks = Checks()
+    checks.add("two-step penetration 0.071 m", False, ours="0.0184 m",
+               erratum="closed form k v / 2 = 0.0167 m")
+    checks.add("IPM + EMM loses 0.1 %", False, ours="0.46 %", study="k and mesh table")
+    entry = json.loads(write_scene_json(scene, "8b", "t", "cmd", checks, pvd=[]).read_text())
+    assert entry["checks"] == [
+        {"name": "two-step penetration 0.071 m", "pass": False, "detail": "ours 0.0184 m",
+         "erratum": "closed form k v / 2 = 0.0167 m"},
+        {"name": "IPM + EMM loses 0.1 %", "pass": False, "detail": "ours 0.46 %",
+         "study": "k and mesh table"}]
+    # An erratum of a passing check, an empty reference, or an unknown key is refused.
+    for bad in ({"name": "x", "pass": True, "detail": "", "erratum": "closed form: 1"},
+                {"name": "x", "pass": False, "detail": "", "erratum": ""},
+                {"name": "x", "pass": False, "detail": "", "erratum": "a", "study": "b"},
+                {"name": "x", "pass": False, "detail": "", "why": "a"}):
+        with pytest.raises(ReportError, match="a check is"):
+            write_scene_json(scene, "8b", "t", "cmd", checks=[bad], pvd=[])
