@@ -18,6 +18,9 @@ contact_deck "$work/a.dat"
 sed -e 's/E=150/E=210/' "$work/a.dat" > "$work/b.dat"     # another law
 sed -e 's/N=16 /N=32 /' "$work/a.dat" > "$work/fine.dat"  # another mesh
 chain "$work/a.dat" "$work/a"
+# The deck's lines of its MATERIAL and MESH cards, as the messages name them.
+material_line=$(grep -n '^MATERIAL' "$work/a.dat" | head -1 | cut -d: -f1)
+mesh_line=$(grep -n '^MESH' "$work/a.dat" | head -1 | cut -d: -f1)
 chain "$work/b.dat" "$work/b"
 chain "$work/fine.dat" "$work/fine"
 
@@ -25,7 +28,7 @@ chain "$work/fine.dat" "$work/fine"
 cp -r "$work/a" "$work/mili"
 cp "$work/b/case.mili" "$work/mili/case.mili"
 expect_refusal "another case's case.mili" post "$work/a.dat" "$work/mili" \
-  "mili/case.mili was made with MATERIAL E=210, but" "a.dat:18 now says MATERIAL E=150" \
+  "mili/case.mili was made with MATERIAL E=210, but" "a.dat:$material_line now says MATERIAL E=150" \
   "rerun sig-material"
 
 # Files of the deck that do not belong together: sig-assemble rerun alone writes another
@@ -46,7 +49,7 @@ done
 # With its record, it is the mesh of another MESH card.
 cp "$work/fine/case.nopo.prov" "$work/nopo/case.nopo.prov"
 expect_refusal "a foreign case.nopo with its record" contact "$work/a.dat" "$work/nopo" \
-  "nopo/case.nopo was made with MESH N=32, but" "a.dat:17 now says MESH N=16" "rerun sig-mesh"
+  "nopo/case.nopo was made with MESH N=32, but" "a.dat:$mesh_line now says MESH N=16" "rerun sig-mesh"
 
 # case.nopo's integrity: a node moved by 0.5 (x of node 1: i8r8 records, byte 636).
 cp -r "$work/a" "$work/moved"
