@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 namespace sig {
@@ -322,7 +320,11 @@ bool Driver::trial(double alpha, const ContactPoint& now, const Step& step, Cont
 double Driver::step_length(const Test& test, const ContactPoint& now, const Step& step,
                            ContactPoint& next) {
   if (!options_.globalize) {
-    if (!trial(1.0, now, step, next)) return 0.0;
+    if (!trial(1.0, now, step, next)) {
+      fail(NewtonFailure::divergence, "the full step leaves the bulk's domain (an inverted "
+                                      "element) or gives a residual that is not finite");
+      return 0.0;
+    }
     bulk_.keep();
     return 1.0;
   }
@@ -369,10 +371,9 @@ double Driver::searched_length(const Test& test, const ContactPoint& now, const 
   };
   const double current = merit(now);
   const double ceiling = kRelaxation * memory_.reference();
-  // The fallback if no length passes: relaxed, the largest admissible length below the ceiling
-  // (an active-set change may raise the residual for a step), else the least residual; monotone,
-  // the least residual if it is below the present one, else none (stagnation).
   if (monotone_) return monotone_length(now, step, next);
+  // The fallback if no length passes: the largest admissible length below the ceiling (an
+  // active-set change may raise the residual for a step), else the least residual.
   ContactPoint candidate;
   std::vector<double> lengths;
   for (int h = 0; h <= kMaxHalvings; ++h)
@@ -381,11 +382,10 @@ double Driver::searched_length(const Test& test, const ContactPoint& now, const 
   for (const double alpha : lengths) {
     if (!trial(alpha, now, step, candidate)) continue;
     const bool trusted =
-        monotone_ || one_change_ || !method_.has_multipliers() || candidate.residual <= ceiling;
+        one_change_ || !method_.has_multipliers() || candidate.residual <= ceiling;
     const bool passes = trusted && sufficient_decrease(merit(candidate), current, current, alpha);
     const double rank = held && trusted ? -alpha : candidate.residual; // lower is better
-    const bool eligible = !monotone_ || candidate.residual < current;
-    if (passes || (eligible && rank < fallback)) {
+    if (passes || rank < fallback) {
       fallback = rank;
       taken = alpha;
       ratio_ = merit(candidate) / std::max(current, 1e-300);
@@ -415,7 +415,7 @@ double Driver::monotone_length(const ContactPoint& now, const Step& step, Contac
   ContactPoint candidate;
   if (!bulk_.nonlinear() && trial(1.0, now, step, candidate))
     for (double kink : kinks(now, candidate))
-      if (kink > lengths.back() && kink < 1) lengths.push_back(kink);
+      if (kink > std::ldexp(1.0, -kMaxHalvings) && kink < 1) lengths.push_back(kink);
   // Where no length lowers it (the step is no descent at a kink of the residual) the least one
   // is taken all the same, kEscapes times in a row at most: the next test sees other branches.
   double least = std::numeric_limits<double>::infinity(), taken = 0;
@@ -541,7 +541,8 @@ bool Driver::stopped(int iteration, double first_residual) {
                                         " of the force scale");
     return true;
   }
-  if (iteration - best_at_ >= kProgressWindow && !monotone_) {
+  // The thesis's full steps (search=no) stay full steps: a stall is then the stopping test's.
+  if (options_.globalize && iteration - best_at_ >= kProgressWindow && !monotone_) {
     monotone_ = true;
     cycles_ = CycleGuard(kCycleWindow);
   }

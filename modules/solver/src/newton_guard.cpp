@@ -42,12 +42,6 @@ double MeritMemory::reference() const {
   return *std::max_element(residuals_.begin(), residuals_.end());
 }
 
-void MeritMemory::make_monotone() {
-  window_ = 1;
-  while (residuals_.size() > 1)
-    residuals_.pop_front();
-}
-
 bool sufficient_decrease(double trial, double reference, double current, double alpha) {
   return trial * trial <= reference * reference - 2 * kArmijo * alpha * current * current;
 }

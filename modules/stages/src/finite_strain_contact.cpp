@@ -55,6 +55,7 @@ FiniteStrainSolution solve_finite_strain_contact(const FiniteStrainProblem& prob
     step.converged = c.converged;
     step.reason = c.reason;
     step.failure = c.failure;
+    step.drift = c.drift;
     step.history = c.history;
     step.step_length = c.step_length;
     step.u = bulk.displacement();

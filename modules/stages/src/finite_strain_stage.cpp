@@ -136,6 +136,7 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   std::vector<double> step_length;
   std::string failure;
   NewtonFailure reason = NewtonFailure::none;
+  double drift = 0;
   for (std::size_t k = 0; k < solution.steps.size(); ++k) {
     const LoadStepResult& step = solution.steps[k];
     load.push_back(step.load_factor);
@@ -144,13 +145,14 @@ void write_finite_strain_solution(const std::filesystem::path& path,
     if (!step.converged && failure.empty()) {
       failure = "load step " + std::to_string(k + 1) + ": " + step.failure;
       reason = step.reason;
+      drift = step.drift;
     }
     history.insert(history.end(), step.history.begin(), step.history.end());
     step_length.insert(step_length.end(), step.step_length.begin(), step.step_length.end());
     history_step.insert(history_step.end(), step.history.size(), static_cast<std::int64_t>(k + 1));
   }
   ds.put_text("failure", failure);
-  put_failure_reason(ds, solution.converged(), reason, 0.0);
+  put_failure_reason(ds, solution.converged(), reason, drift);
   ds.put("step_load", std::span<const double>(load));
   ds.put("step_iterations", std::span<const std::int64_t>(step_iterations));
   ds.put("step_converged", std::span<const std::int64_t>(step_converged));

@@ -29,9 +29,8 @@ struct ContactSolverParameters {
   double c = 100;              ///< projection
   double eps = 1e-5;           ///< stopping tolerance of test (iv)
   int max_iterations = 100;
-  /// Line search of a linear contact solve: "auto" (on with friction or a compliance law for
-  /// alm, pdas and projection; off for frictionless Signorini, where the thesis's methods take
-  /// full steps, and for penalty), "yes" or "no" (contact_newton.hpp).
+  /// Globalization of the contact Newton (solver/NEWTON.md): "auto" and "yes" globalize every
+  /// method on every bulk; "no" takes the thesis's full steps (contact_newton.hpp).
   std::string search = "auto";
 };
 

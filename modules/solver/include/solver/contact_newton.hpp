@@ -22,10 +22,15 @@
 // node right, and the residual does not depend on the method's parameter (r, gamma, c only steer
 // the steps; a merit scaled by them refused at gamma >= 1e4 the full steps whose penetrations the
 // next test puts right). The same ||R|| relative to the bulk's force scale is test (iv)'s.
-//  - Step length: the nonmonotone Armijo test of Grippo, Lampariello and Lucidi on ||R||^2 / 2,
-//    halving from the full step (alpha = 1, 1/2, ... 2^-12); if no length passes, the one of
-//    least residual. A trial outside the bulk's domain (an inverted element) or with a residual
-//    that is not finite is never taken.
+//  - Step length: halving from the full step (alpha = 1, 1/2, ... 2^-12), the first length whose
+//    residual of the system the step linearized (its branches held) passes Armijo's test against
+//    the present iterate's, and whose residual itself stays below a trust ceiling, kRelaxation
+//    times the largest merit of the last kMeritWindow iterates (the nonmonotone reference of
+//    Grippo, Lampariello and Lucidi: an active-set change may raise the residual for a step, not
+//    without bound); if no length passes, the largest admissible one below the ceiling, else the
+//    one of least residual. A trial outside the bulk's domain (an inverted element) or with a
+//    residual that is not finite is never taken; with full steps only (search=no) it is a
+//    divergence.
 //  - Unheld steps: where the active, stick and slip sets hold no rigid motion of the body (a body
 //    held by contact and friction alone, from rest, or with every node slipping one way), the
 //    step exists only through the bulk's proximal term (condensed_bulk.hpp) and its rigid part is

@@ -3,19 +3,20 @@
 // a step must beat, whether the branches cycle, and the name of a failure. Pure logic on the
 // merits and the branch sets the driver hands in, so that each rule is tested alone.
 //
-//  - Nonmonotone Armijo (Grippo, Lampariello and Lucidi, "A nonmonotone line search technique
-//    for Newton's method", SIAM J. Numer. Anal. 23, 1986): a step of length alpha is accepted
-//    when its merit theta = ||R||^2 / 2 satisfies
-//        theta(x + alpha d) <= max_{0 <= j < M} theta(x_{k-j}) - 2 sigma alpha theta(x_k),
-//    the Newton direction's slope being -2 theta(x_k). The maximum over the last M iterates lets
-//    a full step raise the residual for a while, as an active-set change does before the next
-//    test puts it right, and never rejects a full step that keeps below the recent merits.
+//  - Armijo's test on theta = ||R||^2 / 2, the Newton direction's slope being -2 theta(x_k):
+//        theta(x + alpha d) <= theta_ref - 2 sigma alpha theta(x_k).
+//    The driver takes theta_ref = theta(x_k) on the residual of the system the step linearized
+//    (its branches held), and bounds the trial's own residual by kRelaxation times the largest
+//    merit of the last M iterates (MeritMemory), the reference of Grippo, Lampariello and Lucidi's
+//    nonmonotone search ("A nonmonotone line search technique for Newton's method", SIAM J.
+//    Numer. Anal. 23, 1986): an active-set change may raise the residual for a while, as the
+//    next test puts it right, but not without bound.
 //  - Cycling: the semi-smooth Newton of a complementarity problem can return to a branch set
 //    (active set, stick and slip) it left without any progress (PDAS cycles on P-matrices that are
 //    not M-matrices; Coulomb friction is not even monotone). A branch set that repeats one of the
 //    last iterations' while the best merit has not fallen below the merit it had then is a cycle;
 //    the driver answers it by restricting the steps (Murty's one change per iteration on an LCP,
-//    monotone steps, M = 1, whose strictly falling merit cannot revisit a point, otherwise), then
+//    monotone steps, whose strictly falling merit cannot revisit a point, otherwise), then
 //    by the other restriction, and names a cycle with no restriction left a failure.
 //  - Stagnation: no new least merit for kProgressWindow iterations makes the steps monotone;
 //    monotone steps that cannot lower the merit kEscapes + 1 times in a row, or a least merit
@@ -52,9 +53,6 @@ public:
   void push(double residual);
   /// max_j theta(x_{k-j}) over the window, as ||R|| (theta's square root).
   double reference() const;
-  /// From now on M = 1: every step must lower the merit of the last iterate.
-  void make_monotone();
-  bool monotone() const { return window_ == 1; }
 
 private:
   int window_;
@@ -64,7 +62,7 @@ private:
 /// Armijo's constant sigma of the sufficient decrease.
 inline constexpr double kArmijo = 1e-4;
 
-/// The nonmonotone Armijo test of a trial residual at step length alpha (header), in norms:
+/// Armijo's test of a trial residual at step length alpha against a reference (header), in norms:
 /// ||R_trial||^2 <= reference^2 - 2 sigma alpha ||R_k||^2.
 bool sufficient_decrease(double trial, double reference, double current, double alpha);
 

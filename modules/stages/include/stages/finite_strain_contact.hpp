@@ -42,6 +42,7 @@ struct LoadStepResult {
   bool converged = false;
   NewtonFailure reason = NewtonFailure::none; ///< why the step stopped without converging
   std::string failure;                        ///< the reason's name and its details
+  double drift = 0; ///< with reason drift: the unheld step's length (ContactNewtonResult::drift)
   std::vector<IterationRecord> history;
   std::vector<double> step_length; ///< line-search alpha per iteration
   Eigen::VectorXd u;               ///< full displacement at the end of the step

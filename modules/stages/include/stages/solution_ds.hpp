@@ -26,8 +26,8 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
 /// (of them, nodes that came onto it since the previous iteration; nodes that came off it),
 /// history_stick, history_slip, history_residual,
 /// history_increment, history_step_norm (E_k = ||x(k+1) - x(k)||), history_kind (how the step
-/// was taken: 0 relaxed, 1 an unheld step's cut, 2 monotone, 3 one branch change, as
-/// IterationRecord::kind), one entry per iteration;
+/// was taken: 0 relaxed, 1 an unheld step's cut, 2 monotone, 3 one branch change, 4 an escape
+/// from a kink, as IterationRecord::kind), one entry per iteration;
 /// history_wall [iterations x contact nodes], 1 where a node is on the wall in the iteration's
 /// step.
 void put_history(Ds& ds, const std::vector<IterationRecord>& history);
