@@ -267,7 +267,7 @@ Test Driver::test(const ContactPoint& now, const ContactIterate& iterate, bool o
     test.conditions[p] = node_conditions(p, k, now.q_n[p], now.q_t[p]);
     record.active += k.wall_active && !k.held ? 1 : 0;
     record.wall[p] = k.wall_active && !k.held ? 1 : 0;
-    if (k.wall_active != was_on_wall) ++(k.wall_active ? record.entered : record.left);
+    if (!k.held && k.wall_active != was_on_wall) ++(k.wall_active ? record.entered : record.left);
     record.stick += k.stick ? 1 : 0;
     record.slip += k.slip != 0 && k.bound > 0 ? 1 : 0;
     // The statuses of the last test, so a failed iteration still reports where it stood.
@@ -381,8 +381,7 @@ double Driver::searched_length(const Test& test, const ContactPoint& now, const 
   double fallback = std::numeric_limits<double>::infinity(), taken = 0;
   for (const double alpha : lengths) {
     if (!trial(alpha, now, step, candidate)) continue;
-    const bool trusted =
-        one_change_ || !method_.has_multipliers() || candidate.residual <= ceiling;
+    const bool trusted = one_change_ || !method_.has_multipliers() || candidate.residual <= ceiling;
     const bool passes = trusted && sufficient_decrease(merit(candidate), current, current, alpha);
     const double rank = held && trusted ? -alpha : candidate.residual; // lower is better
     if (passes || rank < fallback) {
