@@ -148,7 +148,7 @@ write_deck() {
   esac
   [[ $friction == mu* && $contact != *" g="* ]] && contact="$contact g=$g"
   deck_variant "$template" "$deck" \
-    --replace-card MESH "MESH generator=ring center=$centre r_in=9 r_out=10 $ring gamma1_above=1e9 gamma3_below=1e9" \
+    --replace-card MESH "MESH generator=ring centre=$centre r_in=9 r_out=10 $ring gamma1_above=1e9 gamma3_below=1e9" \
     --replace-card CONTACT "CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 $contact" \
     --replace-card FRICTION "$friction_card" \
     --replace-card TIME "TIME scheme=midpoint T=$T k=$kk output_every=$every mass=$mass stress=$stress" \

@@ -27,7 +27,7 @@ contact_deck() {
 dynamic_deck() {
   cat > "$1" <<'EOF'
 TITLE distrust: a free disc
-MESH generator=disc center=0,15 R=1 N=16
+MESH generator=disc centre=0,15 R=1 N=16
 MATERIAL law=hooke E=100 nu=0.35 plane=strain rho=1000
 INITIAL v=0,-10
 TIME scheme=midpoint T=0.1 k=0.01 output_every=5
