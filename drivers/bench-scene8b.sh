@@ -51,7 +51,7 @@ base() {
   local dir=$out/base/$1 stage
   mkdir -p "$dir"
   deck_variant "$template" "$dir/ring.dat" --replace-card OUTPUT "OUTPUT vtk=no" \
-    --set "MESH.center=$2"
+    --set "MESH.centre=$2"
   for stage in mesh material assemble; do
     run_stage "$stage" "$dir/ring.dat" "$dir" || die "cannot build the ring at $2"
   done
@@ -67,8 +67,8 @@ case_() {
   mkdir -p "$dir"
   link_ds "$out/base/$placement" "$dir" nopo mili tae
   steps=$("$python" -c "print(round($T * 300))")
-  edits=(--replace-card OUTPUT "OUTPUT vtk=no" --set "MESH.center=$(deck_value \
-    "$out/base/$placement/ring.dat" MESH center)"
+  edits=(--replace-card OUTPUT "OUTPUT vtk=no" --set "MESH.centre=$(deck_value \
+    "$out/base/$placement/ring.dat" MESH centre)"
     --replace-card TIME "TIME scheme=midpoint T=$T k=0.0033333333333333335 output_every=$steps mass=$mass stress=gonzalez")
   if [ -n "$contact" ]; then
     edits+=(--replace-card CONTACT "CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 $contact"

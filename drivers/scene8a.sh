@@ -170,13 +170,7 @@ run() {
   fi
   echo "$method" >"$dir/method.txt"
   run_stage contact "$dir/ball.dat" "$dir" || { failed+=("$dir"); return 0; }
-  t0=$(date +%s.%N)
-  if ! run_stage march "$dir/ball.dat" "$dir"; then
-    failed+=("$dir")
-    return 0
-  fi
-  t1=$(date +%s.%N)
-  "$python" -c "print(f'{$t1 - $t0:.3f}')" >"$dir/wall.txt"
+  run_timed march "$dir/ball.dat" "$dir" || { failed+=("$dir"); return 0; }
   # The readings and the study need energy.csv only.
   [ "${post:-yes}" = no ] || run_stage post "$dir/ball.dat" "$dir" || failed+=("$dir")
   echo "scene8a.sh: ${dir#"$out"/}: $(cat "$dir/wall.txt") s," \

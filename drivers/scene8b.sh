@@ -148,7 +148,7 @@ write_deck() {
   esac
   [[ $friction == mu* && $contact != *" g="* ]] && contact="$contact g=$g"
   deck_variant "$template" "$deck" \
-    --replace-card MESH "MESH generator=ring center=$centre r_in=9 r_out=10 $ring gamma1_above=1e9 gamma3_below=1e9" \
+    --replace-card MESH "MESH generator=ring centre=$centre r_in=9 r_out=10 $ring gamma1_above=1e9 gamma3_below=1e9" \
     --replace-card CONTACT "CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 $contact" \
     --replace-card FRICTION "$friction_card" \
     --replace-card TIME "TIME scheme=midpoint T=$T k=$kk output_every=$every mass=$mass stress=$stress" \
@@ -187,13 +187,7 @@ run() {
   write_deck "$dir/ring.dat" "$placement" "$method" "$friction" "$T" "$kk" "$every" "$vtk" "$rr"
   printf '%s\n%s\n%s\n%s\n' "$method" "$friction" "$placement" "$rr" >"$dir/run.txt"
   run_stage contact "$dir/ring.dat" "$dir" || { failed+=("$dir"); return 0; }
-  t0=$(date +%s.%N)
-  if ! run_stage march "$dir/ring.dat" "$dir"; then
-    failed+=("$dir")
-    return 0
-  fi
-  t1=$(date +%s.%N)
-  "$python" -c "print(f'{$t1 - $t0:.3f}')" >"$dir/wall.txt"
+  run_timed march "$dir/ring.dat" "$dir" || { failed+=("$dir"); return 0; }
   if [ "$vtk" = yes ]; then run_stage post "$dir/ring.dat" "$dir" || failed+=("$dir"); fi
   progress_step "${dir#"$out"/}: $(cat "$dir/wall.txt") s," \
     "$(grep -m1 -o "[0-9]*/[0-9]* steps" "$dir/march.log" || true)"

@@ -61,7 +61,8 @@ def read_deck(path):
             fail(f"{path}: needs MESH generator=ring and MATERIAL law=ciarlet-geymonat")
         if material.get("plane", "strain") != "strain":
             fail(f"{path}: GetFEM's 2D finite-strain laws are plane strain, the deck says plane={material['plane']}")
-        center = [float(v) for v in mesh["center"].split(",")]
+        # centre= (center= its old spelling), 0,0 when absent as in the card schema.
+        center = [float(v) for v in mesh.get("centre", mesh.get("center", "0,0")).split(",")]
         return {"center": center, "r_in": float(mesh["r_in"]), "r_out": float(mesh["r_out"]),
                 "N": int(mesh["n"]), "gamma1_above": float(mesh["gamma1_above"]),
                 "gamma3_below": float(mesh["gamma3_below"]),

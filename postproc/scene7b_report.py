@@ -621,9 +621,11 @@ def ek_section(runs, out):
 def arc_order(ds):
     """The contact nodes in order along Gamma3, from its left end over the bottom to its right
     end: by the angle of their reference position about the ring's centre (the deck's MESH
-    center). Element order if contact.csv or the deck is missing."""
+    centre=). Element order if contact.csv or the deck is missing."""
     path, deck = ds.path.parent / "contact.csv", ds.path.parent / "ring.dat"
-    center = Deck.read(deck).value("MESH", "center") if deck.exists() else None
+    mesh = Deck.read(deck) if deck.exists() else None
+    # centre= (center= its old spelling)
+    center = None if mesh is None else mesh.value("MESH", "centre") or mesh.value("MESH", "center")
     if not path.exists() or center is None:
         return None
     c1, c2 = (float(v) for v in center.split(","))

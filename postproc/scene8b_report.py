@@ -659,17 +659,13 @@ def main():
     md = section_head(out, title, info, runs, charts, r_deck) + \
         section_fig87_88(runs, key, thesis_sp, thesis_ts) + \
         section_r(runs, thesis_sp, thesis_ts, r_deck, r_variant) + \
-        section_variant(runs, r_deck, r_variant) + section_sweep(runs) + \
-        ["## Checks (issues 14 and 30)", "",
-         "The thesis's claims are predictions at the deck's r, read from its 0.058 m (the "
-         "calibration above). A claim not reproduced is an *erratum* when an independent "
-         "reference (a closed form, a published result, GetFEM) contradicts it too, and a FAIL "
-         "with the study beside it otherwise.", ""]
-    md += checks.table(("name", "ours", "result", "basis"),
-                       header=("requirement", "measured", "result",
-                               "reference (erratum) or study (FAIL)")).lines()
-    md += ["", f"{checks.summary()}. Thesis values from `postproc/thesis_values.csv`; `runs.csv` "
-           "has every run's numbers, each run's `energy.csv` every step.", ""]
+        section_variant(runs, r_deck, r_variant) + section_sweep(runs)
+    md += checks.claims_section(
+        "## Checks (issues 14 and 30)",
+        "The thesis's claims are predictions at the deck's r, read from its 0.058 m (the "
+        "calibration above).",
+        "Thesis values from `postproc/thesis_values.csv`; `runs.csv` has every run's numbers, "
+        "each run's `energy.csv` every step.")
     print(write_report(out, "\n".join(md), "8b", title, info, checks, key_table=key,
                        charts=charts))
 

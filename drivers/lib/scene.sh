@@ -14,14 +14,6 @@ die() {
   exit 1
 }
 
-# require_stages STAGE...: each stage executable sig-STAGE is built.
-require_stages() {
-  local stage
-  for stage; do
-    [ -x "$bin/sig-$stage" ] || die "no executable $bin/sig-$stage (build first, or set SIG_BIN)"
-  done
-}
-
 # require_decks DECK...: each deck is readable.
 require_decks() {
   local deck
@@ -94,6 +86,16 @@ parse_repeat_out() {
   shift 2
   parse_options -o=out --repeat=repeat -- "$@"
   require_positive --repeat "$repeat"
+}
+
+# run_timed STAGE DECK DIR: run_stage (lib/stages.sh), and its wall seconds to the millisecond in
+# DIR/wall.txt when it succeeds.
+run_timed() {
+  local t0 t1
+  t0=$(date +%s.%N)
+  run_stage "$@" || return 1
+  t1=$(date +%s.%N)
+  "$python" -c "print(f'{$t1 - $t0:.3f}')" >"$3/wall.txt"
 }
 
 # record_seconds START: append the wall seconds of the runs since START ($SECONDS then) to

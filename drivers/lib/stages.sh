@@ -1,6 +1,17 @@
 # Sourced by the drivers (through scene.sh and hertz_deck.sh) and pipeline tests: one-stage runs
-# on a deck, the shared DS files of a mesh, and the SOLVER parameter of each method.
+# on a deck, the shared DS files of a mesh, the SOLVER parameter of each method, and the check
+# that the stages are built.
 # Needs $bin (stage executables) and a die() function from the caller.
+
+# require_stages STAGE...: each stage executable sig-STAGE is built, else ${on_missing_stage:-die}
+# names the one that is not (the drivers die; the pipeline tests set on_missing_stage=skip).
+require_stages() {
+  local stage
+  for stage; do
+    [ -x "$bin/sig-$stage" ] ||
+      "${on_missing_stage:-die}" "no executable $bin/sig-$stage (build first, or set SIG_BIN)"
+  done
+}
 
 # parameter_of METHOD: the parameter a method's value sets on the SOLVER card.
 parameter_of() {

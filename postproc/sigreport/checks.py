@@ -142,5 +142,19 @@ class Checks:
         header = header or [names.get(c, c) for c in columns]
         return Table(header, [[c.cell(col, missing) for col in columns] for c in self.items])
 
+    def claims_section(self, heading, preface, sources):
+        """The Markdown lines of a report's section on the thesis's claims: `heading`, `preface`
+        (may be empty) and the rule that sorts a claim not reproduced into erratum or FAIL, one
+        row per claim with what settles it, then the summary and `sources` (where the values
+        come from)."""
+        rule = ("A claim not reproduced is an *erratum* when an independent reference (a closed "
+                "form, a published result, GetFEM) contradicts it too, and a FAIL with the study "
+                "beside it otherwise.")
+        lines = [heading, "", (preface + " " if preface else "") + rule, ""]
+        lines += self.table(("name", "ours", "result", "basis"),
+                            header=("requirement", "measured", "result",
+                                    "reference (erratum) or study (FAIL)")).lines()
+        return lines + ["", f"{self.summary()}. {sources}", ""]
+
     def as_json(self):
         return [c.as_json() for c in self.items]

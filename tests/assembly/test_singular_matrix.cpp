@@ -3,20 +3,12 @@
 // deck makes (a diagonal entry <= 0, an asymmetric entry, a diagonal spanning 1e20), and the
 // plain statement when none of these shows.
 #include "assembly/singular_matrix.hpp"
+#include "two_triangles.hpp"
 
 #include <gtest/gtest.h>
 
 namespace sig {
 namespace {
-
-Mesh unit_square() {
-  Mesh mesh;
-  mesh.nodes = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh.subdomain = {1, 1};
-  mesh.vertex_ref.assign(4, 0);
-  return mesh;
-}
 
 /// A system whose K is the identity scaled by `diagonal` but with entry (i, j) = value.
 LinearSystem system_with(double diagonal, int i, int j, double value, std::vector<int> imposed) {
@@ -34,7 +26,7 @@ bool has(const std::string& text, const std::string& part) {
 }
 
 TEST(FailedFactorization, NamesTheFreePartThenTheMatrixDefect) {
-  const Mesh mesh = unit_square();
+  const Mesh mesh = test::two_triangle_square();
   const std::vector<int> clamped = {0, 1, 6, 7}; // nodes 1 and 4: the left side
   const FailedFactorization failed{"out/case.tae", false, "CHOLMOD: not positive definite"};
   // Nothing holds the square.

@@ -294,7 +294,7 @@ TEST(Datafile, SchemaDeclaresEveryCardWithHelp) {
   EXPECT_THROW(Datafile::parse("OUTPUT vtk=no\nOUTPUT vtk=yes\n", "d.dat"), InputError);
   // Every field of the brief is accepted.
   EXPECT_NO_THROW(Datafile::parse(
-      "MESH generator=ring file=a.msh R=1 N=2 center=0,0 r_in=1 r_out=2 layers=3 lx=1 ly=1 nx=2 "
+      "MESH generator=ring file=a.msh R=1 N=2 centre=0,0 r_in=1 r_out=2 layers=3 lx=1 ly=1 nx=2 "
       "ny=2 refs=1,2 grading=1 gamma1_above=0.9 gamma3_below=0.1\n"
       "MATERIAL region=1 law=hooke E=1 nu=0 plane=stress thickness=1 rho=1\n"
       "DIRICHLET ref=1 ux=0 uy=0\nTRACTION ref=1 f=0,1\nPRESSURE ref=1 p=2\n"

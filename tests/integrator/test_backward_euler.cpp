@@ -13,6 +13,7 @@
 #include "contact/contact_elements.hpp"
 #include "contact/contact_kernel.hpp"
 #include "core/datafile.hpp"
+#include "deck_case.hpp"
 #include "integrator/backward_euler_scheme.hpp"
 #include "integrator/elastodynamics.hpp"
 #include "integrator/energy.hpp"
@@ -28,27 +29,14 @@
 namespace sig {
 namespace {
 
-struct Case {
-  Mesh mesh;
-  LinearSystem system;
-  std::optional<ContactElements> contact;
-};
+using Case = test::DeckCase;
 
 Case build(Mesh mesh, const std::string& deck) {
-  const Datafile datafile = Datafile::parse(deck, "be.dat");
-  Case c;
-  c.system = assemble_system(mesh, material_table_from_cards(datafile, mesh), datafile);
-  c.contact = contact_from_cards(datafile, mesh);
-  c.mesh = std::move(mesh);
-  return c;
+  return test::deck_case(std::move(mesh), deck, "be.dat");
 }
 
 ContactSolverParameters newton() {
-  ContactSolverParameters p;
-  p.method = "pdas";
-  p.eps = 1e-10;
-  p.max_iterations = 50;
-  return p;
+  return test::pdas_newton(1e-10);
 }
 
 /// The energies after each step 0 .. steps: E = 1/2 w.M w + 1/2 u.K u, and the compliance's

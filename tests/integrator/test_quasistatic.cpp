@@ -13,6 +13,7 @@
 #include "contact/contact_elements.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "deck_case.hpp"
 #include "integrator/kelvin_voigt_scheme.hpp"
 #include "integrator/linear_contact_march.hpp"
 #include "material/mili.hpp"
@@ -35,28 +36,14 @@ constexpr double kE = 100, kNu = 0.3, kEta1 = 0.25, kEta2 = 0.5;
 const double kMB = kE * (1 - kNu) / ((1 + kNu) * (1 - 2 * kNu));
 constexpr double kMA = kEta1 + kEta2;
 
-struct Case {
-  Mesh mesh;
-  LinearSystem system;
-  std::optional<ContactElements> contact;
-};
+using Case = test::DeckCase;
 
 Case build(Mesh mesh, const std::string& deck) {
-  const Datafile datafile = Datafile::parse(deck, "qs.dat");
-  Case c;
-  const MaterialTable table = material_table_from_cards(datafile, mesh);
-  c.system = assemble_system(mesh, table, datafile);
-  c.contact = contact_from_cards(datafile, mesh);
-  c.mesh = std::move(mesh);
-  return c;
+  return test::deck_case(std::move(mesh), deck, "qs.dat");
 }
 
 ContactSolverParameters newton(double eps = 1e-11) {
-  ContactSolverParameters p;
-  p.method = "pdas";
-  p.eps = eps;
-  p.max_iterations = 50;
-  return p;
+  return test::pdas_newton(eps);
 }
 
 struct Marched {

@@ -5,7 +5,7 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "scratch_folder.hpp"
-#include "two_subdomains.hpp"
+#include "two_triangles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,8 @@ namespace sig {
 namespace {
 
 MaterialTable table_of(const std::string& deck) {
-  return material_table_from_cards(Datafile::parse(deck, "kv.dat"), test::two_subdomains());
+  return material_table_from_cards(Datafile::parse(deck, "kv.dat"),
+                                   test::two_triangle_square(1, 3));
 }
 
 // The deck must fail on `line` and `field` (lower case) with `detail` in the message.

@@ -6,7 +6,7 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "scratch_folder.hpp"
-#include "two_subdomains.hpp"
+#include "two_triangles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -70,7 +70,7 @@ TEST(MaterialCard, RejectsOutOfRangeParameters) {
 }
 
 TEST(MaterialTable, OneLawPerSubdomain) {
-  const Mesh mesh = test::two_subdomains();
+  const Mesh mesh = test::two_triangle_square(1, 3);
   const Datafile d = Datafile::parse("MATERIAL region=3 E=2 nu=0.1\n"
                                      "MATERIAL region=1 E=1 nu=0.2 rho=5\n",
                                      "m.dat");
@@ -85,7 +85,7 @@ TEST(MaterialTable, OneLawPerSubdomain) {
 
 TEST(MaterialTable, CardWithoutRegionCoversEverySubdomain) {
   const Datafile d = Datafile::parse("MATERIAL E=4 nu=0.25\n", "m.dat");
-  const MaterialTable table = material_table_from_cards(d, test::two_subdomains());
+  const MaterialTable table = material_table_from_cards(d, test::two_triangle_square(1, 3));
   ASSERT_EQ(table.entries.size(), 2u);
   EXPECT_EQ(table.of(1).hooke.E, 4.0);
   EXPECT_EQ(table.of(3).hooke.E, 4.0);
@@ -93,7 +93,7 @@ TEST(MaterialTable, CardWithoutRegionCoversEverySubdomain) {
 }
 
 TEST(MaterialTable, MissingDuplicateOrUnknownSubdomainIsAnInputError) {
-  const Mesh mesh = test::two_subdomains();
+  const Mesh mesh = test::two_triangle_square(1, 3);
   const Datafile missing = Datafile::parse("MATERIAL region=1 E=1 nu=0.2\n", "m.dat");
   const InputError e1 = input_error([&] { material_table_from_cards(missing, mesh); });
   EXPECT_EQ(e1.line(), 1);

@@ -2,17 +2,16 @@
 #include "core/error.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/topology.hpp"
+#include "two_triangles.hpp"
 
 #include <gtest/gtest.h>
 
 namespace sig {
 namespace {
 
+// With three boundary edges and a reference on one vertex.
 Mesh unit_square() {
-  Mesh mesh;
-  mesh.nodes = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh.subdomain = {1, 1};
+  Mesh mesh = test::two_triangle_square();
   mesh.edges = {{0, 1, 3}, {1, 2, 4}, {3, 0, 1}};
   mesh.vertex_ref = {0, 0, 7, 0};
   return mesh;

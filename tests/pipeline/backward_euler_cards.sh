@@ -3,31 +3,17 @@
 # for what the dynamic march does not model is refused with file, line and field and a non-zero
 # exit, before anything is factorized; the good deck marches.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-bin=${SIG_BIN:-$root/build/bin}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/lib/common.sh"
 good=$work/good.dat
 sed -e 's/nx=64 ny=64/nx=8 ny=2/' -e 's/^OUTPUT .*/OUTPUT vtk=no/' \
   "$root/datafiles/scene6/rail.dat" > "$good"
 "$root/drivers/chain.sh" "$good" -o "$work/out" > "$work/good.log" 2>&1 ||
-  { cat "$work/good.log"; echo "FAIL: the good deck"; exit 1; }
-failures=0
+  { cat "$work/good.log"; die "the good deck"; }
 
 # expect DECK_LINE_EDIT EXPECTED_TEXT...: sig-march on the edited deck must fail with every text.
 expect() {
-  local edit=$1
-  shift
-  sed -e "$edit" "$good" > "$work/bad.dat"
-  local message status=0
-  message=$("$bin/sig-march" "$work/bad.dat" -o "$work/out" 2>&1) || status=$?
-  if [ "$status" -eq 0 ]; then
-    echo "FAIL ($edit): exit 0"; failures=$((failures + 1)); return
-  fi
-  for text in "$@"; do
-    grep -qiF -- "$text" <<< "$message" ||
-      { echo "FAIL ($edit): message lacks '$text': $message"; failures=$((failures + 1)); }
-  done
+  sed -e "$1" "$good" > "$work/bad.dat"
+  refused "$1" march "$work/bad.dat" "$work/out" "${@:2}"
 }
 
 expect 's/of=slip-rate/of=slip/'                       "bad.dat:" "'of'" "slip rate"
@@ -41,7 +27,7 @@ sed -e 's/ rho=1e-6//' "$good" > "$work/massless.dat"
 status=0
 message=$("$root/drivers/chain.sh" "$work/massless.dat" -o "$work/massless" 2>&1) || status=$?
 if [ "$status" -eq 0 ] || ! grep -q "massless.dat.*'rho'.*mass" <<< "$message"; then
-  echo "FAIL: a massless body: exit $status: $message"; failures=$((failures + 1))
+  fail "a massless body: exit $status: $message"
 fi
 [ "$failures" -eq 0 ] || exit 1
 echo "backward_euler_cards: 7 bad decks refused with file, line and field; the good one marched"

@@ -2,14 +2,11 @@
 # Requirement: bad input gets a clear message naming file, line and field, and a non-zero exit;
 # nothing already written is damaged.
 set -euo pipefail
-bin=${SIG_BIN:?SIG_BIN is not set}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source tests/pipeline/lib/common.sh
 good=$work/good.dat
 sed -e 's/N=256/N=32/' datafiles/scene7a/hertz.dat > "$good"
 drivers/chain.sh "$good" -o "$work/out" > /dev/null 2>&1
 before=$(cd "$work/out" && sha256sum case.* | sha256sum)
-failures=0
 
 # expect STAGE DECK_LINE_EDIT EXPECTED_TEXT...: apply a sed edit to the good deck, run the
 # stage, require a non-zero exit and every expected text in its message (field names are
@@ -17,18 +14,8 @@ failures=0
 expect() {
   local stage=$1 edit=$2
   shift 2
-  local deck=$work/bad.dat
-  sed -e "$edit" "$good" > "$deck"
-  local message status=0
-  message=$("$bin/sig-$stage" "$deck" -o "$work/out" 2>&1) || status=$?
-  if [ "$status" -eq 0 ]; then
-    echo "FAIL ($stage, $edit): exit 0"; failures=$((failures + 1)); return
-  fi
-  for text in "$@"; do
-    if ! grep -qiF -- "$text" <<< "$message"; then
-      echo "FAIL ($stage, $edit): message lacks '$text': $message"; failures=$((failures + 1))
-    fi
-  done
+  sed -e "$edit" "$good" > "$work/bad.dat"
+  refused "$stage, $edit" "$stage" "$work/bad.dat" "$work/out" "$@"
 }
 
 expect mesh      's/^MESH/MESSH/'                         "bad.dat:" "unknown card" "MESSH"
@@ -82,20 +69,20 @@ sed -e 's/^MATERIAL .*/MATERIAL law=ciarlet-geymonat c1=0.5 c2=0.005 a=0.35 plan
 status=0
 message=$(drivers/chain.sh "$hyper" -o "$work/hyper" 2>&1) || status=$?
 if [ "$status" -eq 0 ] || ! grep -q "hyper.dat:.*'law'.*large deformation" <<< "$message"; then
-  echo "FAIL: friction in large deformation: exit $status: $message"; failures=$((failures + 1))
+  fail "friction in large deformation: exit $status: $message"
 fi
-[ ! -e "$work/hyper/case.b" ] || { echo "FAIL: friction in large deformation wrote case.b"; failures=$((failures + 1)); }
+[ ! -e "$work/hyper/case.b" ] || fail "friction in large deformation wrote case.b"
 
 # A truncated and a corrupted DS are refused with the file and array named.
 cp "$work/out/case.tae" "$work/keep.tae"
 head -c 5000 "$work/keep.tae" > "$work/out/case.tae"
-message=$("$bin/sig-solve" "$good" -o "$work/out" 2>&1) && { echo "FAIL: truncated TAE accepted"; failures=$((failures + 1)); }
-grep -q "case.tae" <<< "$message" && grep -q "truncated" <<< "$message" || { echo "FAIL: truncated TAE message: $message"; failures=$((failures + 1)); }
+message=$("$bin/sig-solve" "$good" -o "$work/out" 2>&1) && fail "truncated TAE accepted"
+grep -q "case.tae" <<< "$message" && grep -q "truncated" <<< "$message" || fail "truncated TAE message: $message"
 cp "$work/keep.tae" "$work/out/case.tae"
 size=$(stat -c %s "$work/out/case.tae")
 printf '\xff' | dd of="$work/out/case.tae" bs=1 seek=$((size / 2)) conv=notrunc status=none
-message=$("$bin/sig-solve" "$good" -o "$work/out" 2>&1) && { echo "FAIL: corrupted TAE accepted"; failures=$((failures + 1)); }
-grep -q "CRC" <<< "$message" && grep -q "array '" <<< "$message" || { echo "FAIL: corrupted TAE message: $message"; failures=$((failures + 1)); }
+message=$("$bin/sig-solve" "$good" -o "$work/out" 2>&1) && fail "corrupted TAE accepted"
+grep -q "CRC" <<< "$message" && grep -q "array '" <<< "$message" || fail "corrupted TAE message: $message"
 cp "$work/keep.tae" "$work/out/case.tae"
 
 # Command-line values of the error and benchmark tools: a refusal naming the option and the value.
@@ -104,7 +91,7 @@ expect_option() {
   shift 2
   message=$("$@" 2>&1) || status=$?
   if [ "$status" -eq 0 ] || ! grep -qF -- "$expected" <<< "$message"; then
-    echo "FAIL ($what): exit $status: $message"; failures=$((failures + 1))
+    fail "$what: exit $status: $message"
   fi
 }
 for window in 1,2,3,4, 1,2,3 1,2,x,4 2,1,3,4; do
@@ -118,7 +105,7 @@ done
 
 # Nothing the good run wrote was touched by the failed ones.
 after=$(cd "$work/out" && sha256sum case.* | sha256sum)
-[ "$before" = "$after" ] || { echo "FAIL: a failed stage changed a DS file"; failures=$((failures + 1)); }
+[ "$before" = "$after" ] || fail "a failed stage changed a DS file"
 
 [ "$failures" -eq 0 ] || exit 1
 echo "bad_input: 25 bad inputs and 7 bad option values refused with file, line and field; DS files intact"

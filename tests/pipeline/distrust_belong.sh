@@ -9,9 +9,6 @@
 # mesh records: a node moved by 0.5 or a byte damaged mid-file is refused by the next stage that
 # reads it. No file of the case changes.
 set -euo pipefail
-name=distrust_belong
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source tests/pipeline/lib/distrust.sh
 
 contact_deck "$work/a.dat"
@@ -67,4 +64,4 @@ size=$(stat -c %s "$work/damaged/case.nopo")
 printf '\x5a' | dd of="$work/damaged/case.nopo" bs=1 seek=$((size / 2)) conv=notrunc status=none
 expect_refusal "a byte of case.nopo damaged mid-file" contact "$work/a.dat" "$work/damaged" \
   "damaged/case.nopo" "does not match the fingerprint"
-finish
+distrust_finish

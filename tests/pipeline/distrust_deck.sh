@@ -7,9 +7,6 @@
 # field of a TIME deck is said to be unused; a failed write to stdout is an error. Each refusal:
 # exit status, message with file, line and field, and no file of the case changed.
 set -euo pipefail
-name=distrust_deck
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source tests/pipeline/lib/distrust.sh
 
 static_deck "$work/block.dat"
@@ -51,7 +48,7 @@ message=$("$bin/sig-dump" "$work/out/case.tae" 2>&1 > /dev/full) || status=$?
 if [ "$status" -eq 0 ] || ! grep -q "cannot write to the standard output" <<< "$message"; then
   fail "sig-dump > /dev/full: exit $status: $message"
 else
-  echo "ok ($name): sig-dump > /dev/full: $message"
+  echo "ok ($test_name): sig-dump > /dev/full: $message"
 fi
 
 # Decks as editors save them: a byte order mark, CR-only line ends. The chain runs.
@@ -64,7 +61,7 @@ for deck in bom cr; do
 done
 cmp -s <("$bin/sig-dump" "$work/bom/case.b" | grep '^  u ') <("$bin/sig-dump" "$work/cr/case.b" | grep '^  u ') ||
   fail "the BOM and CR decks give different solutions"
-echo "ok ($name): a deck with a byte order mark and one with CR-only line ends run"
+echo "ok ($test_name): a deck with a byte order mark and one with CR-only line ends run"
 
 # A Latin-1 TITLE: summary.json stays valid UTF-8 (the bad byte replaced), with a warning.
 checks=$((checks + 1))
@@ -74,7 +71,7 @@ grep -q "latin.dat:1: TITLE is not valid UTF-8: 2 bad byte(s) replaced by U+FFFD
   fail "no warning for the Latin-1 TITLE: $(grep -i title "$work/latin.log" | head -2)"
 python3 -c "import json,sys; t = json.loads(open(sys.argv[1], 'rb').read().decode('utf-8'))['title']; assert t == 'caf\ufffd \ufffd Paris', t" \
   "$work/latin/summary.json" || fail "summary.json of a Latin-1 TITLE is not valid UTF-8 JSON"
-echo "ok ($name): a Latin-1 TITLE gives valid UTF-8 JSON, with a warning"
+echo "ok ($test_name): a Latin-1 TITLE gives valid UTF-8 JSON, with a warning"
 
 # SOLVER c= (projection's parameter) in a TIME deck is not used: sig-march says so.
 checks=$((checks + 1))
@@ -83,5 +80,5 @@ sed -i -e 's|^SOLVER linear=cholmod|SOLVER linear=cholmod c=100|' "$work/disc.da
 drivers/chain.sh "$work/disc.dat" -o "$work/disc" > "$work/disc.log" 2>&1 || fail "the dynamic deck failed"
 grep -q "disc.dat:6: SOLVER c=100 is not used by sig-march" "$work/disc.log" ||
   fail "SOLVER c= of a TIME deck passed silently"
-echo "ok ($name): SOLVER c= in a TIME deck: $(grep -m1 'c=100' "$work/disc.log")"
-finish
+echo "ok ($test_name): SOLVER c= in a TIME deck: $(grep -m1 'c=100' "$work/disc.log")"
+distrust_finish

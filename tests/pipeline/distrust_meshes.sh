@@ -10,9 +10,6 @@
 #    warning; coincident nodes (an open crack) are an error unless MESH coincident=allow.
 # Each refusal: exit status, message, and the case's case.nopo left as it was.
 set -euo pipefail
-name=distrust_meshes
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source tests/pipeline/lib/distrust.sh
 
 static_deck "$work/block.dat"
@@ -53,7 +50,7 @@ message=$(ulimit -v 1000000 && "$bin/sig-mesh" "$work/padded.dat" -o "$work/out"
 if [ "$status" -eq 0 ] || ! grep -q "padded.msh:" <<< "$message" || grep -q "bad_alloc" <<< "$message"; then
   fail "a .msh padded to 3 GB: exit $status: $message"
 else
-  echo "ok ($name): a .msh padded to 3 GB, within 1 GB: $message"
+  echo "ok ($test_name): a .msh padded to 3 GB, within 1 GB: $message"
 fi
 
 # gmsh binary files are read, as their ASCII twins (gmsh writes all four here).
@@ -80,7 +77,7 @@ for format in msh22 msh41; do
     [ "$dump" = "$reference" ] || fail "$format $binary: another mesh or solution than msh22 ASCII"
   done
 done
-echo "ok ($name): gmsh 2.2 and 4.1, ASCII and binary: one mesh, one solution"
+echo "ok ($test_name): gmsh 2.2 and 4.1, ASCII and binary: one mesh, one solution"
 python3 - "$work/square_msh22.msh" "$work/quad.msh" <<'PY'
 import sys
 lines = open(sys.argv[1]).read().split("\n")
@@ -125,7 +122,7 @@ grep -q "changed.msh: reoriented 1 clockwise triangle(s) (1-based, in file order
   fail "no warning naming the reoriented triangle: $message"
 grep -q "changed.msh: dropped 1 node(s) that no triangle uses (node tags): 9" <<< "$message" ||
   fail "no warning naming the dropped node: $message"
-echo "ok ($name): warnings name the reoriented triangle and the dropped node"
+echo "ok ($test_name): warnings name the reoriented triangle and the dropped node"
 
 # Coincident nodes: two triangles that do not share their diagonal (an open crack).
 printf '6 2 0\n0 0 1\n4 0 1\n4 1 1\n0 0 1\n4 1 1\n0 1 1\n1 2 3 0\n4 5 6 0\n' > "$work/crack.msh"
@@ -138,5 +135,5 @@ mesh_deck crack_allowed "MESH file=crack.msh coincident=allow"
 message=$("$bin/sig-mesh" "$work/crack_allowed.dat" -o "$work/crack" 2>&1) || fail "coincident=allow refused: $message"
 grep -q "crack.msh: kept apart (coincident=allow: an open crack) 4 coincident node(s) (1-based, in pairs): 1, 4, 3, 5" <<< "$message" ||
   fail "coincident=allow without the warning: $message"
-echo "ok ($name): coincident=allow keeps the crack, with a warning"
-finish
+echo "ok ($test_name): coincident=allow keeps the crack, with a warning"
+distrust_finish

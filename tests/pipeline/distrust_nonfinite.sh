@@ -4,9 +4,6 @@
 # and the value; a result that overflows on its way out (a displacement of 1e300: inf stresses) is
 # not written and the stage exits 1 naming the file and the field. No file of the case changes.
 set -euo pipefail
-name=distrust_nonfinite
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source tests/pipeline/lib/distrust.sh
 
 # A static case: a NaN load in case.tae, a NaN displacement in case.b.
@@ -39,4 +36,4 @@ rm -f "$work/huge/block.pvd" "$work/huge"/block_*.vtu
 expect_refusal "a displacement of 1e300 in case.b" post "$work/block.dat" "$work/huge" \
   "huge/block_0000.vtu: field 'von_mises'" "is inf" "loads"
 [ ! -e "$work/huge/block.pvd" ] || fail "a .pvd was written for inf stresses"
-finish
+distrust_finish

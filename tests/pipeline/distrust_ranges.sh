@@ -5,9 +5,6 @@
 # the files), a case.b with status 99 or converged 7 and a case.hist with ndof 7 or 2^62 steps by
 # sig-post, each naming the file and the array; no file of the case changes.
 set -euo pipefail
-name=distrust_ranges
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source tests/pipeline/lib/distrust.sh
 
 static_deck "$work/block.dat"
@@ -48,4 +45,4 @@ expect_refusal "ndof 7 in case.hist" post "$work/disc.dat" "$work/ndof" \
 damaged steps disc case.hist steps 4611686018427387904
 expect_refusal "2^62 steps in case.hist" post "$work/disc.dat" "$work/steps" \
   "steps/case.hist: array 'steps': 4611686018427387904 is not in 1..1000000000"
-finish
+distrust_finish

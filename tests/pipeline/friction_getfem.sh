@@ -22,26 +22,11 @@
 # (/usr/bin/python3 -c 'import getfem') are missing.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/../.." && pwd)
-bin=${SIG_BIN:-$root/build/bin}
+source "$(dirname "$0")/lib/common.sh"
 python=/usr/bin/python3 # Debian's interpreter: python3-getfem is built for it
-for stage in mesh material contact assemble solve post; do
-  if [ ! -x "$bin/sig-$stage" ]; then
-    echo "friction_getfem: skipped, no $bin/sig-$stage"
-    exit 77
-  fi
-done
-command -v gmsh >/dev/null || { echo "friction_getfem: skipped, no gmsh"; exit 77; }
-"$python" -c 'import getfem, numpy, scipy' 2>/dev/null ||
-  { echo "friction_getfem: skipped, $python cannot import getfem (Debian: python3-getfem)"; exit 77; }
-
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-die() {
-  echo "friction_getfem: $*" >&2
-  exit 1
-}
+require_stages mesh material contact assemble solve post
+require_command gmsh
+require_python getfem numpy scipy # Debian: python3-getfem
 
 n=64
 R=8

@@ -14,10 +14,7 @@
 #  - law=nonmonotone, whose convexification only the backward-Euler march runs, is refused naming
 #    the FRICTION card's field law.
 set -euo pipefail
-bin=${SIG_BIN:?SIG_BIN is not set}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/lib/common.sh"
 
 # deck NAME STRATEGY FRICTION_CARD: the free disc, 0.02 m above the plane x2 = 14.
 deck() {
@@ -31,7 +28,7 @@ deck() {
 # run NAME: the chain of the deck; its log on failure.
 run() {
   drivers/chain.sh "$work/$1/disc.dat" -o "$work/$1" >"$work/$1/chain.log" 2>&1 ||
-    { tail -n 20 "$work/$1/chain.log"; echo "FAIL: $1 did not run"; failures=$((failures + 1)); }
+    { tail -n 20 "$work/$1/chain.log"; fail "$1 did not run"; }
 }
 
 deck coulomb "strategy=signorini" "FRICTION ref=3 law=coulomb mu=0.3"
@@ -78,18 +75,18 @@ sys.exit(0 if ok else 1)
 PY
 
 tangential=$("$bin/sig-dump" --json "$work/coulomb/case.hist" | grep -o '"tangential_pressure"' || true)
-[ -n "$tangential" ] || { echo "FAIL: case.hist has no tangential_pressure"; failures=$((failures + 1)); }
+[ -n "$tangential" ] || fail "case.hist has no tangential_pressure"
 grep -aq 'Name="tangential_pressure"' "$work/coulomb/disc_0004.vtu" ||
-  { echo "FAIL: the .vtu has no tangential_pressure"; failures=$((failures + 1)); }
+  fail "the .vtu has no tangential_pressure"
 
 deck nonmonotone "strategy=signorini" "FRICTION ref=3 law=nonmonotone a=0.4 b=0.2 alpha=10"
 if drivers/chain.sh "$work/nonmonotone/disc.dat" -o "$work/nonmonotone" \
   >"$work/nonmonotone/chain.log" 2>&1; then
-  echo "FAIL: law=nonmonotone marched with the midpoint rule"; failures=$((failures + 1))
+  fail "law=nonmonotone marched with the midpoint rule"
 elif ! grep -q "disc.dat:$(grep -n '^FRICTION' "$work/nonmonotone/disc.dat" | cut -d: -f1): field 'law'.*convexification" \
   "$work/nonmonotone/chain.log"; then
   tail -n 5 "$work/nonmonotone/chain.log"
-  echo "FAIL: law=nonmonotone refused without naming FRICTION law"; failures=$((failures + 1))
+  fail "law=nonmonotone refused without naming FRICTION law"
 fi
 
 [ $failures -eq 0 ] && echo "frictional_march: a frictional linear march runs and balances"

@@ -6,16 +6,9 @@
 # image and a console error must be caught (the check can fail). Exit 77 (skipped) only when
 # Chromium is absent (Debian: chromium, which drivers/setup.sh installs).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-python=${PYTHON:-/usr/bin/python3}
+source "$(dirname "$0")/lib/common.sh"
 chromium=$(command -v chromium || command -v chromium-browser || true)
-[ -n "$chromium" ] || { echo "index_browser: skipped, no chromium"; exit 77; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() {
-  echo "index_browser: FAIL: $*" >&2
-  exit 1
-}
+[ -n "$chromium" ] || skip "no chromium"
 
 out=$work/out
 for kind in pass fail; do
@@ -24,8 +17,8 @@ for kind in pass fail; do
 done
 "$python" "$root/postproc/scene_index.py" "$out" || true # scene_fail fails: exit 1
 "$python" "$root/tests/pipeline/headless_check.py" --chromium "$chromium" "$out/index.html" ||
-  fail "the index does not load cleanly in $chromium"
-[ "$(grep -o "<img " "$out/index.html" | wc -l)" -eq 4 ] || fail "expected 4 images in the index"
+  die "the index does not load cleanly in $chromium"
+[ "$(grep -o "<img " "$out/index.html" | wc -l)" -eq 4 ] || die "expected 4 images in the index"
 
 # The check itself: a missing image and a console error are reported.
 cp "$out/scene_pass/speed_accuracy.png" "$work/ok.png"
@@ -37,8 +30,8 @@ status=0
 "$python" "$root/tests/pipeline/headless_check.py" --chromium "$chromium" "$work/bad.html" \
   >"$work/bad.log" 2>&1 || status=$?
 cat "$work/bad.log"
-[ "$status" -eq 1 ] || fail "headless_check.py exited $status on a broken page, not 1"
-grep -q "image does not resolve: missing.png" "$work/bad.log" || fail "missing image not caught"
-grep -q "console.error: boom" "$work/bad.log" || fail "console error not caught"
-grep -q "image does not resolve: ok.png" "$work/bad.log" && fail "a good image reported"
+[ "$status" -eq 1 ] || die "headless_check.py exited $status on a broken page, not 1"
+grep -q "image does not resolve: missing.png" "$work/bad.log" || die "missing image not caught"
+grep -q "console.error: boom" "$work/bad.log" || die "console error not caught"
+grep -q "image does not resolve: ok.png" "$work/bad.log" && die "a good image reported"
 echo "index_browser: ok"

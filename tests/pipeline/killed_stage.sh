@@ -9,13 +9,7 @@
 #  - the next stage to start (the next one killed, and sig-solve at the end) removes the
 #    temporary of the killed one and says so; no temporary of any name is left.
 set -euo pipefail
-bin=${SIG_BIN:?SIG_BIN is not set}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-die() {
-  echo "FAIL: killed_stage: $*" >&2
-  exit 1
-}
+source "$(dirname "$0")/lib/common.sh"
 deck=$work/hertz.dat
 sed -e 's/N=256/N=64/' datafiles/scene7a/hertz.dat > "$deck"
 out=$work/out

@@ -10,13 +10,7 @@
 # 1e-10 of their maximum, normal forces to 1e-10 of q, corners included, and a roller on a
 # contact node's normal component takes that node out of contact with a warning.
 set -euo pipefail
-bin=${SIG_BIN:?SIG_BIN is not set}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() {
-  echo "oedometer: $*" >&2
-  exit 1
-}
+source "$(dirname "$0")/lib/common.sh"
 
 E=200
 nu=0.3
@@ -86,9 +80,9 @@ for name in "${!cases[@]}"; do
     dir=$work/$name-$method
     deck "$dir.dat" "$fields" "$friction" "$method"
     SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 ||
-      { tail -5 "$dir.log"; fail "$name $method: the chain failed"; }
-    grep -q "converged in" "$dir.log" || { tail -3 "$dir.log"; fail "$name $method: Nv"; }
-    check "$dir" "$bottom" "$status" || fail "$name $method: not the exact oedometer state"
+      { tail -5 "$dir.log"; die "$name $method: the chain failed"; }
+    grep -q "converged in" "$dir.log" || { tail -3 "$dir.log"; die "$name $method: Nv"; }
+    check "$dir" "$bottom" "$status" || die "$name $method: not the exact oedometer state"
     echo "oedometer: $name $method exact"
   done
 done
@@ -97,8 +91,8 @@ done
 dir=$work/normal_roller
 deck "$dir.dat" "law=signorini" "DIRICHLET ref=3 uy=0" pdas
 sed -i '/^DIRICHLET ref=4/d' "$dir.dat"
-SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; fail "normal roller: the chain failed"; }
+SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; die "normal roller: the chain failed"; }
 grep -q "has its normal component held by a DIRICHLET card: it is out of the contact set" "$dir.log" ||
-  fail "normal roller: no warning naming the held node"
-grep -q ",held," "$dir/contact.csv" || fail "normal roller: contact.csv does not say held"
+  die "normal roller: no warning naming the held node"
+grep -q ",held," "$dir/contact.csv" || die "normal roller: contact.csv does not say held"
 echo "oedometer: a held normal component is out of contact, with a warning"

@@ -7,13 +7,7 @@
 # (0 on every row), the .vtu's field data converged = 0; a CONTACT card whose obstacle faces
 # Gamma3 from inside the body is warned about.
 set -euo pipefail
-bin=${SIG_BIN:?SIG_BIN is not set}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() {
-  echo "robust_newton: $*" >&2
-  exit 1
-}
+source "$(dirname "$0")/lib/common.sh"
 
 block() { # block FILE TRACTION METHOD [CONTACT_OVERRIDE]
   cat >"$1" <<EOF
@@ -32,9 +26,9 @@ EOF
 for method in pdas alm projection; do
   dir=$work/held_$method
   block "$dir.dat" 0.2,-1 "$method"
-  SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; fail "$method: the chain failed"; }
-  grep -q "converged in" "$dir.log" || { grep sig-solve "$dir.log"; fail "$method: the block held by friction did not converge from rest"; }
-  /usr/bin/python3 - "$dir/contact.csv" <<'PY' || fail "$method: not an equilibrium of the block"
+  SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; die "$method: the chain failed"; }
+  grep -q "converged in" "$dir.log" || { grep sig-solve "$dir.log"; die "$method: the block held by friction did not converge from rest"; }
+  /usr/bin/python3 - "$dir/contact.csv" <<'PY' || die "$method: not an equilibrium of the block"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 N = sum(float(r["multiplier"]) for r in rows)
@@ -48,10 +42,10 @@ done
 
 dir=$work/slides
 block "$dir.dat" 0.5,-1 pdas
-SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; fail "sliding block: the chain failed"; }
-grep -q "sig-solve: Nv, drift:" "$dir.log" || { grep sig-solve "$dir.log"; fail "sliding block: sig-solve did not name the drift"; }
-"$bin/sig-dump" "$dir/case.b" | grep -q 'failure_reason.*"drift"' || fail "sliding block: case.b has no failure_reason drift"
-/usr/bin/python3 - "$dir" <<'PY' || fail "sliding block: an output does not say Nv"
+SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; die "sliding block: the chain failed"; }
+grep -q "sig-solve: Nv, drift:" "$dir.log" || { grep sig-solve "$dir.log"; die "sliding block: sig-solve did not name the drift"; }
+"$bin/sig-dump" "$dir/case.b" | grep -q 'failure_reason.*"drift"' || die "sliding block: case.b has no failure_reason drift"
+/usr/bin/python3 - "$dir" <<'PY' || die "sliding block: an output does not say Nv"
 import csv, json, sys
 from pathlib import Path
 out = Path(sys.argv[1])
@@ -70,5 +64,5 @@ dir=$work/facing
 block "$dir.dat" 0.2,-1 pdas "CONTACT ref=3 obstacle=plane point=0,2 normal=0,-1 law=signorini"
 "$bin/sig-mesh" "$dir.dat" -o "$dir" >/dev/null
 "$bin/sig-contact" "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || true
-grep -q "contact nodes face the obstacle from inside the body" "$dir.log" || { cat "$dir.log"; fail "no warning for an obstacle facing Gamma3 from inside"; }
+grep -q "contact nodes face the obstacle from inside the body" "$dir.log" || { cat "$dir.log"; die "no warning for an obstacle facing Gamma3 from inside"; }
 echo "robust_newton: an obstacle facing Gamma3 from inside the body is warned about"

@@ -6,14 +6,7 @@
 # load puts most of Gamma3 on the bound, the perturbation's difference falls with rho, and the
 # ParaView series carry the statuses. Checked on the report's scene.json and the .vtu files.
 set -euo pipefail
-bin=${SIG_BIN:?SIG_BIN is not set}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() {
-  echo "FAIL: $*"
-  failures=$((failures + 1))
-}
+source tests/pipeline/lib/common.sh
 
 # 1. Bad cards on a small strip: STAGE EDIT TEXT... (sed edit of the deck, texts of the message).
 good=$work/good.dat
@@ -24,17 +17,8 @@ done
 "$bin/sig-march" "$good" -o "$work/good" >/dev/null 2>&1 || fail "sig-march on the good deck"
 expect() {
   local stage=$1 edit=$2
-  shift 2
-  local deck=$work/bad.dat message status=0
-  sed -e "$edit" "$good" >"$deck"
-  message=$("$bin/sig-$stage" "$deck" -o "$work/good" 2>&1) || status=$?
-  if [ "$status" -eq 0 ]; then
-    fail "sig-$stage ($edit): exit 0"
-    return
-  fi
-  for text in "bad.dat:" "$@"; do
-    grep -qiF -- "$text" <<<"$message" || fail "sig-$stage ($edit): message lacks '$text': $message"
-  done
+  sed -e "$edit" "$good" >"$work/bad.dat"
+  refused "sig-$stage ($edit)" "$stage" "$work/bad.dat" "$work/good" "bad.dat:" "${@:3}"
 }
 expect material 's/eta1=0.25/eta1=-0.25/' "'eta1'" ">= 0"
 expect material 's/eta2=0.5/eta2=-1/' "'eta2'" ">= 0"

@@ -15,44 +15,23 @@
 # matplotlib or numpy are missing.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/../.." && pwd)
-bin=${SIG_BIN:-$root/build/bin}
-python=${PYTHON:-/usr/bin/python3}
-"$python" -c 'import matplotlib, numpy' 2>/dev/null ||
-  { echo "scene6_quick: skipped, no matplotlib/numpy"; exit 77; }
+source "$(dirname "$0")/lib/common.sh"
+require_python matplotlib numpy
+quick_driver scene6
 
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-SIG_BIN=$bin "$root/drivers/scene6.sh" --quick -o "$work/scene6" >"$work/driver.log" 2>&1 ||
-  { tail -40 "$work/driver.log"; echo "scene6_quick: drivers/scene6.sh --quick failed" >&2; exit 1; }
-
-SIG_BIN=$bin PYTHONPATH=$root/postproc "$python" - "$work/scene6" <<'PYEOF'
-import json, sys
+SIG_BIN=$bin PYTHONPATH=$root/postproc:$PYTHONPATH "$python" - "$work/scene6" <<'PYEOF'
+import sys
 from pathlib import Path
 
+from pipeline_checks import check, check_scene_index, finish
 from sigreport import read_ds
 
 out = Path(sys.argv[1])
-failures = []
-
-
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
-
-
-scene = json.loads((out / "scene.json").read_text())
-check(scene["scene"] == "6", "scene.json is scene 6")
-for c in scene["checks"]:
-    check(c["pass"] is not False, f"report check: {c['name']} ({c['detail']})")
-check(sum(c["pass"] is True for c in scene["checks"]) >= 8, "at least 8 checks evaluated and passed")
+scene = check_scene_index(out, "6", 8)
 names = {c["name"] for c in scene["checks"]}
 for needed in ("Winkler strip at psi = 10 within 1 %", "Winkler strip at psi = 200 within 1 %"):
     check(needed in names, f"the report checks '{needed}'")
 check(any(n.startswith("quasi-static limit") for n in names), "the report checks the quasi-static limit")
-for name in [scene["report"]] + list(scene["charts"].values()) + scene["pvd"]:
-    check((out / name).is_file(), f"scene.json names {name}, which exists")
 pvd = out / "figs" / "friction" / "rail.pvd"
 check(pvd.is_file() and pvd.read_text().count("<DataSet") >= 50,
       "figs/friction/rail.pvd is a time series (every other step)")
@@ -66,6 +45,6 @@ check(len(hist["outer_iterations"]) == hist.scalar("steps") + 1 and
       min(hist["outer_iterations"][1:]) >= 1 and all(hist["outer_converged"][1:]),
       f"figs/friction: the loop ran and converged in every step (at most "
       f"{max(hist['outer_iterations'])} convex solves)")
-sys.exit(1 if failures else 0)
+finish("scene6_quick")
 PYEOF
 echo "scene6_quick: the quick scene and its report pass"

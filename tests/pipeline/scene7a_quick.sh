@@ -15,27 +15,12 @@
 # executables or gmsh are missing.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/../.." && pwd)
-bin=${SIG_BIN:-$root/build/bin}
-python=${PYTHON:-/usr/bin/python3}
+source "$(dirname "$0")/lib/common.sh"
 template=$root/datafiles/scene7a/hertz.dat
-for stage in mesh material contact assemble solve post; do
-  if [ ! -x "$bin/sig-$stage" ]; then
-    echo "scene7a_quick: skipped, no $bin/sig-$stage"
-    exit 77
-  fi
-done
-command -v gmsh >/dev/null || { echo "scene7a_quick: skipped, no gmsh"; exit 77; }
-"$python" -c 'import numpy' 2>/dev/null || { echo "scene7a_quick: skipped, no numpy"; exit 77; }
-[ -r "$template" ] || { echo "scene7a_quick: cannot read $template" >&2; exit 1; }
-
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-die() {
-  echo "scene7a_quick: $*" >&2
-  exit 1
-}
+require_stages mesh material contact assemble solve post
+require_command gmsh
+require_python numpy
+[ -r "$template" ] || die "cannot read $template"
 source "$root/drivers/lib/hertz_deck.sh"
 
 declare -A value=([pdas]=1e2 [projection]=1e2 [alm]=1e2 [penalty]=1e6)
@@ -54,13 +39,9 @@ import csv, json, math, sys
 from pathlib import Path
 import numpy as np
 
-work = Path(sys.argv[1])
-failures = []
+from pipeline_checks import check, finish
 
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
+work = Path(sys.argv[1])
 
 def deck_value(path, card, field):
     for line in path.read_text().splitlines():
@@ -116,7 +97,6 @@ for method, (summary, table) in results.items():
     rel = (pmax - p0) / p0
     check(abs(rel) <= 0.05, f"{method}: p_max {pmax:.4f} vs p0 {p0:.4f}: {100 * rel:+.2f} % within 5 %")
 
-if failures:
-    sys.exit(f"scene7a_quick: {len(failures)} check(s) failed")
+finish("scene7a_quick")
 print("scene7a_quick: all checks passed")
 EOF

@@ -58,7 +58,7 @@ die() {
 deck() {
   cat <<EOF
 TITLE small hyperelastic ring ($1)
-MESH generator=ring center=0,10 r_in=9 r_out=10 N=${4:-64} gamma1_above=19.9 gamma3_below=17.08
+MESH generator=ring centre=0,10 r_in=9 r_out=10 N=${4:-64} gamma1_above=19.9 gamma3_below=17.08
 MATERIAL law=ciarlet-geymonat c1=0.5 c2=0.005 a=0.35 plane=strain
 DIRICHLET ref=1 ux=${5:-0} uy=-6
 LOADSTEPS n=${6:-3} start=${7:-small-strain}

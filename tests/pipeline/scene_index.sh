@@ -13,14 +13,7 @@
 #    well as in its log, and the index lists that scene.
 # The page in a real browser: index_browser.sh.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-python=${PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() {
-  echo "scene_index: FAIL: $*" >&2
-  exit 1
-}
+source "$(dirname "$0")/lib/common.sh"
 
 mkdir -p "$work/drivers"
 declare -A kinds=([scene1]=pass [scene2]=fail [scene3]=crash [scene4]=silent [scene5]=broken
@@ -38,25 +31,20 @@ status=0
 SIG_SCENE_DRIVERS=$work/drivers bash "$root/drivers/scenes.sh" -o "$out" >"$work/log" 2>&1 ||
   status=$?
 cat "$work/log"
-[ "$status" -eq 1 ] || fail "scenes.sh exited $status, not 1 (some scenes fail)"
+[ "$status" -eq 1 ] || die "scenes.sh exited $status, not 1 (some scenes fail)"
 for k in 1 2 3 4 5 6; do
-  grep -qE "^\[$k/6\] " "$work/log" || fail "no progress line [$k/6]"
+  grep -qE "^\[$k/6\] " "$work/log" || die "no progress line [$k/6]"
 done
-grep -q "bench-x" "$work/log" && fail "scenes.sh ran bench-x.sh, which is no scene driver"
-[ -s "$out/index.md" ] && [ -s "$out/index.html" ] || fail "no index.md / index.html"
+grep -q "bench-x" "$work/log" && die "scenes.sh ran bench-x.sh, which is no scene driver"
+[ -s "$out/index.md" ] && [ -s "$out/index.html" ] || die "no index.md / index.html"
 
 "$python" - "$out" "$root" <<'PY'
 import re, sys
 from pathlib import Path
+
+from pipeline_checks import check, finish
 out, root = Path(sys.argv[1]), Path(sys.argv[2])
 md, page = (out / "index.md").read_text(), (out / "index.html").read_text()
-failures = []
-
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
-
 reports = sorted(str(p.relative_to(out)) for p in out.glob("*/report.md"))
 check(len(reports) == 6, f"6 reports written: {reports}")
 for report in reports:
@@ -86,15 +74,14 @@ check(link is not None and (out / link.group(1)).resolve() == root / notes,
 check("datafiles/scene1/" not in page, "no notes link for a scene without notes")
 check("no_such_chart.png is missing" in page and '<img src="scene5/no_such_chart.png"' not in page,
       "no <img> for a missing chart")
-if failures:
-    sys.exit(f"scene_index: {len(failures)} check(s) failed")
+finish("scene_index")
 PY
 # --tee: drivers/run.sh's way of running its one scene.
 tee_out=$work/tee
 SIG_SCENE_DRIVERS=$work/drivers bash "$root/drivers/scenes.sh" --tee -o "$tee_out" scene1 \
-  >"$work/tee.log" 2>&1 || fail "scenes.sh --tee scene1 failed: $(cat "$work/tee.log")"
-grep -q "^fake scene1: pass" "$work/tee.log" || fail "--tee: the driver's output not on the terminal"
-grep -q "^fake scene1: pass" "$tee_out/scene1.log" || fail "--tee: the driver's output not in its log"
-grep -q "scene1/report.md" "$tee_out/index.html" || fail "--tee: the index does not list scene1"
-grep -q "scene2" "$tee_out/index.html" && fail "--tee scene1: the index lists scene2, not run"
+  >"$work/tee.log" 2>&1 || die "scenes.sh --tee scene1 failed: $(cat "$work/tee.log")"
+grep -q "^fake scene1: pass" "$work/tee.log" || die "--tee: the driver's output not on the terminal"
+grep -q "^fake scene1: pass" "$tee_out/scene1.log" || die "--tee: the driver's output not in its log"
+grep -q "scene1/report.md" "$tee_out/index.html" || die "--tee: the index does not list scene1"
+grep -q "scene2" "$tee_out/index.html" && die "--tee scene1: the index lists scene2, not run"
 echo "scene_index: ok"

@@ -10,19 +10,14 @@
 # same files in paraview_screenshot.sh. Exit 77 (skipped) only when none of the readers is
 # installed.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-bin=${SIG_BIN:-$root/build/bin}
-python=${PYTHON:-/usr/bin/python3}
-[ -x "$bin/sig-post" ] || { echo "vtk_readers: skipped, no $bin/sig-post"; exit 77; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/lib/common.sh"
+require_stages post
 
 for deck in datafiles/cantilever.dat tests/pipeline/data/vibrating_block.dat; do
   name=$(basename "$deck" .dat)
   SIG_BIN=$bin bash "$root/drivers/chain.sh" "$root/$deck" -o "$work/$name" >"$work/$name.log" 2>&1 || {
     cat "$work/$name.log"
-    echo "vtk_readers: the chain of $deck failed" >&2
-    exit 1
+    die "the chain of $deck failed"
   }
   "$bin/sig-dump" --json "$work/$name/case.nopo" >"$work/$name/mesh.json"
 done
@@ -33,16 +28,11 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 import numpy as np
 
+from pipeline_checks import check, finish
+
 work = Path(sys.argv[1])
 cases = {"cantilever": ("cantilever.pvd", "Cantilever beam, linear elasticity"),
          "vibrating_block": ("block.pvd", 'Vibrating block, "midpoint" rule')}
-failures = []
-
-
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def read_meshio(path):
@@ -129,7 +119,6 @@ for case, (pvd, title) in cases.items():
         moved = np.abs(results["meshio"]["displacement"]).max()
         check(moved > 0, f"{case}: the last state has moved ({moved:.3g})")
 
-if failures:
-    sys.exit(f"vtk_readers: {len(failures)} check(s) failed")
+finish("vtk_readers")
 print(f"vtk_readers: ok with {', '.join(readers)}")
 PY

@@ -7,6 +7,7 @@
 // loop is the scalar iteration r(m+1) = (|F_x| - c g mu(r(m))) / k_x, whose outer count the
 // loop's must equal with the same stopping test.
 #include "core/error.hpp"
+#include "scene4_law.hpp"
 #include "solver/condensed_contact.hpp"
 
 #include <gtest/gtest.h>
@@ -25,17 +26,7 @@ constexpr double kKx = kMu, kKy = kLambda + 2 * kMu;
 constexpr double kCn = 10, kG = 0.5, kP = 200;
 
 ContactLaw nonmonotone(double a, double b, double alpha) {
-  ContactLaw law;
-  law.normal = NormalLaw::compliance_unilateral;
-  law.cn = kCn;
-  law.depth = kG;
-  law.friction = FrictionLaw::nonmonotone;
-  law.bound = FrictionBound::compliance;
-  law.a = a;
-  law.b = b;
-  law.alpha = alpha;
-  law.mu = a;
-  return law;
+  return test::compliance_nonmonotone(kCn, kG, a, b, alpha);
 }
 
 struct SingleNode {

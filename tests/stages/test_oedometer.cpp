@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/generators.hpp"
+#include "scene4_law.hpp"
 #include "stages/static_solve.hpp"
 
 #include <gtest/gtest.h>
@@ -50,17 +51,8 @@ Oedometer oedometer(double q) {
       std::unique(o.system.dirichlet_dofs.begin(), o.system.dirichlet_dofs.end()),
       o.system.dirichlet_dofs.end());
   o.system.dirichlet_values = Eigen::VectorXd::Zero(o.system.dirichlet_dofs.size());
-  ContactLaw law;
-  law.normal = NormalLaw::compliance_unilateral;
-  law.cn = kCn;
-  law.depth = kG;
-  law.friction = FrictionLaw::nonmonotone;
-  law.bound = FrictionBound::compliance;
-  law.a = 2;
-  law.b = 0.02;
-  law.alpha = 1;
-  law.mu = law.a;
-  o.contact = build_contact_elements(o.mesh, 3, HalfPlane({0, 0}, {0, 1}), law);
+  o.contact = build_contact_elements(o.mesh, 3, HalfPlane({0, 0}, {0, 1}),
+                                     test::compliance_nonmonotone(kCn, kG, 2, 0.02, 1));
   return o;
 }
 

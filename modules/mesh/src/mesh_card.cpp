@@ -23,8 +23,9 @@ namespace {
 const std::set<std::string>& fields_of(const std::string& generator) {
   static const std::map<std::string, std::set<std::string>> fields = {
       {"half_disc", {"r", "n", "grading"}},
-      {"disc", {"center", "r", "n", "grading", "arcs"}},
-      {"ring", {"center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
+      {"disc", {"centre", "center", "r", "n", "grading", "arcs"}},
+      {"ring",
+       {"centre", "center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
       {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
       {"square", {"lx", "nx", "refs", "pattern"}},
       {"file", {"coincident"}},
@@ -54,9 +55,14 @@ void verify_size(const Card& card, const std::string& field, double nodes) {
   }
 }
 
-Eigen::Vector2d center(const Card& card) {
-  const std::vector<double> c = card.reals("center");
-  if (c.size() != 2) card.fail("center", "expects two coordinates, e.g. center=0,10");
+// centre= as CONTACT and INITIAL spell it; center= is its old spelling, read alike.
+Eigen::Vector2d centre(const Card& card) {
+  if (card.has("centre") && card.has("center"))
+    card.fail("center", "give the centre once: centre= (center= is its old spelling)");
+  const char* field = card.has("center") ? "center" : "centre";
+  const std::vector<double> c = card.reals(field);
+  if (c.size() != 2)
+    card.fail(field, std::string("expects two coordinates, e.g. ") + field + "=0,10");
   return {c[0], c[1]};
 }
 
@@ -108,7 +114,7 @@ Mesh generate(const Card& card, const std::string& generator) {
     verify_size(card, "N", static_cast<double>(n) * n / (4 * std::numbers::pi));
     const double grading = card.real("grading");
     return generator == "disc"
-               ? disc(center(card), r, n, grading,
+               ? disc(centre(card), r, n, grading,
                       card.choice("arcs", {"uniform", "graded"}, "uniform") == "graded")
                : half_disc(r, n, grading);
   }
@@ -123,7 +129,7 @@ Mesh generate(const Card& card, const std::string& generator) {
                     (options.layers > 0 ? options.layers : default_ring_layers(n)));
     if (card.has("gamma1_above")) options.gamma1_above = card.real("gamma1_above");
     if (card.has("gamma3_below")) options.gamma3_below = card.real("gamma3_below");
-    return ring(center(card), r_in, r_out, n, options);
+    return ring(centre(card), r_in, r_out, n, options);
   }
   const CellPattern pattern = card.choice("pattern", {"alternating", "union-jack"}) == "union-jack"
                                   ? CellPattern::union_jack

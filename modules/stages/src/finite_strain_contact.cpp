@@ -3,6 +3,7 @@
 
 #include "core/error.hpp"
 #include "mesh/mesh.hpp"
+#include "stages/newton_outcome.hpp"
 
 #include <algorithm>
 
@@ -52,11 +53,7 @@ FiniteStrainSolution solve_finite_strain_contact(const FiniteStrainProblem& prob
         solve_contact(bulk, setting, *method, newton_options(options.contact), iterate);
     LoadStepResult step;
     step.load_factor = s;
-    step.converged = c.converged;
-    step.reason = c.reason;
-    step.failure = c.failure;
-    step.drift = c.drift;
-    step.history = c.history;
+    record_newton_outcome(step, c);
     step.step_length = c.step_length;
     step.u = bulk.displacement();
     step.multiplier = c.normal_force;

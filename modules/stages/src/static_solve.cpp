@@ -7,6 +7,7 @@
 #include "solver/condensed_contact.hpp"
 #include "solver/contact_condensation.hpp"
 #include "solver/linear_solver.hpp"
+#include "stages/newton_outcome.hpp"
 
 #include <algorithm>
 #include <array>
@@ -155,11 +156,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, ContactElements 
   s.tangential = c.tangential_force;
   s.normal_status = c.normal_status;
   s.friction_status = c.friction_status;
-  s.converged = c.converged;
-  s.reason = c.reason;
-  s.failure = c.failure;
-  s.drift = c.drift;
-  s.history = c.history;
+  record_newton_outcome(s, c);
   if (condensed.convexification) {
     s.convexification = condensed.convexification;
     s.converged = s.convexification->converged;

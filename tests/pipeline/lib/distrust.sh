@@ -1,16 +1,9 @@
 # Sourced by the distrust_*.sh pipeline tests (issue 16): small good cases, and a check that a
 # stage refuses a bad input with a non-zero exit, a message holding given fragments (file, line or
-# array, field), and every DS file of the case left as it was.
-#   SIG_BIN   the stages;  $work a scratch folder;  $name the test's name (messages)
-bin=${SIG_BIN:?SIG_BIN is not set}
-ds_edit="python3 $(pwd)/tests/pipeline/lib/ds_edit.py"
-failures=0
-checks=0
-
-fail() {
-  echo "FAIL ($name): $*"
-  failures=$((failures + 1))
-}
+# array, field), and every DS file of the case left as it was. On top of lib/common.sh ($work,
+# $bin, fail).
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+ds_edit="python3 $root/tests/pipeline/lib/ds_edit.py"
 
 # A static case without contact: a 4 x 2 rectangle clamped on the left, pulled down on the right.
 static_deck() {
@@ -34,7 +27,7 @@ contact_deck() {
 dynamic_deck() {
   cat > "$1" <<'EOF'
 TITLE distrust: a free disc
-MESH generator=disc center=0,15 R=1 N=16
+MESH generator=disc centre=0,15 R=1 N=16
 MATERIAL law=hooke E=100 nu=0.35 plane=strain rho=1000
 INITIAL v=0,-10
 TIME scheme=midpoint T=0.1 k=0.01 output_every=5
@@ -57,26 +50,15 @@ fingerprints() {
 # expect_refusal WHAT STAGE DECK OUTDIR FRAGMENT...: STAGE on DECK -o OUTDIR must exit non-zero
 # with every fragment in its message (case-insensitive) and leave every file of OUTDIR as it was.
 expect_refusal() {
-  local what=$1 stage=$2 deck=$3 outdir=$4
-  shift 4
-  checks=$((checks + 1))
-  local before after message status=0
+  local what=$1 stage=$2 outdir=$4 before after failed=$failures
   before=$(fingerprints "$outdir")
-  message=$("$bin/sig-$stage" "$deck" -o "$outdir" 2>&1) || status=$?
+  refused "$@"
   after=$(fingerprints "$outdir")
-  if [ "$status" -eq 0 ]; then
-    fail "$what: sig-$stage exited 0: $message"
-    return
-  fi
-  local failed=$failures
-  for text in "$@"; do
-    grep -qiF -- "$text" <<< "$message" || fail "$what: the message lacks '$text': $message"
-  done
   [ "$before" = "$after" ] || fail "$what: sig-$stage changed the files of $outdir: $(diff <(echo "$before") <(echo "$after") | head -4)"
-  [ "$failures" -ne "$failed" ] || echo "ok ($name): $what: $(grep -m1 -i 'error' <<< "$message" | cut -c1-160)"
+  [ "$failures" -ne "$failed" ] || echo "ok ($test_name): $what: $(grep -m1 -i 'error' <<< "$refusal" | cut -c1-160)"
 }
 
-finish() {
-  [ "$failures" -eq 0 ] || { echo "$name: $failures of $checks checks failed"; exit 1; }
-  echo "$name: $checks refusals with exit status, message and the case's files intact"
+# distrust_finish: exit 1 naming the failed checks, or say how many refusals held.
+distrust_finish() {
+  finish "$checks refusals with exit status, message and the case's files intact"
 }

@@ -60,8 +60,8 @@ struct ContactStrategyParameters {
   /// PDAS's parameter (wall and friction multipliers), > 0. The solution does not depend on
   /// it; the friction's semi-smooth Newton does: of the order of a contact node's stiffness in
   /// the step per unit length converges, far above or below it a slipping node may cycle
-  /// between its two directions (Nv).
-  double gamma = 100;
+  /// between its two directions (Nv). The SOLVER card's default, as in a static solve.
+  double gamma = ContactSolverParameters::card_default("gamma");
   int max_iterations = 50; ///< per Newton phase
   double eps = 1e-10;      ///< the driver's test (iv), relative
   Persistency persistency = Persistency::midpoint;

@@ -1,8 +1,8 @@
 #pragma once
 // The datafile MESH card: either a generator with its dimensions or a mesh file.
 //   MESH generator=half_disc R=8 N=256 grading=0          (half-disc is accepted too)
-//   MESH generator=disc center=10,10 R=10 N=512 grading=0.05
-//   MESH generator=ring center=0,10 r_in=9 r_out=10 N=128 [layers=7] [gamma1_above=19.9]
+//   MESH generator=disc centre=10,10 R=10 N=512 grading=0.05
+//   MESH generator=ring centre=0,10 r_in=9 r_out=10 N=128 [layers=7] [gamma1_above=19.9]
 //        [gamma3_below=17.07]
 //   MESH generator=rectangle lx=5 ly=1 nx=320 ny=64 [refs=3,4,2,1]   (bottom, right, top, left)
 //   MESH generator=square lx=1 nx=64 [refs=3,4,2,1]

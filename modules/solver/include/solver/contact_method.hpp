@@ -22,16 +22,25 @@
 
 namespace sig {
 
+/// The contact method and its parameters, as the SOLVER card gives them. The defaults of r, gamma,
+/// c, eps and search are the card schema's (core/src/cards.cpp), declared there once; maxit's
+/// depends on the stage (sig-solve's is here, a march's in ContactStrategyParameters), so the
+/// schema only names both in its help text.
 struct ContactSolverParameters {
-  std::string method = "pdas"; ///< alm | penalty | pdas | projection
-  double r = 100;              ///< ALM augmentation / penalty stiffness
-  double gamma = 100;          ///< PDAS
-  double c = 100;              ///< projection
-  double eps = 1e-5;           ///< stopping tolerance of test (iv)
-  int max_iterations = 100;
+  /// The schema's default of the SOLVER field `field`.
+  static double card_default(const char* field);
+  static std::string card_default_text(const char* field);
+  static constexpr int solve_max_iterations = 100; ///< sig-solve's maxit
+
+  std::string method = "pdas";          ///< alm | penalty | pdas | projection
+  double r = card_default("r");         ///< ALM augmentation / penalty stiffness
+  double gamma = card_default("gamma"); ///< PDAS
+  double c = card_default("c");         ///< projection
+  double eps = card_default("eps");     ///< stopping tolerance of test (iv)
+  int max_iterations = solve_max_iterations;
   /// Globalization of the contact Newton (solver/NEWTON.md): "auto" and "yes" globalize every
   /// method on every bulk; "no" takes the thesis's full steps (contact_newton.hpp).
-  std::string search = "auto";
+  std::string search = card_default_text("search");
 };
 
 /// Card field `SOLVER method=` of the contact methods.

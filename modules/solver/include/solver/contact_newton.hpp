@@ -110,9 +110,11 @@ struct IterationRecord {
   std::vector<std::int8_t> wall;
 };
 
+/// The defaults are the SOLVER card's (ContactSolverParameters): a driver given no options stops
+/// as a deck without a SOLVER card does.
 struct ContactNewtonOptions {
-  double eps = 1e-5;
-  int max_iterations = 100;
+  double eps = ContactSolverParameters::card_default("eps");
+  int max_iterations = ContactSolverParameters::solve_max_iterations;
   /// False: full Newton steps whatever their residual, the methods as the thesis states them
   /// (SOLVER search=no, for studies); true: the globalization of the header.
   bool globalize = true;

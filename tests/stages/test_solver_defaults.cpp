@@ -1,0 +1,76 @@
+// Each SOLVER parameter declared once (issue 24): r, gamma, c, eps and search have their defaults
+// in the card schema (core/src/cards.cpp) and ContactSolverParameters takes them from there (and
+// ContactNewtonOptions from it), so a deck without a SOLVER card solves with what a
+// default-constructed struct holds. maxit's default
+// depends on the stage and stays out of the schema (the card fingerprint would record it for a
+// march too): its help text names the two structs' values, which must agree with it.
+#include "core/datafile.hpp"
+#include "integrator/contact_strategy.hpp"
+#include "solver/contact_method.hpp"
+#include "solver/contact_newton.hpp"
+#include "solver/solver_card.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace sig {
+namespace {
+
+const FieldSpec& solver_field(const std::string& name) {
+  const CardSpec* spec = find_card_spec("SOLVER");
+  EXPECT_NE(spec, nullptr);
+  for (const FieldSpec& field : spec->fields)
+    if (field.name == name) return field;
+  ADD_FAILURE() << "no SOLVER " << name << "= in the schema";
+  return spec->fields.front();
+}
+
+TEST(SolverDefaults, ADeckWithoutSolverCardTakesTheSchemasDefaults) {
+  const ContactSolverParameters defaults;
+  const ContactSolverParameters read =
+      read_solver_card(
+          Datafile::parse("CONTACT ref=3 obstacle=plane point=0,0 normal=0,1\n", "no_solver.dat"))
+          .parameters;
+  EXPECT_EQ(read.method, defaults.method);
+  EXPECT_EQ(read.r, defaults.r);
+  EXPECT_EQ(read.gamma, defaults.gamma);
+  EXPECT_EQ(read.c, defaults.c);
+  EXPECT_EQ(read.eps, defaults.eps);
+  EXPECT_EQ(read.max_iterations, defaults.max_iterations);
+  EXPECT_EQ(read.search, defaults.search);
+  // The values themselves: the schema's, and the ones the thesis runs used.
+  for (const char* name : {"r", "gamma", "c"}) {
+    ASSERT_NE(solver_field(name).fallback, nullptr) << name;
+    EXPECT_EQ(std::stod(solver_field(name).fallback), 100.0) << name;
+  }
+  EXPECT_EQ(defaults.r, 100.0);
+  EXPECT_EQ(defaults.gamma, 100.0);
+  EXPECT_EQ(defaults.c, 100.0);
+  EXPECT_EQ(defaults.eps, 1e-5);
+  EXPECT_EQ(defaults.search, "auto");
+  // The Newton driver given no options stops as the card's defaults say.
+  const ContactNewtonOptions options, of_card = newton_options(defaults);
+  EXPECT_EQ(options.eps, of_card.eps);
+  EXPECT_EQ(options.max_iterations, of_card.max_iterations);
+  EXPECT_EQ(options.globalize, of_card.globalize);
+}
+
+TEST(SolverDefaults, AMarchsGammaIsTheCards) {
+  EXPECT_EQ(ContactStrategyParameters{}.gamma, ContactSolverParameters{}.gamma);
+}
+
+TEST(SolverDefaults, MaxitHelpNamesEachStagesDefault) {
+  const FieldSpec& maxit = solver_field("maxit");
+  EXPECT_EQ(maxit.fallback, nullptr) << "maxit's default depends on the stage";
+  const std::string help = maxit.help;
+  const std::string solve =
+      "sig-solve, default " + std::to_string(ContactSolverParameters{}.max_iterations);
+  const std::string march =
+      "sig-march, default " + std::to_string(ContactStrategyParameters{}.max_iterations);
+  EXPECT_NE(help.find(solve), std::string::npos) << help << "\nlacks: " << solve;
+  EXPECT_NE(help.find(march), std::string::npos) << help << "\nlacks: " << march;
+}
+
+} // namespace
+} // namespace sig
