@@ -1,9 +1,9 @@
-// Each SOLVER parameter declared once (issue 24): r, gamma, c, eps and search have their defaults
-// in the card schema (core/src/cards.cpp) and ContactSolverParameters takes them from there (and
+// Each SOLVER parameter declared once (issue 24): r, gamma, c and search have their defaults in
+// the card schema (core/src/cards.cpp) and ContactSolverParameters takes them from there (and
 // ContactNewtonOptions from it), so a deck without a SOLVER card solves with what a
-// default-constructed struct holds. maxit's default
-// depends on the stage and stays out of the schema (the card fingerprint would record it for a
-// march too): its help text names the two structs' values, which must agree with it.
+// default-constructed struct holds. The defaults of maxit and eps depend on the stage and stay out
+// of the schema (the card fingerprint would record them for a march too): their help texts name
+// the two structs' values, which must agree with them.
 #include "core/datafile.hpp"
 #include "integrator/contact_strategy.hpp"
 #include "solver/contact_method.hpp"
@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 namespace sig {
@@ -68,6 +69,23 @@ TEST(SolverDefaults, MaxitHelpNamesEachStagesDefault) {
       "sig-solve, default " + std::to_string(ContactSolverParameters{}.max_iterations);
   const std::string march =
       "sig-march, default " + std::to_string(ContactStrategyParameters{}.max_iterations);
+  EXPECT_NE(help.find(solve), std::string::npos) << help << "\nlacks: " << solve;
+  EXPECT_NE(help.find(march), std::string::npos) << help << "\nlacks: " << march;
+}
+
+TEST(SolverDefaults, EpsHelpNamesEachStagesDefault) {
+  // A schema default would make a march's explicit eps=1e-5 look like no eps at all to the card
+  // fingerprint, though the march's own default is 1e-10: a stale case.hist kept.
+  const FieldSpec& eps = solver_field("eps");
+  EXPECT_EQ(eps.fallback, nullptr) << "eps's default depends on the stage";
+  const auto text = [](double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.0e", x);
+    return std::string(buffer);
+  };
+  const std::string help = eps.help;
+  const std::string solve = "sig-solve, default " + text(ContactSolverParameters{}.eps);
+  const std::string march = "sig-march, default " + text(ContactStrategyParameters{}.eps);
   EXPECT_NE(help.find(solve), std::string::npos) << help << "\nlacks: " << solve;
   EXPECT_NE(help.find(march), std::string::npos) << help << "\nlacks: " << march;
 }

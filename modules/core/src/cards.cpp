@@ -208,7 +208,9 @@ const std::vector<CardSpec>& card_schema() {
            {"r", "augmentation parameter (alm) or foundation stiffness (penalty), > 0", "100"},
            {"gamma", "parameter of the primal-dual active set test (3.20), > 0", "100"},
            {"c", "parameter of the iterative projection method (7.16), > 0", "100"},
-           {"eps", "tolerance of stopping test (iv): relative increment and residual, > 0", "1e-5"},
+           {"eps", "tolerance of stopping test (iv): relative increment and residual, > 0: of "
+                   "the solve (sig-solve, default 1e-05), of each Newton phase of a time step "
+                   "(sig-march, default 1e-10)"},
            {"maxit", "maximum number of nonlinear iterations: of the solve (sig-solve, default "
                      "100), of each Newton phase of a time step (sig-march, default 50)"},
            {"search",

@@ -30,7 +30,7 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
   p.r = solver.real("r");
   p.gamma = solver.real("gamma");
   p.c = solver.real("c");
-  p.eps = solver.real("eps");
+  p.eps = solver.real("eps", p.eps);
   p.max_iterations = static_cast<int>(solver.integer("maxit", p.max_iterations));
   p.search = solver.choice("search", {"auto", "yes", "no"});
   // r, gamma, c > 0, eps, maxit and LOADSTEPS n: the cards' ranges (core/ranges.hpp).

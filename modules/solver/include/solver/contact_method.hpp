@@ -23,20 +23,22 @@
 namespace sig {
 
 /// The contact method and its parameters, as the SOLVER card gives them. The defaults of r, gamma,
-/// c, eps and search are the card schema's (core/src/cards.cpp), declared there once; maxit's
-/// depends on the stage (sig-solve's is here, a march's in ContactStrategyParameters), so the
-/// schema only names both in its help text.
+/// c and search are the card schema's (core/src/cards.cpp), declared there once; those of maxit
+/// and eps depend on the stage (sig-solve's are here, a march's in ContactStrategyParameters), so
+/// the schema only names both in its help text, and the card fingerprint records them only when
+/// a deck gives them (a march's eps=1e-5 is then a change, not the default).
 struct ContactSolverParameters {
   /// The schema's default of the SOLVER field `field`.
   static double card_default(const char* field);
   static std::string card_default_text(const char* field);
   static constexpr int solve_max_iterations = 100; ///< sig-solve's maxit
+  static constexpr double solve_eps = 1e-5;         ///< sig-solve's eps
 
   std::string method = "pdas";          ///< alm | penalty | pdas | projection
   double r = card_default("r");         ///< ALM augmentation / penalty stiffness
   double gamma = card_default("gamma"); ///< PDAS
   double c = card_default("c");         ///< projection
-  double eps = card_default("eps");     ///< stopping tolerance of test (iv)
+  double eps = solve_eps;               ///< stopping tolerance of test (iv)
   int max_iterations = solve_max_iterations;
   /// Globalization of the contact Newton (solver/NEWTON.md): "auto" and "yes" globalize every
   /// method on every bulk; "no" takes the thesis's full steps (contact_newton.hpp).

@@ -113,7 +113,7 @@ struct IterationRecord {
 /// The defaults are the SOLVER card's (ContactSolverParameters): a driver given no options stops
 /// as a deck without a SOLVER card does.
 struct ContactNewtonOptions {
-  double eps = ContactSolverParameters::card_default("eps");
+  double eps = ContactSolverParameters::solve_eps;
   int max_iterations = ContactSolverParameters::solve_max_iterations;
   /// False: full Newton steps whatever their residual, the methods as the thesis states them
   /// (SOLVER search=no, for studies); true: the globalization of the header.
