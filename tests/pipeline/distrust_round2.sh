@@ -10,6 +10,8 @@
 #    power of two (at R = 1e29 it ran without end, at 1e20 it failed, at 1e-25 it ignored the
 #    size law), and grading=-0 is grading=0.
 #  - SOLVER fields the static solve does not use are said, not silently ignored.
+#  - A Saint Venant-Kirchhoff block squashed to 40 % of its height loses the positive tangent
+#    (its stored energy is not polyconvex): the Nv names the law, not CHOLMOD alone.
 set -euo pipefail
 name=distrust_round2
 work=$(mktemp -d)
@@ -101,4 +103,24 @@ message=$(drivers/chain.sh "$work/pdas_r.dat" -o "$work/pdas_r" 2>&1) || fail "r
 line=$(grep -n '^SOLVER' "$work/pdas_r.dat" | cut -d: -f1)
 grep -qF "pdas_r.dat:$line: SOLVER r=5 is not used by method=pdas (it is a parameter of method=alm and method=penalty)" <<< "$message" &&
   echo "ok ($name): r= beside method=pdas" || fail "r= beside method=pdas: no warning: $message"
+
+# law=svk squashed: the tangent is lost; the failure says why in the deck's words.
+cat > "$work/svk.dat" <<'EOF'
+TITLE distrust: a Saint Venant-Kirchhoff block squashed
+MESH generator=rectangle lx=1 ly=1 nx=4 ny=4
+MATERIAL law=svk E=100 nu=0.3 plane=strain
+DIRICHLET ref=2 ux=0 uy=-0.6
+DIRICHLET ref=3 ux=0 uy=0
+SOLVER method=linear
+OUTPUT vtk=no
+EOF
+checks=$((checks + 1))
+message=$(drivers/chain.sh "$work/svk.dat" -o "$work/svk" 2>&1) || fail "the squashed svk block: the chain failed: $message"
+detail=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["failure_detail"])' "$work/svk/summary.json")
+if grep -qF "the tangent stiffness of the deformed body is not positive definite" <<< "$detail" &&
+  grep -qF "MATERIAL law=svk softens in strong compression" <<< "$detail"; then
+  echo "ok ($name): a squashed svk block's Nv names the law"
+else
+  fail "the squashed svk block's failure does not say why: $detail"
+fi
 finish
