@@ -96,10 +96,6 @@ int main(int argc, char** argv) {
     const sig::Datafile& datafile = args.deck;
     const sig::Card* output = datafile.find("OUTPUT");
     const bool write_vtk = output == nullptr || output->choice("vtk", {"yes", "no"}) == "yes";
-    // name= names the ParaView files only: beside vtk=no it would be ignored.
-    if (!write_vtk && output->has("name"))
-      output->fail("name", "names the .pvd and .vtu files, which vtk=no does not write (remove "
-                           "name=, or write them with vtk=yes)");
 
     // 2. Mesh and materials. A dynamic case (TIME card) is shown as the states sig-march kept
     //    in case.hist, one .vtu each; its energies are in energy.csv already.
