@@ -6,8 +6,10 @@
 #include "core/error.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
+#include <sstream>
 
 namespace sig {
 
@@ -30,6 +32,41 @@ bool same_pattern(const RowMatrix& A, const RowMatrix& B) {
   return A.rows() == B.rows() && A.nonZeros() == B.nonZeros() &&
          std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.rows() + 1, B.outerIndexPtr()) &&
          std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), B.innerIndexPtr());
+}
+
+// "u1 of node 3" for a 0-based dof (2 per node, x then y).
+std::string dof_name(Eigen::Index dof) {
+  std::ostringstream name;
+  name << "u" << dof % 2 + 1 << " of node " << dof / 2 + 1;
+  return name.str();
+}
+
+// Every matrix a deck makes (stiffness, mass, viscosity, memory) is symmetric; the solvers read
+// one triangle of it, so an edited entry off the diagonal would be used on one side only, or not
+// at all, without a word. Round-off in the element matrices stays far below 1e-10 of the
+// diagonal.
+void verify_symmetric(const std::filesystem::path& path, const RowMatrix& A, const char* name) {
+  const RowMatrix At = A.transpose();
+  const Eigen::VectorXd diagonal = A.diagonal().cwiseAbs();
+  for (Eigen::Index i = 0; i < A.outerSize(); ++i) {
+    for (RowMatrix::InnerIterator a(A, i), t(At, i); a || t;) {
+      // Walk row i of A and of its transpose together; a missing entry is a zero.
+      const Eigen::Index j = !t || (a && a.col() < t.col()) ? a.col() : t.col();
+      const double aij = a && a.col() == j ? a.value() : 0;
+      const double aji = t && t.col() == j ? t.value() : 0;
+      const double scale = std::sqrt(diagonal[i] * diagonal[j]);
+      SIG_VERIFY(std::abs(aij - aji) <= 1e-10 * scale,
+                 path.string() << ": array '" << name
+                               << "': the matrix is not symmetric: its entry "
+                               << "of row " << dof_name(i) << ", column " << dof_name(j) << " is "
+                               << aij << " but that of row " << dof_name(j) << ", column "
+                               << dof_name(i) << " is " << aji
+                               << ", where every matrix a deck makes is symmetric (the file was "
+                                  "edited or written by another program: rerun sig-assemble)");
+      if (a && a.col() == j) ++a;
+      if (t && t.col() == j) ++t;
+    }
+  }
 }
 
 // A matrix from 1-based CSR arrays, checked so that a corrupt TAE is an error, not a crash.
@@ -61,6 +98,7 @@ Eigen::SparseMatrix<double> from_csr(const std::filesystem::path& path, std::int
     A.innerIndexPtr()[k] = static_cast<int>(col[k] - 1);
     A.valuePtr()[k] = val[k];
   }
+  verify_symmetric(path, A, name);
   return Eigen::SparseMatrix<double>(A);
 }
 

@@ -3,6 +3,7 @@
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -169,11 +170,20 @@ std::optional<ContactElements> contact_from_cards(const Datafile& datafile, cons
   friction_from_cards(datafile, static_cast<int>(ref), law);
   const std::unique_ptr<Obstacle> obstacle = obstacle_from_card(card);
   std::vector<int> excluded;
+  std::vector<int> zone = mesh.nodes_with_ref(static_cast<int>(ref));
+  std::sort(zone.begin(), zone.end());
   if (card.has("exclude"))
     for (long other : card.integers("exclude")) {
       const std::vector<int> nodes = mesh.nodes_with_ref(static_cast<int>(other));
       if (nodes.empty())
         card.fail("exclude", "reference " + std::to_string(other) + " carries no mesh node");
+      // A reference that shares no node with the contact zone would exclude nothing, silently.
+      if (std::none_of(nodes.begin(), nodes.end(), [&zone](int node) {
+            return std::binary_search(zone.begin(), zone.end(), node);
+          }))
+        card.fail("exclude", "reference " + std::to_string(other) +
+                                 " shares no node with the contact boundary (ref=" +
+                                 std::to_string(ref) + "): it would exclude nothing");
       excluded.insert(excluded.end(), nodes.begin(), nodes.end());
     }
 

@@ -47,13 +47,32 @@ void verify_size_law(const char* what, double R, double grading) {
              what << ": grading " << grading << " must be >= 0");
 }
 
+// The scripts' size laws (h = pi R / N, h + grading d, a cap of R / 4) scale with R, so gmsh
+// meshes the shape scaled by a power of two that brings R into [1, 2), and the nodes are scaled
+// back: gmsh's tolerances are absolute (1e-8), and at R = 1e20 it fails, at R = 1e29 it runs
+// without end, at R = 1e-25 it ignores the size law. A power of two scales every product, quotient
+// and square root exactly, so the mesh of a radius near 1 is the one gmsh makes of it (a scale by
+// 10 moves a frontal mesher's choices: scene 4's ball gained 24 nodes).
+double gmsh_scale(double R) {
+  int exponent = 0;
+  std::frexp(R, &exponent); // R = m 2^exponent, m in [0.5, 1)
+  return std::ldexp(1.0, exponent - 1);
+}
+
+void scale_nodes(Mesh& mesh, double scale) {
+  for (Eigen::Vector2d& x : mesh.nodes)
+    x *= scale;
+}
+
 } // namespace
 
 Mesh half_disc(double R, int N, double grading) {
   verify_size_law("half_disc", R, grading);
   SIG_VERIFY(N >= 4 && N % 2 == 0, "half_disc: N = " << N << " must be even and >= 4");
-  Mesh mesh =
-      mesh_with_gmsh("half_disc", geo::half_disc, {{"R", R}, {"N", N}, {"grading", grading}});
+  const double scale = gmsh_scale(R);
+  Mesh mesh = mesh_with_gmsh("half_disc", geo::half_disc,
+                             {{"R", R / scale}, {"N", N}, {"grading", grading}});
+  scale_nodes(mesh, scale);
   snap_arc(mesh, 3, {0, R}, R, -std::numbers::pi, N, std::numbers::pi / N, "half_disc");
   check_mesh(mesh, "half_disc");
   return mesh;
@@ -62,13 +81,15 @@ Mesh half_disc(double R, int N, double grading) {
 Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading, bool graded_arcs) {
   verify_size_law("disc", R, grading);
   SIG_VERIFY(N >= 4 && N % 4 == 0, "disc: N = " << N << " must be a multiple of 4");
+  const double scale = gmsh_scale(R);
   Mesh mesh = mesh_with_gmsh("disc", geo::disc,
-                             {{"cx", center.x()},
-                              {"cy", center.y()},
-                              {"R", R},
+                             {{"cx", center.x() / scale},
+                              {"cy", center.y() / scale},
+                              {"R", R / scale},
                               {"N", N},
                               {"grading", grading},
                               {"graded_arcs", graded_arcs ? 1 : 0}});
+  scale_nodes(mesh, scale);
   // Quarter k (right, top, left, bottom) starts at -45 + 90 k degrees; ref 4, 2, 1, 3. Graded
   // quarters have no uniform positions: their nodes go radially onto the circle.
   const double step = 2 * std::numbers::pi / N;

@@ -2,8 +2,39 @@
 #include "solver/solver_card.hpp"
 
 #include "core/datafile.hpp"
+#include "core/log.hpp"
+
+#include <algorithm>
+#include <vector>
 
 namespace sig {
+
+namespace {
+
+// A static solve's parameter of one method given beside another is ignored, which is said (the
+// studies give every method one SOLVER card, so it is not refused; sig-march says the same of the
+// fields a TIME deck does not use).
+void warn_parameters_of_other_methods(const Card& solver, const std::string& method) {
+  struct Owner {
+    const char* field;
+    std::vector<std::string> methods;
+  };
+  static const Owner owners[] = {
+      {"r", {"alm", "penalty"}}, {"gamma", {"pdas"}}, {"c", {"projection"}}};
+  for (const Owner& owner : owners) {
+    if (!solver.has(owner.field) ||
+        std::find(owner.methods.begin(), owner.methods.end(), method) != owner.methods.end())
+      continue;
+    std::string of;
+    for (const std::string& m : owner.methods)
+      of += (of.empty() ? "method=" : " and method=") + m;
+    log_warning(solver.file + ":" + std::to_string(solver.line) + ": SOLVER " + owner.field + "=" +
+                solver.text(owner.field) + " is not used by method=" + method +
+                " (it is a parameter of " + of + "): ignored");
+  }
+}
+
+} // namespace
 
 SolverCard read_solver_card(const Datafile& datafile, bool march) {
   const bool has_contact = datafile.find("CONTACT") != nullptr;
@@ -27,6 +58,7 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
   if (const Card* friction = datafile.find("FRICTION"); friction != nullptr && !has_contact)
     friction->fail("ref", "friction needs a CONTACT card on the same reference (this deck has "
                           "none, so no contact stage runs)");
+  if (!march && card != nullptr) warn_parameters_of_other_methods(*card, p.method);
   p.r = solver.real("r");
   p.gamma = solver.real("gamma");
   p.c = solver.real("c");
@@ -60,6 +92,15 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
     result.small_strain_start = steps->choice("start", {"small-strain", "rest"}) == "small-strain";
   }
   return result;
+}
+
+void warn_unused_iteration_fields(const Datafile& datafile, const std::string& why) {
+  const Card* solver = datafile.find("SOLVER");
+  if (solver == nullptr) return;
+  for (const char* field : {"eps", "maxit", "search"})
+    if (solver->has(field))
+      log_warning(solver->file + ":" + std::to_string(solver->line) + ": SOLVER " + field + "=" +
+                  solver->text(field) + " is not used: " + why + ": ignored");
 }
 
 void refuse_load_steps(const Datafile& datafile, const std::string& why) {

@@ -131,6 +131,18 @@ int main(int argc, char** argv) {
         solver_card
             ? solver_card->choice("linear", {"cholmod", "umfpack", "mumps"}, default_backend)
             : default_backend;
+    // Gonzalez's tangent and a Coulomb coupling make the step matrix of a hyperelastic march
+    // unsymmetric (finite_strain_bulk.cpp), which CHOLMOD cannot factorize: said on the card, not
+    // by the linear solver.
+    if (hyperelastic && backend == "cholmod") {
+      const bool friction = sig::friction_card_with_law(datafile) != nullptr;
+      if (time.stress == sig::AlgorithmicStress::gonzalez || friction)
+        solver_card->fail("linear",
+                          std::string("cholmod factorizes symmetric matrices only, and the step "
+                                      "matrix of a hyperelastic march is not symmetric (") +
+                              (friction ? "friction" : "TIME stress=gonzalez") +
+                              "): use umfpack or mumps (the default)");
+    }
     sig::ContactHistoryInfo strategy_info;
     sig::ContactStrategyParameters strategy_parameters;
     if (const sig::Card* friction = sig::friction_card_with_law(datafile);

@@ -52,8 +52,9 @@ int main(int argc, char** argv) {
     const sig::Datafile& datafile = args.deck;
     const sig::Card* contact_card = datafile.find("CONTACT");
     const bool has_contact = contact_card != nullptr;
-    // strategy= and r= of CONTACT belong to time marching (sig-march); a static deck has none.
-    for (const char* dynamic : {"strategy", "r"})
+    // strategy=, r= and persistency= of CONTACT belong to time marching (sig-march); a static deck
+    // has none.
+    for (const char* dynamic : {"strategy", "r", "persistency"})
       if (has_contact && contact_card->has(dynamic))
         contact_card->fail(dynamic, std::string("is a field of dynamic contact (sig-march, with a "
                                                 "TIME card); a static deck has no strategy: ") +
@@ -149,6 +150,8 @@ int main(int argc, char** argv) {
                                      "methods solve it whole)");
     sig::StaticSolution solution;
     if (!has_contact) { // method=linear (read_solver_card)
+      sig::warn_unused_iteration_fields(datafile, "a small-strain deck without contact is one "
+                                                  "linear solve");
       solution = sig::solve_linear_elasticity(system, backend);
     } else {
       // The mesh gives the first iterate of INITIAL and the norm of V of the convexification

@@ -1,7 +1,9 @@
 // The hyperelastic bulk of the large-deformation contact solve (finite_strain_bulk.hpp).
 #include "stages/finite_strain_bulk.hpp"
 
+#include "assembly/rigid_motion.hpp"
 #include "core/error.hpp"
+#include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/nodal_frames.hpp"
 
@@ -15,6 +17,44 @@ namespace {
 /// Relative step of the central differences of the obstacle normal (error O(h^2) ~ 1e-12,
 /// round-off ~ 1e-16 / h ~ 1e-10 of the curvature).
 constexpr double kNormalDifferenceStep = 1e-6;
+
+/// Why the step matrix of an iterate failed to factorize, in the deck's words rather than the
+/// linear solver's ("not positive definite"): a part of the body that this iterate's held dofs
+/// (the Dirichlet dofs, the contact nodes on the wall, in their frames) leave free, or else the
+/// tangent of the deformed body, which law=svk loses in strong compression.
+std::string singular_step_cause(const FiniteStrainProblem& problem,
+                                const std::vector<std::pair<int, double>>& imposed,
+                                const std::vector<Eigen::Vector2d>& normals,
+                                const std::string& library) {
+  const Mesh& mesh = *problem.mesh;
+  std::vector<int> contact_of_node(mesh.num_nodes(), -1);
+  for (int p = 0; problem.contact && p < problem.contact->size(); ++p)
+    contact_of_node[problem.contact->node[p]] = p;
+  std::vector<Hold> holds;
+  for (const auto& [dof, value] : imposed) {
+    Hold hold;
+    hold.node = dof / 2;
+    const Eigen::Vector2d axis = dof % 2 == 0 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d::UnitY();
+    const int p = contact_of_node[hold.node];
+    hold.along = p < 0 ? axis : Eigen::Vector2d(nodal_frame(normals[p]) * axis);
+    holds.push_back(hold);
+  }
+  const std::string held =
+      " (" + std::to_string(imposed.size()) + " dofs held at this iterate; " + library + ")";
+  if (problem.mass == nullptr)
+    if (const std::vector<FreePart> free = free_parts(mesh, holds); !free.empty())
+      return describe(free.front()) + held;
+  bool svk = false;
+  for (const SubdomainMaterial& m : problem.materials->entries)
+    svk = svk || (m.hyperelastic && m.hyperelastic->name() == "svk");
+  return std::string("the tangent stiffness of the deformed body is not positive definite: the "
+                     "body lost its stability at this deformation") +
+         (svk ? " (MATERIAL law=svk softens in strong compression, in one dimension beyond a "
+                "stretch of 1/sqrt(3): its stored energy is not polyconvex; law=ciarlet-geymonat "
+                "does not)"
+              : " (a buckling)") +
+         held;
+}
 
 } // namespace
 
@@ -287,7 +327,12 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
     r0[tangential_dof] += c.force;
   }
   std::sort(imposed.begin(), imposed.end());
-  const Eigen::VectorXd dw = J_->solve(r0, imposed, *solver_);
+  Eigen::VectorXd dw;
+  try {
+    dw = J_->solve(r0, imposed, *solver_);
+  } catch (const Error& e) {
+    throw Error(singular_step_cause(problem_, imposed, now_.normal, e.what()));
+  }
 
   // Forces: the reaction of an imposed normal (r0 + A dw + N = 0 on its row), else the force law.
   StepSolution s;

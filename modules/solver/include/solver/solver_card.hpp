@@ -33,6 +33,10 @@ struct SolverCard {
 /// reader looking up TIME, so that each stage reads only the cards its --help lists.
 SolverCard read_solver_card(const Datafile& datafile, bool march = false);
 
+/// Warn that the SOLVER card's eps=, maxit= and search= are ignored, saying `why` the solve has
+/// no iterations (a small-strain deck without contact is one linear solve).
+void warn_unused_iteration_fields(const Datafile& datafile, const std::string& why);
+
 /// LOADSTEPS belongs to the large-deformation static solve (a hyperelastic MATERIAL in
 /// sig-solve): anywhere else it would be ignored, so a LOADSTEPS card is refused, saying `why`
 /// the run has no load steps.
