@@ -31,7 +31,9 @@ def markdown_tables(path):
     tables, header, rows, caption, last = [], None, [], "", ""
     for line in path.read_text().splitlines() + [""]:
         if line.startswith("|"):
-            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            # Cells split at unescaped pipes (a norm in a header is written \|\|u\|\|).
+            inner = line.strip()[1:].removesuffix("|")
+            cells = [c.strip().replace("\\|", "|") for c in re.split(r"(?<!\\)\|", inner)]
             if header is None:
                 header, caption = cells, last
             elif not all(re.fullmatch(r":?-+:?", c) for c in cells if c):

@@ -7,10 +7,16 @@
 """
 
 
+def _cell(value):
+    """A cell's text with its pipes escaped: a norm ||u||_V would otherwise split the cell."""
+    return str(value).replace("|", "\\|")
+
+
 def markdown_table(header, rows):
-    """A GitHub markdown table: header row, '|---|' rule, one line per row (cells with str())."""
-    lines = ["| " + " | ".join(str(h) for h in header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    """A GitHub markdown table: header row, '|---|' rule, one line per row (cells with str(),
+    pipes escaped)."""
+    lines = ["| " + " | ".join(_cell(h) for h in header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(_cell(c) for c in row) + " |" for row in rows]
     return "\n".join(lines)
 
 

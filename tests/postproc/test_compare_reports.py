@@ -62,3 +62,20 @@ def test_a_dropped_column_or_table_is_reported(tmp_path):
     write_run(tmp_path / "c", REPORT.split("Solve times")[0], "node,u1\n1,0.5\n")
     code, out = compare(tmp_path / "a", tmp_path / "c")
     assert code == 2
+
+
+def test_a_norm_in_a_header_stays_one_column(tmp_path):
+    # sigreport writes the pipes of a norm escaped; a time column after it must still be a time.
+    from sigreport import markdown_table
+    table = markdown_table(["h", "||u - u_h||_V", "march (s)"], [["1/2", "0.0177", "0.001"]])
+    assert "\\|\\|u - u_h\\|\\|_V" in table
+    write_run(tmp_path / "a", "Errors:\n\n" + table + "\n", "node,u1\n1,0.5\n")
+    write_run(tmp_path / "b", "Errors:\n\n" + table.replace("0.001", "0.004") + "\n",
+              "node,u1\n1,0.5\n")
+    code, out = compare(tmp_path / "a", tmp_path / "b")
+    assert code == 0, out
+    write_run(tmp_path / "c", "Errors:\n\n" + table.replace("0.0177", "0.0178") + "\n",
+              "node,u1\n1,0.5\n")
+    code, out = compare(tmp_path / "a", tmp_path / "c")
+    assert code == 1
+    assert "column '||u - u_h||_V': 0.0177 -> 0.0178" in out
