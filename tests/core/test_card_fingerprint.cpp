@@ -78,6 +78,21 @@ TEST(CardFingerprint, ValuesNotText) {
 }
 
 // Another value of one card changes that card's fingerprint and no other's.
+// An old spelling is the field it was renamed to: a deck rewritten with the new names (MESH
+// centre=, CONTACT g=) leaves its files up to date, and the old name cannot hide a changed value.
+TEST(CardFingerprint, AnOldSpellingIsTheNewField) {
+  const std::string ring = "MESH generator=ring r_in=9 r_out=10 N=16 layers=2 ";
+  EXPECT_EQ(fingerprint(ring + "center=0,10\n", "MESH"),
+            fingerprint(ring + "centre=0,10\n", "MESH"));
+  EXPECT_NE(fingerprint(ring + "center=0,10\n", "MESH"),
+            fingerprint(ring + "centre=0,0\n", "MESH"));
+  EXPECT_NE(fingerprint(ring + "center=0,10\n", "MESH"), fingerprint(ring, "MESH"));
+  const std::string contact = "CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=signorini ";
+  EXPECT_EQ(fingerprint(contact + "gap=0.1\n", "CONTACT"),
+            fingerprint(contact + "g=0.1\n", "CONTACT"));
+  EXPECT_NE(fingerprint(contact + "gap=0.1\n", "CONTACT"), fingerprint(contact, "CONTACT"));
+}
+
 TEST(CardFingerprint, AnotherValueIsAnotherFingerprint) {
   const std::vector<std::tuple<const char*, const char*, const char*>> changes = {
       {"mu=0.4", "mu=0.05", "FRICTION"},

@@ -115,8 +115,14 @@ std::string canonical_card(const Card& card) {
   if (spec != nullptr)
     for (const FieldSpec& field : spec->fields) {
       const std::string name = to_lower(field.name);
-      const auto given = std::find_if(card.fields.begin(), card.fields.end(),
-                                      [&](const auto& f) { return f.first == name; });
+      if (renamed_field(card.keyword, name) != nullptr) continue; // counted under its new name
+      auto given = std::find_if(card.fields.begin(), card.fields.end(),
+                                [&](const auto& f) { return f.first == name; });
+      if (given == card.fields.end())
+        given = std::find_if(card.fields.begin(), card.fields.end(), [&](const auto& f) {
+          const char* renamed = renamed_field(card.keyword, f.first);
+          return renamed != nullptr && renamed == name;
+        });
       if (given == card.fields.end() && field.fallback == nullptr) continue;
       const std::string value = given != card.fields.end() ? given->second : field.fallback;
       if (!out.empty()) out += ' ';

@@ -309,4 +309,15 @@ const std::vector<CardSpec>& card_schema() {
   return schema;
 }
 
+const char* renamed_field(const std::string& keyword, const std::string& field) {
+  // The old spellings the schema keeps readable ("old spelling of ..." in their help texts).
+  struct Renamed {
+    const char *keyword, *old_name, *name;
+  };
+  static constexpr Renamed renamed[] = {{"MESH", "center", "centre"}, {"CONTACT", "gap", "g"}};
+  for (const Renamed& r : renamed)
+    if (keyword == r.keyword && field == r.old_name) return r.name;
+  return nullptr;
+}
+
 } // namespace sig

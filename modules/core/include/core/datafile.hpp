@@ -86,6 +86,9 @@ struct CardSpec {
 const std::vector<CardSpec>& card_schema();
 /// The schema of a card (keyword case-insensitive), nullptr if there is none.
 const CardSpec* find_card_spec(const std::string& keyword);
+/// The field that `field` of card `keyword` is an old spelling of (MESH center: "centre",
+/// CONTACT gap: "g"), nullptr if it is none; both lower case.
+const char* renamed_field(const std::string& keyword, const std::string& field);
 
 /// The keywords this process has looked up in any datafile (Datafile::all, find, require,
 /// title), upper case: what a stage reads, which its --help must list (the test suite checks it
