@@ -161,4 +161,30 @@ void verify_in_range(double value, const std::string& keyword, const std::string
                                   << " (" << keyword << " " << field << "=)");
 }
 
+ValueRange displacement_range(double diameter) {
+  const double bound = kDisplacementPerDiameter * diameter;
+  return {-bound, bound, false, false,
+          "a displacement is at most 1e6 times the mesh's diameter: small strain means |u| much "
+          "smaller than the body, and beyond that a stiffness or a load is out of scale"};
+}
+
+ValueRange gap_range() {
+  return {0, kLargestGap, false, false,
+          "a gap is the distance of a node to the obstacle, both within the deck's magnitudes "
+          "(1e30 a coordinate)"};
+}
+
+ValueRange weight_range(double thickness, double diameter) {
+  return {0, thickness * diameter, true, false,
+          "a weight is half of a node's two contact edges, each no longer than the mesh's "
+          "diameter, times the thickness"};
+}
+
+void verify_in_range(double value, const ValueRange& range, const std::string& file,
+                     const std::string& array, std::size_t row) {
+  SIG_VERIFY(std::isfinite(value) && range.contains(value),
+             file << ": array '" << array << "', row " << row << ": " << value << " is not "
+                  << range.text() << (range.why ? std::string(" (") + range.why + ")" : ""));
+}
+
 } // namespace sig

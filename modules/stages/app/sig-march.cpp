@@ -175,7 +175,7 @@ int main(int argc, char** argv) {
 
     // 4. The contact elements of case.cont and the mass (EMM included).
     std::optional<sig::ContactElements> elements;
-    if (contact != nullptr) elements = sig::read_cont(args.ds_path("cont"));
+    if (contact != nullptr) elements = sig::read_cont(args.ds_path("cont"), mesh);
     const Eigen::SparseMatrix<double> mass =
         sig::mass_matrix(system, time.mass, mesh, elements ? elements->node : std::vector<int>{});
     std::unique_ptr<sig::ContactStrategy> strategy;

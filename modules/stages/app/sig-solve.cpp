@@ -95,9 +95,9 @@ int main(int argc, char** argv) {
     //    (by the DIRICHLET cards, and by the contact nodes, onto which the solve condenses), and
     //    the words for a matrix that fails to factorize all the same.
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
-    std::optional<sig::ContactElements> contact;
-    if (has_contact) contact = sig::read_cont(args.ds_path("cont"));
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    std::optional<sig::ContactElements> contact;
+    if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     const sig::Holds held = contact ? sig::holds_of(system.dirichlet_dofs, contact->node,
                                                     contact->normal, contact->has_friction())
                                     : sig::holds_of(system.dirichlet_dofs);

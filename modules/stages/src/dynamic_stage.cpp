@@ -100,7 +100,7 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   std::optional<VelocityContact> contact;
   Eigen::VectorXd gap;
   if (datafile.find("CONTACT") != nullptr) {
-    elements = read_cont(args.ds_path("cont"));
+    elements = read_cont(args.ds_path("cont"), mesh);
     contact = velocity_contact(*elements, reduced);
     gap = elements->gap;
   }

@@ -73,7 +73,7 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
 
   // 3. The contact boundary.
   if (datafile.find("CONTACT") != nullptr) {
-    c.elements = read_cont(args.ds_path("cont"));
+    c.elements = read_cont(args.ds_path("cont"), mesh);
     c.contact = velocity_contact(*c.elements, c.reduced);
     if (c.elements->gap.maxCoeff() > 0)
       log_warning("the laws in velocity ignore the initial gap (up to " +
