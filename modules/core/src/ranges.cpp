@@ -119,6 +119,16 @@ const WorkBound& max_time_steps() {
   return bound;
 }
 
+const WorkBound& max_newton_iterations() {
+  // Each field's maximum alone lets the loops multiply to 1e8 (maxit x CONVEXIFICATION maxit,
+  // LOADSTEPS n x maxit) or 1e10 (1e6 time steps x maxit); at a millisecond an iteration on the
+  // smallest meshes, 1e7 is hours.
+  static const WorkBound bound{1e7, "Newton iterations",
+                               "the most a scene deck asks for is 2e6: scene 6's rail, 100 time "
+                               "steps x SOLVER maxit 100 x CONVEXIFICATION maxit 200"};
+  return bound;
+}
+
 std::string work_excess(const WorkBound& bound, double count) {
   if (count <= bound.maximum) return "";
   return number(count) + " " + bound.what + ": more than the " + number(bound.maximum) +

@@ -109,6 +109,8 @@ int main(int argc, char** argv) {
 
     // 3. Large deformation when a law is hyperelastic (the TAE's K is then unused).
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
+    if (has_contact || sig::has_hyperelastic_law(table))
+      sig::verify_total_iterations(datafile, sig::ContactSolverParameters::solve_max_iterations);
     if (sig::has_hyperelastic_law(table)) {
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail(

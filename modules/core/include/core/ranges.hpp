@@ -14,7 +14,7 @@
 //    1e8 values), which then stay inside the doubles' range (1e-308 .. 1e308) with digits left;
 //  - the work a run does is bounded: the counts that bound it (iterations, load steps, mesh
 //    sizes) have a maximum in the table, with its reason, and what no one field states (the time
-//    steps T / k) has one in work_bound.
+//    steps T / k, the Newton iterations of all the loops together) has one in a WorkBound.
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -52,6 +52,9 @@ struct WorkBound {
 };
 /// The time steps a march may take (TIME T / k).
 const WorkBound& max_time_steps();
+/// The Newton iterations a deck may ask for: the product of its bounds (time steps or load steps,
+/// SOLVER maxit, CONVEXIFICATION maxit), each of which has its own maximum in the table.
+const WorkBound& max_newton_iterations();
 /// "COUNT WHAT: more than the MAXIMUM a run may take (WHY)" if count > bound.maximum, else "".
 std::string work_excess(const WorkBound& bound, double count);
 
