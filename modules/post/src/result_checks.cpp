@@ -27,9 +27,12 @@ void codes_in(const Ds& ds, const std::string& name, std::int64_t low, std::int6
                          << " is not in " << low << ".." << high);
 }
 
-// Every displacement within its bound of the mesh's size (core/ranges.hpp): an edited u = 1e300
-// was refused only by the VTK writer, naming a field of the .vtu, not the array.
+// Every displacement of a converged result within its bound of the mesh's size (core/ranges.hpp):
+// an edited u = 1e300 was refused only by the VTK writer, naming a field of the .vtu, not the
+// array. The last iterate of a solve that did not converge may have drifted any distance (a rigid
+// motion held by nothing: its Nv says so), and is drawn as it is.
 void displacements_in_range(const Ds& ds, const Mesh& mesh) {
+  if (ds.integer("converged") != 1) return;
   const ValueRange range = displacement_range(diameter(mesh));
   const std::vector<double> u = ds.reals("u");
   for (std::size_t i = 0; i < u.size(); ++i)
