@@ -72,7 +72,7 @@ TEST(ContIo, RoundTripPlaneAndDisc) {
       const ContactElements written = build_contact_elements(mesh, 3, *obstacle, law, 0.5);
       const auto path = temp_path("case_" + obstacle->kind() + ".cont");
       write_cont(path, written, "round trip");
-      expect_same(read_cont(path), written);
+      expect_same(read_cont(path, mesh), written);
 
       // On disk the numbering is 1-based and Lagrange nodes follow the mesh nodes.
       const Ds ds = read_ds(path, "CONT");
@@ -106,7 +106,7 @@ std::filesystem::path damaged(const std::string& array, const std::vector<Value>
 
 void expect_error_naming(const std::filesystem::path& path, const std::string& what) {
   try {
-    read_cont(path);
+    read_cont(path, test::square_mesh(2)); // the mesh of damaged()
     ADD_FAILURE() << "no error for " << what;
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -139,6 +139,17 @@ TEST(ContIo, InconsistentFilesAreRefused) {
                       "array 'depth': value 3 of 3 is NaN");
   expect_error_naming(damaged("tangent", std::vector<double>{1, 0, -1, 0, 1, 0}),
                       "array tangent, element 2");
+  // The geometry in its ranges (core/ranges.hpp), the CRC rewritten: a gap or a weight of 1e300
+  // (the unit square's weights are at most its diagonal, sqrt(2)), of another mesh's size.
+  expect_error_naming(damaged("gap", std::vector<double>{0, 1e300, 0}),
+                      "array 'gap', row 2: 1e+300");
+  expect_error_naming(damaged("weight", std::vector<double>{0.25, 0.5, 1e300}),
+                      "array 'weight', row 3: 1e+300 is not in (0, 1.41421]");
+  expect_error_naming(damaged("weight", std::vector<double>{0.25, 0.5, 2}),
+                      "array 'weight', row 3");
+  expect_error_naming(damaged("weight", std::vector<double>{0.25, 0, 0.25}),
+                      "array 'weight', row 2");
+  expect_error_naming(damaged("thickness", std::vector<double>{0}), "array 'thickness', row 1");
 }
 
 TEST(ContIo, OtherKindIsRefused) {
@@ -146,7 +157,7 @@ TEST(ContIo, OtherKindIsRefused) {
   Ds ds("MILI", "not contact", "test");
   ds.put_int("num_nodes", 1);
   write_ds(path, ds);
-  EXPECT_THROW(read_cont(path), Error);
+  EXPECT_THROW(read_cont(path, test::square_mesh(2)), Error);
 }
 
 } // namespace

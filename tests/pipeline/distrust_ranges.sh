@@ -3,7 +3,8 @@
 # A case.mili with nu = 0.5 or NaN, E < 0 or thickness 0 (its CRC valid) is refused by
 # sig-assemble with the MATERIAL card's own ranges (core/ranges.hpp: one table for the deck and
 # the files), a case.b with status 99 or converged 7 and a case.hist with ndof 7 or 2^62 steps by
-# sig-post, each naming the file and the array; no file of the case changes.
+# sig-post, each naming the file and the array; no file of the case changes. A case.cont whose gap
+# or weight is 1e300 is refused by sig-solve (ranges bounded by the mesh's size).
 set -euo pipefail
 source tests/pipeline/lib/distrust.sh
 
@@ -45,4 +46,13 @@ expect_refusal "ndof 7 in case.hist" post "$work/disc.dat" "$work/ndof" \
 damaged steps disc case.hist steps 4611686018427387904
 expect_refusal "2^62 steps in case.hist" post "$work/disc.dat" "$work/steps" \
   "steps/case.hist: array 'steps': 4611686018427387904 is not in 1..1000000000"
+
+# The CONT's geometry in its ranges (issue 25): an edited gap held the body off the obstacle with
+# exit 0, an edited weight scaled its contact forces.
+damaged gap hertz case.cont gap --index 3 1e300
+expect_refusal "gap 1e300 in case.cont" solve "$work/hertz.dat" "$work/gap" \
+  "gap/case.cont: array 'gap', row 4: 1e+300 is not in [0, 4e+30]"
+damaged weight hertz case.cont weight --index 3 1e300
+expect_refusal "weight 1e300 in case.cont" solve "$work/hertz.dat" "$work/weight" \
+  "weight/case.cont: array 'weight', row 4: 1e+300 is not in (0," "the mesh's diameter"
 distrust_finish

@@ -2,6 +2,7 @@
 
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/ranges.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -84,7 +85,7 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
   write_ds(path, ds);
 }
 
-ContactElements read_cont(const std::filesystem::path& path) {
+ContactElements read_cont(const std::filesystem::path& path, const Mesh& mesh) {
   const Ds ds = read_ds(path, "CONT");
   const std::string where = "CONT file " + path.string();
   ContactElements elements;
@@ -96,9 +97,15 @@ ContactElements read_cont(const std::filesystem::path& path) {
   SIG_VERIFY(ref >= 1 && ref <= std::numeric_limits<int>::max(),
              where << ": array 'ref': " << ref << " is not a reference (1.."
                    << std::numeric_limits<int>::max() << ")");
+  SIG_VERIFY(num_nodes == mesh.num_nodes(), where << ": array 'num_nodes': " << num_nodes
+                                                  << ", the mesh has " << mesh.num_nodes());
   elements.num_nodes = static_cast<int>(num_nodes);
   elements.ref = static_cast<int>(ref);
   elements.thickness = ds.scalar("thickness");
+  verify_in_range(elements.thickness, "MATERIAL", "thickness", where, "thickness", 1);
+  // The geometry's meaning (core/ranges.hpp): an edited gap of 1e300 held the body off.
+  const ValueRange gap_bound = gap_range();
+  const ValueRange weight_bound = weight_range(elements.thickness, diameter(mesh));
   const std::vector<std::int64_t> node = ds.ints("node");
   const std::vector<std::int64_t> lagrange = ds.ints("lagrange_node");
   const std::vector<std::int64_t> law = ds.ints("law");
@@ -143,10 +150,8 @@ ContactElements read_cont(const std::filesystem::path& path) {
     const Eigen::Vector2d t(tangent[2 * i], tangent[2 * i + 1]);
     SIG_VERIFY((t - contact_tangent(n)).norm() <= 1e-12,
                where << ": array tangent, element " << i + 1 << " is not (n2, -n1)");
-    SIG_VERIFY(std::isfinite(gap[i]) && gap[i] >= 0,
-               where << ": array gap, element " << i + 1 << ": " << gap[i] << " is not >= 0");
-    SIG_VERIFY(std::isfinite(weight[i]) && weight[i] > 0,
-               where << ": array weight, element " << i + 1 << ": " << weight[i] << " is not > 0");
+    verify_in_range(gap[i], gap_bound, where, "gap", i + 1);
+    verify_in_range(weight[i], weight_bound, where, "weight", i + 1);
     ContactLaw l;
     try {
       l.normal = normal_law_of_id(law[i]);

@@ -119,6 +119,16 @@ const WorkBound& max_time_steps() {
   return bound;
 }
 
+const WorkBound& max_newton_iterations() {
+  // Each field's maximum alone lets the loops multiply to 1e8 (maxit x CONVEXIFICATION maxit,
+  // LOADSTEPS n x maxit) or 1e10 (1e6 time steps x maxit); at a millisecond an iteration on the
+  // smallest meshes, 1e7 is hours.
+  static const WorkBound bound{1e7, "Newton iterations",
+                               "the most a scene deck asks for is 2e6: scene 6's rail, 100 time "
+                               "steps x SOLVER maxit 100 x CONVEXIFICATION maxit 200"};
+  return bound;
+}
+
 std::string work_excess(const WorkBound& bound, double count) {
   if (count <= bound.maximum) return "";
   return number(count) + " " + bound.what + ": more than the " + number(bound.maximum) +
@@ -159,6 +169,32 @@ void verify_in_range(double value, const std::string& keyword, const std::string
   const std::string excess = magnitude_excess(value);
   SIG_VERIFY(excess.empty(), file << ": array '" << array << "', row " << row << ": " << excess
                                   << " (" << keyword << " " << field << "=)");
+}
+
+ValueRange displacement_range(double diameter) {
+  const double bound = kDisplacementPerDiameter * diameter;
+  return {-bound, bound, false, false,
+          "a displacement is at most 1e6 times the mesh's diameter: small strain means |u| much "
+          "smaller than the body, and beyond that a stiffness or a load is out of scale"};
+}
+
+ValueRange gap_range() {
+  return {0, kLargestGap, false, false,
+          "a gap is the distance of a node to the obstacle, both within the deck's magnitudes "
+          "(1e30 a coordinate)"};
+}
+
+ValueRange weight_range(double thickness, double diameter) {
+  return {0, thickness * diameter, true, false,
+          "a weight is half of a node's two contact edges, each no longer than the mesh's "
+          "diameter, times the thickness"};
+}
+
+void verify_in_range(double value, const ValueRange& range, const std::string& file,
+                     const std::string& array, std::size_t row) {
+  SIG_VERIFY(std::isfinite(value) && range.contains(value),
+             file << ": array '" << array << "', row " << row << ": " << value << " is not "
+                  << range.text() << (range.why ? std::string(" (") + range.why + ")" : ""));
 }
 
 } // namespace sig

@@ -64,6 +64,16 @@ double signed_double_area(const Mesh& mesh, int t) {
   return u.x() * v.y() - u.y() * v.x();
 }
 
+double diameter(const Mesh& mesh) {
+  if (mesh.nodes.empty()) return 0;
+  Eigen::Vector2d low = mesh.nodes.front(), high = low;
+  for (const Eigen::Vector2d& x : mesh.nodes) {
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
+  }
+  return (high - low).norm();
+}
+
 namespace {
 
 // A P1 stiffness of a triangle whose longest side is A times its height has a condition number
@@ -73,15 +83,11 @@ constexpr double kMaxAspectRatio = 1e6;
 // The mesh's size and its triangles' shapes within what a solve can carry (core/ranges.hpp: the
 // magnitudes of the deck's lengths).
 void verify_scale(const Mesh& mesh, const std::string& source) {
-  Eigen::Vector2d low = mesh.nodes.front(), high = low;
-  for (const Eigen::Vector2d& x : mesh.nodes) {
-    low = low.cwiseMin(x);
-    high = high.cwiseMax(x);
+  for (const Eigen::Vector2d& x : mesh.nodes)
     for (const double c : {x.x(), x.y()})
       SIG_VERIFY(std::abs(c) <= kLargestMagnitude, source << ": a node at (" << x.x() << ", "
                                                           << x.y() << "): " << magnitude_excess(c));
-  }
-  const double size = (high - low).norm();
+  const double size = diameter(mesh);
   SIG_VERIFY(magnitude_excess(size).empty(),
              source << ": the mesh spans " << size
                     << " (the diagonal of its bounding box): " << magnitude_excess(size));

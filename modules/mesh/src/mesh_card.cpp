@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/ranges.hpp"
 #include "mesh/freefem.hpp"
 #include "mesh/generators.hpp"
 #include "mesh/gmsh.hpp"
@@ -55,6 +56,17 @@ void verify_size(const Card& card, const std::string& field, double nodes) {
   }
 }
 
+// The shape a generator would make within the deck's magnitudes (core/ranges.hpp), checked before
+// it is meshed so that the error names the field that made it, not generator=: `span` is the
+// diagonal of the shape's bounding box, made by `field`.
+void verify_span(const Card& card, const std::string& field, double span) {
+  if (const std::string excess = magnitude_excess(span); !excess.empty()) {
+    std::ostringstream what;
+    what << "the mesh would span " << span << " (the diagonal of its bounding box): " << excess;
+    card.fail(field, what.str());
+  }
+}
+
 // centre= as CONTACT and INITIAL spell it; center= is its old spelling, read alike.
 Eigen::Vector2d centre(const Card& card) {
   if (card.has("centre") && card.has("center"))
@@ -64,6 +76,20 @@ Eigen::Vector2d centre(const Card& card) {
   if (c.size() != 2)
     card.fail(field, std::string("expects two coordinates, e.g. ") + field + "=0,10");
   return {c[0], c[1]};
+}
+
+// The centre of a shape of `radius` whose nodes stay within the deck's magnitudes (a centre of
+// 1e30 put the disc's nodes beyond them, blamed on generator=).
+Eigen::Vector2d centre_within(const Card& card, double radius) {
+  const Eigen::Vector2d c = centre(card);
+  const double farthest = c.cwiseAbs().maxCoeff() + radius;
+  if (const std::string excess = magnitude_excess(farthest); !excess.empty()) {
+    std::ostringstream what;
+    what << "a node would lie at a coordinate of " << farthest << " (the centre's plus the radius "
+         << radius << "): " << excess;
+    card.fail(card.has("center") ? "center" : "centre", what.str());
+  }
+  return c;
 }
 
 std::array<int, 4> refs(const Card& card) {
@@ -109,18 +135,21 @@ Mesh mesh_from_file(const Card& card, const std::filesystem::path& folder) {
 Mesh generate(const Card& card, const std::string& generator) {
   if (generator == "half_disc" || generator == "disc") {
     const double r = card.real("R");
+    // The disc's box is 2R x 2R, the half disc's 2R x R.
+    verify_span(card, "R", (generator == "disc" ? 2 * std::numbers::sqrt2 : std::sqrt(5.0)) * r);
     const int n = even_count(card, "N", generator == "disc" ? 4 : 2);
     // Uniform at the arc's size h = 2 pi R / N (disc) or pi R / N: N^2 / (4 pi) nodes at most.
     verify_size(card, "N", static_cast<double>(n) * n / (4 * std::numbers::pi));
     const double grading = card.real("grading");
     return generator == "disc"
-               ? disc(centre(card), r, n, grading,
+               ? disc(centre_within(card, r), r, n, grading,
                       card.choice("arcs", {"uniform", "graded"}, "uniform") == "graded")
                : half_disc(r, n, grading);
   }
   if (generator == "ring") {
     const double r_in = card.real("r_in"), r_out = card.real("r_out");
     if (r_in >= r_out) card.fail("r_in", "must be smaller than r_out");
+    verify_span(card, "r_out", 2 * std::numbers::sqrt2 * r_out);
     const int n = even_count(card, "N", 2);
     RingOptions options;
     if (card.has("layers")) options.layers = static_cast<int>(card.integer("layers"));
@@ -129,7 +158,7 @@ Mesh generate(const Card& card, const std::string& generator) {
                     (options.layers > 0 ? options.layers : default_ring_layers(n)));
     if (card.has("gamma1_above")) options.gamma1_above = card.real("gamma1_above");
     if (card.has("gamma3_below")) options.gamma3_below = card.real("gamma3_below");
-    return ring(centre(card), r_in, r_out, n, options);
+    return ring(centre_within(card, r_out), r_in, r_out, n, options);
   }
   const CellPattern pattern = card.choice("pattern", {"alternating", "union-jack"}) == "union-jack"
                                   ? CellPattern::union_jack
@@ -137,6 +166,7 @@ Mesh generate(const Card& card, const std::string& generator) {
   const double lx = card.real("lx");
   const int nx = static_cast<int>(card.integer("nx"));
   const double ly = generator == "rectangle" ? card.real("ly") : lx;
+  verify_span(card, lx >= ly || generator == "square" ? "lx" : "ly", std::hypot(lx, ly));
   const int ny = generator == "rectangle" ? static_cast<int>(card.integer("ny")) : nx;
   // Union-jack cells have a centre node each.
   verify_size(card, "nx",

@@ -27,6 +27,18 @@ void codes_in(const Ds& ds, const std::string& name, std::int64_t low, std::int6
                          << " is not in " << low << ".." << high);
 }
 
+// Every displacement of a converged result within its bound of the mesh's size (core/ranges.hpp):
+// an edited u = 1e300 was refused only by the VTK writer, naming a field of the .vtu, not the
+// array. The last iterate of a solve that did not converge may have drifted any distance (a rigid
+// motion held by nothing: its Nv says so), and is drawn as it is.
+void displacements_in_range(const Ds& ds, const Mesh& mesh) {
+  if (ds.integer("converged") != 1) return;
+  const ValueRange range = displacement_range(diameter(mesh));
+  const std::vector<double> u = ds.reals("u");
+  for (std::size_t i = 0; i < u.size(); ++i)
+    verify_in_range(u[i], range, ds.source, "u", i + 1);
+}
+
 std::size_t length(const Ds& ds, const std::string& name) {
   const std::vector<std::int64_t>& shape = ds.shape(name);
   return shape.empty() ? 0 : static_cast<std::size_t>(shape[0]);
@@ -40,6 +52,7 @@ void verify_solution_ds(const Ds& b, const Mesh& mesh) {
   integer_in(b, "iterations", 0, 1000000000);
   SIG_VERIFY(b.reals("u").size() == dofs, b.source << ": array 'u' holds " << b.reals("u").size()
                                                    << " values, the mesh has " << dofs << " dofs");
+  displacements_in_range(b, mesh);
   const std::int64_t m =
       b.has("multiplier") ? static_cast<std::int64_t>(length(b, "multiplier")) : 0;
   integer_in(b, "dofs", static_cast<std::int64_t>(dofs), static_cast<std::int64_t>(dofs) + 2 * m);
@@ -147,6 +160,7 @@ void verify_history_ds(const Ds& hist, const Mesh& mesh) {
         shape.size() == 2 && static_cast<std::size_t>(shape[0]) == outputs && shape[1] == ndof,
         file << ": array '" << name << "' is not " << outputs << " states x " << ndof << " dofs");
   }
+  displacements_in_range(hist, mesh);
 }
 
 } // namespace sig

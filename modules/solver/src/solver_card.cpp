@@ -2,9 +2,12 @@
 #include "solver/solver_card.hpp"
 
 #include "core/datafile.hpp"
+#include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/ranges.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <vector>
 
 namespace sig {
@@ -92,6 +95,55 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
     result.small_strain_start = steps->choice("start", {"small-strain", "rest"}) == "small-strain";
   }
   return result;
+}
+
+void verify_total_iterations(const Datafile& datafile, int default_maxit, long time_steps) {
+  struct Factor {
+    const Card* card; ///< nullptr: a default
+    const char* field;
+    double value;
+    std::string text;
+  };
+  std::vector<Factor> factors;
+  const auto number = [](double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
+  };
+  if (time_steps > 0)
+    factors.push_back({datafile.find("TIME"), "k", static_cast<double>(time_steps),
+                       "TIME T / k = " + number(static_cast<double>(time_steps)) + " steps"});
+  if (const Card* steps = datafile.find("LOADSTEPS")) {
+    const double n = static_cast<double>(steps->integer("n"));
+    factors.push_back({steps, "n", n, "LOADSTEPS n = " + number(n)});
+  }
+  const auto maxit = [&](const Card* card, const char* keyword, int fallback) {
+    const bool given = card != nullptr && card->has("maxit");
+    const double value = given ? static_cast<double>(card->integer("maxit")) : fallback;
+    factors.push_back(
+        {given ? card : nullptr, "maxit", value,
+         std::string(keyword) + " maxit = " + number(value) + (given ? "" : " (the default)")});
+  };
+  maxit(datafile.find("SOLVER"), "SOLVER", default_maxit);
+  if (const Card* loop = datafile.find("CONVEXIFICATION"))
+    maxit(loop, "CONVEXIFICATION", ConvexificationOptions{}.max_iterations);
+
+  double total = 1;
+  std::string product;
+  const Factor* largest = nullptr;
+  for (const Factor& f : factors) {
+    total *= f.value;
+    product += (product.empty() ? "" : " x ") + f.text;
+    if (f.card != nullptr && (largest == nullptr || f.value > largest->value)) largest = &f;
+  }
+  const std::string excess = work_excess(max_newton_iterations(), total);
+  if (excess.empty()) return;
+  const std::string what = "the deck may ask for " + product + " = " + excess +
+                           "; lower one of them (to bound a run's wall clock instead, every "
+                           "stage takes --time-limit SECONDS)";
+  // The product exceeds the bound only with a factor some card gives (the defaults' is 2e4).
+  if (largest != nullptr) largest->card->fail(largest->field, what);
+  throw InputError(datafile.path, 0, "maxit", what);
 }
 
 void warn_unused_iteration_fields(const Datafile& datafile, const std::string& why) {

@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
     SIG_VERIFY(sig::has_hyperelastic_law(table), "the MILI has no hyperelastic law");
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
-    const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"));
+    const sig::ContactElements contact = sig::read_cont(args.ds_path("cont"), mesh);
 
     // 3. The first timed solve: what the report says of the solve, and the floor's final state.
     std::vector<double> solve_seconds, start_seconds;

@@ -119,6 +119,9 @@ int main(int argc, char** argv) {
     // A hyperelastic body marches in large deformation (stages/finite_strain_march.hpp).
     const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
     const bool hyperelastic = sig::has_hyperelastic_law(materials);
+    if (contact != nullptr || hyperelastic)
+      sig::verify_total_iterations(datafile, sig::ContactStrategyParameters{}.max_iterations,
+                                   time.steps);
     const sig::Card& time_card = datafile.require("TIME");
     if (!hyperelastic && time_card.has("stress"))
       time_card.fail("stress", "is the stress of a hyperelastic time step: the linear midpoint "
@@ -175,7 +178,7 @@ int main(int argc, char** argv) {
 
     // 4. The contact elements of case.cont and the mass (EMM included).
     std::optional<sig::ContactElements> elements;
-    if (contact != nullptr) elements = sig::read_cont(args.ds_path("cont"));
+    if (contact != nullptr) elements = sig::read_cont(args.ds_path("cont"), mesh);
     const Eigen::SparseMatrix<double> mass =
         sig::mass_matrix(system, time.mass, mesh, elements ? elements->node : std::vector<int>{});
     std::unique_ptr<sig::ContactStrategy> strategy;

@@ -95,9 +95,9 @@ int main(int argc, char** argv) {
     //    (by the DIRICHLET cards, and by the contact nodes, onto which the solve condenses), and
     //    the words for a matrix that fails to factorize all the same.
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
-    std::optional<sig::ContactElements> contact;
-    if (has_contact) contact = sig::read_cont(args.ds_path("cont"));
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    std::optional<sig::ContactElements> contact;
+    if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     const sig::Holds held = contact ? sig::holds_of(system.dirichlet_dofs, contact->node,
                                                     contact->normal, contact->has_friction())
                                     : sig::holds_of(system.dirichlet_dofs);
@@ -109,6 +109,8 @@ int main(int argc, char** argv) {
 
     // 3. Large deformation when a law is hyperelastic (the TAE's K is then unused).
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
+    if (has_contact || sig::has_hyperelastic_law(table))
+      sig::verify_total_iterations(datafile, sig::ContactSolverParameters::solve_max_iterations);
     if (sig::has_hyperelastic_law(table)) {
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail(

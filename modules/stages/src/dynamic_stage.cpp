@@ -72,6 +72,8 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   // 1. Cards: what the march does not model, then SOLVER and CONVEXIFICATION.
   refuse_other_models(datafile, time);
   SolverCard solver = read_solver_card(datafile, /*march=*/true);
+  if (datafile.find("CONTACT") != nullptr)
+    verify_total_iterations(datafile, ContactSolverParameters::solve_max_iterations, time.steps);
 
   // 2. Mesh, laws, the assembled system (K, M, V, loads in time), the initial state.
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
@@ -100,7 +102,7 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   std::optional<VelocityContact> contact;
   Eigen::VectorXd gap;
   if (datafile.find("CONTACT") != nullptr) {
-    elements = read_cont(args.ds_path("cont"));
+    elements = read_cont(args.ds_path("cont"), mesh);
     contact = velocity_contact(*elements, reduced);
     gap = elements->gap;
   }

@@ -73,7 +73,7 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
 
   // 3. The contact boundary.
   if (datafile.find("CONTACT") != nullptr) {
-    c.elements = read_cont(args.ds_path("cont"));
+    c.elements = read_cont(args.ds_path("cont"), mesh);
     c.contact = velocity_contact(*c.elements, c.reduced);
     if (c.elements->gap.maxCoeff() > 0)
       log_warning("the laws in velocity ignore the initial gap (up to " +
@@ -87,6 +87,8 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
 void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
                            const TimeParameters& time) {
   QuasistaticCase c = read_quasistatic_case(args, datafile);
+  if (c.elements)
+    verify_total_iterations(datafile, ContactSolverParameters::solve_max_iterations, time.steps);
   const SolverCard& solver = c.solver;
   const bool has_contact = c.contact.has_value();
   const std::optional<ContactElements>& elements = c.elements;

@@ -114,7 +114,8 @@ double wall_depth(const Card& contact);
 void write_cont(const std::filesystem::path& path, const ContactElements& elements,
                 const std::string& title = "contact elements",
                 const std::string& creator = "sig-contact");
-/// Read and check a CONT file (sizes, numbering, unit normals, laws); errors name the file.
-ContactElements read_cont(const std::filesystem::path& path);
+/// Read and check a CONT file of `mesh` (sizes, numbering, unit normals, laws, the gaps and the
+/// weights in their ranges, core/ranges.hpp); errors name the file and the array.
+ContactElements read_cont(const std::filesystem::path& path, const Mesh& mesh);
 
 } // namespace sig

@@ -14,7 +14,7 @@
 //    1e8 values), which then stay inside the doubles' range (1e-308 .. 1e308) with digits left;
 //  - the work a run does is bounded: the counts that bound it (iterations, load steps, mesh
 //    sizes) have a maximum in the table, with its reason, and what no one field states (the time
-//    steps T / k) has one in work_bound.
+//    steps T / k, the Newton iterations of all the loops together) has one in a WorkBound.
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -52,6 +52,9 @@ struct WorkBound {
 };
 /// The time steps a march may take (TIME T / k).
 const WorkBound& max_time_steps();
+/// The Newton iterations a deck may ask for: the product of its bounds (time steps or load steps,
+/// SOLVER maxit, CONVEXIFICATION maxit), each of which has its own maximum in the table.
+const WorkBound& max_newton_iterations();
 /// "COUNT WHAT: more than the MAXIMUM a run may take (WHY)" if count > bound.maximum, else "".
 std::string work_excess(const WorkBound& bound, double count);
 
@@ -59,5 +62,26 @@ std::string work_excess(const WorkBound& bound, double count);
 /// `value` is outside the range of KEYWORD FIELD= (rows 1-based).
 void verify_in_range(double value, const std::string& keyword, const std::string& field,
                      const std::string& file, const std::string& array, std::size_t row);
+
+/// Lengths of a case that no card states, bounded by the case's mesh (its diameter D, the
+/// diagonal of its bounding box) or by the magnitudes of the deck, for the DS arrays that hold
+/// them (a CONT's gaps and weights, the displacements of case.b and case.hist):
+/// - a displacement component is in [-1e6 D, 1e6 D]: small strain means |u| << D, and a run
+///   that moves the body a million times its size has lost its meaning (a stiffness of 1e-300,
+///   a load of 1e300), while its products (energies, u^2) keep their digits;
+inline constexpr double kDisplacementPerDiameter = 1e6;
+ValueRange displacement_range(double diameter);
+/// - a gap (distance of a node to the obstacle) is in [0, 4e30]: nodes, the obstacle's point or
+///   centre and its radius are within the deck's magnitudes (1e30 a coordinate), so no node of a
+///   deck lies farther than 2 sqrt(2) 1e30 + 1e30 from its obstacle;
+inline constexpr double kLargestGap = 4 * kLargestMagnitude;
+ValueRange gap_range();
+/// - a contact weight (half of each of a node's two Gamma3 edges, times the thickness) is in
+///   (0, thickness x D]: neither edge is longer than D.
+ValueRange weight_range(double thickness, double diameter);
+/// Throw sig::Error "FILE: array 'ARRAY', row ROW: VALUE is not RANGE (WHY)" if `value` is
+/// outside `range` (rows 1-based).
+void verify_in_range(double value, const ValueRange& range, const std::string& file,
+                     const std::string& array, std::size_t row);
 
 } // namespace sig

@@ -42,6 +42,10 @@ struct Mesh {
 /// Twice the signed area of triangle t (positive when counter-clockwise).
 double signed_double_area(const Mesh& mesh, int t);
 
+/// The diagonal of the mesh's bounding box: the length its other lengths are measured against
+/// (core/ranges.hpp: gaps, weights, displacements).
+double diameter(const Mesh& mesh);
+
 /// Throw sig::Error naming `source` and the offending item if a triangle is inverted or
 /// degenerate, a node is used by no triangle, an index is out of range, or a sub-domain < 1.
 void check_mesh(const Mesh& mesh, const std::string& source);

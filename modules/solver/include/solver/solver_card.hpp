@@ -33,6 +33,14 @@ struct SolverCard {
 /// reader looking up TIME, so that each stage reads only the cards its --help lists.
 SolverCard read_solver_card(const Datafile& datafile, bool march = false);
 
+/// Refuse a deck whose bounds multiply to more Newton iterations than a run may take
+/// (core/ranges.hpp max_newton_iterations): `time_steps` (a march's T / k; 0 for a static solve)
+/// or LOADSTEPS n, times SOLVER maxit (`default_maxit`, the stage's, when the card has none),
+/// times CONVEXIFICATION maxit. The error names the largest factor a card gives, lists them all
+/// with the product, and points to --time-limit. Called where the run iterates (contact, or a
+/// hyperelastic law): elsewhere maxit is unused.
+void verify_total_iterations(const Datafile& datafile, int default_maxit, long time_steps = 0);
+
 /// Warn that the SOLVER card's eps=, maxit= and search= are ignored, saying `why` the solve has
 /// no iterations (a small-strain deck without contact is one linear solve).
 void warn_unused_iteration_fields(const Datafile& datafile, const std::string& why);
