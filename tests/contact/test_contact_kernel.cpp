@@ -6,6 +6,7 @@
 #include "contact/contact_kernel.hpp"
 #include "contact/contact_status.hpp"
 #include "core/error.hpp"
+#include "kernel_laws.hpp"
 
 #include <gtest/gtest.h>
 
@@ -91,33 +92,7 @@ void expect_kink_side(const ContactLaw& law, const NodeVariables& x, double r, i
   }
 }
 
-ContactLaw law_of(NormalLaw normal, FrictionLaw friction,
-                  FrictionBound bound = FrictionBound::normal) {
-  ContactLaw law;
-  law.normal = normal;
-  law.cn = 7.5;
-  law.depth = law.has_wall() ? 0.4 : 0.0;
-  law.friction = friction;
-  if (law.penetration_dependent()) law.depth = 0.4; // the asperities' depth, walls or not
-  law.mu = 0.3;
-  law.threshold = 2.0;
-  if (friction == FrictionLaw::nonmonotone) { // mu frozen at mu(r) of some slip r = 0.2
-    law.a = 0.5;
-    law.b = 0.1;
-    law.alpha = 3.0;
-    law.mu = friction_coefficient(law, 0.2);
-  }
-  if (law.has_coefficient()) law.bound = bound;
-  return law;
-}
-
-struct Case {
-  NormalLaw normal;
-  FrictionLaw friction;
-  FrictionBound bound = FrictionBound::normal;
-};
-
-class EveryLaw : public ::testing::TestWithParam<Case> {};
+class EveryLaw : public ::testing::TestWithParam<KernelCase> {};
 
 TEST_P(EveryLaw, DerivativesOnBothSidesOfEveryKink) {
   const ContactLaw law = law_of(GetParam().normal, GetParam().friction, GetParam().bound);
@@ -240,34 +215,7 @@ TEST_P(EveryLaw, AHeldBranchIsItsPieceContinuedAcrossTheKinks) {
   EXPECT_EQ(contact_kernel(law, tension, r, r, {true, false, 0}).wall, -1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Laws, EveryLaw,
-    ::testing::Values(
-        Case{NormalLaw::signorini, FrictionLaw::none},
-        Case{NormalLaw::signorini, FrictionLaw::tresca},
-        Case{NormalLaw::signorini, FrictionLaw::coulomb},
-        Case{NormalLaw::compliance, FrictionLaw::none},
-        Case{NormalLaw::compliance, FrictionLaw::tresca},
-        Case{NormalLaw::compliance, FrictionLaw::coulomb},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::none},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::tresca},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb},
-        Case{NormalLaw::signorini, FrictionLaw::nonmonotone},
-        Case{NormalLaw::compliance, FrictionLaw::nonmonotone},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone},
-        // The bound of (4.6)/(5.6): the compliance pressure only.
-        Case{NormalLaw::compliance, FrictionLaw::coulomb, FrictionBound::compliance},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::coulomb, FrictionBound::compliance},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::nonmonotone, FrictionBound::compliance},
-        Case{NormalLaw::signorini, FrictionLaw::mu1}, Case{NormalLaw::compliance, FrictionLaw::mu1},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::mu1},
-        Case{NormalLaw::compliance, FrictionLaw::mu2},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::mu2},
-        Case{NormalLaw::compliance_unilateral, FrictionLaw::mu2, FrictionBound::compliance},
-        Case{NormalLaw::damped, FrictionLaw::coulomb},
-        Case{NormalLaw::damped_unilateral, FrictionLaw::none},
-        Case{NormalLaw::damped_unilateral, FrictionLaw::coulomb},
-        Case{NormalLaw::compliance_bilateral, FrictionLaw::none}));
+INSTANTIATE_TEST_SUITE_P(Laws, EveryLaw, ::testing::ValuesIn(every_kernel_case()));
 
 // The bilateral test law: cn q_n on both sides of the surface, a spring in tension on its
 // compliance branch (CN), no kink at q_n = 0.

@@ -1,6 +1,7 @@
 #include "contact/contact_kernel.hpp"
 
 #include "contact/complementarity.hpp"
+#include "core/error.hpp"
 
 #include <algorithm>
 
@@ -40,10 +41,20 @@ double compliance_energy(const ContactLaw& law, double q_n) {
 
 namespace {
 
+double magnitude(double z) {
+  return std::abs(z);
+}
+template <int n> double magnitude(const Eigen::Matrix<double, n, 1>& z) {
+  return z.norm();
+}
+
 /// The kernel at x, on its own branch or, given `on`, on that one.
-ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t,
-                       const KernelBranch* on) {
-  ContactKernel k;
+template <int d>
+ContactKernelIn<d> evaluate(const ContactLaw& law, const NodeVariablesIn<d>& x, double r_n,
+                            double r_t, const KernelBranchIn<d>* on) {
+  using Col = KernelColumns<d>;
+  using TangentBlock = Eigen::Matrix<double, d - 1, d - 1>;
+  ContactKernelIn<d> k;
   // Normal: compliance P plus the wall's augmented multiplier Lambda.
   k.compliance = compliance_pressure(law, x.q_n);
   k.compliance_slope = d_compliance_pressure(law, x.q_n);
@@ -57,13 +68,13 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
   }
   const double chi = k.wall_active ? 1.0 : 0.0;
   k.normal = k.compliance + k.wall;
-  k.d_force(0, kQn) = k.compliance_slope + chi * r_n;
-  k.d_force(0, kLambda) = chi;
+  k.d_force(0, Col::q_n) = k.compliance_slope + chi * r_n;
+  k.d_force(0, Col::lambda) = chi;
   k.complementarity[0] = x.lambda - k.wall;
-  k.d_complementarity(0, kQn) = -chi * r_n;
-  k.d_complementarity(0, kLambda) = 1.0 - chi;
+  k.d_complementarity(0, Col::q_n) = -chi * r_n;
+  k.d_complementarity(0, Col::lambda) = 1.0 - chi;
 
-  // Tangential: the trial pressure projected on [-s, s].
+  // Tangential: the trial pressure projected on [-s, s] (the disc of radius s in 3D).
   switch (law.friction) {
   case FrictionLaw::none:
     break;
@@ -83,37 +94,62 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
       k.bound = mu * k.normal;
       k.bound_slope = mu;
       k.d_bound = mu * k.d_force.row(0);
-      k.d_bound(kQn) += d_mu * k.normal;
+      k.d_bound(Col::q_n) += d_mu * k.normal;
     } else { // the compliance pressure only: mu p(g), Tresca's, on the wall
       k.bound = mu * k.compliance;
-      k.d_bound(kQn) = mu * k.compliance_slope + d_mu * k.compliance;
+      k.d_bound(Col::q_n) = mu * k.compliance_slope + d_mu * k.compliance;
     }
     break;
   }
   }
+  auto tangential_rows = k.d_force.template bottomRows<d - 1>();
+  // T = t + r_t (q_t - q_0): the stick side's derivative.
+  const auto stick_rows = [&] {
+    tangential_rows.template middleCols<d - 1>(Col::q_t) = r_t * TangentBlock::Identity();
+    tangential_rows.template middleCols<d - 1>(Col::t) = TangentBlock::Identity();
+  };
   if (law.held_tangential) { // stuck at the held slip, whatever the force
-    k.stick = true;
-    k.tangential = x.t + r_t * (x.q_t - law.held_slip);
-    k.d_force(1, kQt) = r_t;
-    k.d_force(1, kT) = 1.0;
+    if constexpr (d == 2) {
+      k.stick = true;
+      k.tangential = x.t + r_t * (x.q_t - law.held_slip);
+      stick_rows();
+    } else {
+      throw Error("a Dirichlet condition on a tangential component of a contact node is not "
+                  "implemented in 3D");
+    }
   } else if (law.has_friction()) {
-    const double z = x.t + r_t * x.q_t;
+    const Tangent<d> z = x.t + r_t * x.q_t;
+    const double size = magnitude(z);
     const bool apex_in_contact = k.bound == 0 && k.wall_active && k.bound_slope > 0;
-    k.stick =
-        on ? on->stick : (k.bound > 0 || apex_in_contact) && d_project_interval_dz(z, k.bound) > 0;
+    k.stick = on ? on->stick : (k.bound > 0 || apex_in_contact) && size <= k.bound;
     if (k.stick) {
       k.tangential = z;
-      k.d_force(1, kQt) = r_t;
-      k.d_force(1, kT) = 1.0;
+      stick_rows();
     } else {
-      k.slip = on ? on->slip : static_cast<int>(d_project_interval_ds(z, k.bound)); // 0: z = s = 0
+      if constexpr (d == 2)
+        k.slip =
+            on ? on->slip : static_cast<int>(d_project_interval_ds(z, k.bound)); // 0: z = s = 0
+      else
+        k.slip = size > 0 ? SlipDirection<d>(z / size) : on ? on->slip : SlipDirection<d>::Zero();
       k.tangential = k.slip * k.bound;
-      k.d_force.row(1) = k.slip * k.d_bound;
+      tangential_rows = k.slip * k.d_bound;
+      if constexpr (d > 2) { // the disc's edge turns with z: s (I - e e^T) / |z| dz
+        if (size > 0) {
+          const TangentBlock turn =
+              k.bound / size * (TangentBlock::Identity() - k.slip * k.slip.transpose());
+          tangential_rows.template middleCols<d - 1>(Col::q_t) += r_t * turn;
+          tangential_rows.template middleCols<d - 1>(Col::t) += turn;
+        }
+      }
     }
   }
-  k.complementarity[1] = x.t - k.tangential;
-  k.d_complementarity.row(1) = -k.d_force.row(1);
-  k.d_complementarity(1, kT) += 1.0;
+  if constexpr (d == 2)
+    k.complementarity[1] = x.t - k.tangential;
+  else
+    k.complementarity.template tail<d - 1>() = x.t - k.tangential;
+  k.d_complementarity.template bottomRows<d - 1>() = -tangential_rows;
+  k.d_complementarity.template bottomRows<d - 1>().template middleCols<d - 1>(Col::t) +=
+      TangentBlock::Identity();
   return k;
 }
 
@@ -121,11 +157,21 @@ ContactKernel evaluate(const ContactLaw& law, const NodeVariables& x, double r_n
 
 ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n,
                              double r_t) {
-  return evaluate(law, x, r_n, r_t, nullptr);
+  return evaluate<2>(law, x, r_n, r_t, nullptr);
 }
 
 ContactKernel contact_kernel(const ContactLaw& law, const NodeVariables& x, double r_n, double r_t,
                              const KernelBranch& on) {
+  return evaluate(law, x, r_n, r_t, &on);
+}
+
+ContactKernelIn<3> contact_kernel(const ContactLaw& law, const NodeVariablesIn<3>& x, double r_n,
+                                  double r_t) {
+  return evaluate<3>(law, x, r_n, r_t, nullptr);
+}
+
+ContactKernelIn<3> contact_kernel(const ContactLaw& law, const NodeVariablesIn<3>& x, double r_n,
+                                  double r_t, const KernelBranchIn<3>& on) {
   return evaluate(law, x, r_n, r_t, &on);
 }
 
