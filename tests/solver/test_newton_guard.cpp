@@ -26,6 +26,25 @@ TEST(NewtonGuard, TheReferenceIsTheLargestOfTheWindow) {
   EXPECT_THROW(MeritMemory(0), Error);
 }
 
+TEST(NewtonGuard, DampingGrowsOnStallsAndFadesAfterAnyOtherStep) {
+  // Levenberg-Marquardt's schedule: a short step that keeps most of the merit (a near-singular
+  // tangent) damps from tau and tenfold more while they go on; any other step cuts it tenfold,
+  // to none below tau. A short step that lowers the merit well, or a full one that barely does
+  // (a slow contraction), is no stall.
+  Damping damping;
+  EXPECT_EQ(damping.factor(), 0.0);
+  damping.after_step(1.0 / 64, 0.999);
+  EXPECT_EQ(damping.factor(), Damping::kFirst);
+  damping.after_step(1.0 / 64, 0.95);
+  EXPECT_DOUBLE_EQ(damping.factor(), 10 * Damping::kFirst);
+  damping.after_step(1.0 / 16, 0.3); // short but a real fall
+  EXPECT_DOUBLE_EQ(damping.factor(), Damping::kFirst);
+  damping.after_step(1.0, 0.95); // full, slow
+  EXPECT_EQ(damping.factor(), 0.0);
+  damping.after_step(0.125, 0.99); // not shorter than kShortStep
+  EXPECT_EQ(damping.factor(), 0.0);
+}
+
 TEST(NewtonGuard, ArmijoAsksForTheSlopesFraction) {
   // ||R_trial||^2 <= ref^2 - 2 sigma alpha ||R||^2: at ref = ||R|| = 1 and alpha = 1 the trial
   // must be below sqrt(1 - 2e-4).

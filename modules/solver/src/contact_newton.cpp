@@ -60,6 +60,7 @@ private:
   ContactNewtonResult result_;
   MeritMemory memory_{kMeritWindow};
   CycleGuard cycles_{kCycleWindow};
+  Damping damping_; ///< a nonlinear bulk's steps (newton_guard.hpp)
   /// How the steps are taken (header): relaxed at first; monotone once the branches cycled or the
   /// residual stopped falling, one branch change per iteration too once they cycled again.
   bool one_change_ = false;
@@ -335,7 +336,12 @@ double Driver::step_length(const Test& test, const ContactPoint& now, const Step
     if (alpha > 0 || result_.reason != NewtonFailure::none) return alpha;
   }
   kind_ = monotone_ ? 2 : one_change_ ? 3 : 0;
-  return searched_length(test, now, step, next);
+  const double alpha = searched_length(test, now, step, next);
+  if (bulk_.nonlinear() && alpha > 0) { // a stall on a near-singular tangent damps the next
+    damping_.after_step(alpha, ratio_);
+    bulk_.damp(damping_.factor());
+  }
+  return alpha;
 }
 
 /// An unheld step (header): cut where a node first comes to hold the body; 0 if none does along

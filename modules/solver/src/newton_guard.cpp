@@ -79,4 +79,13 @@ bool CycleGuard::repeats(const std::vector<KernelBranch>& branch, double residua
   return cycle;
 }
 
+void Damping::after_step(double alpha, double ratio) {
+  if (alpha < kShortStep && ratio > kStall) {
+    mu_ = std::max(kFirst, kGrowth * mu_);
+  } else {
+    mu_ /= kGrowth;
+    if (mu_ < kFirst) mu_ = 0;
+  }
+}
+
 } // namespace sig

@@ -327,6 +327,9 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
     r0[tangential_dof] += c.force;
   }
   std::sort(imposed.begin(), imposed.end());
+  if (damping_ > 0) // on every dof: the imposed ones' rows are eliminated whatever their diagonal
+    for (Eigen::Index dof = 0; dof < rest_diagonal_.size(); ++dof)
+      J_->diagonal(static_cast<int>(dof)) += damping_ * rest_diagonal_[dof];
   Eigen::VectorXd dw;
   try {
     dw = J_->solve(r0, imposed, *solver_);

@@ -89,6 +89,10 @@ public:
   virtual double displacement_norm() const = 0;
   virtual double displacement_step() const = 0;
 
+  /// Levenberg-Marquardt damping of the next solves (newton_guard.hpp's Damping): `factor` times
+  /// the bulk's rest stiffness diagonal added to its tangent on the free dofs, 0 for none. A
+  /// linear bulk has no near-singular tangent to damp and ignores it.
+  virtual void damp(double /*factor*/) {}
   /// A bulk whose residual is not linear in u: its steps need a line search.
   virtual bool nonlinear() const = 0;
   /// The bulk's own targets are met (a load step's imposed displacements reached).

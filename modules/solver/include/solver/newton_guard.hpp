@@ -18,6 +18,14 @@
 //    the driver answers it by restricting the steps (Murty's one change per iteration on an LCP,
 //    monotone steps, whose strictly falling merit cannot revisit a point, otherwise), then
 //    by the other restriction, and names a cycle with no restriction left a failure.
+//  - Damping (a nonlinear bulk): a Newton step along which the search finds only a short length
+//    that barely lowers the merit is a tangent near singular at the iterate (a soft mode the
+//    linearization sends far, the crushed ring of scene 7b on a mesh not its own: 60 steps of
+//    1/64 each); the next solves add mu times the bulk's rest stiffness diagonal to the tangent,
+//    Levenberg and Marquardt's damping, mu grown tenfold from tau = 1e-3 while such steps go on
+//    and cut tenfold, to 0 below tau, after any other (K. Madsen, H. B. Nielsen, O. Tingleff,
+//    "Methods for non-linear least squares problems", DTU 2004, 3.2: tau = 1e-3 from a poor
+//    start). Undamped steps are left as they were.
 //  - Stagnation: no new least merit for kProgressWindow iterations makes the steps monotone;
 //    monotone steps that cannot lower the merit kEscapes + 1 times in a row, or a least merit
 //    kProgressWindow iterations old at the iteration limit, are a stagnation.
@@ -88,6 +96,26 @@ private:
   };
   int window_;
   std::deque<Visit> visits_;
+};
+
+/// The Levenberg-Marquardt damping of a nonlinear bulk's steps (header).
+class Damping {
+public:
+  /// After a searched step of length alpha whose merit is `ratio` times the one before.
+  void after_step(double alpha, double ratio);
+  /// mu: the multiple of the rest stiffness diagonal the next tangent takes (0: undamped).
+  double factor() const { return mu_; }
+
+  /// A step this short ...
+  static constexpr double kShortStep = 1.0 / 8;
+  /// ... that keeps more than this part of the merit is a stall on a near-singular tangent.
+  static constexpr double kStall = 0.9;
+  /// tau, the first damping, and the factor it grows and shrinks by.
+  static constexpr double kFirst = 1e-3;
+  static constexpr double kGrowth = 10;
+
+private:
+  double mu_ = 0;
 };
 
 /// Iterates the relaxed test's reference remembers (M).

@@ -95,6 +95,7 @@ public:
   double displacement_norm() const override { return now_.u.norm(); }
   double displacement_step() const override { return (now_.u - base_).norm(); }
   bool nonlinear() const override { return true; }
+  void damp(double factor) override { damping_ = factor; }
   bool settled() const override;
 
   const Eigen::VectorXd& displacement() const { return now_.u; }
@@ -141,6 +142,7 @@ private:
   /// The diagonal of the tangent at rest: the scale of a Dirichlet dof's mismatch in the
   /// residual (a force) and of a contact node's complementarity (contact_stiffness)
   Eigen::VectorXd rest_diagonal_;
+  double damping_ = 0; ///< Levenberg-Marquardt's mu (contact_bulk.hpp damp)
 
   bool dynamic() const { return problem_.mass != nullptr; }
 
