@@ -9,7 +9,8 @@
 #    the contact zone keep the solution out of H^2);
 #  - case.est holds one indicator per triangle whose squares sum to the estimate's square,
 #    sig-dump prints it, the .vtu holds the cell field error_indicator;
-#  - a stale case.b (TRACTION changed), a missing one, and a march (TIME card) are refused.
+#  - a stale case.b (TRACTION changed), a missing one, a march (TIME card) and a
+#    large-deformation law (case.mili of law=svk) are refused.
 set -euo pipefail
 source tests/pipeline/lib/common.sh
 require_stages mesh material contact assemble solve post estimate error dump
@@ -73,4 +74,9 @@ refused "missing case.b" estimate "$work/b8.dat" "$work/stale" "case.b"
 cp "$work/b8.dat" "$work/march.dat"
 echo "TIME scheme=midpoint T=1 k=0.1" >>"$work/march.dat"
 refused "a march" estimate "$work/march.dat" "$work/b8" "static solutions"
+sed -e 's/^MATERIAL .*/MATERIAL law=svk E=100 nu=0.3 plane=strain/' "$work/b8.dat" >"$work/svk.dat"
+"$bin/sig-mesh" "$work/svk.dat" -o "$work/svk" >/dev/null && "$bin/sig-material" "$work/svk.dat" -o "$work/svk" >/dev/null ||
+  die "sig-mesh or sig-material failed on an svk deck"
+refused "a large-deformation law" estimate "$work/svk.dat" "$work/svk" "case.mili" "sub-domain 1" \
+  "small-strain solutions only"
 finish "effectivity and rate on the frictional block, indicators, bad inputs: $checks checks"

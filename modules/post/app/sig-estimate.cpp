@@ -5,19 +5,20 @@
 //
 //   sig-estimate DATAFILE [-o OUTDIR]
 //
-// Reads OUTDIR/case.nopo and case.b (checked to belong to the deck and to each other, as every
-// stage does) and writes
+// Reads OUTDIR/case.nopo, case.mili and case.b (checked to belong to the deck and to each other, as
+// every stage does) and writes
 //   OUTDIR/case.est                  DS EST: indicator (eta_T per triangle), estimate (eta),
 //                                    dofs, estimator, norm
 //   OUTDIR/<stem>_estimate.vtu       the indicators as the cell field error_indicator, with the
 //                                    displacement (unless OUTPUT vtk=no)
-// and prints the global estimate. A march (TIME card) and a solve that did not converge are
-// refused: this slice estimates static solutions only.
+// and prints the global estimate. A march (TIME card), a large-deformation law and a solve that
+// did not converge are refused: this slice estimates static small-strain solutions only.
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/stage.hpp"
 #include "core/stage_cards.hpp"
+#include "material/mili.hpp"
 #include "mesh/nopo.hpp"
 #include "post/recovery_estimate.hpp"
 #include "post/result_checks.hpp"
@@ -33,7 +34,8 @@ int main(int argc, char** argv) {
                  "recovery estimator in the norm of V, eta_T = ||G eps(u_h) - eps(u_h)||_L2(T) "
                  "(G the nodal averaging of the strain per sub-domain), eta = (sum eta_T^2)^1/2, "
                  "in the units of sig-error's error.",
-      .reads = {"DATAFILE", "OUTDIR/case.nopo", "OUTDIR/case.b (sig-solve)"},
+      .reads = {"DATAFILE", "OUTDIR/case.nopo, case.mili (small-strain laws only)",
+                "OUTDIR/case.b (sig-solve)"},
       .writes = {"OUTDIR/case.est (indicator per triangle, estimate, dofs)",
                  "OUTDIR/<name>_estimate.vtu (cell field error_indicator; unless OUTPUT vtk=no)"},
       .cards = sig::stage_cards("estimate").cards};
@@ -45,8 +47,15 @@ int main(int argc, char** argv) {
       time->fail("", "sig-estimate estimates static solutions (case.b) only; a march's "
                      "estimate is not implemented");
 
-    // 2. The mesh and the converged solution.
+    // 2. The mesh, small-strain laws only (the estimator measures the linearized strain, the
+    //    norm of V: a large-deformation solution has another error norm), and the converged
+    //    solution.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    for (const sig::SubdomainMaterial& material : sig::read_mili(args.ds_path("mili")).entries)
+      SIG_VERIFY(!material.hyperelastic, args.ds_path("mili").string()
+                                             << ": sub-domain " << material.subdomain
+                                             << " has a large-deformation law; sig-estimate "
+                                                "estimates small-strain solutions only");
     const sig::Ds solution = sig::read_ds(args.ds_path("b"), "B");
     sig::verify_solution_ds(solution, mesh);
     SIG_VERIFY(solution.integer("converged") != 0,
