@@ -26,6 +26,10 @@ const std::vector<StageCards>& stage_table() {
        "hist",
        "HIST"},
       {"post", {"TITLE", "OUTPUT", "TIME", "CONTACT", "COMPARE"}, "post", "POST"},
+      // After the chain, as sig-error: drivers/adapt.sh runs it on a solved static case.
+      {"estimate", {"TITLE", "OUTPUT", "TIME"}, "est", "EST"},
+      // Writes a mesh file for the loop's next deck (MESH file=), recorded by its contents.
+      {"refine", {"TITLE", "MESH"}, "", ""},
       {"bench-finite-strain",
        {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION"},
        "",

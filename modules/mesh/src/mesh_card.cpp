@@ -213,6 +213,28 @@ Mesh mesh_from_card(const Card& card, const std::filesystem::path& folder) {
   }
 }
 
+std::vector<BoundaryArc> boundary_arcs(const Card& card) {
+  if (!card.has("generator")) return {};
+  std::string generator =
+      card.choice("generator", {"half_disc", "half-disc", "disc", "ring", "rectangle", "square"});
+  std::replace(generator.begin(), generator.end(), '-', '_');
+  if (generator == "half_disc") {
+    const double r = card.real("R");
+    return {{3, {0, r}, r}};
+  }
+  if (generator == "disc") {
+    const double r = card.real("R");
+    const Eigen::Vector2d c = centre(card);
+    return {{1, c, r}, {2, c, r}, {3, c, r}, {4, c, r}};
+  }
+  if (generator == "ring") {
+    const Eigen::Vector2d c = centre(card);
+    const double r_in = card.real("r_in"), r_out = card.real("r_out");
+    return {{2, c, r_out}, {3, c, r_out}, {4, c, r_in}};
+  }
+  return {};
+}
+
 std::vector<int> card_regions(const Card& card, const Mesh& mesh) {
   const std::vector<int> present = mesh.subdomains();
   if (!card.has("region")) return present;

@@ -22,7 +22,8 @@ struct StageCards {
 };
 
 /// Every stage: the chain's in chain order (mesh, material, contact, assemble, solve, march,
-/// post), then the benchmarks (sig-bench-*).
+/// post), then sig-estimate (outside the chain: the adaptive loop's), then the benchmarks
+/// (sig-bench-*).
 const std::vector<StageCards>& stage_table();
 
 /// The stage called `name` ("contact" or "sig-contact"); throws sig::Error for another name.

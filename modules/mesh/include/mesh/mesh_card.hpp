@@ -9,6 +9,7 @@
 //   MESH file=meshes/legacy/square3.nopo      (.nopo, gmsh or FreeFem .msh; relative to the
 //                                              datafile's folder)
 #include "core/datafile.hpp"
+#include "mesh/boundary_arcs.hpp"
 #include "mesh/mesh.hpp"
 
 #include <filesystem>
@@ -22,6 +23,11 @@ Mesh read_mesh_file(const std::filesystem::path& path);
 /// The mesh a MESH card describes; `folder` is where relative file names start (the datafile's
 /// folder). Card errors name the file, the line and the field.
 Mesh mesh_from_card(const Card& card, const std::filesystem::path& folder);
+
+/// The circles a MESH card's generator puts its curved boundary on (mesh/boundary_arcs.hpp):
+/// the half disc's arc (reference 3), the disc's four quarters (1-4), the ring's outer (2, 3) and
+/// inner (4) circles; none for a rectangle, a square or a mesh file.
+std::vector<BoundaryArc> boundary_arcs(const Card& card);
 
 /// The sub-domains a card's `region=` field names (all of the mesh's when absent); a sub-domain
 /// the mesh lacks is an InputError on the field, listing those present.

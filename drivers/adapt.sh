@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# drivers/adapt.sh DATAFILE [-o OUTDIR] [--steps K] [--dofs N] [--theta T] [--reference DIR]:
+# the adaptive loop on a static deck (issue 29), solve -> estimate -> mark -> refine:
+#   step 0 runs the deck's chain (drivers/chain.sh) into OUTDIR/step0, then sig-estimate;
+#   step k > 0 runs OUTDIR/step<k>.dat, the deck with its MESH card replaced by
+#   `MESH file=step<k-1>/refined.nopo`, the mesh sig-refine made from step k-1's indicators
+#   (Dörfler's marking with theta T, default 0.5; longest-edge bisection keeping references
+#   and sub-domains, new nodes on the first deck's arcs).
+# It stops after K steps (default 4) or at the first step with N dofs or more (default: no
+# budget). OUTDIR (default out/<stem>-adapt) gets adapt.csv: step, dofs, estimate (sig-estimate's
+# eta, in the norm of V) and, with --reference DIR (a chain's output on a finer mesh), error
+# (sig-error's absolute error against it) and effectivity (estimate / error).
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=${SIG_BIN:-$root/build/bin}
+usage="usage: drivers/adapt.sh DATAFILE [-o OUTDIR] [--steps K] [--dofs N] [--theta T] [--reference DIR]"
+[ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
+deck=$1
+shift
+[ -r "$deck" ] || { echo "adapt.sh: cannot read datafile $deck" >&2; exit 2; }
+name=$(basename "$deck")
+stem=${name%.*}
+outdir=out/$stem-adapt steps=4 dofs=0 theta=0.5 reference=
+while [ $# -gt 0 ]; do
+  [ $# -ge 2 ] || { echo "adapt.sh: $1 needs a value; $usage" >&2; exit 2; }
+  case $1 in
+    -o) outdir=$2 ;;
+    --steps) steps=$2 ;;
+    --dofs) dofs=$2 ;;
+    --theta) theta=$2 ;;
+    --reference) reference=$2 ;;
+    *) echo "adapt.sh: unknown option $1; $usage" >&2; exit 2 ;;
+  esac
+  shift 2
+done
+[[ $steps =~ ^[1-9][0-9]*$ ]] || { echo "adapt.sh: --steps $steps is not a count >= 1" >&2; exit 2; }
+[[ $dofs =~ ^[0-9]+$ ]] || { echo "adapt.sh: --dofs $dofs is not a count" >&2; exit 2; }
+if [ -n "$reference" ] && [ ! -f "$reference/case.nopo" ]; then
+  echo "adapt.sh: --reference $reference holds no case.nopo (run its chain first)" >&2
+  exit 2
+fi
+if grep -qi '^[[:space:]]*TIME[[:space:]]' "$deck"; then
+  echo "adapt.sh: $deck has a TIME card: the loop adapts static decks only" >&2
+  exit 2
+fi
+mkdir -p "$outdir"
+deck_path=$(cd "$(dirname "$deck")" && pwd)/$name
+
+# The value of array NAME of a DS, from sig-dump's JSON.
+ds_value() {
+  "$bin/sig-dump" --json --values="$2" "$1" | python3 -c 'import json, sys
+arrays = {a["name"]: a for a in json.load(sys.stdin)["arrays"]}
+print(arrays[sys.argv[1]]["values"][0])' "$2"
+}
+
+csv=$outdir/adapt.csv
+echo "step,dofs,estimate,error,effectivity" >"$csv"
+for ((k = 0; k < steps; k++)); do
+  dir=$outdir/step$k
+  step_deck=$deck_path
+  if [ "$k" -gt 0 ]; then
+    # The deck with the refined mesh: its MESH card replaced, every other card as it was.
+    step_deck=$outdir/step$k.dat
+    awk -v mesh="MESH file=step$((k - 1))/refined.nopo" \
+      'toupper($1) == "MESH" { print mesh; next } { print }' "$deck_path" >"$step_deck"
+  fi
+  mkdir -p "$dir"
+  "$root/drivers/chain.sh" "$step_deck" -o "$dir" >"$dir/chain.log" 2>&1 ||
+    { cat "$dir/chain.log" >&2; echo "adapt.sh: step $k: the chain failed" >&2; exit 1; }
+  "$bin/sig-estimate" "$step_deck" -o "$dir" >"$dir/estimate.log" 2>&1 ||
+    { cat "$dir/estimate.log" >&2; echo "adapt.sh: step $k: sig-estimate failed" >&2; exit 1; }
+  estimate=$(ds_value "$dir/case.est" estimate)
+  step_dofs=$(ds_value "$dir/case.est" dofs)
+  error= effectivity=
+  if [ -n "$reference" ]; then
+    error=$("$bin/sig-error" --json "$dir" "$reference" |
+      python3 -c 'import json, sys; print(json.load(sys.stdin)["error"])')
+    effectivity=$(python3 -c "print($estimate / $error if $error > 0 else '')")
+  fi
+  echo "$k,$step_dofs,$estimate,$error,$effectivity" >>"$csv"
+  echo "adapt.sh: step $k: $step_dofs dofs, estimate $estimate${error:+, error $error, effectivity $effectivity}"
+  [ "$k" -lt $((steps - 1)) ] || break
+  if [ "$dofs" -gt 0 ] && [ "$step_dofs" -ge "$dofs" ]; then
+    echo "adapt.sh: $step_dofs dofs reach the budget of $dofs: stopped"
+    break
+  fi
+  "$bin/sig-refine" "$step_deck" -o "$dir" --theta "$theta" --shape "$deck_path" \
+    >"$dir/refine.log" 2>&1 ||
+    { cat "$dir/refine.log" >&2; echo "adapt.sh: step $k: sig-refine failed" >&2; exit 1; }
+done
+echo "$csv"

@@ -1,0 +1,94 @@
+// sig-estimate: the a posteriori error estimate of a solved static case, per triangle, for the
+// adaptive loop (drivers/adapt.sh): Zienkiewicz and Zhu's recovery estimator in the norm of V
+// that sig-error measures (post/recovery_estimate.hpp: formula and references),
+//   eta_T = ||G eps(u_h) - eps(u_h)||_L2(T),   eta = (sum of eta_T^2)^(1/2).
+//
+//   sig-estimate DATAFILE [-o OUTDIR]
+//
+// Reads OUTDIR/case.nopo, case.mili and case.b (checked to belong to the deck and to each other, as
+// every stage does) and writes
+//   OUTDIR/case.est                  DS EST: indicator (eta_T per triangle), estimate (eta),
+//                                    dofs, estimator, norm
+//   OUTDIR/<stem>_estimate.vtu       the indicators as the cell field error_indicator, with the
+//                                    displacement (unless OUTPUT vtk=no)
+// and prints the global estimate. A march (TIME card), a large-deformation law and a solve that
+// did not converge are refused: this slice estimates static small-strain solutions only.
+#include "core/datafile.hpp"
+#include "core/ds.hpp"
+#include "core/error.hpp"
+#include "core/stage.hpp"
+#include "core/stage_cards.hpp"
+#include "material/mili.hpp"
+#include "mesh/nopo.hpp"
+#include "post/recovery_estimate.hpp"
+#include "post/result_checks.hpp"
+#include "post/vtk_writer.hpp"
+
+#include <algorithm>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  const sig::StageHelp help{
+      .name = "sig-estimate",
+      .purpose = "The a posteriori error estimate of a solved static case: Zienkiewicz-Zhu's "
+                 "recovery estimator in the norm of V, eta_T = ||G eps(u_h) - eps(u_h)||_L2(T) "
+                 "(G the nodal averaging of the strain per sub-domain), eta = (sum eta_T^2)^1/2, "
+                 "in the units of sig-error's error.",
+      .reads = {"DATAFILE", "OUTDIR/case.nopo, case.mili (small-strain laws only)",
+                "OUTDIR/case.b (sig-solve)"},
+      .writes = {"OUTDIR/case.est (indicator per triangle, estimate, dofs)",
+                 "OUTDIR/<name>_estimate.vtu (cell field error_indicator; unless OUTPUT vtk=no)"},
+      .cards = sig::stage_cards("estimate").cards};
+  return sig::run_stage("sig-estimate", [&] {
+    // 1. Command line and datafile: a static deck only.
+    const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
+    const sig::Datafile& datafile = args.deck;
+    if (const sig::Card* time = datafile.find("TIME"))
+      time->fail("", "sig-estimate estimates static solutions (case.b) only; a march's "
+                     "estimate is not implemented");
+
+    // 2. The mesh, small-strain laws only (the estimator measures the linearized strain, the
+    //    norm of V: a large-deformation solution has another error norm), and the converged
+    //    solution.
+    const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    for (const sig::SubdomainMaterial& material : sig::read_mili(args.ds_path("mili")).entries)
+      SIG_VERIFY(!material.hyperelastic, args.ds_path("mili").string()
+                                             << ": sub-domain " << material.subdomain
+                                             << " has a large-deformation law; sig-estimate "
+                                                "estimates small-strain solutions only");
+    const sig::Ds solution = sig::read_ds(args.ds_path("b"), "B");
+    sig::verify_solution_ds(solution, mesh);
+    SIG_VERIFY(solution.integer("converged") != 0,
+               solution.source << " holds a solve that did not converge (Nv): no estimate of a "
+                                  "solution that is not one");
+    const std::vector<double> u_values = solution.reals("u");
+    const Eigen::VectorXd u = Eigen::Map<const Eigen::VectorXd>(
+        u_values.data(), static_cast<Eigen::Index>(u_values.size()));
+
+    // 3. The indicators and the global estimate.
+    const sig::ErrorIndicators e = sig::recovery_indicators(mesh, u);
+    sig::Ds est("EST", datafile.title(), "sig-estimate");
+    est.put("indicator", e.eta);
+    est.put_scalar("estimate", e.estimate);
+    est.put_int("dofs", 2 * static_cast<std::int64_t>(mesh.num_nodes()));
+    est.put_text("estimator", "zienkiewicz-zhu nodal averaging per sub-domain");
+    est.put_text("norm", "||eps(u - u_h)||_L2");
+    sig::write_ds(args.ds_path("est"), est);
+
+    // 4. The indicators for ParaView.
+    const sig::Card* output = datafile.find("OUTPUT");
+    if (output == nullptr || output->choice("vtk", {"yes", "no"}) == "yes") {
+      const std::string stem =
+          output ? output->file_name("name", datafile.stem()) : datafile.stem();
+      const auto vtu = args.outdir / (stem + "_estimate.vtu");
+      sig::write_vtu(vtu, mesh, {{"displacement", 2, u_values}}, {{"error_indicator", 1, e.eta}},
+                     {{"title", datafile.title()}, {"estimator", est.text("estimator")}},
+                     {{"estimate", e.estimate}});
+      std::cout << vtu.string() << "\n";
+    }
+    const auto worst = std::max_element(e.eta.begin(), e.eta.end()) - e.eta.begin();
+    std::cout << "sig-estimate: eta = " << e.estimate << " (||eps(u - u_h)||_L2, Zienkiewicz-Zhu), "
+              << mesh.num_triangles() << " triangles, " << 2 * mesh.num_nodes()
+              << " dofs; largest eta_T = " << e.eta[worst] << " on triangle " << worst + 1 << "\n";
+  });
+}
