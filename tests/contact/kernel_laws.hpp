@@ -33,6 +33,13 @@ struct KernelCase {
   FrictionBound bound = FrictionBound::normal;
 };
 
+/// mu1 / mu2: the penetrations a and b lie on one piece of the coefficient (its kinks at q_n = 0
+/// and g), where a central difference of the kernel does not straddle one.
+inline bool same_coefficient_piece(const ContactLaw& law, double a, double b) {
+  return d_penetration_friction(law, a) == d_penetration_friction(law, b) &&
+         (penetration_friction(law, a) > 0) == (penetration_friction(law, b) > 0);
+}
+
 /// Every normal law with every friction law and bound the code has.
 inline std::vector<KernelCase> every_kernel_case() {
   return {

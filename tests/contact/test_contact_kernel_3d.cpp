@@ -69,13 +69,10 @@ void expect_derivatives(const ContactLaw& law, const Variables3& x, double r,
     for (; h > 1e-14; h /= 4) {
       plus = contact_kernel(law, with(x, j, h), r, r);
       minus = contact_kernel(law, with(x, j, -h), r, r);
-      const auto piece = [&](double delta) {
-        return d_penetration_friction(law, with(x, j, delta).q_n) ==
-                   d_penetration_friction(law, x.q_n) &&
-               (penetration_friction(law, with(x, j, delta).q_n) > 0) ==
-                   (penetration_friction(law, x.q_n) > 0);
-      };
-      if (same_branch(plus, k) && same_branch(minus, k) && piece(h) && piece(-h)) break;
+      if (same_branch(plus, k) && same_branch(minus, k) &&
+          same_coefficient_piece(law, x.q_n, with(x, j, h).q_n) &&
+          same_coefficient_piece(law, x.q_n, with(x, j, -h).q_n))
+        break;
     }
     ASSERT_GT(h, 1e-14) << where << ": no step stays on the branch in variable " << j;
     const Vector6 fd = (outputs(plus) - outputs(minus)) / (2 * h);
