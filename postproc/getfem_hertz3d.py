@@ -54,7 +54,9 @@ of the area of each curved-face triangle around it, the integral of its P1 hat f
 surface), the approach (-u_z at the top centre), per contact node its normal force N = -lambda_n
 and tangential force vector (force of the plane on the body), and with --tangential the statuses
 stick / slip (slip where |T| >= mu N - 1e-6 mu max N, among nodes in contact), the stick radius
-(largest radial distance of a sticking node) beside c = a (1 - Q / (mu P))^(1/3). Beside them
+beside c = a (1 - Q / (mu P))^(1/3) measured two ways: the largest radial distance of a sticking
+node, and the separating radius (the radius with the fewest sticking nodes outside and slipping
+nodes inside it; the statuses are mixed over a band of the coarse meshes, see separating_radius). Beside them
 Hertz's values on a rigid plane: E* = E / (1 - nu^2), a = (3 P R / (4 E*))^(1/3),
 p0 = 3 P / (2 pi a^2), approach a^2 / R, with relative errors. Cattaneo-Mindlin's c holds for
 Dundurs' beta = 0; a rigid flat with nu != 0.5 has beta != 0 (normal-tangential coupling), so c
@@ -238,8 +240,24 @@ def contact_measures(N, T, xyz, weights, mu, tangential):
         stick = status == "stick"
         m["stick_nodes"], m["slip_nodes"] = int(stick.sum()), int(slipping.sum())
         m["stick_radius"] = float(r[stick].max()) if stick.any() else 0.0
+        m["stick_radius_separating"], m["misclassified"] = separating_radius(r[contact], stick[contact])
         m["inner_slip_radius"] = float(r[slipping].min()) if slipping.any() else None
     return m, status
+
+
+def separating_radius(r, stick):
+    """The radius c that best separates sticking nodes (inside) from slipping ones (outside): the
+    fewest nodes on the wrong side (slip at r < c or stick at r >= c); c is midway between two
+    consecutive radii, the smallest such. Returns (c, that number of nodes). The statuses of a
+    nodal solution on an unstructured mesh are mixed near the boundary, where the largest radius
+    of a sticking node follows one outlier."""
+    order = np.argsort(r)
+    rs, st = r[order], stick[order]
+    # wrong[k]: c between rs[k-1] and rs[k]: slips among the first k, sticks among the rest.
+    wrong = np.concatenate(([0], np.cumsum(~st))) + np.concatenate((np.cumsum(st[::-1])[::-1], [0]))
+    k = int(np.argmin(wrong))
+    edges = np.concatenate(([0.0], (rs[:-1] + rs[1:]) / 2, [rs[-1]]))
+    return float(edges[k]), int(wrong[k])
 
 
 def rel(ours, ref):
@@ -255,6 +273,7 @@ def compare(m, H, P, Q, mu):
     if Q is not None:
         c = H["a"] * (1 - Q / (mu * P)) ** (1 / 3)
         out.update({"c": c, "stick_radius_rel_error": rel(m["stick_radius"], c),
+                    "stick_radius_separating_rel_error": rel(m["stick_radius_separating"], c),
                     "c_with_measured_a": m["contact_radius"] * (1 - Q / (mu * P)) ** (1 / 3)})
     return out
 
@@ -334,8 +353,10 @@ def summary_line(s):
                 f"({100 * h['p_axis_rel_error']:+.1f} % vs p0 {h['p0']:.3f}), approach {step['approach']:.5f} "
                 f"({100 * h['approach_rel_error']:+.1f} %), resultant {', '.join(f'{v:.5g}' for v in step['resultant'])}")
         if "c" in h:
-            line += (f"\n    stick {step['stick_nodes']} slip {step['slip_nodes']}, stick radius "
-                     f"{step['stick_radius']:.4f} vs c = {h['c']:.4f} ({100 * h['stick_radius_rel_error']:+.1f} %)")
+            line += (f"\n    stick {step['stick_nodes']} slip {step['slip_nodes']}, c = {h['c']:.4f}: largest stick "
+                     f"radius {step['stick_radius']:.4f} ({100 * h['stick_radius_rel_error']:+.1f} %), separating "
+                     f"radius {step['stick_radius_separating']:.4f} "
+                     f"({100 * h['stick_radius_separating_rel_error']:+.1f} %, {step['misclassified']} nodes on the wrong side)")
         lines.append(line)
     return "\n".join(lines)
 
