@@ -8,11 +8,15 @@
 #    15 % of a (measured -5.0 %: the radius of the last node in contact undershoots a by up to a
 #    mesh size, 0.08 + 0.2 a = 0.24 = 30 % of a at worst), the axis node's pressure within 25 % of
 #    p0 (measured +14 % frictionless, +10 % with friction: the nodal pressures of this mesh scatter
-#    by +-10 % between neighbours);
+#    by +-10 % between neighbours), and the mean pressure within a / 2 (nodal forces over tributary
+#    areas) within 8 % of Hertz's frictionless (measured +3.0 %; +1.2 % and +0.05 % on finer
+#    meshes), 12 % with friction (measured +7.0 %: the stuck centre sharpens the pressure; +6.2 %
+#    on the 29k-dof mesh, datafiles/scene3d/GETFEM.md);
 #  - the solution is an equilibrium: the contact forces sum to (0, 0, P) (to (-Q, 0, P) in the
 #    tangential step) to 1e-8 P, and the top-face constraints that remove the rigid motions carry
 #    nothing under the axisymmetric normal load (their reactions below 1e-6 P);
-#  - Coulomb's cone holds at every node (|T| <= mu N + 1e-8 max N), and after the tangential step
+#  - Coulomb's cone holds at every node (|T| <= mu N + 1e-6 max N: Newton stops at max_res 1e-8,
+#    not at an exact projection; measured 3e-11 here, 2e-8 at nu = 0.45), and after the tangential step
 #    some nodes stick and some slip, the node on the axis sticks, the separating stick radius
 #    (getfem_hertz3d.py) lies inside the contact zone, and the largest radius of a sticking node is
 #    within two mesh sizes of Cattaneo-Mindlin's c (the tolerance; measured +5.6 %, 0.04
@@ -50,6 +54,10 @@ for name in ("mu0", "mu03"):
               f"within 15 % of a = {h['a']:.4f} ({100 * h['a_rel_error']:+.1f} %)")
         check(abs(h["p_axis_rel_error"]) <= 0.25, f"{where}: axis pressure {step['p_axis']:.3f} "
               f"within 25 % of p0 = {h['p0']:.3f} ({100 * h['p_axis_rel_error']:+.1f} %)")
+        bound = 0.08 if mu == 0 else 0.12
+        check(abs(h["p_mean_centre_rel_error"]) <= bound, f"{where}: mean pressure within a/2 "
+              f"{step['p_mean_centre']:.3f} within {100 * bound:g} % of Hertz's {h['p_mean_centre']:.3f} "
+              f"({100 * h['p_mean_centre_rel_error']:+.1f} %)")
         nodes = step["nodes"]
         N = np.array([n["normal_force"] for n in nodes])
         T = np.array([n["tangential_force"] for n in nodes]).T
@@ -62,7 +70,7 @@ for name in ("mu0", "mu03"):
             check(worst <= 1e-6 * P, f"{where}: top-face constraint reactions {worst:.2e}, at most 1e-6 P = {1e-6 * P:.2e}")
         if mu > 0:
             excess = (np.linalg.norm(T, axis=0) - mu * N).max()
-            check(excess <= 1e-8 * N.max(), f"{where}: |T| - mu N <= {excess:.2e} (cone)")
+            check(excess <= 1e-6 * N.max(), f"{where}: max |T| - mu N = {excess:.2e}, at most 1e-6 max N (cone)")
         if step["step"] == "tangential":
             check(step["stick_nodes"] > 0 and step["slip_nodes"] > 0,
                   f"{where}: {step['stick_nodes']} nodes stick, {step['slip_nodes']} slip")
