@@ -141,7 +141,7 @@ def load_mesh(args):
                                         3, {"R": args.R, "h": args.h, "grading": args.grading})
             return import_gmsh(msh, (VOLUME, TOP, CURVED)), str(args.msh or f"half_ball.geo h {args.h:g} grading {args.grading:g}")
         except RuntimeError as e:
-            fail(str(e))
+            fail(f"{e} (GetFEM 5.4 renumbers the regions of msh 4.1: mesh with -format msh22)")
 
 
 def top_area(mim):
@@ -302,8 +302,11 @@ def measure(md, mfu, mesh, nodes, args, H, Q):
     N, T = nodal_forces(md, len(xdofs), args.mu > 0)
     m, status = contact_measures(N, T, xyz, weights, args.mu, H["a"])
     u = np.asarray(md.variable("u")).ravel()
-    centre = np.argmin(np.linalg.norm(mfu.basic_dof_nodes() - np.array([[0], [0], [args.R]]), axis=0))
-    m["approach"] = float(-u[centre - centre % 3 + 2])
+    at_centre = np.nonzero(np.linalg.norm(mfu.basic_dof_nodes() - np.array([[0], [0], [args.R]]), axis=0)
+                           < 1e-9 * args.R)[0]
+    if len(at_centre) != 3:
+        fail(f"found {len(at_centre)} dofs at the top centre (0, 0, {args.R:g}), expected 3")
+    m["approach"] = float(-u[np.sort(at_centre)[2]])  # qdim 3: the third dof of a node is u_z
     m["rigid_reactions"] = [float(v) for v in np.atleast_1d(md.variable("rigid"))]
     m["hertz"] = compare(m, H, args.P, Q, args.mu)
     m["nodes"] = node_table(N, T, xyz, weights, status, mesh)
