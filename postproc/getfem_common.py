@@ -1,11 +1,13 @@
 """What the GetFEM comparison scripts (getfem_hertz.py, getfem_ring.py, getfem_friction.py) share:
 their command line's checks and a quiet GetFEM, a deck's cards (through the report library's
-deck reader), the version of Debian's python3-getfem, the gmsh half disc and its import into
-GetFEM, our plane-strain elasticity as a GetFEM model, the node coordinates of sig-mesh's
-case.nopo and the nodal weights of the contact nodes."""
+deck reader), the version of Debian's python3-getfem, gmsh meshes (the half disc, the half ball of
+getfem_hertz3d.py) and their import into GetFEM, isotropic elasticity as a GetFEM model (plane
+strain in 2D, 3D), the node coordinates of sig-mesh's case.nopo, the nodal weights of the contact
+nodes (lengths on a polyline, areas on a surface) and the timed solves."""
 import json
 import math
 import subprocess
+import time
 
 import numpy as np
 
@@ -51,45 +53,68 @@ def getfem_version():
         return "5.4 (version not found)"
 
 
-def gmsh_half_disc(geo, workdir, R, n, grading):
-    """meshes/half_disc.geo meshed by gmsh as sig-mesh's half-disc generator does (N uniform
-    segments on the arc, the same grading), written as msh 2.2 for GetFEM's importer; returns the
-    path. Raises RuntimeError with gmsh's output when it fails."""
-    msh = workdir / f"half_disc_N{n}.msh"
-    cmd = ["gmsh", str(geo), "-2", "-format", "msh22", "-v", "2", "-setnumber", "R", repr(R),
-           "-setnumber", "N", str(n), "-setnumber", "grading", repr(grading), "-o", str(msh)]
+def gmsh_mesh(geo, msh, dim, numbers, fmt="msh22"):
+    """gmsh GEO meshed in dimension dim with `-setnumber NAME VALUE` for each of `numbers` (a dict),
+    written to msh in format fmt (msh22 for GetFEM's importer); returns msh. Raises RuntimeError
+    with gmsh's output when it fails."""
+    cmd = ["gmsh", str(geo), f"-{dim}", "-format", fmt, "-v", "2"]
+    for name, value in numbers.items():
+        cmd += ["-setnumber", name, repr(value)]
+    cmd += ["-o", str(msh)]
     done = subprocess.run(cmd, capture_output=True, text=True)
     if done.returncode != 0 or not msh.is_file():
         raise RuntimeError(f"gmsh failed ({' '.join(cmd)}):\n{done.stdout}{done.stderr}")
     return msh
 
 
-def import_half_disc(geo, workdir, R, n, grading, regions):
-    """gmsh_half_disc's mesh imported by GetFEM, and the .msh path; RuntimeError with gmsh's
-    output, or when GetFEM's mesh lacks one of the physical `regions`."""
+def import_gmsh(msh, regions):
+    """The gmsh mesh msh imported by GetFEM; RuntimeError when it lacks one of the physical
+    `regions`."""
     import getfem as gf  # only the scripts that run GetFEM need it
-    msh = gmsh_half_disc(geo, workdir, R, n, grading)
     m = gf.Mesh("import", "gmsh", str(msh))
     found = set(int(r) for r in np.atleast_1d(m.regions()))
     if not set(regions) <= found:
         raise RuntimeError(f"{msh}: GetFEM imported regions {sorted(found)}, expected "
                            f"{' and '.join(str(r) for r in regions)}")
-    return m, msh
+    return m
+
+
+def gmsh_half_disc(geo, workdir, R, n, grading):
+    """meshes/half_disc.geo meshed by gmsh as sig-mesh's half-disc generator does (N uniform
+    segments on the arc, the same grading), written as msh 2.2 for GetFEM's importer; returns the
+    path. Raises RuntimeError with gmsh's output when it fails."""
+    return gmsh_mesh(geo, workdir / f"half_disc_N{n}.msh", 2, {"R": R, "N": n, "grading": grading})
+
+
+def import_half_disc(geo, workdir, R, n, grading, regions):
+    """gmsh_half_disc's mesh imported by GetFEM, and the .msh path; RuntimeError with gmsh's
+    output, or when GetFEM's mesh lacks one of the physical `regions`."""
+    msh = gmsh_half_disc(geo, workdir, R, n, grading)
+    return import_gmsh(msh, regions), msh
+
+
+def isotropic_elasticity(m, E, nu, integration):
+    """GetFEM's isotropic linearized elasticity with the 3D Lame coefficients of E, nu on the P1
+    vector field u of the mesh m (dimension m.dim(): plane strain in 2D), integrated by
+    `integration` (e.g. "IM_TRIANGLE(2)"). Returns (model with the variable "u", its MeshFem, its
+    MeshIm)."""
+    import getfem as gf  # only the scripts that run GetFEM need it
+    mfu = gf.MeshFem(m, m.dim())
+    mfu.set_classical_fem(1)
+    mim = gf.MeshIm(m, gf.Integ(integration))
+    md = gf.Model("real")
+    md.add_fem_variable("u", mfu)
+    md.add_initialized_data("lambda", [E * nu / ((1 + nu) * (1 - 2 * nu))])
+    md.add_initialized_data("mu", [E / (2 * (1 + nu))])
+    md.add_isotropic_linearized_elasticity_brick(mim, "u", "lambda", "mu")
+    return md, mfu, mim
 
 
 def plane_strain_elasticity(m, E, nu, traction, region):
     """Our P1 plane-strain elasticity on the GetFEM mesh m: GetFEM's 2D isotropic linearized
     elasticity with the 3D Lame coefficients, the traction (a pair) on the boundary `region`.
     Returns (model with the variable "u", its MeshFem, its MeshIm)."""
-    import getfem as gf  # only the scripts that run GetFEM need it
-    mfu = gf.MeshFem(m, 2)
-    mfu.set_classical_fem(1)
-    mim = gf.MeshIm(m, gf.Integ("IM_TRIANGLE(2)"))
-    md = gf.Model("real")
-    md.add_fem_variable("u", mfu)
-    md.add_initialized_data("lambda", [E * nu / ((1 + nu) * (1 - 2 * nu))])
-    md.add_initialized_data("mu", [E / (2 * (1 + nu))])
-    md.add_isotropic_linearized_elasticity_brick(mim, "u", "lambda", "mu")
+    md, mfu, mim = isotropic_elasticity(m, E, nu, "IM_TRIANGLE(2)")
     md.add_initialized_data("F", list(traction))
     md.add_source_term_brick(mim, "u", "F", region)
     return md, mfu, mim
@@ -131,6 +156,36 @@ def tributary_lengths(points):
     w[:-1] += chord / 2
     w[1:] += chord / 2
     return w
+
+
+def tributary_areas(mim, region):
+    """Nodal weights of the P1 nodes on the boundary `region` of mim's mesh: the integral of each
+    node's P1 hat function over the region's faces, i.e. one third of the area of each surface
+    triangle to each of its vertices (exact: the integration of mim is exact for P1). Returns
+    (coordinates dim x n, weights n) of the region's nodes, in increasing scalar P1 dof."""
+    import getfem as gf  # only the scripts that run GetFEM need it
+    mf = gf.MeshFem(mim.linked_mesh(), 1)
+    mf.set_classical_fem(1)
+    weights = gf.asm_generic(mim, 1, "Test_w", region, "w", 1, mf, np.zeros(mf.nbdof()))
+    dofs = np.sort(mf.basic_dof_on_region(region))
+    return mf.basic_dof_nodes()[:, dofs], np.asarray(weights)[dofs]
+
+
+def timed_solves(md, unknowns, options, repeat):
+    """One untimed md.solve (GetFEM assembles its linear bricks once and keeps them), then
+    `repeat` timed ones, each from the same start (unknowns: {variable: value}). Returns
+    (seconds of each timed md.solve alone, Newton iterations of each, all converged)."""
+    def solve():
+        for name, value in unknowns.items():
+            md.set_variable(name, value)
+        t0 = time.perf_counter()
+        result = np.atleast_1d(md.solve(*options))
+        seconds = time.perf_counter() - t0
+        return seconds, int(result[0]), bool(result[1]) if len(result) > 1 else True
+
+    solve()
+    runs = [solve() for _ in range(repeat)]
+    return [r[0] for r in runs], [r[1] for r in runs], all(r[2] for r in runs)
 
 
 def snap_arc(points, ids, center, R, angle0, segments, step):

@@ -67,14 +67,13 @@ import math
 import statistics
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
 
 from getfem_common import (deck_cards, getfem_version, import_half_disc, nopo_coordinates,
                            parse_timed_args, plane_strain_elasticity, print_summary, snap_arc,
-                           tributary_lengths)
+                           timed_solves, tributary_lengths)
 
 try:
     import getfem as gf
@@ -349,19 +348,8 @@ def main():
     max_res = d["eps"] * p.max_res_scale
     options = ["max_res", max_res, "max_iter", args.maxit, "lsolver", "auto"] + (["noisy"] if args.noisy else [])
 
-    def solve():
-        for name, value in unknowns.items():
-            md.set_variable(name, value)
-        t0 = time.perf_counter()
-        result = np.atleast_1d(md.solve(*options))
-        seconds = time.perf_counter() - t0
-        return seconds, int(result[0]), bool(result[1]) if len(result) > 1 else True
-
-    solve()  # untimed: assembles and keeps the linear bricks
-    runs = [solve() for _ in range(args.repeat)]
-    times = [s for s, _, _ in runs]
-    iterations = [i for _, i, _ in runs]
-    converged = all(c for _, _, c in runs) and all(i < args.maxit for i in iterations)
+    times, iterations, converged = timed_solves(md, unknowns, options, args.repeat)
+    converged = converged and all(i < args.maxit for i in iterations)
 
     # 4. Our nodal forces, slips and statuses, in boundary order.
     u = displacement()

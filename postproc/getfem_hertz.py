@@ -26,13 +26,13 @@ import math
 import statistics
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
 
 from getfem_common import (deck_cards, getfem_version, import_half_disc, parse_timed_args,
-                           plane_strain_elasticity, print_summary, tributary_lengths)
+                           plane_strain_elasticity, print_summary, timed_solves,
+                           tributary_lengths)
 
 try:
     import getfem as gf
@@ -117,22 +117,9 @@ def main():
     start = np.zeros(nbdof)
     start[1::2] = -h * h / R
 
-    def solve():
-        md.set_variable("u", start)
-        md.set_variable("lambda_n", np.zeros(nbc))
-        md.set_variable("mult_u1", np.zeros(1))
-        t0 = time.perf_counter()
-        result = md.solve("max_res", args.eps, "max_iter", 100, "lsolver", "auto")
-        seconds = time.perf_counter() - t0
-        iterations = int(np.atleast_1d(result)[0]) if result is not None else -1
-        return seconds, iterations
-
-    solve()  # untimed: assembles and keeps the linear bricks
-    times, iterations = [], []
-    for _ in range(args.repeat):
-        seconds, its = solve()
-        times.append(seconds)
-        iterations.append(its)
+    unknowns = {"u": start, "lambda_n": np.zeros(nbc), "mult_u1": np.zeros(1)}
+    times, iterations, _ = timed_solves(md, unknowns, ["max_res", args.eps, "max_iter", 100, "lsolver", "auto"],
+                                        args.repeat)
 
     # Pressure = nodal force / tributary length, nodes ordered by angle along the arc.
     lam = np.asarray(md.variable("lambda_n")).ravel()
