@@ -50,6 +50,8 @@ constexpr FieldRange table[] = {
     {"MESH", "layers", {2, max_count, false, false, nullptr}},
     {"MESH", "lx", positive},
     {"MESH", "ly", positive},
+    {"MESH", "lz", positive},
+    {"MESH", "h", positive},
     {"MESH", "nx", count_from_1},
     {"MESH", "ny", count_from_1},
     {"MESH", "refs", reference},

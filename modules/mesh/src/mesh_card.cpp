@@ -29,6 +29,8 @@ const std::set<std::string>& fields_of(const std::string& generator) {
        {"centre", "center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
       {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
       {"square", {"lx", "nx", "refs", "pattern"}},
+      {"box", {"lx", "ly", "lz", "h"}},
+      {"half_ball", {"r", "h"}},
       {"file", {"coincident"}},
   };
   return fields.at(generator);
@@ -133,6 +135,20 @@ Mesh mesh_from_file(const Card& card, const std::filesystem::path& folder) {
 }
 
 Mesh generate(const Card& card, const std::string& generator) {
+  if (generator == "box" || generator == "half_ball") {
+    // About 6 / h^3 tetrahedra and 1 / h^3 nodes per unit volume (gmsh's Delaunay).
+    const double h = card.real("h");
+    if (generator == "box") {
+      const double lx = card.real("lx"), ly = card.real("ly"), lz = card.real("lz");
+      verify_span(card, "lx", std::sqrt(lx * lx + ly * ly + lz * lz));
+      verify_size(card, "h", (lx / h + 1) * (ly / h + 1) * (lz / h + 1));
+      return box(lx, ly, lz, h);
+    }
+    const double r = card.real("R");
+    verify_span(card, "R", 3 * r);
+    verify_size(card, "h", 2.1 * std::pow(r / h + 1, 3));
+    return half_ball(r, h);
+  }
   if (generator == "half_disc" || generator == "disc") {
     const double r = card.real("R");
     // The disc's box is 2R x 2R, the half disc's 2R x R.
@@ -191,10 +207,11 @@ Mesh read_mesh_file(const std::filesystem::path& path) {
 Mesh mesh_from_card(const Card& card, const std::filesystem::path& folder) {
   if (card.has("file") == card.has("generator"))
     card.fail(card.has("file") ? "file" : "generator", "give either generator= or file=");
-  std::string generator = card.has("file")
-                              ? "file"
-                              : card.choice("generator", {"half_disc", "half-disc", "disc", "ring",
-                                                          "rectangle", "square"});
+  std::string generator =
+      card.has("file")
+          ? "file"
+          : card.choice("generator", {"half_disc", "half-disc", "disc", "ring", "rectangle",
+                                      "square", "box", "half_ball", "half-ball"});
   std::replace(generator.begin(), generator.end(), '-', '_');
   const std::set<std::string>& allowed = fields_of(generator);
   for (const auto& [name, value] : card.fields) {
