@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
 namespace sig {
@@ -39,6 +41,40 @@ TEST(Generators3d, HalfBall) {
     EXPECT_NEAR((mesh.nodes[i] - Point(0, 0, R)).norm(), R, 1e-6 * R);
   for (int i : mesh.nodes_with_ref(2))
     EXPECT_NEAR(mesh.nodes[i].z(), R, 1e-12);
+}
+
+TEST(Generators3d, Ball) {
+  if (!testing::have_gmsh()) GTEST_SKIP() << "no gmsh";
+  const Point centre(1, -2, 3);
+  const double R = 0.5;
+  const Mesh mesh = ball(centre, R, 0.2);
+  EXPECT_EQ(mesh.dim, 3);
+  const double exact = 4 * std::numbers::pi * R * R * R / 3;
+  EXPECT_LT(testing::measure_of(mesh), exact);
+  EXPECT_GT(testing::measure_of(mesh), 0.9 * exact);
+  EXPECT_EQ(mesh.references(), std::vector<int>{3});
+  for (int i : mesh.nodes_with_ref(3))
+    EXPECT_NEAR((mesh.nodes[i] - centre).norm(), R, 1e-6 * R);
+}
+
+TEST(Generators3d, Cylinder) {
+  if (!testing::have_gmsh()) GTEST_SKIP() << "no gmsh";
+  const double R = 1, L = 0.5;
+  const Mesh mesh = cylinder(R, L, 0.3);
+  EXPECT_EQ(mesh.dim, 3);
+  const double exact = std::numbers::pi * R * R * L;
+  EXPECT_LT(testing::measure_of(mesh), exact);
+  EXPECT_GT(testing::measure_of(mesh), 0.9 * exact);
+  EXPECT_EQ(mesh.references(), (std::vector<int>{2, 3}));
+  for (int i : mesh.nodes_with_ref(2))
+    EXPECT_TRUE(std::abs(mesh.nodes[i].y()) < 1e-12 || std::abs(mesh.nodes[i].y() - L) < 1e-12);
+  // The tread: at distance R from the axis x1 = 0, x3 = R; its lowest point on x3 = 0.
+  double lowest = R;
+  for (int i : mesh.nodes_with_ref(3)) {
+    EXPECT_NEAR(std::hypot(mesh.nodes[i].x(), mesh.nodes[i].z() - R), R, 1e-6 * R);
+    lowest = std::min(lowest, mesh.nodes[i].z());
+  }
+  EXPECT_NEAR(lowest, 0, 1e-9);
 }
 
 } // namespace

@@ -15,16 +15,19 @@ const std::vector<CardSpec>& card_schema() {
        "the mesh: a generated thesis geometry or a mesh file",
        {
            {"generator",
-            "half-disc | disc | ring | rectangle | square (2D) | box | half-ball (3D)"},
+            "half-disc | disc | ring | rectangle | square (2D) | box | half-ball | ball | cylinder "
+            "(3D)"},
            {"file", "mesh file: gmsh .msh (2.2 or 4.1, ASCII or binary), FreeFem .msh or MODULEF "
                     ".nopo; relative to the datafile's folder"},
            {"coincident",
             "error | allow: nodes of a mesh file at the same place that the "
             "triangles do not share (an open crack) are an error unless allowed",
             "error"},
-           {"R", "radius of the disc, half disc or half ball"},
+           {"R", "radius of the disc, half disc, ball, half ball or cylinder"},
+           {"L", "length of the cylinder (along x2)"},
            {"N", "number of boundary segments along the arc (disc, half disc, ring)"},
-           {"centre", "centre of the disc or ring: x,y", "0,0"},
+           {"centre", "centre of the disc or ring: x,y; of the ball: x,y,z (default the origin)",
+            "0,0"},
            {"center", "old spelling of centre"},
            {"r_in", "inner radius of the ring"},
            {"r_out", "outer radius of the ring"},
@@ -32,7 +35,7 @@ const std::vector<CardSpec>& card_schema() {
            {"lx", "width of the rectangle or box, side of the square"},
            {"ly", "height of the rectangle, depth of the box"},
            {"lz", "height of the box"},
-           {"h", "mesh size of the box or half ball (tetrahedra)"},
+           {"h", "mesh size of the 3D shapes (tetrahedra)"},
            {"nx", "number of segments along x"},
            {"ny", "number of segments along y"},
            {"refs", "boundary references of the rectangle or square: bottom,right,top,left",

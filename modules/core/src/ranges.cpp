@@ -51,6 +51,7 @@ constexpr FieldRange table[] = {
     {"MESH", "lx", positive},
     {"MESH", "ly", positive},
     {"MESH", "lz", positive},
+    {"MESH", "L", positive},
     {"MESH", "h", positive},
     {"MESH", "nx", count_from_1},
     {"MESH", "ny", count_from_1},

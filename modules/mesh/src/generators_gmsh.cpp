@@ -132,4 +132,34 @@ Mesh half_ball(double R, double h) {
   return mesh;
 }
 
+Mesh ball(const Point& centre, double R, double h) {
+  verify_size_law("ball", R, 0);
+  SIG_VERIFY(centre.size() == 3, "ball: the centre has " << centre.size() << " coordinates");
+  SIG_VERIFY(h > 0 && std::isfinite(h), "ball: mesh size " << h << " must be > 0");
+  const double scale = gmsh_scale(R);
+  Mesh mesh = mesh_with_gmsh("ball", geo::ball,
+                             {{"cx", centre.x() / scale},
+                              {"cy", centre.y() / scale},
+                              {"cz", centre.z() / scale},
+                              {"R", R / scale},
+                              {"h", h / scale}},
+                             3);
+  scale_nodes(mesh, scale);
+  check_mesh(mesh, "ball");
+  return mesh;
+}
+
+Mesh cylinder(double R, double L, double h) {
+  verify_size_law("cylinder", R, 0);
+  for (const double length : {L, h})
+    SIG_VERIFY(length > 0 && std::isfinite(length),
+               "cylinder: length " << length << " must be > 0");
+  const double scale = gmsh_scale(std::max(R, L));
+  Mesh mesh = mesh_with_gmsh("cylinder", geo::cylinder,
+                             {{"R", R / scale}, {"L", L / scale}, {"h", h / scale}}, 3);
+  scale_nodes(mesh, scale);
+  check_mesh(mesh, "cylinder");
+  return mesh;
+}
+
 } // namespace sig

@@ -33,6 +33,15 @@ Mesh box(double lx, double ly, double lz, double h);
 /// (0, 0, R) vertex_ref 1. Its lowest point is the origin.
 Mesh half_ball(double R, double h);
 
+/// Ball of centre `centre` (3 coordinates) and radius R of tetrahedra of size h
+/// (meshes/ball.geo): the sphere ref 3 (Gamma3).
+Mesh ball(const Point& centre, double R, double h);
+
+/// Wheel-like cylinder of radius R, axis along x2 from x2 = 0 to L through (0, *, R), resting
+/// on x3 = 0, of tetrahedra of size h (meshes/cylinder.geo): the curved side ref 3 (the tread),
+/// the two flat ends ref 2.
+Mesh cylinder(double R, double L, double h);
+
 struct RingOptions {
   int layers = 0;                     ///< nodes through the thickness; 0 = default_ring_layers(N)
   std::optional<double> gamma1_above; ///< default cy + 0.99 r_out
