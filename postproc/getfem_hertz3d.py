@@ -8,7 +8,7 @@ friction, and Cattaneo-Mindlin's tangential step; the GetFEM side of the 3D comp
 
 What is solved:
   - the body: the lower half of the ball of centre (0, 0, R) and radius R, its flat face on top at
-    z = R, touching the plane z = 0 at the origin, meshed by gmsh from meshes/half_ball.geo
+    z = R, touching the plane z = 0 at the origin, meshed by gmsh from meshes/half_ball_graded.geo
     (tetrahedra graded towards the origin: size h + grading * distance, capped at R / 4; --msh
     takes a mesh of that script instead, msh 2.2 with its physical groups 1 volume, 2 top face,
     3 curved face);
@@ -86,8 +86,8 @@ except ImportError:
     sys.exit("getfem_hertz3d.py: error: cannot import getfem (Debian: python3-getfem; use /usr/bin/python3)")
 
 ROOT = Path(__file__).resolve().parent.parent
-GEO = ROOT / "meshes" / "half_ball.geo"
-VOLUME, TOP, CURVED = 1, 2, 3  # physical groups of half_ball.geo
+GEO = ROOT / "meshes" / "half_ball_graded.geo"
+VOLUME, TOP, CURVED = 1, 2, 3  # physical groups of half_ball_graded.geo
 CONTACT_TOL = 1e-9  # in contact when N > CONTACT_TOL max N
 SLIP_TOL = 1e-6     # slipping when |T| >= mu N - SLIP_TOL mu max N
 
@@ -98,7 +98,7 @@ def fail(message):
 
 def parse_args():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--msh", type=Path, help="a mesh of meshes/half_ball.geo (msh 2.2) instead of meshing")
+    parser.add_argument("--msh", type=Path, help="a mesh of meshes/half_ball_graded.geo (msh 2.2) instead of meshing")
     parser.add_argument("--h", type=float, default=0.08, help="mesh size at the origin (default 0.08)")
     parser.add_argument("--grading", type=float, default=0.2, help="mesh size growth with distance (default 0.2)")
     parser.add_argument("--R", type=float, default=8.0, help="radius (default 8)")
@@ -132,14 +132,14 @@ def hertz(P, R, E, nu):
 
 
 def load_mesh(args):
-    """GetFEM's mesh of --msh, or of half_ball.geo meshed with --h, --grading, --R."""
+    """GetFEM's mesh of --msh, or of half_ball_graded.geo meshed with --h, --grading, --R."""
     with tempfile.TemporaryDirectory() as tmp:
         workdir = args.workdir or Path(tmp)
         workdir.mkdir(parents=True, exist_ok=True)
         try:
             msh = args.msh or gmsh_mesh(GEO, workdir / f"half_ball_h{args.h:g}_g{args.grading:g}.msh",
                                         3, {"R": args.R, "h": args.h, "grading": args.grading})
-            return import_gmsh(msh, (VOLUME, TOP, CURVED)), str(args.msh or f"half_ball.geo h {args.h:g} grading {args.grading:g}")
+            return import_gmsh(msh, (VOLUME, TOP, CURVED)), str(args.msh or f"half_ball_graded.geo h {args.h:g} grading {args.grading:g}")
         except RuntimeError as e:
             fail(f"{e} (GetFEM 5.4 renumbers the regions of msh 4.1: mesh with -format msh22)")
 

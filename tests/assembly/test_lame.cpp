@@ -79,7 +79,7 @@ Errors solve_and_measure(int nr, int nt) {
   const std::vector<Eigen::Vector3d> strains = element_strains(mesh, u);
   const Quadrature rule;
   double energy2 = 0, l2 = 0, h = 0;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const Matrix23 x = triangle_vertices(mesh, t);
     const double area = p1_area(x);
     for (int i = 0; i < 3; ++i)
@@ -89,7 +89,7 @@ Errors solve_and_measure(int nr, int nt) {
       const Eigen::Vector2d point = x * lambda;
       Eigen::Vector2d uh = Eigen::Vector2d::Zero();
       for (int i = 0; i < 3; ++i)
-        uh += lambda(i) * u.segment<2>(2 * mesh.triangles[t][i]);
+        uh += lambda(i) * u.segment<2>(2 * mesh.cells[t][i]);
       const Eigen::Vector3d de = exact_strain(point) - strains[t];
       energy2 += 2 * area * w * de.dot(D * de);
       l2 += 2 * area * w * (exact_u(point) - uh).squaredNorm();

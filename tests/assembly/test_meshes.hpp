@@ -34,25 +34,25 @@ inline Mesh square_mesh(int nx, int ny, double L = 1.0, double perturbation = 0.
     for (int i = 0; i < nx; ++i) {
       const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
       if ((i + j) % 2 == 0) {
-        mesh.triangles.push_back({a, b, c});
-        mesh.triangles.push_back({a, c, d});
+        mesh.cells.push_back({a, b, c});
+        mesh.cells.push_back({a, c, d});
       } else {
-        mesh.triangles.push_back({a, b, d});
-        mesh.triangles.push_back({b, c, d});
+        mesh.cells.push_back({a, b, d});
+        mesh.cells.push_back({b, c, d});
       }
     }
-  for (const auto& t : mesh.triangles) {
+  for (const auto& t : mesh.cells) {
     const double xc = (mesh.nodes[t[0]].x() + mesh.nodes[t[1]].x() + mesh.nodes[t[2]].x()) / 3;
     mesh.subdomain.push_back(xc < L / 2 ? 1 : right_subdomain);
   }
   for (int i = 0; i < nx; ++i)
-    mesh.edges.push_back({id(i, 0), id(i + 1, 0), 1});
+    mesh.facets.push_back({{id(i, 0), id(i + 1, 0)}, 1});
   for (int j = 0; j < ny; ++j)
-    mesh.edges.push_back({id(nx, j), id(nx, j + 1), 2});
+    mesh.facets.push_back({{id(nx, j), id(nx, j + 1)}, 2});
   for (int i = nx; i > 0; --i)
-    mesh.edges.push_back({id(i, ny), id(i - 1, ny), 3});
+    mesh.facets.push_back({{id(i, ny), id(i - 1, ny)}, 3});
   for (int j = ny; j > 0; --j)
-    mesh.edges.push_back({id(0, j), id(0, j - 1), 4});
+    mesh.facets.push_back({{id(0, j), id(0, j - 1)}, 4});
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
   mesh.vertex_ref[id(0, 0)] = 5;
   return mesh;
@@ -74,18 +74,18 @@ inline Mesh quarter_ring_mesh(int nr, int nt, double r_in, double r_out) {
   for (int j = 0; j < nt; ++j)
     for (int i = 0; i < nr; ++i) {
       const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      mesh.triangles.push_back({a, b, c});
-      mesh.triangles.push_back({a, c, d});
+      mesh.cells.push_back({a, b, c});
+      mesh.cells.push_back({a, c, d});
     }
-  mesh.subdomain.assign(mesh.triangles.size(), 1);
+  mesh.subdomain.assign(mesh.cells.size(), 1);
   for (int j = nt; j > 0; --j)
-    mesh.edges.push_back({id(0, j), id(0, j - 1), 1});
+    mesh.facets.push_back({{id(0, j), id(0, j - 1)}, 1});
   for (int j = 0; j < nt; ++j)
-    mesh.edges.push_back({id(nr, j), id(nr, j + 1), 2});
+    mesh.facets.push_back({{id(nr, j), id(nr, j + 1)}, 2});
   for (int i = 0; i < nr; ++i)
-    mesh.edges.push_back({id(i, 0), id(i + 1, 0), 3});
+    mesh.facets.push_back({{id(i, 0), id(i + 1, 0)}, 3});
   for (int i = nr; i > 0; --i)
-    mesh.edges.push_back({id(i, nt), id(i - 1, nt), 4});
+    mesh.facets.push_back({{id(i, nt), id(i - 1, nt)}, 4});
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
   return mesh;
 }

@@ -37,8 +37,8 @@ TEST(PatchTest, LinearDisplacementOnTheBoundaryIsReproducedInside) {
   A << 1e-3, -4e-4, 7e-4, -2e-3;
   const Eigen::Vector2d b(3e-4, -1e-4);
   std::set<int> boundary;
-  for (const BoundaryEdge& e : mesh.edges)
-    boundary.insert({e.a, e.b});
+  for (const Facet& e : mesh.facets)
+    boundary.insert({e.node[0], e.node[1]});
   for (PlaneMode plane : {PlaneMode::strain, PlaneMode::stress}) {
     const MaterialTable table = one_material(200.0, 0.3, plane);
     LinearSystem system;

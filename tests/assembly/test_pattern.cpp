@@ -33,7 +33,7 @@ TEST(Pattern, HasOneBlockPerPairOfNeighbouringNodesWithSortedIndices) {
   const Mesh mesh = test::square_mesh(5, 4, 1.0, 0.2);
   const SparsityPattern pattern(mesh);
   std::set<std::pair<int, int>> edges;
-  for (const auto& t : mesh.triangles)
+  for (const auto& t : mesh.cells)
     for (int i = 0; i < 3; ++i)
       edges.insert(std::minmax(t[i], t[(i + 1) % 3]));
   // Each node couples with itself and each neighbour: 2 x 2 entries per ordered pair.
@@ -51,13 +51,13 @@ TEST(Pattern, ScatterAssemblyEqualsTripletAssembly) {
   const Eigen::SparseMatrix<double> K = assemble_stiffness(mesh, table, pattern);
 
   std::vector<Eigen::Triplet<double>> triplets;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& m = table.of(mesh.subdomain[t]);
     const Matrix6d ke = p1_stiffness(triangle_vertices(mesh, t), m.hooke.D(), m.thickness);
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j)
-        triplets.emplace_back(2 * mesh.triangles[t][i / 2] + i % 2,
-                              2 * mesh.triangles[t][j / 2] + j % 2, ke(i, j));
+        triplets.emplace_back(2 * mesh.cells[t][i / 2] + i % 2, 2 * mesh.cells[t][j / 2] + j % 2,
+                              ke(i, j));
   }
   Eigen::SparseMatrix<double> reference(K.rows(), K.cols());
   reference.setFromTriplets(triplets.begin(), triplets.end());
@@ -75,7 +75,7 @@ TEST(Pattern, MassMatchesLumpedRowSumsAndTotalMass) {
   const Eigen::VectorXd ones = Eigen::VectorXd::Ones(M.rows());
   EXPECT_LT((M * ones - lumped).norm(), 1e-14);
   double total = 0.0;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& m = table.of(mesh.subdomain[t]);
     total += m.density * m.thickness * p1_area(triangle_vertices(mesh, t));
   }

@@ -26,8 +26,8 @@ Mesh squares(const std::vector<Eigen::Vector2d>& corners) {
     const Eigen::Vector2d c = corners[s];
     const int a = node(c), b = node(c + Eigen::Vector2d(1, 0)), d = node(c + Eigen::Vector2d(1, 1)),
               e = node(c + Eigen::Vector2d(0, 1));
-    mesh.triangles.push_back({a, b, d});
-    mesh.triangles.push_back({a, d, e});
+    mesh.cells.push_back({a, b, d});
+    mesh.cells.push_back({a, d, e});
     mesh.subdomain.insert(mesh.subdomain.end(), 2, static_cast<int>(s) + 1);
   }
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
@@ -126,7 +126,7 @@ TEST(FreeParts, ContactNodesHoldAlongTheirNormalsOrWhollyWithFriction) {
 
 TEST(FreeParts, AThinStripClampedAtOneEndIsHeld) {
   Mesh strip = squares({{0, 0}});
-  for (Eigen::Vector2d& x : strip.nodes)
+  for (Point& x : strip.nodes)
     x.y() *= 1e-5; // 1 long, 1e-5 thick
   EXPECT_TRUE(free_of(strip, pin(strip, {0, 0}) + pin(strip, {0, 1e-5})).empty());
 }

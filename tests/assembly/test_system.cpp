@@ -130,9 +130,9 @@ TEST(ViscoelasticSystem, ViscosityAndMemoryMatrices) {
 
 TEST(Loads, OutwardNormalDoesNotDependOnTheEdgeDirection) {
   Mesh mesh = test::square_mesh(2, 2);
-  for (BoundaryEdge& e : mesh.edges)
-    if (e.ref == 3) std::swap(e.a, e.b); // top edges stored clockwise
-  for (const BoundaryEdge& e : mesh.edges) {
+  for (Facet& e : mesh.facets)
+    if (e.ref == 3) std::swap(e.node[0], e.node[1]); // top edges stored clockwise
+  for (const Facet& e : mesh.facets) {
     const Eigen::Vector2d n = edge_outward_normal(mesh, e);
     const Eigen::Vector2d expected = e.ref == 1   ? Eigen::Vector2d(0, -1)
                                      : e.ref == 2 ? Eigen::Vector2d(1, 0)

@@ -16,7 +16,7 @@ namespace sig::test {
 inline Mesh perturbed_rectangle(double lx, double ly, int nx, int ny) {
   Mesh mesh = rectangle(lx, ly, nx, ny);
   const double hx = lx / nx, hy = ly / ny;
-  for (Eigen::Vector2d& x : mesh.nodes) {
+  for (Point& x : mesh.nodes) {
     const bool interior =
         x.x() > 1e-12 && x.x() < lx - 1e-12 && x.y() > 1e-12 && x.y() < ly - 1e-12;
     if (!interior) continue;

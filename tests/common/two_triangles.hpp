@@ -8,7 +8,7 @@ namespace sig::test {
 inline Mesh two_triangle_square(int first_subdomain = 1, int second_subdomain = 1) {
   Mesh mesh;
   mesh.nodes = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  mesh.cells = {{0, 1, 2}, {0, 2, 3}};
   mesh.subdomain = {first_subdomain, second_subdomain};
   mesh.vertex_ref.assign(4, 0);
   return mesh;

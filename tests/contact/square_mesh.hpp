@@ -31,19 +31,19 @@ inline Mesh square_mesh(int n, double side = 1.0, double lift = 0.0,
       mesh.nodes[id(i, j)] = {i * h, lift + j * h};
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      mesh.cells.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      mesh.cells.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
       mesh.subdomain.push_back(1);
       mesh.subdomain.push_back(1);
     }
   for (int i = 0; i < n; ++i)
-    mesh.edges.push_back({id(i, 0), id(i + 1, 0), 3});
+    mesh.facets.push_back({{id(i, 0), id(i + 1, 0)}, 3});
   for (int j = 0; j < n; ++j)
-    mesh.edges.push_back({id(n, j), id(n, j + 1), 2});
+    mesh.facets.push_back({{id(n, j), id(n, j + 1)}, 2});
   for (int i = n; i > 0; --i)
-    mesh.edges.push_back({id(i, n), id(i - 1, n), 2});
+    mesh.facets.push_back({{id(i, n), id(i - 1, n)}, 2});
   for (int j = n; j > 0; --j)
-    mesh.edges.push_back({id(0, j), id(0, j - 1), 1});
+    mesh.facets.push_back({{id(0, j), id(0, j - 1)}, 1});
   return mesh;
 }
 

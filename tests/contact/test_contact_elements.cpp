@@ -143,7 +143,7 @@ TEST(ContactElements, OrderFollowsTheBoundaryAroundCorners) {
 TEST(ContactElements, ClosedChainStartsAtItsSmallestNode) {
   // Every boundary edge with one reference: a closed chain, walked counter-clockwise.
   Mesh mesh = square_mesh(2);
-  for (BoundaryEdge& edge : mesh.edges)
+  for (Facet& edge : mesh.facets)
     edge.ref = 5;
   const ContactElements e = build_contact_elements(mesh, 5, HalfPlane({0, -1}, {0, 1}));
   const std::vector<int> expected = {0, 1, 2, 5, 8, 7, 6, 3};
@@ -154,7 +154,7 @@ TEST(ContactElements, ClosedChainStartsAtItsSmallestNode) {
 TEST(ContactElements, BranchingEdgesFallBackToNodeOrder) {
   // Three edges with ref 3 meeting at node 4 (centre of a 2x2 square): not a chain.
   Mesh mesh = square_mesh(2);
-  mesh.edges = {{4, 1, 3}, {4, 3, 3}, {4, 5, 3}};
+  mesh.facets = {{{4, 1}, 3}, {{4, 3}, 3}, {{4, 5}, 3}};
   const ContactElements e = build_contact_elements(mesh, 3, kFoundation);
   EXPECT_EQ(e.node, (std::vector<int>{1, 3, 4, 5}));
   EXPECT_NEAR(e.weight(2), 3 * 0.25, 1e-14);
@@ -162,7 +162,7 @@ TEST(ContactElements, BranchingEdgesFallBackToNodeOrder) {
 
 TEST(ContactElements, DuplicateEdgesCountOnce) {
   Mesh mesh = square_mesh(2);
-  mesh.edges.push_back({1, 0, 3}); // the first bottom edge again, reversed
+  mesh.facets.push_back({{1, 0}, 3}); // the first bottom edge again, reversed
   const ContactElements e = build_contact_elements(mesh, 3, kFoundation);
   EXPECT_EQ(e.size(), 3);
   EXPECT_NEAR(e.weight.sum(), 1.0, 1e-14);

@@ -41,7 +41,7 @@ struct ThrownBlock {
   }
   static Mesh lifted() {
     Mesh m = test::perturbed_rectangle(1.0, 1.0, 8, 8);
-    for (Eigen::Vector2d& x : m.nodes)
+    for (Point& x : m.nodes)
       x.y() += kGap;
     return m;
   }

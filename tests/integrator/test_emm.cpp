@@ -49,7 +49,7 @@ protected:
     lumped_ = GetParam() % 2 == 1;
     const LinearSystem s = test::free_body_system(body_.mesh, test::unit_material(1.0, 0.3, 7.5));
     M_ = lumped_ ? diagonal_mass(s.M_lumped) : s.M;
-    Me_ = equivalent_mass_matrix(M_, body_.mesh.nodes, body_.contact);
+    Me_ = equivalent_mass_matrix(M_, plane_positions(body_.mesh), body_.contact);
     ASSERT_GE(body_.contact.size(), 5u);
   }
   std::string label() const { return body_.name + (lumped_ ? " lumped" : " consistent"); }
@@ -62,8 +62,8 @@ protected:
 };
 
 TEST_P(Emm, KeepsMassCentreAndPolarMoment) {
-  const MassMoments before = mass_moments(M_, body_.mesh.nodes);
-  const MassMoments after = mass_moments(Me_, body_.mesh.nodes);
+  const MassMoments before = mass_moments(M_, plane_positions(body_.mesh));
+  const MassMoments after = mass_moments(Me_, plane_positions(body_.mesh));
   EXPECT_NEAR(after.mass, before.mass, 1e-12 * before.mass) << label();
   // Every moment of order <= 2, component by component, on its Cauchy-Schwarz scale.
   for (int i = 0; i < 6; ++i)
@@ -92,7 +92,8 @@ TEST_P(Emm, KeepsMassCentreAndPolarMoment) {
   for (Eigen::Index j = 0; j < zeroed.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(zeroed, j); it; ++it)
       if (on_contact(it.row()) || on_contact(j)) it.valueRef() = 0;
-  EXPECT_GT(before.mass - mass_moments(zeroed, body_.mesh.nodes).mass, 1e-3 * before.mass);
+  EXPECT_GT(before.mass - mass_moments(zeroed, plane_positions(body_.mesh)).mass,
+            1e-3 * before.mass);
 }
 
 TEST_P(Emm, ContactNodesHaveNoInertiaAndThePatternIsM) {
@@ -128,14 +129,15 @@ TEST(Emm, RejectsImpossibleContactSets) {
   std::vector<int> all(static_cast<std::size_t>(b.mesh.num_nodes()));
   for (int i = 0; i < b.mesh.num_nodes(); ++i)
     all[static_cast<std::size_t>(i)] = i;
-  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh.nodes, all), Error); // no mass left anywhere
+  EXPECT_THROW(equivalent_mass_matrix(s.M, plane_positions(b.mesh), all),
+               Error); // no mass left anywhere
   std::vector<int> twice = b.contact;
   twice.push_back(twice.front());
-  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh.nodes, twice), Error);
+  EXPECT_THROW(equivalent_mass_matrix(s.M, plane_positions(b.mesh), twice), Error);
   std::vector<int> outside = b.contact;
   outside.front() = b.mesh.num_nodes();
-  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh.nodes, outside), Error);
-  EXPECT_THROW(equivalent_mass_matrix(s.M, b.mesh.nodes, {}), Error);
+  EXPECT_THROW(equivalent_mass_matrix(s.M, plane_positions(b.mesh), outside), Error);
+  EXPECT_THROW(equivalent_mass_matrix(s.M, plane_positions(b.mesh), {}), Error);
 }
 
 } // namespace

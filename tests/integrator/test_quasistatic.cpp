@@ -72,8 +72,9 @@ Marched march(const Case& c, double k, int steps, const ContactSolverParameters&
 // and a uniform strain e = eps22, which P1 elements represent exactly.
 Case column(double q0, double cn, double g, const std::string& memory = "") {
   Mesh mesh = rectangle(1, 1, 4, 4, {3, 4, 2, 1}, CellPattern::union_jack);
-  for (BoundaryEdge& e : mesh.edges)
-    if ((e.ref == 1 || e.ref == 4) && std::min(mesh.nodes[e.a].y(), mesh.nodes[e.b].y()) == 0.0)
+  for (Facet& e : mesh.facets)
+    if ((e.ref == 1 || e.ref == 4) &&
+        std::min(mesh.nodes[e.node[0]].y(), mesh.nodes[e.node[1]].y()) == 0.0)
       e.ref = 5;
   std::ostringstream deck;
   deck.precision(17);

@@ -2,6 +2,7 @@
 // Helpers shared by the mesh tests: the reference files, and an independent
 // raw parse of FreeFem .msh files (so NOPO is compared with what FreeFem wrote, not with our
 // own .msh reader).
+#include "core/error.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/topology.hpp"
 #include "scratch_folder.hpp"
@@ -12,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
@@ -23,6 +25,25 @@ inline std::filesystem::path shared_nopo(const std::string& name) {
 }
 inline std::filesystem::path legacy_mesh(const std::string& name) {
   return std::filesystem::path(SIG_SOURCE_DIR) / "meshes" / "legacy" / name;
+}
+
+/// The message of the sig::Error that `read` throws; a test failure if it throws none.
+inline std::string error_of(const std::function<void()>& read) {
+  try {
+    read();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted";
+  return "";
+}
+
+/// The sum of the cells' signed measures: the area or the volume of the meshed body.
+inline double measure_of(const Mesh& mesh) {
+  double sum = 0;
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    sum += signed_cell_determinant(mesh, c) / (mesh.dim == 3 ? 6 : 2);
+  return sum;
 }
 
 /// gmsh runs the half_disc and disc generators; their tests are skipped without it.
@@ -37,7 +58,7 @@ inline bool have_gmsh() {
 struct RawFreeFemMsh {
   std::vector<double> x, y;
   std::vector<long> vertex_label;
-  std::vector<std::array<long, 3>> triangles;
+  std::vector<std::array<long, 3>> cells;
   std::vector<long> region;
   std::map<std::uint64_t, long> edge_label; ///< unordered 0-based pair -> |label|, label != 0
   long nbe = 0;
@@ -60,7 +81,7 @@ inline RawFreeFemMsh read_raw_freefem(const std::filesystem::path& path) {
     std::array<long, 3> tri;
     long region;
     in >> tri[0] >> tri[1] >> tri[2] >> region;
-    raw.triangles.push_back(tri);
+    raw.cells.push_back(tri);
     raw.region.push_back(region);
   }
   for (long e = 0; e < raw.nbe; ++e) {
@@ -76,20 +97,20 @@ inline RawFreeFemMsh read_raw_freefem(const std::filesystem::path& path) {
 inline void expect_mesh_matches_freefem(const Mesh& mesh, const RawFreeFemMsh& raw,
                                         double tolerance) {
   ASSERT_EQ(mesh.num_nodes(), static_cast<int>(raw.x.size()));
-  ASSERT_EQ(mesh.num_triangles(), static_cast<int>(raw.triangles.size()));
+  ASSERT_EQ(mesh.num_cells(), static_cast<int>(raw.cells.size()));
   for (int i = 0; i < mesh.num_nodes(); ++i) {
     EXPECT_NEAR(mesh.nodes[i].x(), raw.x[i], tolerance) << "node " << i + 1;
     EXPECT_NEAR(mesh.nodes[i].y(), raw.y[i], tolerance) << "node " << i + 1;
     EXPECT_EQ(mesh.vertex_ref[i], std::labs(raw.vertex_label[i])) << "node " << i + 1;
   }
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     for (int j = 0; j < 3; ++j)
-      EXPECT_EQ(mesh.triangles[t][j] + 1, raw.triangles[t][j]) << "triangle " << t + 1;
+      EXPECT_EQ(mesh.cells[t][j] + 1, raw.cells[t][j]) << "triangle " << t + 1;
     EXPECT_EQ(mesh.subdomain[t], std::max(raw.region[t], 1L)) << "triangle " << t + 1;
   }
   std::map<std::uint64_t, long> edges;
-  for (const auto& e : mesh.edges) {
-    EXPECT_TRUE(edges.emplace(edge_key(e.a, e.b), e.ref).second) << "edge kept twice";
+  for (const auto& e : mesh.facets) {
+    EXPECT_TRUE(edges.emplace(edge_key(e.node[0], e.node[1]), e.ref).second) << "edge kept twice";
   }
   EXPECT_EQ(edges, raw.edge_label);
 }

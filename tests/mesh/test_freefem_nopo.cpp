@@ -63,14 +63,14 @@ savemesh(Th, "ours.msh");
     EXPECT_NEAR(raw.y[i], ours.nodes[i].y(), 1e-5);
     EXPECT_EQ(raw.vertex_label[i], ours.vertex_ref[i]);
   }
-  ASSERT_EQ(raw.triangles.size(), ours.triangles.size());
-  for (int t = 0; t < ours.num_triangles(); ++t) {
+  ASSERT_EQ(raw.cells.size(), ours.cells.size());
+  for (int t = 0; t < ours.num_cells(); ++t) {
     for (int j = 0; j < 3; ++j)
-      EXPECT_EQ(raw.triangles[t][j], ours.triangles[t][j] + 1);
+      EXPECT_EQ(raw.cells[t][j], ours.cells[t][j] + 1);
   }
   std::map<std::uint64_t, long> edges;
-  for (const auto& e : ours.edges)
-    edges[edge_key(e.a, e.b)] = e.ref;
+  for (const auto& e : ours.facets)
+    edges[edge_key(e.node[0], e.node[1])] = e.ref;
   EXPECT_EQ(raw.edge_label, edges);
 }
 

@@ -13,7 +13,7 @@ namespace {
 
 double area(const Mesh& mesh) {
   double sum = 0;
-  for (int t = 0; t < mesh.num_triangles(); ++t)
+  for (int t = 0; t < mesh.num_cells(); ++t)
     sum += 0.5 * signed_double_area(mesh, t);
   return sum;
 }
@@ -21,12 +21,13 @@ double area(const Mesh& mesh) {
 /// Every referenced edge that bounds one triangle runs as in that triangle (domain on the left).
 void expect_domain_on_the_left(const Mesh& mesh) {
   std::set<std::pair<int, int>> sides;
-  for (const auto& t : mesh.triangles) {
+  for (const auto& t : mesh.cells) {
     for (int j = 0; j < 3; ++j)
       sides.insert({t[j], t[(j + 1) % 3]});
   }
-  for (const auto& e : mesh.edges) {
-    EXPECT_TRUE(sides.count({e.a, e.b})) << "edge " << e.a << "-" << e.b << " ref " << e.ref;
+  for (const auto& e : mesh.facets) {
+    EXPECT_TRUE(sides.count({e.node[0], e.node[1]}))
+        << "edge " << e.node[0] << "-" << e.node[1] << " ref " << e.ref;
   }
 }
 
@@ -44,9 +45,9 @@ TEST(HalfDisc, ArcNodesReferencesAndArea) {
   const Mesh mesh = half_disc(R, N);
   const std::vector<int> arc = mesh.nodes_with_ref(3);
   EXPECT_EQ(arc.size(), static_cast<std::size_t>(N + 1));
-  EXPECT_EQ(mesh.edges_with_ref(3).size(), static_cast<std::size_t>(N));
-  for (const auto& e : mesh.edges_with_ref(3)) { // uniform chords pi R / N subtends
-    EXPECT_NEAR((mesh.nodes[e.a] - mesh.nodes[e.b]).norm(),
+  EXPECT_EQ(mesh.facets_with_ref(3).size(), static_cast<std::size_t>(N));
+  for (const auto& e : mesh.facets_with_ref(3)) { // uniform chords pi R / N subtends
+    EXPECT_NEAR((mesh.nodes[e.node[0]] - mesh.nodes[e.node[1]]).norm(),
                 2 * R * std::sin(std::numbers::pi / (2 * N)), 1e-12);
   }
   for (int i : arc)
@@ -56,9 +57,9 @@ TEST(HalfDisc, ArcNodesReferencesAndArea) {
   EXPECT_EQ(mesh.vertex_ref[top], 1);
   EXPECT_EQ(mesh.nodes_with_ref(1), std::vector<int>{top});
   EXPECT_GE(find_node(mesh, {0, 0}), 0) << "lowest arc node must be (0, 0)";
-  for (const auto& e : mesh.edges_with_ref(2)) {
-    EXPECT_EQ(mesh.nodes[e.a].y(), R);
-    EXPECT_EQ(mesh.nodes[e.b].y(), R);
+  for (const auto& e : mesh.facets_with_ref(2)) {
+    EXPECT_EQ(mesh.nodes[e.node[0]].y(), R);
+    EXPECT_EQ(mesh.nodes[e.node[1]].y(), R);
   }
   expect_domain_on_the_left(mesh);
   // The polygon is N triangles of apex angle pi / N at the centre; close to pi R^2 / 2.
@@ -70,15 +71,15 @@ TEST(HalfDisc, DeterministicAndGraded) {
   if (!testing::have_gmsh()) GTEST_SKIP() << "gmsh not installed";
   const Mesh a = half_disc(1, 32), b = half_disc(1, 32);
   EXPECT_EQ(a.nodes, b.nodes);
-  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.cells, b.cells);
   const Mesh graded = half_disc(1, 32, 0.5);
-  EXPECT_LT(graded.num_triangles(), a.num_triangles());
+  EXPECT_LT(graded.num_cells(), a.num_cells());
   EXPECT_EQ(graded.nodes_with_ref(3).size(), 33u);
   // Uniform size h = pi / 32: about (pi / 2) / (sqrt(3) h^2 / 4) equilateral triangles.
   const double h = std::numbers::pi / 32;
   const double equilateral = (std::numbers::pi / 2) / (std::sqrt(3.0) * h * h / 4);
-  EXPECT_GT(a.num_triangles(), 0.7 * equilateral);
-  EXPECT_LT(a.num_triangles(), 1.5 * equilateral);
+  EXPECT_GT(a.num_cells(), 0.7 * equilateral);
+  EXPECT_LT(a.num_cells(), 1.5 * equilateral);
 }
 
 TEST(HalfDisc, RejectsOddN) {
@@ -93,7 +94,7 @@ TEST(Disc, QuartersAndArea) {
   const Mesh mesh = disc(c, R, N);
   const double s = R / std::sqrt(2.0);
   for (int ref = 1; ref <= 4; ++ref) {
-    EXPECT_EQ(mesh.edges_with_ref(ref).size(), static_cast<std::size_t>(N / 4)) << ref;
+    EXPECT_EQ(mesh.facets_with_ref(ref).size(), static_cast<std::size_t>(N / 4)) << ref;
     for (int i : mesh.nodes_with_ref(ref)) {
       const Eigen::Vector2d d = mesh.nodes[i] - c;
       EXPECT_NEAR(d.norm(), R, 1e-12);
@@ -123,19 +124,19 @@ TEST(Disc, GradedArcsAreFineOnlyNearTheBottom) {
   const double R = 10;
   const int N = 512;
   const Mesh uniform = disc(c, R, N, 0.1), graded = disc(c, R, N, 0.1, true);
-  EXPECT_EQ(graded.edges_with_ref(3).size(), static_cast<std::size_t>(N / 4));
-  for (const auto& e : graded.edges_with_ref(3)) // uniform chords of 2 pi / N
-    EXPECT_NEAR((graded.nodes[e.a] - graded.nodes[e.b]).norm(),
+  EXPECT_EQ(graded.facets_with_ref(3).size(), static_cast<std::size_t>(N / 4));
+  for (const auto& e : graded.facets_with_ref(3)) // uniform chords of 2 pi / N
+    EXPECT_NEAR((graded.nodes[e.node[0]] - graded.nodes[e.node[1]]).norm(),
                 2 * R * std::sin(std::numbers::pi / N), 1e-12);
   for (int ref : {1, 2, 4}) {
-    EXPECT_LT(graded.edges_with_ref(ref).size(), static_cast<std::size_t>(N / 8)) << ref;
+    EXPECT_LT(graded.facets_with_ref(ref).size(), static_cast<std::size_t>(N / 8)) << ref;
     for (int i : graded.nodes_with_ref(ref))
       EXPECT_NEAR((graded.nodes[i] - c).norm(), R, 1e-12) << ref;
   }
   // The top quarter, farthest from Gamma3, is the coarsest.
-  EXPECT_LT(graded.edges_with_ref(2).size(), graded.edges_with_ref(1).size());
-  EXPECT_EQ(graded.edges_with_ref(1).size(), graded.edges_with_ref(4).size());
-  EXPECT_LT(graded.num_triangles(), uniform.num_triangles());
+  EXPECT_LT(graded.facets_with_ref(2).size(), graded.facets_with_ref(1).size());
+  EXPECT_EQ(graded.facets_with_ref(1).size(), graded.facets_with_ref(4).size());
+  EXPECT_LT(graded.num_cells(), uniform.num_cells());
   EXPECT_GE(find_node(graded, {10, 0}), 0) << "lowest node must touch x2 = 0";
   expect_domain_on_the_left(graded);
   EXPECT_NEAR(area(graded), std::numbers::pi * R * R, 2 * std::numbers::pi * R * R / 64);
@@ -144,11 +145,11 @@ TEST(Disc, GradedArcsAreFineOnlyNearTheBottom) {
 TEST(Ring, ThesisCountsAtN128) {
   const Mesh mesh = ring({0, 10}, 9, 10, 128);
   EXPECT_EQ(mesh.num_nodes(), 896); // 1792 dofs
-  EXPECT_EQ(mesh.num_triangles(), 2 * 128 * 6);
+  EXPECT_EQ(mesh.num_cells(), 2 * 128 * 6);
   EXPECT_EQ(mesh.nodes_with_ref(3).size(), 97u);
-  EXPECT_EQ(mesh.edges_with_ref(3).size(), 96u); // 3N/4
-  EXPECT_EQ(mesh.edges_with_ref(2).size(), 32u);
-  EXPECT_EQ(mesh.edges_with_ref(4).size(), 128u);
+  EXPECT_EQ(mesh.facets_with_ref(3).size(), 96u); // 3N/4
+  EXPECT_EQ(mesh.facets_with_ref(2).size(), 32u);
+  EXPECT_EQ(mesh.facets_with_ref(4).size(), 128u);
   std::vector<int> ab;
   for (int i = 0; i < mesh.num_nodes(); ++i) {
     if (mesh.vertex_ref[i] == 1) ab.push_back(i);
@@ -161,7 +162,7 @@ TEST(Ring, ThesisCountsAtN128) {
     bottom += x.y() == 0.0;
   EXPECT_EQ(bottom, 1);
   EXPECT_GE(find_node(mesh, {0, 0}), 0);
-  EXPECT_EQ(ring({0, 10}, 9, 10, 256).num_triangles(), 6144); // thesis, N = 256
+  EXPECT_EQ(ring({0, 10}, 9, 10, 256).num_cells(), 6144); // thesis, N = 256
 }
 
 TEST(Ring, ExactMirrorSymmetry) {
@@ -171,7 +172,7 @@ TEST(Ring, ExactMirrorSymmetry) {
     const int N = 64, layers = 4;
     const Mesh mesh = ring(c, 9, 10, N, {layers, {}, {}});
     EXPECT_EQ(mesh.num_nodes(), N * layers);
-    EXPECT_EQ(mesh.num_triangles(), 2 * N * (layers - 1));
+    EXPECT_EQ(mesh.num_cells(), 2 * N * (layers - 1));
     // Bits of (x1 - cx, x2) -> node; each node's mirror has -(x1 - cx) bit for bit.
     std::map<std::pair<std::uint64_t, std::uint64_t>, int> at;
     auto key = [](double dx, double y) {
@@ -190,20 +191,21 @@ TEST(Ring, ExactMirrorSymmetry) {
     }
     // Triangles and referenced edges map onto triangles and edges of the same reference.
     std::set<std::array<int, 3>> triangles;
-    for (auto t : mesh.triangles) {
+    for (const auto& cell : mesh.cells) {
+      std::array<int, 3> t{cell[0], cell[1], cell[2]};
       std::sort(t.begin(), t.end());
       triangles.insert(t);
     }
-    for (const auto& t : mesh.triangles) {
+    for (const auto& t : mesh.cells) {
       std::array<int, 3> m = {mirror[t[0]], mirror[t[1]], mirror[t[2]]};
       std::sort(m.begin(), m.end());
       EXPECT_TRUE(triangles.count(m));
     }
     std::map<std::uint64_t, int> edges;
-    for (const auto& e : mesh.edges)
-      edges[edge_key(e.a, e.b)] = e.ref;
-    for (const auto& e : mesh.edges)
-      EXPECT_EQ(edges.at(edge_key(mirror[e.a], mirror[e.b])), e.ref);
+    for (const auto& e : mesh.facets)
+      edges[edge_key(e.node[0], e.node[1])] = e.ref;
+    for (const auto& e : mesh.facets)
+      EXPECT_EQ(edges.at(edge_key(mirror[e.node[0]], mirror[e.node[1]])), e.ref);
     expect_domain_on_the_left(mesh);
     const double polygon = N * 0.5 * std::sin(2 * std::numbers::pi / N) * (100 - 81);
     EXPECT_NEAR(area(mesh), polygon, 1e-9);
@@ -222,11 +224,11 @@ TEST(Ring, DefaultLayers) {
 TEST(Rectangle, CountsReferencesAndArea) {
   const Mesh mesh = rectangle(5, 1, 10, 2);
   EXPECT_EQ(mesh.num_nodes(), 33);
-  EXPECT_EQ(mesh.num_triangles(), 40);
-  EXPECT_EQ(mesh.edges_with_ref(3).size(), 10u); // bottom
-  EXPECT_EQ(mesh.edges_with_ref(4).size(), 2u);  // right
-  EXPECT_EQ(mesh.edges_with_ref(2).size(), 10u); // top
-  EXPECT_EQ(mesh.edges_with_ref(1).size(), 2u);  // left
+  EXPECT_EQ(mesh.num_cells(), 40);
+  EXPECT_EQ(mesh.facets_with_ref(3).size(), 10u); // bottom
+  EXPECT_EQ(mesh.facets_with_ref(4).size(), 2u);  // right
+  EXPECT_EQ(mesh.facets_with_ref(2).size(), 10u); // top
+  EXPECT_EQ(mesh.facets_with_ref(1).size(), 2u);  // left
   for (int i : mesh.nodes_with_ref(3))
     EXPECT_EQ(mesh.nodes[i].y(), 0.0);
   for (int i : mesh.nodes_with_ref(4))
@@ -239,13 +241,13 @@ TEST(Rectangle, CountsReferencesAndArea) {
   expect_domain_on_the_left(mesh);
   // Alternating diagonals: both directions occur, and node (1, 1) (index 12) has 8 triangles.
   int around = 0;
-  for (const auto& t : mesh.triangles)
+  for (const auto& t : mesh.cells)
     around += std::count(t.begin(), t.end(), 12);
   EXPECT_EQ(around, 8);
 
   const Mesh sq = square(1, 4, {1, 1, 2, 1});
   EXPECT_EQ(sq.num_nodes(), 25);
-  EXPECT_EQ(sq.edges_with_ref(1).size(), 12u);
+  EXPECT_EQ(sq.facets_with_ref(1).size(), 12u);
   EXPECT_EQ(sq.references(), (std::vector<int>{1, 2}));
 }
 
@@ -253,10 +255,10 @@ TEST(Rectangle, CountsReferencesAndArea) {
 // 3072 triangles and 1613 nodes, i.e. 3226 displacement dofs plus 2 x 64 multipliers = 3354.
 TEST(Rectangle, UnionJackIsTheThesisScene5Mesh) {
   const Mesh mesh = rectangle(5, 1, 64, 12, {3, 4, 2, 1}, CellPattern::union_jack);
-  EXPECT_EQ(mesh.num_triangles(), 3072);
+  EXPECT_EQ(mesh.num_cells(), 3072);
   EXPECT_EQ(mesh.num_nodes(), 1613);
   EXPECT_EQ(2 * mesh.num_nodes() + 2 * 64, 3354);
-  EXPECT_EQ(mesh.edges_with_ref(3).size(), 64u);
+  EXPECT_EQ(mesh.facets_with_ref(3).size(), 64u);
   EXPECT_EQ(mesh.nodes_with_ref(3).size(), 65u);
   EXPECT_NEAR(area(mesh), 5.0, 1e-12);
   expect_domain_on_the_left(mesh);
@@ -264,7 +266,7 @@ TEST(Rectangle, UnionJackIsTheThesisScene5Mesh) {
   const int centre = 65 * 13 + 5 * 64 + 7, corner = 3 * 65 + 4;
   EXPECT_EQ(mesh.nodes[centre], Eigen::Vector2d(5.0 * 7.5 / 64, 5.5 / 12));
   int at_centre = 0, at_corner = 0;
-  for (const auto& t : mesh.triangles) {
+  for (const auto& t : mesh.cells) {
     at_centre += std::count(t.begin(), t.end(), centre);
     at_corner += std::count(t.begin(), t.end(), corner);
   }
@@ -278,13 +280,13 @@ TEST(Rectangle, UnionJackRefinementIsNested) {
   const Mesh coarse = rectangle(5, 1, 8, 2, {3, 4, 2, 1}, CellPattern::union_jack);
   const Mesh fine = rectangle(5, 1, 16, 4, {3, 4, 2, 1}, CellPattern::union_jack);
   const auto is_fine_node = [&](const Eigen::Vector2d& x) {
-    for (const Eigen::Vector2d& y : fine.nodes)
+    for (const Point& y : fine.nodes)
       if ((x - y).norm() < 1e-12) return true;
     return false;
   };
-  for (const Eigen::Vector2d& x : coarse.nodes)
+  for (const Point& x : coarse.nodes)
     EXPECT_TRUE(is_fine_node(x));
-  for (const auto& t : coarse.triangles)
+  for (const auto& t : coarse.cells)
     for (int j = 0; j < 3; ++j)
       EXPECT_TRUE(is_fine_node(0.5 * (coarse.nodes[t[j]] + coarse.nodes[t[(j + 1) % 3]])));
 }

@@ -28,8 +28,8 @@ std::string blamed_field(const std::string& line, const std::filesystem::path& f
 TEST(MeshCard, Generators) {
   EXPECT_EQ(from("MESH generator=ring centre=0,10 r_in=9 r_out=10 N=16 layers=3").num_nodes(), 48);
   const Mesh rect = from("MESH generator=rectangle lx=5 ly=1 nx=5 ny=1 refs=3,1,2,1");
-  EXPECT_EQ(rect.num_triangles(), 10);
-  EXPECT_EQ(rect.edges_with_ref(1).size(), 2u);
+  EXPECT_EQ(rect.num_cells(), 10);
+  EXPECT_EQ(rect.facets_with_ref(1).size(), 2u);
   EXPECT_EQ(from("MESH generator=square lx=1 nx=3").num_nodes(), 16);
   if (!testing::have_gmsh()) GTEST_SKIP() << "gmsh not installed";
   const Mesh hd = from("MESH generator=half-disc R=1 N=8");
@@ -54,8 +54,8 @@ TEST(MeshCard, CenterIsTheOldSpellingOfCentre) {
 
 TEST(MeshCard, Files) {
   const std::filesystem::path legacy = std::filesystem::path(SIG_SOURCE_DIR) / "meshes" / "legacy";
-  EXPECT_EQ(from("MESH file=square3.nopo", legacy).num_triangles(), 18);
-  EXPECT_EQ(from("MESH file=tworeg.msh", legacy).num_triangles(), 16);
+  EXPECT_EQ(from("MESH file=square3.nopo", legacy).num_cells(), 18);
+  EXPECT_EQ(from("MESH file=tworeg.msh", legacy).num_cells(), 16);
   EXPECT_EQ(blamed_field("MESH file=nothing.nopo", legacy), "file");
   EXPECT_EQ(blamed_field("MESH file=square3.edp", legacy), "file");
 }

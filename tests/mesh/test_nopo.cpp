@@ -37,7 +37,7 @@ std::vector<std::filesystem::path> copies(const std::string& file) {
 /// Directed sides of the triangles: (a, b) -> number of triangles having it.
 std::map<std::pair<int, int>, int> directed_sides(const Mesh& mesh) {
   std::map<std::pair<int, int>, int> sides;
-  for (const auto& t : mesh.triangles) {
+  for (const auto& t : mesh.cells) {
     for (int j = 0; j < 3; ++j)
       ++sides[{t[j], t[(j + 1) % 3]}];
   }
@@ -67,15 +67,17 @@ TEST(NopoSamples, ReadEqualToTheirFreeFemMsh) {
       auto msh = path;
       const auto raw = testing::read_raw_freefem(msh.replace_extension(".msh"));
       testing::expect_mesh_matches_freefem(file.mesh, raw, 1e-6);
-      EXPECT_EQ(static_cast<long>(file.mesh.edges.size()), raw.nbe);
+      EXPECT_EQ(static_cast<long>(file.mesh.facets.size()), raw.nbe);
 
       // Boundary edges (one triangle) point as in their counter-clockwise triangle; interface
       // edges (two triangles) are kept once.
       const auto sides = directed_sides(file.mesh);
-      for (const auto& e : file.mesh.edges) {
-        const int forward = sides.count({e.a, e.b}) ? sides.at({e.a, e.b}) : 0;
-        const int backward = sides.count({e.b, e.a}) ? sides.at({e.b, e.a}) : 0;
-        EXPECT_EQ(forward, 1) << "edge " << e.a + 1 << "-" << e.b + 1;
+      for (const auto& e : file.mesh.facets) {
+        const int forward =
+            sides.count({e.node[0], e.node[1]}) ? sides.at({e.node[0], e.node[1]}) : 0;
+        const int backward =
+            sides.count({e.node[1], e.node[0]}) ? sides.at({e.node[1], e.node[0]}) : 0;
+        EXPECT_EQ(forward, 1) << "edge " << e.node[0] + 1 << "-" << e.node[1] + 1;
         EXPECT_LE(backward, 1);
       }
       const auto refs = file.mesh.references();
@@ -86,11 +88,11 @@ TEST(NopoSamples, ReadEqualToTheirFreeFemMsh) {
 
 TEST(NopoSamples, InterfaceEdgesOfTworegKeptOnce) {
   const Mesh mesh = read_nopo(shared_nopo("tworeg.nopo"));
-  const auto interface = mesh.edges_with_ref(9);
+  const auto interface = mesh.facets_with_ref(9);
   EXPECT_EQ(interface.size(), 2u); // bmid(2): two segments on x = 1
   for (const auto& e : interface) {
-    EXPECT_DOUBLE_EQ(mesh.nodes[e.a].x(), 1.0);
-    EXPECT_DOUBLE_EQ(mesh.nodes[e.b].x(), 1.0);
+    EXPECT_DOUBLE_EQ(mesh.nodes[e.node[0]].x(), 1.0);
+    EXPECT_DOUBLE_EQ(mesh.nodes[e.node[1]].x(), 1.0);
   }
   EXPECT_EQ(mesh.subdomains(), (std::vector<int>{10, 20}));
 }
@@ -125,14 +127,14 @@ TEST(NopoSamples, I4r4SampleDecodesToTheSameMesh) {
     ASSERT_EQ(classic.mesh.num_nodes(), freefem.num_nodes());
     for (int i = 0; i < freefem.num_nodes(); ++i)
       EXPECT_LT((classic.mesh.nodes[i] - freefem.nodes[i]).norm(), 1e-6);
-    EXPECT_EQ(classic.mesh.triangles, freefem.triangles);
+    EXPECT_EQ(classic.mesh.cells, freefem.cells);
     EXPECT_EQ(classic.mesh.subdomain, freefem.subdomain);
     EXPECT_EQ(classic.mesh.vertex_ref, freefem.vertex_ref);
-    ASSERT_EQ(classic.mesh.edges.size(), freefem.edges.size());
-    for (std::size_t e = 0; e < freefem.edges.size(); ++e) {
-      EXPECT_EQ(classic.mesh.edges[e].a, freefem.edges[e].a);
-      EXPECT_EQ(classic.mesh.edges[e].b, freefem.edges[e].b);
-      EXPECT_EQ(classic.mesh.edges[e].ref, freefem.edges[e].ref);
+    ASSERT_EQ(classic.mesh.facets.size(), freefem.facets.size());
+    for (std::size_t e = 0; e < freefem.facets.size(); ++e) {
+      EXPECT_EQ(classic.mesh.facets[e].node[0], freefem.facets[e].node[0]);
+      EXPECT_EQ(classic.mesh.facets[e].node[1], freefem.facets[e].node[1]);
+      EXPECT_EQ(classic.mesh.facets[e].ref, freefem.facets[e].ref);
     }
   }
 }
@@ -151,14 +153,14 @@ TEST(NopoSamples, I4r4WriterReproducesTheLegacyFileFromTheMsh) {
 /// float represents.
 Mesh two_region_mesh() {
   Mesh mesh = rectangle(10.0 / 3, std::acos(-1.0) / 7, 6, 5, {3, 4, 2, 1});
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     double cx = 0;
-    for (int v : mesh.triangles[t])
+    for (int v : mesh.cells[t])
       cx += mesh.nodes[v].x() / 3;
     mesh.subdomain[t] = cx < 5.0 / 3 ? 1 : 2;
   }
   for (int j = 0; j < 5; ++j)
-    mesh.edges.push_back({j * 7 + 3, (j + 1) * 7 + 3, 9});
+    mesh.facets.push_back({{j * 7 + 3, (j + 1) * 7 + 3}, 9});
   check_mesh(mesh, "two_region_mesh");
   return mesh;
 }
@@ -175,16 +177,16 @@ void expect_same_mesh(const Mesh& a, const Mesh& b, bool exact_coordinates) {
       EXPECT_LT((a.nodes[i] - b.nodes[i]).norm(), 1e-6 * a.nodes[i].norm() + 1e-12);
     }
   }
-  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.cells, b.cells);
   EXPECT_EQ(a.subdomain, b.subdomain);
   EXPECT_EQ(a.vertex_ref, b.vertex_ref);
   std::set<std::tuple<int, int, int>> ea, eb;
-  for (const auto& e : a.edges)
-    ea.insert({e.a, e.b, e.ref});
-  for (const auto& e : b.edges)
-    eb.insert({e.a, e.b, e.ref});
+  for (const auto& e : a.facets)
+    ea.insert({e.node[0], e.node[1], e.ref});
+  for (const auto& e : b.facets)
+    eb.insert({e.node[0], e.node[1], e.ref});
   EXPECT_EQ(ea, eb);
-  EXPECT_EQ(a.edges.size(), b.edges.size());
+  EXPECT_EQ(a.facets.size(), b.facets.size());
 }
 
 TEST(Nopo, I8r8RoundTripKeepsDoublesExactly) {
@@ -202,7 +204,7 @@ TEST(Nopo, I8r8RoundTripKeepsDoublesExactly) {
   EXPECT_EQ(back.nop2[1], 9); // NDSR: the largest reference
   EXPECT_EQ(back.nop2[2], 2); // NDSD
   expect_same_mesh(mesh, back.mesh, true);
-  EXPECT_EQ(back.mesh.edges_with_ref(9).size(), 5u); // interface kept once
+  EXPECT_EQ(back.mesh.facets_with_ref(9).size(), 5u); // interface kept once
 }
 
 TEST(Nopo, EveryVariantAndByteOrderRoundTrips) {

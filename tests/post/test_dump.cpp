@@ -87,14 +87,14 @@ TEST(Dump, MeshSummaryCountsTheMesh) {
     coordinates += Json(mesh.nodes[i].x()).dump(-1) + "," + Json(mesh.nodes[i].y()).dump(-1) +
                    (i + 1 < mesh.num_nodes() ? "," : "]");
   EXPECT_NE(values.find(coordinates), std::string::npos) << values;
-  const auto& t = mesh.triangles.front();
+  const auto& t = mesh.cells.front();
   EXPECT_NE(values.find("\"triangle_nodes\":[" + std::to_string(t[0] + 1) + "," +
                         std::to_string(t[1] + 1) + "," + std::to_string(t[2] + 1) + ","),
             std::string::npos)
       << values;
-  const BoundaryEdge& e = mesh.edges.front();
-  EXPECT_NE(values.find("\"edges\":[" + std::to_string(e.a + 1) + "," + std::to_string(e.b + 1) +
-                        "," + std::to_string(e.ref) + ","),
+  const Facet& e = mesh.facets.front();
+  EXPECT_NE(values.find("\"edges\":[" + std::to_string(e.node[0] + 1) + "," +
+                        std::to_string(e.node[1] + 1) + "," + std::to_string(e.ref) + ","),
             std::string::npos)
       << values;
   const std::string text = dump_mesh_text(mesh, "small");

@@ -100,7 +100,7 @@ TEST(StrainError, AffineExtensionPastTheCoarseBoundary) {
   };
   const Mesh coarse = square(1.0, 4);
   Mesh fine = square(1.0, 12);
-  for (Eigen::Vector2d& x : fine.nodes)
+  for (Point& x : fine.nodes)
     x = Eigen::Vector2d(0.5, 0.5) + 1.02 * (x - Eigen::Vector2d(0.5, 0.5));
   EXPECT_LT(
       (prolongate(coarse, nodal(coarse, affine), fine) - nodal(fine, affine)).cwiseAbs().maxCoeff(),

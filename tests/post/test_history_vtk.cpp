@@ -31,7 +31,7 @@ Ds two_states(const Mesh& mesh) {
   Ds hist("HIST", "two states", "test");
   std::vector<double> u, v;
   for (int s = 0; s < 2; ++s)
-    for (const Eigen::Vector2d& x : mesh.nodes) {
+    for (const Point& x : mesh.nodes) {
       u.insert(u.end(), {s * 0.1 * x.x(), -s * 0.2 * x.y()});
       v.insert(v.end(), {s + 1.0, 2.0 * s - 1.0});
     }

@@ -39,7 +39,7 @@ Ds load_stepped(const Mesh& mesh, int steps, int kept) {
   for (int s = 0; s < steps; ++s)
     load.push_back((s + 1.0) / steps);
   for (int s = 0; s < kept; ++s) {
-    for (const Eigen::Vector2d& x : mesh.nodes)
+    for (const Point& x : mesh.nodes)
       u.insert(u.end(), {(s + 1) * 0.1 * x.x(), -(s + 1) * 0.2 * x.y()});
     multiplier.insert(multiplier.end(), {s + 1.0, 2.0 * (s + 1), 3.0 * (s + 1)});
     status.insert(status.end(), {0, 2, 0}); // CU

@@ -21,7 +21,7 @@ Mesh polygon(int n) {
     mesh.nodes.emplace_back(std::cos(2 * std::numbers::pi * k / n),
                             std::sin(2 * std::numbers::pi * k / n));
   for (int k = 0; k < n; ++k) {
-    mesh.triangles.push_back({0, 1 + k, 1 + (k + 1) % n});
+    mesh.cells.push_back({0, 1 + k, 1 + (k + 1) % n});
     mesh.subdomain.push_back(1);
   }
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
@@ -29,7 +29,7 @@ Mesh polygon(int n) {
 }
 
 Mesh moved(Mesh mesh, const Eigen::Vector2d& by) {
-  for (Eigen::Vector2d& x : mesh.nodes)
+  for (Point& x : mesh.nodes)
     x += by;
   return mesh;
 }

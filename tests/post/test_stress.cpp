@@ -42,7 +42,7 @@ TEST(Stress, AffineFieldGivesItsStrainOnEveryTriangle) {
   Eigen::Matrix2d G;
   G << 0.01, 0.003, -0.002, -0.02;
   const auto u = affine(mesh, G, {0.5, -0.25});
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const Eigen::Vector3d e = triangle_strain(mesh, u, t);
     EXPECT_NEAR(e[0], 0.01, 1e-15);
     EXPECT_NEAR(e[1], -0.02, 1e-15);

@@ -50,7 +50,7 @@ TEST_F(VtkWriter, RoundTripThroughVtkReader) {
 
   const auto grid = test::read_vtu(path);
   ASSERT_EQ(grid->GetNumberOfPoints(), mesh.num_nodes());
-  ASSERT_EQ(grid->GetNumberOfCells(), mesh.num_triangles());
+  ASSERT_EQ(grid->GetNumberOfCells(), mesh.num_cells());
   for (int i = 0; i < mesh.num_nodes(); ++i) {
     double p[3];
     grid->GetPoint(i, p);
@@ -58,13 +58,13 @@ TEST_F(VtkWriter, RoundTripThroughVtkReader) {
     EXPECT_EQ(p[1], mesh.nodes[i].y());
     EXPECT_EQ(p[2], 0.0);
   }
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     EXPECT_EQ(grid->GetCellType(t), VTK_TRIANGLE);
     vtkNew<vtkIdList> ids;
     grid->GetCellPoints(t, ids);
     ASSERT_EQ(ids->GetNumberOfIds(), 3);
     for (int k = 0; k < 3; ++k)
-      EXPECT_EQ(ids->GetId(k), mesh.triangles[t][k]);
+      EXPECT_EQ(ids->GetId(k), mesh.cells[t][k]);
   }
 
   vtkDataArray* d = grid->GetPointData()->GetArray("displacement");
@@ -115,7 +115,7 @@ TEST_F(VtkWriter, FieldOfTheWrongSizeIsRefusedAndNothingIsWritten) {
 // displacements sig-post reads are bounded, core/ranges.hpp) is never written, naming the field.
 TEST_F(VtkWriter, NonFiniteFieldIsRefusedAndNothingIsWritten) {
   const Mesh mesh = test::small_mesh();
-  std::vector<double> stress(mesh.num_triangles(), 1.0);
+  std::vector<double> stress(mesh.num_cells(), 1.0);
   stress.back() = std::numeric_limits<double>::infinity();
   try {
     write_vtu(dir_ / "inf.vtu", mesh, {}, {{"von_mises", 1, stress}}, {});

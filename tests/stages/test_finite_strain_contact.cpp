@@ -42,7 +42,7 @@ sig::MaterialTable hyperelastic_material(const sig::Mesh& mesh) {
 /// unlike a thin ring on one contact node, its symmetric state has no sway instability.)
 sig::Mesh rounded_block(int nx, int ny) {
   sig::Mesh mesh = sig::rectangle(1.0, 0.5, nx, ny);
-  for (Eigen::Vector2d& x : mesh.nodes)
+  for (sig::Point& x : mesh.nodes)
     x.y() += 0.4 * (x.x() - 0.5) * (x.x() - 0.5) * (1.0 - x.y() / 0.5);
   return mesh;
 }

@@ -75,9 +75,9 @@ TEST(TimeCard, EmmIsAcceptedWithContact) {
 TEST(InitialCards, UniformFieldsOnTheirSubDomains) {
   Mesh mesh = test::perturbed_rectangle(2.0, 1.0, 4, 2);
   // Sub-domain 2: the triangles right of x = 1.
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     double cx = 0;
-    for (int node : mesh.triangles[t])
+    for (int node : mesh.cells[t])
       cx += mesh.nodes[node].x() / 3;
     mesh.subdomain[t] = cx > 1.0 ? 2 : 1;
   }
@@ -86,8 +86,8 @@ TEST(InitialCards, UniformFieldsOnTheirSubDomains) {
   ASSERT_EQ(f.u.size(), 2 * mesh.num_nodes());
   for (int i = 0; i < mesh.num_nodes(); ++i) {
     bool in_region_2 = false;
-    for (int t = 0; t < mesh.num_triangles(); ++t)
-      for (int node : mesh.triangles[t])
+    for (int t = 0; t < mesh.num_cells(); ++t)
+      for (int node : mesh.cells[t])
         in_region_2 |= node == i && mesh.subdomain[t] == 2;
     EXPECT_EQ(f.u.segment<2>(2 * i), Eigen::Vector2d(0.5, 0.0));
     const Eigen::Vector2d v = in_region_2 ? Eigen::Vector2d(3, 4) : Eigen::Vector2d(1, -2);

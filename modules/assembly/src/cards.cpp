@@ -12,7 +12,7 @@ namespace {
 
 std::vector<int> edge_references(const Mesh& mesh) {
   std::vector<int> refs;
-  for (const BoundaryEdge& e : mesh.edges)
+  for (const Facet& e : mesh.facets)
     refs.push_back(e.ref);
   std::sort(refs.begin(), refs.end());
   refs.erase(std::unique(refs.begin(), refs.end()), refs.end());
@@ -34,8 +34,8 @@ std::vector<int> card_references(const Card& card, const Mesh& mesh, RefSupport 
   for (long ref : card.integers("ref")) {
     if (!std::binary_search(present.begin(), present.end(), static_cast<int>(ref))) {
       std::ostringstream what;
-      what << "reference " << ref << " is on no "
-           << (support == RefSupport::edges ? "edge" : "edge or vertex")
+      what << "reference " << ref << " is on no " << mesh.facet_name()
+           << (support == RefSupport::edges ? "" : " or vertex")
            << " of the mesh; references present:";
       list(what, present);
       card.fail("ref", what.str());

@@ -32,9 +32,9 @@ InitialFields initial_fields(const Datafile& datafile, const Mesh& mesh) {
     const Eigen::Vector2d centre = vector_field(*card, "centre");
     const bool velocity = card->has("v") || card->has("omega");
     const std::vector<int> regions = card_regions(*card, mesh);
-    for (int t = 0; t < mesh.num_triangles(); ++t) {
+    for (int t = 0; t < mesh.num_cells(); ++t) {
       if (std::find(regions.begin(), regions.end(), mesh.subdomain[t]) == regions.end()) continue;
-      for (int node : mesh.triangles[t]) {
+      for (int node : mesh.cells[t]) {
         if (card->has("u")) fields.u.segment<2>(2 * node) = u;
         // omega e3 x (X - centre) = omega (-(X2 - c2), X1 - c1), on the reference position.
         const Eigen::Vector2d r = mesh.nodes[node] - centre;

@@ -30,10 +30,10 @@ public:
     int second = -1; ///< the other one, -1 on the boundary
   };
   explicit EdgeOwners(const Mesh& mesh) {
-    owners_.reserve(3 * mesh.triangles.size());
-    for (int t = 0; t < mesh.num_triangles(); ++t)
+    owners_.reserve(3 * mesh.cells.size());
+    for (int t = 0; t < mesh.num_cells(); ++t)
       for (int i = 0; i < 3; ++i) {
-        Sides& sides = owners_[edge_key(mesh.triangles[t][i], mesh.triangles[t][(i + 1) % 3])];
+        Sides& sides = owners_[edge_key(mesh.cells[t][i], mesh.cells[t][(i + 1) % 3])];
         (sides.first < 0 ? sides.first : sides.second) = t;
       }
   }
@@ -49,20 +49,19 @@ private:
   std::unordered_map<std::uint64_t, Sides> owners_;
 };
 
-Eigen::Vector2d right_normal(const Mesh& mesh, const BoundaryEdge& edge) {
-  const Eigen::Vector2d t = mesh.nodes[edge.b] - mesh.nodes[edge.a];
+Eigen::Vector2d right_normal(const Mesh& mesh, const Facet& edge) {
+  const Eigen::Vector2d t = mesh.nodes[edge.node[1]] - mesh.nodes[edge.node[0]];
   return Eigen::Vector2d(t.y(), -t.x()).normalized();
 }
 
-Eigen::Vector2d outward_normal(const Mesh& mesh, const EdgeOwners& owners,
-                               const BoundaryEdge& edge) {
-  const EdgeOwners::Sides& sides = owners.of(edge.a, edge.b);
+Eigen::Vector2d outward_normal(const Mesh& mesh, const EdgeOwners& owners, const Facet& edge) {
+  const EdgeOwners::Sides& sides = owners.of(edge.node[0], edge.node[1]);
   Eigen::Vector2d n = right_normal(mesh, edge);
   if (sides.second >= 0) return n;
-  const auto& tri = mesh.triangles[sides.first];
+  const auto& tri = mesh.cells[sides.first];
   const Eigen::Vector2d centroid =
       (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]) / 3.0;
-  if (n.dot(centroid - mesh.nodes[edge.a]) > 0.0) n = -n;
+  if (n.dot(centroid - mesh.nodes[edge.node[0]]) > 0.0) n = -n;
   return n;
 }
 
@@ -73,13 +72,13 @@ Eigen::Vector2d card_vector(const Card& card, const std::string& field) {
 }
 
 void add_edge_load(const Mesh& mesh, const MaterialTable& table, const EdgeOwners& owners,
-                   const BoundaryEdge& edge, const Eigen::Vector2d& traction, Eigen::VectorXd& f) {
-  const int owner = owners.of(edge.a, edge.b).first;
+                   const Facet& edge, const Eigen::Vector2d& traction, Eigen::VectorXd& f) {
+  const int owner = owners.of(edge.node[0], edge.node[1]).first;
   const double thickness = table.of(mesh.subdomain[owner]).thickness;
   const Eigen::Vector4d fe =
-      p1_edge_load(mesh.nodes[edge.a], mesh.nodes[edge.b], traction, thickness);
-  f.segment<2>(2 * edge.a) += fe.head<2>();
-  f.segment<2>(2 * edge.b) += fe.tail<2>();
+      p1_edge_load(mesh.nodes[edge.node[0]], mesh.nodes[edge.node[1]], traction, thickness);
+  f.segment<2>(2 * edge.node[0]) += fe.head<2>();
+  f.segment<2>(2 * edge.node[1]) += fe.tail<2>();
 }
 
 // The MOVINGLOAD card, its quadrature laid out on the edges of its references.
@@ -98,15 +97,16 @@ MovingLoad moving_load(const Card& card, const Mesh& mesh, const MaterialTable& 
     card.fail("psi", what.str());
   }
   for (int ref : card_references(card, mesh, RefSupport::edges))
-    for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
-      load.add_edge(edge.a, edge.b, mesh.nodes[edge.a], mesh.nodes[edge.b],
-                    table.of(mesh.subdomain[owners.of(edge.a, edge.b).first]).thickness);
+    for (const Facet& edge : mesh.facets_with_ref(ref))
+      load.add_edge(
+          edge.node[0], edge.node[1], mesh.nodes[edge.node[0]], mesh.nodes[edge.node[1]],
+          table.of(mesh.subdomain[owners.of(edge.node[0], edge.node[1]).first]).thickness);
   return load;
 }
 
 } // namespace
 
-Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge) {
+Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const Facet& edge) {
   return outward_normal(mesh, EdgeOwners(mesh), edge);
 }
 
@@ -144,7 +144,7 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
       const auto [into, scale] = target(*card);
       const Eigen::Vector2d traction = scale * card_vector(*card, "f");
       for (int ref : card_references(*card, mesh, RefSupport::edges))
-        for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
+        for (const Facet& edge : mesh.facets_with_ref(ref))
           add_edge_load(mesh, table, owners, edge, traction, into);
       finite(*card, "f", into);
     }
@@ -152,7 +152,7 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
       const auto [into, scale] = target(*card);
       const double p = scale * card->real("p");
       for (int ref : card_references(*card, mesh, RefSupport::edges))
-        for (const BoundaryEdge& edge : mesh.edges_with_ref(ref))
+        for (const Facet& edge : mesh.facets_with_ref(ref))
           add_edge_load(mesh, table, owners, edge, -p * outward_normal(mesh, owners, edge), into);
       finite(*card, "p", into);
     }
@@ -166,12 +166,12 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
     const auto [into, scale] = target(*card);
     const Eigen::Vector2d force = scale * card_vector(*card, "f");
     const std::vector<int> regions = card_regions(*card, mesh);
-    for (int t = 0; t < mesh.num_triangles(); ++t) {
+    for (int t = 0; t < mesh.num_cells(); ++t) {
       if (std::find(regions.begin(), regions.end(), mesh.subdomain[t]) == regions.end()) continue;
       const Vector6d fe = p1_body_load(p1_area(triangle_vertices(mesh, t)), force,
                                        table.of(mesh.subdomain[t]).thickness);
       for (int i = 0; i < 3; ++i)
-        into.segment<2>(2 * mesh.triangles[t][i]) += fe.segment<2>(2 * i);
+        into.segment<2>(2 * mesh.cells[t][i]) += fe.segment<2>(2 * i);
     }
     finite(*card, "f", into);
   }

@@ -40,9 +40,9 @@ Kinematics kinematics(const Mesh& mesh, int t, double thickness, const Eigen::Ve
   // nothing but rounding, and a body far from its reference position (a ring thrown 100 m) keeps
   // F exact for a translation instead of carrying |u| eps / h of noise into the stress.
   Matrix23 ue;
-  const Eigen::Vector2d u0 = u.segment<2>(2 * mesh.triangles[t][0]);
+  const Eigen::Vector2d u0 = u.segment<2>(2 * mesh.cells[t][0]);
   for (int a = 0; a < 3; ++a)
-    ue.col(a) = u.segment<2>(2 * mesh.triangles[t][a]) - u0;
+    ue.col(a) = u.segment<2>(2 * mesh.cells[t][a]) - u0;
   k.volume = thickness * p1_area(x);
   k.F = Eigen::Matrix2d::Identity() + ue * k.g.transpose();
   return k;
@@ -54,7 +54,7 @@ double hyperelastic_energy(const Mesh& mesh, const MaterialTable& table, const E
   SIG_VERIFY(u.size() == 2 * mesh.num_nodes(),
              "displacement has " << u.size() << " values for " << mesh.num_nodes() << " nodes");
   double energy = 0.0;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     const HyperelasticLaw& law = law_of(material);
     const Kinematics k = kinematics(mesh, t, material.thickness, u);
@@ -83,7 +83,7 @@ void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
                              const TriangleResponse& response) {
   state.internal_force.setZero(2 * mesh.num_nodes());
   state.energy = 0.0;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     const HyperelasticLaw& law = law_of(material);
     const Kinematics kin = kinematics(mesh, t, material.thickness, u);
@@ -100,7 +100,7 @@ void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
     const Matrix23 f = kin.volume * (r.stress * kin.g);
     state.energy += kin.volume * r.energy;
     for (int a = 0; a < 3; ++a)
-      state.internal_force.segment<2>(2 * mesh.triangles[t][a]) += f.col(a);
+      state.internal_force.segment<2>(2 * mesh.cells[t][a]) += f.col(a);
     if (K) {
       Matrix6d Ke;
       for (int i = 0; i < 2; ++i)
@@ -156,9 +156,9 @@ PreviousStrain previous_strain(const Mesh& mesh, const MaterialTable& table,
                                                         << u_prev.size() << " values for "
                                                         << mesh.num_nodes() << " nodes");
   PreviousStrain previous;
-  previous.F.resize(mesh.num_triangles());
-  previous.energy.resize(mesh.num_triangles());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  previous.F.resize(mesh.num_cells());
+  previous.energy.resize(mesh.num_cells());
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     const Kinematics k = kinematics(mesh, t, material.thickness, u_prev);
     SIG_VERIFY(k.F.determinant() > 0.0,
@@ -175,7 +175,7 @@ void assemble_hyperelastic_step(const Mesh& mesh, const MaterialTable& table,
                                 HyperelasticState& state, bool with_tangent,
                                 PreviousStrain* strain) {
   SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == 2 * mesh.num_nodes() &&
-                 static_cast<int>(previous.F.size()) == mesh.num_triangles(),
+                 static_cast<int>(previous.F.size()) == mesh.num_cells(),
              "time step: displacement has " << u.size() << " values, pattern " << pattern.num_dofs()
                                             << " dofs, the step start " << previous.F.size()
                                             << " triangles");

@@ -1,73 +1,55 @@
 #include "assembly/p1.hpp"
 
+#include "assembly/p1_simplex.hpp"
+
 #include "core/error.hpp"
 #include "mesh/mesh.hpp"
 
 namespace sig {
 
-Matrix23 triangle_vertices(const Mesh& mesh, int t) {
-  Matrix23 x;
-  for (int i = 0; i < 3; ++i)
-    x.col(i) = mesh.nodes[mesh.triangles[t][i]];
+template <int d> SimplexVertices<d> simplex_vertices(const Mesh& mesh, int c) {
+  SIG_ASSERT(mesh.dim == d, "a mesh of dimension " << mesh.dim << " read as " << d << "D");
+  SimplexVertices<d> x;
+  for (int i = 0; i <= d; ++i)
+    x.col(i) = mesh.nodes[mesh.cells[c][i]];
   return x;
+}
+template SimplexVertices<2> simplex_vertices<2>(const Mesh&, int);
+template SimplexVertices<3> simplex_vertices<3>(const Mesh&, int);
+
+// The 2D kernels are the simplex routine at d = 2 (p1_simplex.hpp).
+
+Matrix23 triangle_vertices(const Mesh& mesh, int t) {
+  return simplex_vertices<2>(mesh, t);
 }
 
 double p1_area(const Matrix23& x) {
-  const Eigen::Vector2d e1 = x.col(1) - x.col(0);
-  const Eigen::Vector2d e2 = x.col(2) - x.col(0);
-  return 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+  return p1_measure<2>(x);
 }
 
 Matrix23 p1_gradients(const Matrix23& x) {
-  const double double_area = 2.0 * p1_area(x);
-  SIG_ASSERT(double_area != 0.0, "degenerate triangle");
-  Matrix23 g;
-  // grad lambda_i is the inward normal of the opposite edge divided by twice the area.
-  for (int i = 0; i < 3; ++i) {
-    const Eigen::Vector2d& p = x.col((i + 1) % 3);
-    const Eigen::Vector2d& q = x.col((i + 2) % 3);
-    g.col(i) = Eigen::Vector2d(p.y() - q.y(), q.x() - p.x()) / double_area;
-  }
-  return g;
+  SIG_ASSERT(p1_area(x) != 0.0, "degenerate triangle");
+  return p1_simplex_gradients<2>(x);
 }
 
 Matrix36 p1_strain_matrix(const Matrix23& gradients) {
-  Matrix36 b = Matrix36::Zero();
-  for (int i = 0; i < 3; ++i) {
-    const double dx = gradients(0, i);
-    const double dy = gradients(1, i);
-    b(0, 2 * i) = dx;
-    b(1, 2 * i + 1) = dy;
-    b(2, 2 * i) = dy;
-    b(2, 2 * i + 1) = dx;
-  }
-  return b;
+  return p1_simplex_strain_matrix<2>(gradients);
 }
 
 Matrix6d p1_stiffness(const Matrix23& x, const Eigen::Matrix3d& D, double thickness) {
-  const Matrix36 b = p1_strain_matrix(p1_gradients(x));
-  return (thickness * p1_area(x)) * (b.transpose() * D * b);
+  return p1_simplex_stiffness<2>(x, D, thickness);
 }
 
 Matrix6d p1_consistent_mass(double area, double density, double thickness) {
-  const double scale = density * thickness * area / 12.0;
-  Matrix6d m = Matrix6d::Zero();
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int c = 0; c < 2; ++c)
-        m(2 * i + c, 2 * j + c) = scale * (i == j ? 2.0 : 1.0);
-  return m;
+  return p1_simplex_consistent_mass<2>(area, density, thickness);
 }
 
 Vector6d p1_lumped_mass(double area, double density, double thickness) {
-  return Vector6d::Constant(density * thickness * area / 3.0);
+  return p1_simplex_lumped_mass<2>(area, density, thickness);
 }
 
 Vector6d p1_body_load(double area, const Eigen::Vector2d& force, double thickness) {
-  Vector6d f;
-  for (int i = 0; i < 3; ++i)
-    f.segment<2>(2 * i) = force * (thickness * area / 3.0);
-  return f;
+  return p1_simplex_body_load<2>(area, force, thickness);
 }
 
 Eigen::Vector4d p1_edge_load(const Eigen::Vector2d& a, const Eigen::Vector2d& b,

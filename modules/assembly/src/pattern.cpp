@@ -8,21 +8,23 @@
 
 namespace sig {
 
-SparsityPattern::SparsityPattern(const Mesh& mesh) {
+SparsityPattern::SparsityPattern(const Mesh& mesh)
+    : dim_(mesh.dim), local_(mesh.dim * (mesh.dim + 1)) {
   const int n = mesh.num_nodes();
+  const int d = dim_, vertices = d + 1, local = local_;
 
-  // Node graph: each node's neighbours through the triangles, itself included, sorted; one flat
+  // Node graph: each node's neighbours through the cells, itself included, sorted; one flat
   // array of per-node segments (start[m], start[m] + count[m]) rather than a vector per node,
   // whose allocations and regrowth were most of the cost (the pattern is built once per solve).
   std::vector<int> start(n + 1, 0);
-  for (const auto& tri : mesh.triangles)
+  for (const auto& tri : mesh.cells)
     for (int a : tri)
-      start[a + 1] += 3;
+      start[a + 1] += vertices;
   for (int m = 0; m < n; ++m)
     start[m + 1] += start[m];
   std::vector<int> graph(start[n]);
   std::vector<int> count(n, 0);
-  for (const auto& tri : mesh.triangles)
+  for (const auto& tri : mesh.cells)
     for (int a : tri)
       for (int b : tri)
         graph[start[a] + count[a]++] = b;
@@ -35,35 +37,34 @@ SparsityPattern::SparsityPattern(const Mesh& mesh) {
     return std::span<const int>(graph.data() + start[m], static_cast<std::size_t>(count[m]));
   };
 
-  // Column 2 m + c holds rows 2 k + 0, 2 k + 1 for every neighbour k of m: already sorted.
-  outer_.assign(2 * n + 1, 0);
+  // Column d m + c holds rows d k + 0 .. d k + d - 1 for every neighbour k of m: already sorted.
+  outer_.assign(d * n + 1, 0);
   for (int m = 0; m < n; ++m)
-    for (int c = 0; c < 2; ++c)
-      outer_[2 * m + c + 1] = outer_[2 * m + c] + 2 * count[m];
+    for (int c = 0; c < d; ++c)
+      outer_[d * m + c + 1] = outer_[d * m + c] + d * count[m];
   inner_.resize(outer_.back());
   for (int m = 0; m < n; ++m)
-    for (int c = 0; c < 2; ++c) {
-      int p = outer_[2 * m + c];
-      for (int k : neighbours(m)) {
-        inner_[p++] = 2 * k;
-        inner_[p++] = 2 * k + 1;
-      }
+    for (int c = 0; c < d; ++c) {
+      int p = outer_[d * m + c];
+      for (int k : neighbours(m))
+        for (int r = 0; r < d; ++r)
+          inner_[p++] = d * k + r;
     }
 
-  // Scatter map: entry (2 i + c, 2 j + d) of a triangle lies in column 2 nj + d at the position
-  // of node ni in the neighbour list of nj, plus c.
-  scatter_.resize(36 * mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    for (int j = 0; j < 3; ++j) {
-      const std::span<const int> list = neighbours(tri[j]);
-      for (int i = 0; i < 3; ++i) {
+  // Scatter map: entry (d i + r, d j + c) of a cell lies in column d nj + c at the position of
+  // node ni in the neighbour list of nj, times d, plus r.
+  scatter_.resize(static_cast<std::size_t>(local) * local * mesh.cells.size());
+  for (std::size_t t = 0; t < mesh.cells.size(); ++t) {
+    const auto& cell = mesh.cells[t];
+    for (int j = 0; j < vertices; ++j) {
+      const std::span<const int> list = neighbours(cell[j]);
+      for (int i = 0; i < vertices; ++i) {
         const int position =
-            static_cast<int>(std::lower_bound(list.begin(), list.end(), tri[i]) - list.begin());
-        for (int c = 0; c < 2; ++c)
-          for (int d = 0; d < 2; ++d)
-            scatter_[36 * t + 6 * (2 * i + c) + (2 * j + d)] =
-                outer_[2 * tri[j] + d] + 2 * position + c;
+            static_cast<int>(std::lower_bound(list.begin(), list.end(), cell[i]) - list.begin());
+        for (int r = 0; r < d; ++r)
+          for (int c = 0; c < d; ++c)
+            scatter_[local * local * t + local * (d * i + r) + (d * j + c)] =
+                outer_[d * cell[j] + c] + d * position + r;
       }
     }
   }
@@ -78,14 +79,17 @@ Eigen::SparseMatrix<double> SparsityPattern::zero_matrix() const {
   return A;
 }
 
-void SparsityPattern::add(Eigen::SparseMatrix<double>& A, int t, const Matrix6d& element) const {
+void SparsityPattern::add(Eigen::SparseMatrix<double>& A, int t,
+                          const Eigen::Ref<const Eigen::MatrixXd>& element) const {
   SIG_ASSERT(A.isCompressed() && A.nonZeros() == nnz() && A.cols() == num_dofs(),
              "matrix does not have the pattern's layout");
+  SIG_ASSERT(element.rows() == local_ && element.cols() == local_,
+             "element matrix of " << element.rows() << " rows for cells of " << local_ << " dofs");
   double* values = A.valuePtr();
-  const int* slots = scatter_.data() + 36 * t;
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j)
-      values[slots[6 * i + j]] += element(i, j);
+  const int* slots = scatter_.data() + static_cast<std::size_t>(local_) * local_ * t;
+  for (int i = 0; i < local_; ++i)
+    for (int j = 0; j < local_; ++j)
+      values[slots[local_ * i + j]] += element(i, j);
 }
 
 } // namespace sig

@@ -25,7 +25,7 @@ constexpr int kMaxParts = 200;
 constexpr double kNullTolerance = 1e-14;
 
 struct Part {
-  std::vector<int> triangles, nodes;
+  std::vector<int> cells, nodes;
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double size = 0;
 };
@@ -38,25 +38,25 @@ int root(std::vector<int>& parent, int i) {
 
 /// The parts of the mesh: its triangles joined by their sides.
 std::vector<Part> parts_of(const Mesh& mesh) {
-  std::vector<int> parent(mesh.num_triangles());
+  std::vector<int> parent(mesh.num_cells());
   std::iota(parent.begin(), parent.end(), 0);
   std::unordered_map<std::uint64_t, int> first;
-  for (int t = 0; t < mesh.num_triangles(); ++t)
+  for (int t = 0; t < mesh.num_cells(); ++t)
     for (int j = 0; j < 3; ++j) {
       const auto [it, fresh] =
-          first.try_emplace(edge_key(mesh.triangles[t][j], mesh.triangles[t][(j + 1) % 3]), t);
+          first.try_emplace(edge_key(mesh.cells[t][j], mesh.cells[t][(j + 1) % 3]), t);
       if (!fresh) parent[root(parent, t)] = root(parent, it->second);
     }
   std::map<int, int> index;
   std::vector<Part> parts;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const auto [it, fresh] = index.try_emplace(root(parent, t), static_cast<int>(parts.size()));
     if (fresh) parts.emplace_back();
-    parts[it->second].triangles.push_back(t);
+    parts[it->second].cells.push_back(t);
   }
   for (Part& part : parts) {
-    for (int t : part.triangles)
-      part.nodes.insert(part.nodes.end(), mesh.triangles[t].begin(), mesh.triangles[t].end());
+    for (int t : part.cells)
+      part.nodes.insert(part.nodes.end(), mesh.cells[t].begin(), mesh.cells[t].end());
     std::sort(part.nodes.begin(), part.nodes.end());
     part.nodes.erase(std::unique(part.nodes.begin(), part.nodes.end()), part.nodes.end());
     Eigen::Vector2d low = mesh.nodes[part.nodes.front()], high = low;
@@ -199,11 +199,11 @@ std::vector<FreePart> free_parts(const Mesh& mesh, const std::vector<Hold>& hold
     free.whole_body = count == 1;
     free.nodes = part.nodes;
     free.centre = part.centre;
-    for (int t : part.triangles)
+    for (int t : part.cells)
       free.subdomains.push_back(mesh.subdomain[t]);
-    for (const BoundaryEdge& e : mesh.edges)
-      if (std::binary_search(part.nodes.begin(), part.nodes.end(), e.a) &&
-          std::binary_search(part.nodes.begin(), part.nodes.end(), e.b))
+    for (const Facet& e : mesh.facets)
+      if (std::binary_search(part.nodes.begin(), part.nodes.end(), e.node[0]) &&
+          std::binary_search(part.nodes.begin(), part.nodes.end(), e.node[1]))
         free.references.push_back(e.ref);
     for (int n : part.nodes)
       if (mesh.vertex_ref[n] != 0) free.references.push_back(mesh.vertex_ref[n]);

@@ -3,6 +3,7 @@
 #include "assembly/cards.hpp"
 #include "assembly/loads.hpp"
 #include "assembly/p1.hpp"
+#include "assembly/p1_simplex.hpp"
 #include "core/datafile.hpp"
 #include "core/log.hpp"
 #include "material/mili.hpp"
@@ -24,7 +25,7 @@ Eigen::SparseMatrix<double> assemble_operator(
     const Mesh& mesh, const MaterialTable& table, const SparsityPattern& pattern,
     const std::function<std::optional<Eigen::Matrix3d>(const SubdomainMaterial&)>& tensor) {
   Eigen::SparseMatrix<double> K = pattern.zero_matrix();
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     if (const std::optional<Eigen::Matrix3d> D = tensor(material))
       pattern.add(K, t, p1_stiffness(triangle_vertices(mesh, t), *D, material.thickness));
@@ -32,10 +33,22 @@ Eigen::SparseMatrix<double> assemble_operator(
   return K;
 }
 
+/// The P1 stiffness of Hooke's 3D law on the tetrahedra (no thickness in 3D).
+Eigen::SparseMatrix<double> assemble_stiffness_3d(const Mesh& mesh, const MaterialTable& table,
+                                                  const SparsityPattern& pattern) {
+  Eigen::SparseMatrix<double> K = pattern.zero_matrix();
+  for (int t = 0; t < mesh.num_cells(); ++t)
+    pattern.add(K, t,
+                p1_simplex_stiffness<3>(simplex_vertices<3>(mesh, t),
+                                        table.of(mesh.subdomain[t]).hooke.D3(), 1.0));
+  return K;
+}
+
 } // namespace
 
 Eigen::SparseMatrix<double> assemble_stiffness(const Mesh& mesh, const MaterialTable& table,
                                                const SparsityPattern& pattern) {
+  if (mesh.dim == 3) return assemble_stiffness_3d(mesh, table, pattern);
   return assemble_operator(mesh, table, pattern,
                            [](const SubdomainMaterial& m) { return m.hooke.D(); });
 }
@@ -76,8 +89,14 @@ std::vector<MemoryStiffness> assemble_memory(const Mesh& mesh, const MaterialTab
 Eigen::SparseMatrix<double> assemble_mass(const Mesh& mesh, const MaterialTable& table,
                                           const SparsityPattern& pattern) {
   Eigen::SparseMatrix<double> M = pattern.zero_matrix();
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
+    if (mesh.dim == 3) {
+      pattern.add(M, t,
+                  p1_simplex_consistent_mass<3>(p1_measure<3>(simplex_vertices<3>(mesh, t)),
+                                                material.density, 1.0));
+      continue;
+    }
     pattern.add(M, t,
                 p1_consistent_mass(p1_area(triangle_vertices(mesh, t)), material.density,
                                    material.thickness));
@@ -86,13 +105,23 @@ Eigen::SparseMatrix<double> assemble_mass(const Mesh& mesh, const MaterialTable&
 }
 
 Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& table) {
+  if (mesh.dim == 3) {
+    Eigen::VectorXd m = Eigen::VectorXd::Zero(3 * mesh.num_nodes());
+    for (int t = 0; t < mesh.num_cells(); ++t) {
+      const SimplexVector<3> me = p1_simplex_lumped_mass<3>(
+          p1_measure<3>(simplex_vertices<3>(mesh, t)), table.of(mesh.subdomain[t]).density, 1.0);
+      for (int i = 0; i < 4; ++i)
+        m.segment<3>(3 * mesh.cells[t][i]) += me.segment<3>(3 * i);
+    }
+    return m;
+  }
   Eigen::VectorXd m = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     const Vector6d me =
         p1_lumped_mass(p1_area(triangle_vertices(mesh, t)), material.density, material.thickness);
     for (int i = 0; i < 3; ++i)
-      m.segment<2>(2 * mesh.triangles[t][i]) += me.segment<2>(2 * i);
+      m.segment<2>(2 * mesh.cells[t][i]) += me.segment<2>(2 * i);
   }
   return m;
 }
@@ -103,21 +132,26 @@ void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vecto
   // their references meet) contradict each other, and neither may silently win.
   std::map<int, std::pair<double, const Card*>> imposed;
   for (const Card* card : datafile.all("DIRICHLET")) {
+    const int d = mesh.dim;
+    const char* fields[3] = {"ux", "uy", "uz"};
+    if (d == 2 && card->has("uz"))
+      card->fail("uz", "the mesh is 2D: a displacement has the components ux and uy");
     const std::vector<int> refs = card_references(*card, mesh, RefSupport::edges_or_vertices);
-    const char* fields[2] = {"ux", "uy"};
-    if (!card->has("ux") && !card->has("uy")) card->fail("ux", "give ux=, uy= or both");
-    for (int c = 0; c < 2; ++c) {
+    if (!card->has("ux") && !card->has("uy") && !card->has("uz"))
+      card->fail("ux", d == 3 ? "give ux=, uy=, uz= or some of them" : "give ux=, uy= or both");
+    for (int c = 0; c < d; ++c) {
       if (!card->has(fields[c])) continue;
       const double value = card->real(fields[c]);
       for (int ref : refs)
         for (int node : mesh.nodes_with_ref(ref)) {
-          const auto [it, fresh] = imposed.try_emplace(2 * node + c, value, card);
+          const auto [it, fresh] = imposed.try_emplace(d * node + c, value, card);
           if (fresh || it->second.first == value) continue;
           std::ostringstream what;
           what << "gives node " << node + 1 << " (at (" << mesh.nodes[node].x() << ", "
-               << mesh.nodes[node].y() << "), reference " << ref << ") " << fields[c] << " = "
-               << value << ", but the DIRICHLET card of line " << it->second.second->line
-               << " gives it " << it->second.first
+               << mesh.nodes[node].y()
+               << (d == 3 ? ", " + std::to_string(mesh.nodes[node].z()) : "") << "), reference "
+               << ref << ") " << fields[c] << " = " << value << ", but the DIRICHLET card of line "
+               << it->second.second->line << " gives it " << it->second.first
                << ": one displacement cannot take two values (give the node one of them)";
           card->fail(fields[c], what.str());
         }
@@ -148,7 +182,8 @@ LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
     system.V = assemble_viscosity(mesh, table, pattern);
     system.memory = assemble_memory(mesh, table, pattern);
   }
-  system.f = assemble_loads(mesh, table, datafile, &system.time_loads);
+  system.f = mesh.dim == 3 ? assemble_loads_3d(mesh, datafile)
+                           : assemble_loads(mesh, table, datafile, &system.time_loads);
   dirichlet_from_cards(mesh, datafile, system.dirichlet_dofs, system.dirichlet_values);
   system.assemble_seconds = clock.seconds();
   return system;

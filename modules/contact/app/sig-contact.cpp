@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
 
     // 2. Contact elements from the CONTACT card, if any.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    if (!datafile.all("CONTACT").empty())
+      sig::require_2d(mesh, "sig-contact", "contact (CONTACT card)");
     const std::optional<sig::ContactElements> elements = sig::contact_from_cards(datafile, mesh);
     if (!elements) {
       std::cout << "sig-contact: no CONTACT card in " << args.datafile.string()

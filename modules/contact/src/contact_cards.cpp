@@ -27,7 +27,7 @@ Eigen::Vector2d pair_field(const Card& card, const std::string& name) {
 // The reference must carry Gamma3 edges: list what the mesh has so the user can pick.
 void check_reference(const Card& card, const Mesh& mesh, int ref) {
   std::set<int> present;
-  for (const BoundaryEdge& e : mesh.edges)
+  for (const Facet& e : mesh.facets)
     present.insert(e.ref);
   if (present.count(ref)) return;
   std::ostringstream what;

@@ -19,24 +19,25 @@ constexpr double kRoundoffGap = 1e-9;
 
 // The Gamma3 edges without repetition (an interface edge may be stored from both sides); the
 // first stored direction is kept.
-std::vector<BoundaryEdge> unique_edges(const Mesh& mesh, int ref) {
-  std::vector<BoundaryEdge> edges;
+std::vector<Facet> unique_edges(const Mesh& mesh, int ref) {
+  std::vector<Facet> edges;
   std::set<std::pair<int, int>> seen;
-  for (const BoundaryEdge& e : mesh.edges) {
+  for (const Facet& e : mesh.facets) {
     if (e.ref != ref) continue;
-    if (seen.insert({std::min(e.a, e.b), std::max(e.a, e.b)}).second) edges.push_back(e);
+    if (seen.insert({std::min(e.node[0], e.node[1]), std::max(e.node[0], e.node[1])}).second)
+      edges.push_back(e);
   }
   return edges;
 }
 
 // The nodes of `edges` along the boundary chains they form (see build_contact_elements).
-std::vector<int> nodes_along_boundary(const std::vector<BoundaryEdge>& edges) {
+std::vector<int> nodes_along_boundary(const std::vector<Facet>& edges) {
   std::map<int, std::vector<int>> neighbours; // sorted by node number
   std::set<std::pair<int, int>> forward;      // (a, b) as stored
-  for (const BoundaryEdge& e : edges) {
-    neighbours[e.a].push_back(e.b);
-    neighbours[e.b].push_back(e.a);
-    forward.insert({e.a, e.b});
+  for (const Facet& e : edges) {
+    neighbours[e.node[0]].push_back(e.node[1]);
+    neighbours[e.node[1]].push_back(e.node[0]);
+    forward.insert({e.node[0], e.node[1]});
   }
   std::vector<int> order;
   for (const auto& [v, nb] : neighbours)
@@ -108,20 +109,20 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
   const std::optional<LawProblem> inadmissible = law_problem(law);
   SIG_VERIFY(!inadmissible,
              "contact elements: " << inadmissible->field << " " << inadmissible->what);
-  const std::vector<BoundaryEdge> edges = unique_edges(mesh, ref);
+  const std::vector<Facet> edges = unique_edges(mesh, ref);
   SIG_VERIFY(!edges.empty(), "contact elements: no mesh edge carries reference " << ref);
 
   // Tributary weights: each Gamma3 edge gives half its length to each end node.
   std::map<int, double> weight_of;
   double shortest = std::numeric_limits<double>::infinity();
-  for (const BoundaryEdge& e : edges) {
-    SIG_VERIFY(e.a >= 0 && e.a < mesh.num_nodes() && e.b >= 0 && e.b < mesh.num_nodes() &&
-                   e.a != e.b,
-               "contact elements: edge (" << e.a + 1 << ", " << e.b + 1 << ") with reference "
-                                          << ref << " is invalid");
-    const double length = (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
-    weight_of[e.a] += 0.5 * length * thickness;
-    weight_of[e.b] += 0.5 * length * thickness;
+  for (const Facet& e : edges) {
+    SIG_VERIFY(e.node[0] >= 0 && e.node[0] < mesh.num_nodes() && e.node[1] >= 0 &&
+                   e.node[1] < mesh.num_nodes() && e.node[0] != e.node[1],
+               "contact elements: edge (" << e.node[0] + 1 << ", " << e.node[1] + 1
+                                          << ") with reference " << ref << " is invalid");
+    const double length = (mesh.nodes[e.node[1]] - mesh.nodes[e.node[0]]).norm();
+    weight_of[e.node[0]] += 0.5 * length * thickness;
+    weight_of[e.node[1]] += 0.5 * length * thickness;
     shortest = std::min(shortest, length);
   }
 
@@ -161,10 +162,10 @@ std::vector<int> nodes_facing_away(const Mesh& mesh, const ContactElements& elem
   // The stored edges have the domain on their left: the outward normal of a -> b is the
   // direction b - a turned clockwise.
   std::map<int, Eigen::Vector2d> outward;
-  for (const BoundaryEdge& e : unique_edges(mesh, elements.ref)) {
-    const Eigen::Vector2d d = mesh.nodes[e.b] - mesh.nodes[e.a];
+  for (const Facet& e : unique_edges(mesh, elements.ref)) {
+    const Eigen::Vector2d d = mesh.nodes[e.node[1]] - mesh.nodes[e.node[0]];
     const Eigen::Vector2d n(d.y(), -d.x());
-    for (int k : {e.a, e.b})
+    for (int k : {e.node[0], e.node[1]})
       outward.try_emplace(k, Eigen::Vector2d::Zero()).first->second += n;
   }
   std::vector<int> away;

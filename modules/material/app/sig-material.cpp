@@ -35,9 +35,13 @@ int main(int argc, char** argv) {
            << (m.hyperelastic   ? m.hyperelastic->name() + " (small-strain limit"
                : m.kelvin_voigt ? std::string("kelvin-voigt (elastic part")
                                 : std::string("hooke ("))
-           << " E=" << m.hooke.E << " nu=" << m.hooke.nu << ") plane "
-           << (m.hooke.plane == sig::PlaneMode::strain ? "strain" : "stress")
-           << " thickness=" << m.thickness << " rho=" << m.density;
+           << " E=" << m.hooke.E << " nu=" << m.hooke.nu << ") ";
+      if (mesh.dim == 3)
+        line << "3D";
+      else
+        line << "plane " << (m.hooke.plane == sig::PlaneMode::strain ? "strain" : "stress")
+             << " thickness=" << m.thickness;
+      line << " rho=" << m.density;
       if (m.kelvin_voigt) {
         line << " eta1=" << m.kelvin_voigt->viscosity.eta1
              << " eta2=" << m.kelvin_voigt->viscosity.eta2;

@@ -27,6 +27,18 @@ Eigen::Matrix3d Hooke::D() const {
   return d;
 }
 
+Eigen::Matrix<double, 6, 6> Hooke::D3() const {
+  const double l = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const double m = mu();
+  Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
+  d.topLeftCorner<3, 3>().setConstant(l);
+  for (int k = 0; k < 3; ++k) {
+    d(k, k) += 2 * m;
+    d(3 + k, 3 + k) = m;
+  }
+  return d;
+}
+
 Eigen::Vector3d Hooke::stress(const Eigen::Vector3d& strain) const {
   return D() * strain;
 }

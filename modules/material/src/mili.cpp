@@ -155,9 +155,29 @@ SubdomainMaterial material_from_card(const Card& card) {
   return material;
 }
 
+namespace {
+
+// A 3D body has no plane mode and no thickness; of the laws, Hooke's alone is 3D for now (issue
+// 26): a 2D field or law in a 3D deck is refused on its card, not silently dropped.
+void verify_card_in_3d(const Card& card) {
+  for (const char* field : {"plane", "thickness"})
+    if (card.has(field))
+      card.fail(field, std::string("the mesh is 3D: '") + field +
+                           "' belongs to a 2D body (plane strain or stress, a plate's thickness)");
+  const std::string law = card.choice("law", {"hooke", "svk", "ciarlet-geymonat", "kelvin-voigt"});
+  if (law != "hooke")
+    card.fail("law", "law=" + law + " in 3D is not implemented yet (issue 26): law=hooke is");
+}
+
+} // namespace
+
 MaterialTable material_table_from_cards(const Datafile& datafile, const Mesh& mesh) {
   const std::vector<int> present = mesh.subdomains();
   const std::vector<const Card*> cards = datafile.all("MATERIAL");
+  if (mesh.dim == 3) {
+    for (const Card* card : cards)
+      verify_card_in_3d(*card);
+  }
   if (cards.empty())
     throw InputError(datafile.path, 0, "",
                      "no MATERIAL card (sub-domains of the mesh: " + joined(present) + ")");

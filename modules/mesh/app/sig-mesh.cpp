@@ -16,7 +16,7 @@ namespace {
 /// "refs 1 (vertices: 5), 2 (edges: 32), ..." for the summary line.
 std::string describe_references(const sig::Mesh& mesh) {
   std::map<int, int> edges, vertices;
-  for (const auto& e : mesh.edges)
+  for (const auto& e : mesh.facets)
     ++edges[e.ref];
   for (int r : mesh.vertex_ref) {
     if (r != 0) ++vertices[r];
@@ -24,7 +24,7 @@ std::string describe_references(const sig::Mesh& mesh) {
   std::ostringstream out;
   for (int ref : mesh.references()) {
     out << " " << ref << " (";
-    if (edges.count(ref)) out << edges[ref] << " edges";
+    if (edges.count(ref)) out << edges[ref] << (mesh.dim == 3 ? " faces" : " edges");
     if (edges.count(ref) && vertices.count(ref)) out << ", ";
     if (vertices.count(ref)) out << vertices[ref] << " vertices";
     out << ")";
@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
                  "writes it as a NOPO structure with double-precision coordinates.",
       .reads = {"DATAFILE, and the mesh file its MESH card names (file=, relative to the "
                 "datafile's folder)"},
-      .writes = {"OUTDIR/case.nopo (NOPO mesh: nodes, triangles, sub-domains, references of "
-                 "vertices and edges)",
+      .writes = {"OUTDIR/case.nopo (NOPO mesh: nodes, triangles or tetrahedra, sub-domains, "
+                 "references of vertices and edges or faces)",
                  "OUTDIR/case.nopo.prov (what case.nopo was made from: the MESH card's values)"},
       .cards = sig::stage_cards("mesh").cards};
   return sig::run_stage("sig-mesh", [&] {
@@ -60,8 +60,9 @@ int main(int argc, char** argv) {
     sig::write_nopo(nopo, mesh, sig::NopoVariant::i8r8, datafile.title(), "sig-mesh");
 
     // 4. One-line summary.
-    std::cout << "sig-mesh: " << mesh.num_nodes() << " nodes, " << mesh.num_triangles()
-              << " triangles, sub-domains " << mesh.subdomains().size() << ", references"
+    std::cout << "sig-mesh: " << (mesh.dim == 3 ? "3D, " : "") << mesh.num_nodes() << " nodes, "
+              << mesh.num_cells() << (mesh.dim == 3 ? " tetrahedra" : " triangles")
+              << ", sub-domains " << mesh.subdomains().size() << ", references"
               << describe_references(mesh) << " -> " << nopo.string() << "\n";
   });
 }

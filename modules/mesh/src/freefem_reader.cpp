@@ -52,7 +52,7 @@ Mesh read_mesh(TokenReader& in) {
     const long region = in.integer();
     if (region < 0 || region > std::numeric_limits<int>::max())
       in.fail("region " + std::to_string(region) + " is out of range");
-    mesh.triangles.push_back(tri);
+    mesh.cells.push_back(tri);
     mesh.subdomain.push_back(region > 0 ? static_cast<int>(region) : 1); // as NOPO stores it
     triangle_lines.push_back(in.line());
   }
@@ -62,7 +62,7 @@ Mesh read_mesh(TokenReader& in) {
     const int b = node_index(in, static_cast<int>(nv));
     const int ref = label(in);
     if (ref == 0) continue; // no reference
-    mesh.edges.push_back({a, b, ref});
+    mesh.facets.push_back({{a, b}, ref});
     edge_lines.push_back(in.line());
   }
   if (!in.at_end()) {
@@ -70,17 +70,17 @@ Mesh read_mesh(TokenReader& in) {
     in.fail("unexpected data after the " + std::to_string(nbe) + " boundary edges");
   }
 
-  orient_triangles_of_file(mesh, in.file(), triangle_lines);
+  orient_cells_of_file(mesh, in.file(), triangle_lines);
   if (const auto [first, second] = side_with_two_references(mesh); second >= 0)
     throw InputError(in.file(), edge_lines[second], "",
-                     "the side from vertex " + std::to_string(mesh.edges[second].a + 1) +
-                         " to vertex " + std::to_string(mesh.edges[second].b + 1) +
-                         " carries labels " + std::to_string(mesh.edges[first].ref) + " (line " +
+                     "the side from vertex " + std::to_string(mesh.facets[second].node[0] + 1) +
+                         " to vertex " + std::to_string(mesh.facets[second].node[1] + 1) +
+                         " carries labels " + std::to_string(mesh.facets[first].ref) + " (line " +
                          std::to_string(edge_lines[first]) + ") and " +
-                         std::to_string(mesh.edges[second].ref) + ": a side carries one label");
-  if (const int bad = orient_boundary_edges(mesh); bad >= 0)
+                         std::to_string(mesh.facets[second].ref) + ": a side carries one label");
+  if (const int bad = orient_facets(mesh); bad >= 0)
     throw InputError(in.file(), edge_lines[bad], "",
-                     "boundary edge with label " + std::to_string(mesh.edges[bad].ref) +
+                     "boundary edge with label " + std::to_string(mesh.facets[bad].ref) +
                          " is not a side of any triangle");
   check_mesh(mesh, in.file());
   return mesh;

@@ -1,10 +1,12 @@
 // half_disc and disc: gmsh meshes of the scripts in meshes/, whose arc nodes are then put at
-// their exact polar positions (gmsh places them to about 1e-9 R).
+// their exact polar positions (gmsh places them to about 1e-9 R). box and half_ball: the 3D
+// bodies of issue 26, meshed with tetrahedra by gmsh as they come (no node moved yet).
 #include "core/error.hpp"
 #include "gmsh_run.hpp"
 #include "mesh/generators.hpp"
 #include "mesh/geo_scripts.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -60,7 +62,7 @@ double gmsh_scale(double R) {
 }
 
 void scale_nodes(Mesh& mesh, double scale) {
-  for (Eigen::Vector2d& x : mesh.nodes)
+  for (Point& x : mesh.nodes)
     x *= scale;
 }
 
@@ -103,6 +105,60 @@ Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading, bool g
     snap_arc(mesh, refs[q], center, R, (2 * q - 1) * std::numbers::pi / 4, N / 4, step, "disc");
   }
   check_mesh(mesh, "disc");
+  return mesh;
+}
+
+Mesh box(double lx, double ly, double lz, double h) {
+  for (const double length : {lx, ly, lz, h})
+    SIG_VERIFY(length > 0 && std::isfinite(length), "box: length " << length << " must be > 0");
+  // gmsh's tolerances are absolute: the box is meshed at the scale of its longest side, as the
+  // discs are (gmsh_scale).
+  const double scale = gmsh_scale(std::max({lx, ly, lz}));
+  Mesh mesh = mesh_with_gmsh(
+      "box", geo::box,
+      {{"lx", lx / scale}, {"ly", ly / scale}, {"lz", lz / scale}, {"h", h / scale}}, 3);
+  scale_nodes(mesh, scale);
+  check_mesh(mesh, "box");
+  return mesh;
+}
+
+Mesh half_ball(double R, double h) {
+  verify_size_law("half_ball", R, 0);
+  SIG_VERIFY(h > 0 && std::isfinite(h), "half_ball: mesh size " << h << " must be > 0");
+  const double scale = gmsh_scale(R);
+  Mesh mesh = mesh_with_gmsh("half_ball", geo::half_ball, {{"R", R / scale}, {"h", h / scale}}, 3);
+  scale_nodes(mesh, scale);
+  check_mesh(mesh, "half_ball");
+  return mesh;
+}
+
+Mesh ball(const Point& centre, double R, double h) {
+  verify_size_law("ball", R, 0);
+  SIG_VERIFY(centre.size() == 3, "ball: the centre has " << centre.size() << " coordinates");
+  SIG_VERIFY(h > 0 && std::isfinite(h), "ball: mesh size " << h << " must be > 0");
+  const double scale = gmsh_scale(R);
+  Mesh mesh = mesh_with_gmsh("ball", geo::ball,
+                             {{"cx", centre.x() / scale},
+                              {"cy", centre.y() / scale},
+                              {"cz", centre.z() / scale},
+                              {"R", R / scale},
+                              {"h", h / scale}},
+                             3);
+  scale_nodes(mesh, scale);
+  check_mesh(mesh, "ball");
+  return mesh;
+}
+
+Mesh cylinder(double R, double L, double h) {
+  verify_size_law("cylinder", R, 0);
+  for (const double length : {L, h})
+    SIG_VERIFY(length > 0 && std::isfinite(length),
+               "cylinder: length " << length << " must be > 0");
+  const double scale = gmsh_scale(std::max(R, L));
+  Mesh mesh = mesh_with_gmsh("cylinder", geo::cylinder,
+                             {{"R", R / scale}, {"L", L / scale}, {"h", h / scale}}, 3);
+  scale_nodes(mesh, scale);
+  check_mesh(mesh, "cylinder");
   return mesh;
 }
 

@@ -57,15 +57,15 @@ Mesh ring(const Eigen::Vector2d& center, double r_in, double r_out, int N,
     for (int k = 0; k < N; ++k) {
       const int a = node(k, j), b = node(k + 1, j), c = node(k + 1, j + 1), d = node(k, j + 1);
       if (k < N / 2) { // (angle, radius) is a clockwise frame: list the nodes backwards
-        mesh.triangles.push_back({a, c, b});
-        mesh.triangles.push_back({a, d, c});
+        mesh.cells.push_back({a, c, b});
+        mesh.cells.push_back({a, d, c});
       } else {
-        mesh.triangles.push_back({a, d, b});
-        mesh.triangles.push_back({b, d, c});
+        mesh.cells.push_back({a, d, b});
+        mesh.cells.push_back({b, d, c});
       }
     }
   }
-  mesh.subdomain.assign(mesh.triangles.size(), 1);
+  mesh.subdomain.assign(mesh.cells.size(), 1);
 
   // References: the outer circle runs counter-clockwise, the inner one clockwise (domain left).
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
@@ -74,11 +74,11 @@ Mesh ring(const Eigen::Vector2d& center, double r_in, double r_out, int N,
     const int a = node(k, outer), b = node(k + 1, outer);
     const bool low = mesh.nodes[a].y() <= gamma3_below + tolerance &&
                      mesh.nodes[b].y() <= gamma3_below + tolerance;
-    mesh.edges.push_back({a, b, low ? 3 : 2});
+    mesh.facets.push_back({{a, b}, low ? 3 : 2});
     if (mesh.nodes[a].y() >= gamma1_above - tolerance) mesh.vertex_ref[a] = 1;
   }
   for (int k = 0; k < N; ++k)
-    mesh.edges.push_back({node(k + 1, 0), node(k, 0), 4});
+    mesh.facets.push_back({{node(k + 1, 0), node(k, 0)}, 4});
   check_mesh(mesh, "ring");
   return mesh;
 }
@@ -104,29 +104,29 @@ Mesh rectangle(double lx, double ly, int nx, int ny, std::array<int, 4> refs, Ce
       const int a = node(i, j), b = node(i + 1, j), c = node(i + 1, j + 1), d = node(i, j + 1);
       if (pattern == CellPattern::union_jack) {
         const int e = (nx + 1) * (ny + 1) + j * nx + i; // the centre
-        mesh.triangles.push_back({a, b, e});
-        mesh.triangles.push_back({b, c, e});
-        mesh.triangles.push_back({c, d, e});
-        mesh.triangles.push_back({d, a, e});
+        mesh.cells.push_back({a, b, e});
+        mesh.cells.push_back({b, c, e});
+        mesh.cells.push_back({c, d, e});
+        mesh.cells.push_back({d, a, e});
       } else if ((i + j) % 2 == 0) {
-        mesh.triangles.push_back({a, b, c});
-        mesh.triangles.push_back({a, c, d});
+        mesh.cells.push_back({a, b, c});
+        mesh.cells.push_back({a, c, d});
       } else {
-        mesh.triangles.push_back({a, b, d});
-        mesh.triangles.push_back({b, c, d});
+        mesh.cells.push_back({a, b, d});
+        mesh.cells.push_back({b, c, d});
       }
     }
   }
-  mesh.subdomain.assign(mesh.triangles.size(), 1);
+  mesh.subdomain.assign(mesh.cells.size(), 1);
   const auto [bottom, right, top, left] = refs;
   for (int i = 0; i < nx; ++i)
-    mesh.edges.push_back({node(i, 0), node(i + 1, 0), bottom});
+    mesh.facets.push_back({{node(i, 0), node(i + 1, 0)}, bottom});
   for (int j = 0; j < ny; ++j)
-    mesh.edges.push_back({node(nx, j), node(nx, j + 1), right});
+    mesh.facets.push_back({{node(nx, j), node(nx, j + 1)}, right});
   for (int i = nx; i > 0; --i)
-    mesh.edges.push_back({node(i, ny), node(i - 1, ny), top});
+    mesh.facets.push_back({{node(i, ny), node(i - 1, ny)}, top});
   for (int j = ny; j > 0; --j)
-    mesh.edges.push_back({node(0, j), node(0, j - 1), left});
+    mesh.facets.push_back({{node(0, j), node(0, j - 1)}, left});
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
   mesh.vertex_ref[node(0, 0)] = mesh.vertex_ref[node(nx, 0)] = bottom;
   mesh.vertex_ref[node(0, ny)] = mesh.vertex_ref[node(nx, ny)] = top;

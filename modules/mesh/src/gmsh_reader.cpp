@@ -4,6 +4,7 @@
 #include "mesh/topology.hpp"
 #include "token_reader.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -16,31 +17,38 @@
 namespace sig {
 namespace {
 
-enum GmshType { Line = 1, Triangle = 2, Point = 15 };
+enum GmshType { Line = 1, Triangle = 2, Tetrahedron = 4, PointElement = 15 };
 
 struct GmshElement {
   int type;
   long physical; ///< 0 = none
-  std::array<long, 3> nodes;
+  std::array<long, 4> nodes;
   int line; ///< in the file, for messages
 };
 
 /// What a .msh file holds, before renumbering.
 struct GmshContent {
   std::unordered_map<long, int> node_index; ///< gmsh node tag -> position in nodes
-  std::vector<Eigen::Vector2d> nodes;
+  std::vector<Eigen::Vector3d> nodes;
   std::vector<long> node_tags; ///< per position, for messages
+  std::vector<int> node_lines; ///< per position, for messages
   std::vector<GmshElement> elements;
+  bool has_volume() const {
+    return std::any_of(elements.begin(), elements.end(),
+                       [](const GmshElement& e) { return e.type == Tetrahedron; });
+  }
 };
 
-// P1 is the model: the 2D elements of another kind are named, so that the user can remesh.
+// P1 is the model: the elements of another kind are named, so that the user can remesh.
 int nodes_per_element(TokenReader& in, long type) {
   switch (type) {
   case Line:
     return 2;
   case Triangle:
     return 3;
-  case Point:
+  case Tetrahedron:
+    return 4;
+  case PointElement:
     return 1;
   case 3:
   case 10:
@@ -48,37 +56,39 @@ int nodes_per_element(TokenReader& in, long type) {
     in.fail("element type " + std::to_string(type) +
             " is a quadrangle: the model is P1 triangles (mesh with triangles, or "
             "Mesh.SubdivisionAlgorithm = 1 to split them)");
+  case 5:
+  case 6:
+  case 7:
+    in.fail("element type " + std::to_string(type) +
+            " is a hexahedron, prism or pyramid: the model is P1 tetrahedra (mesh the volume "
+            "with tetrahedra, without Recombine)");
   case 8:
   case 9:
+  case 11:
   case 20:
   case 21:
   case 22:
   case 23:
   case 24:
   case 25:
+  case 29:
     in.fail("element type " + std::to_string(type) +
             " is of second or higher order: the model is P1 (mesh with Mesh.ElementOrder = 1)");
   default:
     in.fail("element type " + std::to_string(type) +
-            " is not read: a 2D P1 mesh holds points (15), lines (1) and triangles (2) only");
+            " is not read: a P1 mesh holds points (15), lines (1), triangles (2) and tetrahedra "
+            "(4) only");
   }
 }
 
 void add_node(TokenReader& in, GmshContent& content, long tag, double x, double y, double z) {
-  if (!std::isfinite(x) || !std::isfinite(y))
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
     in.fail("node tag " + std::to_string(tag) + " has a non-finite coordinate");
-  // Dropping z would solve another body than the file's.
-  if (z != 0) {
-    std::ostringstream what;
-    what << "node tag " << tag << " has z = " << z
-         << ": the meshes are 2D, in the plane z = 0, until three dimensions are implemented (a "
-            "mesh out of that plane is refused, not flattened)";
-    in.fail(what.str());
-  }
   const auto [it, fresh] = content.node_index.emplace(tag, static_cast<int>(content.nodes.size()));
   if (!fresh) in.fail("node tag " + std::to_string(tag) + " appears twice");
-  content.nodes.emplace_back(x, y);
+  content.nodes.emplace_back(x, y, z);
   content.node_tags.push_back(tag);
+  content.node_lines.push_back(in.line());
 }
 
 /// Reads the numbers of a section as text or as binary words (format file-type 1): int is 4
@@ -145,7 +155,7 @@ void read_elements_v2(TokenReader& in, Numbers& num, GmshContent& content) {
   if (!num.binary()) {
     for (long i = 0; i < n; ++i) {
       in.integer(); // element tag
-      GmshElement element{static_cast<int>(in.integer()), 0, {0, 0, 0}, in.line()};
+      GmshElement element{static_cast<int>(in.integer()), 0, {0, 0, 0, 0}, in.line()};
       const long ntags = in.count("tags", 2);
       for (long k = 0; k < ntags; ++k) {
         const long tag = in.integer();
@@ -171,7 +181,7 @@ void read_elements_v2(TokenReader& in, Numbers& num, GmshContent& content) {
                        static_cast<std::uint64_t>(4 * (1 + ntags + nv)));
       for (long i = 0; i < following; ++i, ++read) {
         num.integer("element number");
-        GmshElement element{static_cast<int>(type), 0, {0, 0, 0}, in.line()};
+        GmshElement element{static_cast<int>(type), 0, {0, 0, 0, 0}, in.line()};
         for (long k = 0; k < ntags; ++k) {
           const long tag = num.integer("element tag");
           if (k == 0) element.physical = tag;
@@ -255,7 +265,7 @@ void read_elements_v4(TokenReader& in, Numbers& num, const EntityPhysical& physi
     const long phys = it == physical.end() ? 0 : it->second;
     for (long i = 0; i < n; ++i) {
       num.size("element tag");
-      GmshElement element{static_cast<int>(type), phys, {0, 0, 0}, in.line()};
+      GmshElement element{static_cast<int>(type), phys, {0, 0, 0, 0}, in.line()};
       for (int k = 0; k < nv; ++k)
         element.nodes[k] = num.size("element node");
       content.elements.push_back(element);
@@ -325,25 +335,58 @@ int reference_of(TokenReader& in, const GmshElement& element) {
   return static_cast<int>(element.physical);
 }
 
+/// The dimension of the mesh a file holds: 3 if it has tetrahedra; else 2, and then every node
+/// must lie in the plane z = 0 (dropping z would solve another body than the file's).
+int dimension_of(const TokenReader& in, const GmshContent& content) {
+  if (content.has_volume()) return 3;
+  for (std::size_t i = 0; i < content.nodes.size(); ++i) {
+    const double z = content.nodes[i].z();
+    if (z == 0) continue;
+    std::ostringstream what;
+    what << "node tag " << content.node_tags[i] << " has z = " << z
+         << " and the file has no tetrahedra: a surface in space with no volume is no body (a 2D "
+            "mesh lies in the plane z = 0, a 3D one is made of tetrahedra; a mesh out of that "
+            "plane is refused, not flattened)";
+    throw InputError(in.file(), content.node_lines[i], "", what.str());
+  }
+  return 2;
+}
+
 Mesh read_mesh(TokenReader& in) {
   const GmshContent content = read_content(in);
 
+  // Cells are the elements of the mesh's dimension (triangles in 2D, tetrahedra in 3D), facets
+  // those one dimension below with a physical tag (lines in 2D, triangles in 3D), vertices the
+  // points with one; in 3D, lines carry no reference (a reference goes on faces or vertices).
   Mesh mesh;
-  mesh.nodes = content.nodes;
+  mesh.dim = dimension_of(in, content);
+  const int cell_type = mesh.dim == 3 ? Tetrahedron : Triangle;
+  const int facet_type = mesh.dim == 3 ? Triangle : Line;
+  for (const Eigen::Vector3d& x : content.nodes)
+    mesh.nodes.push_back(mesh.dim == 3 ? Point(x) : Point(x.x(), x.y()));
   mesh.vertex_ref.assign(mesh.nodes.size(), 0);
-  std::vector<int> edge_lines, triangle_lines; // file line of each, for messages
+  std::vector<int> edge_lines, triangle_lines; // file line of each facet and cell, for messages
   for (const GmshElement& element : content.elements) {
     const int physical = reference_of(in, element);
-    if (element.type == Triangle) {
+    if (element.type == cell_type) {
       triangle_lines.push_back(element.line);
-      mesh.triangles.push_back({node_of(in, content, element, 0), node_of(in, content, element, 1),
-                                node_of(in, content, element, 2)});
+      Simplex nodes =
+          mesh.dim == 3
+              ? Simplex{node_of(in, content, element, 0), node_of(in, content, element, 1),
+                        node_of(in, content, element, 2), node_of(in, content, element, 3)}
+              : Simplex{node_of(in, content, element, 0), node_of(in, content, element, 1),
+                        node_of(in, content, element, 2)};
+      mesh.cells.push_back(nodes);
       mesh.subdomain.push_back(physical >= 1 ? physical : 1);
-    } else if (element.type == Line && physical > 0) {
-      mesh.edges.push_back(
-          {node_of(in, content, element, 0), node_of(in, content, element, 1), physical});
+    } else if (element.type == facet_type && physical > 0) {
+      mesh.facets.push_back(
+          {mesh.dim == 3
+               ? Simplex{node_of(in, content, element, 0), node_of(in, content, element, 1),
+                         node_of(in, content, element, 2)}
+               : Simplex{node_of(in, content, element, 0), node_of(in, content, element, 1)},
+           physical});
       edge_lines.push_back(element.line);
-    } else if (element.type == Point && physical > 0) {
+    } else if (element.type == PointElement && physical > 0) {
       const int node = node_of(in, content, element, 0);
       int& ref = mesh.vertex_ref[node];
       if (ref != 0 && ref != physical)
@@ -356,30 +399,45 @@ Mesh read_mesh(TokenReader& in) {
       ref = physical;
     }
   }
-  if (mesh.triangles.empty())
+  if (mesh.cells.empty())
     throw InputError(in.file(), 0, "",
                      "no triangles (gmsh saves only the elements of physical groups when there "
                      "are any: is the surface in a Physical Surface?)");
 
-  orient_triangles_of_file(mesh, in.file(), triangle_lines);
-  if (const auto [first, second] = side_with_two_references(mesh); second >= 0)
+  orient_cells_of_file(mesh, in.file(), triangle_lines);
+  if (const auto [first, second] = side_with_two_references(mesh); second >= 0) {
+    if (mesh.dim == 2)
+      throw InputError(
+          in.file(), edge_lines[second], "",
+          "the side from node tag " +
+              std::to_string(content.node_tags[mesh.facets[second].node[0]]) + " to node tag " +
+              std::to_string(content.node_tags[mesh.facets[second].node[1]]) +
+              " carries references " + std::to_string(mesh.facets[first].ref) + " (line " +
+              std::to_string(edge_lines[first]) + ") and " +
+              std::to_string(mesh.facets[second].ref) +
+              ": a side carries one reference (put its line element in one physical group)");
+    throw InputError(in.file(), edge_lines[second], "",
+                     "the face of this triangle carries references " +
+                         std::to_string(mesh.facets[first].ref) + " (line " +
+                         std::to_string(edge_lines[first]) + ") and " +
+                         std::to_string(mesh.facets[second].ref) +
+                         ": a face carries one reference (put its surface in one physical group)");
+  }
+  if (const int bad = orient_facets(mesh); bad >= 0)
     throw InputError(
-        in.file(), edge_lines[second], "",
-        "the side from node tag " + std::to_string(content.node_tags[mesh.edges[second].a]) +
-            " to node tag " + std::to_string(content.node_tags[mesh.edges[second].b]) +
-            " carries references " + std::to_string(mesh.edges[first].ref) + " (line " +
-            std::to_string(edge_lines[first]) + ") and " + std::to_string(mesh.edges[second].ref) +
-            ": a side carries one reference (put its line element in one physical "
-            "group)");
-  if (const int bad = orient_boundary_edges(mesh); bad >= 0)
-    throw InputError(in.file(), edge_lines[bad], "",
-                     "line element with physical tag " + std::to_string(mesh.edges[bad].ref) +
-                         " is not a side of any triangle");
+        in.file(), edge_lines[bad], "",
+        mesh.dim == 2 ? "line element with physical tag " + std::to_string(mesh.facets[bad].ref) +
+                            " is not a side of any triangle"
+                      : "triangle with physical tag " + std::to_string(mesh.facets[bad].ref) +
+                            " is not a face of any tetrahedron: mixed dimensions (a "
+                            "surface beside the volume) are not a body; put only "
+                            "the volume's boundary in physical surfaces");
   const std::vector<int> renumber = drop_unused_nodes(mesh);
   std::vector<long> dropped;
   for (std::size_t i = 0; i < renumber.size(); ++i)
     if (renumber[i] < 0) dropped.push_back(content.node_tags[i]);
-  warn_entities(in.file(), "node(s) that no triangle uses (node tags)", dropped, "dropped");
+  warn_entities(in.file(), std::string("node(s) that no ") + mesh.cell_name() + " uses (node tags)",
+                dropped, "dropped");
   check_mesh(mesh, in.file());
   return mesh;
 }

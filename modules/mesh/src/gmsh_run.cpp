@@ -72,7 +72,7 @@ std::string last_lines(const std::filesystem::path& path, int count) {
 } // namespace
 
 Mesh mesh_with_gmsh(const std::string& name, const std::string& script,
-                    const std::vector<std::pair<std::string, double>>& numbers) {
+                    const std::vector<std::pair<std::string, double>>& numbers, int dim) {
   const TemporaryFolder folder("gmsh");
   const auto geo = folder.path() / (name + ".geo");
   const auto msh = folder.path() / (name + ".msh");
@@ -83,8 +83,15 @@ Mesh mesh_with_gmsh(const std::string& name, const std::string& script,
     SIG_VERIFY(out, "cannot write " << geo.string());
   }
   const char* binary = std::getenv("SIG_GMSH");
-  std::vector<std::string> arguments{
-      binary ? binary : "gmsh", geo.string(), "-2", "-format", "msh41", "-nt", "1", "-v", "2"};
+  std::vector<std::string> arguments{binary ? binary : "gmsh",
+                                     geo.string(),
+                                     dim == 3 ? "-3" : "-2",
+                                     "-format",
+                                     "msh41",
+                                     "-nt",
+                                     "1",
+                                     "-v",
+                                     "2"};
   for (const auto& [key, value] : numbers) {
     std::ostringstream text;
     text << std::setprecision(17) << value;

@@ -9,10 +9,10 @@
 
 namespace sig {
 
-/// `gmsh NAME.geo -2 -format msh41 -setnumber KEY VALUE ...` with `script` as NAME.geo, in a
+/// `gmsh NAME.geo -DIM -format msh41 -setnumber KEY VALUE ...` with `script` as NAME.geo, in a
 /// scratch folder of the case (core/temporary_folder.hpp); the binary is $SIG_GMSH or `gmsh`,
 /// killed with the stage. Throws sig::Error with the end of gmsh's log on failure.
 Mesh mesh_with_gmsh(const std::string& name, const std::string& script,
-                    const std::vector<std::pair<std::string, double>>& numbers);
+                    const std::vector<std::pair<std::string, double>>& numbers, int dim = 2);
 
 } // namespace sig

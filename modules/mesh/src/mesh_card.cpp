@@ -29,6 +29,10 @@ const std::set<std::string>& fields_of(const std::string& generator) {
        {"centre", "center", "r_in", "r_out", "n", "layers", "gamma1_above", "gamma3_below"}},
       {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
       {"square", {"lx", "nx", "refs", "pattern"}},
+      {"box", {"lx", "ly", "lz", "h"}},
+      {"half_ball", {"r", "h"}},
+      {"ball", {"centre", "center", "r", "h"}},
+      {"cylinder", {"r", "l", "h"}},
       {"file", {"coincident"}},
   };
   return fields.at(generator);
@@ -67,21 +71,25 @@ void verify_span(const Card& card, const std::string& field, double span) {
   }
 }
 
-// centre= as CONTACT and INITIAL spell it; center= is its old spelling, read alike.
-Eigen::Vector2d centre(const Card& card) {
+// centre= as CONTACT and INITIAL spell it; center= is its old spelling, read alike. A 3D shape
+// (dim = 3) takes three coordinates, the origin when the card gives none (the schema's default
+// is the plane's 0,0).
+Point centre(const Card& card, int dim) {
   if (card.has("centre") && card.has("center"))
     card.fail("center", "give the centre once: centre= (center= is its old spelling)");
+  if (dim == 3 && !card.has("centre") && !card.has("center")) return Point(0, 0, 0);
   const char* field = card.has("center") ? "center" : "centre";
   const std::vector<double> c = card.reals(field);
-  if (c.size() != 2)
-    card.fail(field, std::string("expects two coordinates, e.g. ") + field + "=0,10");
-  return {c[0], c[1]};
+  if (static_cast<int>(c.size()) != dim)
+    card.fail(field, dim == 3 ? std::string("expects three coordinates, e.g. ") + field + "=0,0,10"
+                              : std::string("expects two coordinates, e.g. ") + field + "=0,10");
+  return dim == 3 ? Point(c[0], c[1], c[2]) : Point(c[0], c[1]);
 }
 
 // The centre of a shape of `radius` whose nodes stay within the deck's magnitudes (a centre of
 // 1e30 put the disc's nodes beyond them, blamed on generator=).
-Eigen::Vector2d centre_within(const Card& card, double radius) {
-  const Eigen::Vector2d c = centre(card);
+Point centre_within(const Card& card, double radius, int dim = 2) {
+  const Point c = centre(card, dim);
   const double farthest = c.cwiseAbs().maxCoeff() + radius;
   if (const std::string excess = magnitude_excess(farthest); !excess.empty()) {
     std::ostringstream what;
@@ -133,6 +141,32 @@ Mesh mesh_from_file(const Card& card, const std::filesystem::path& folder) {
 }
 
 Mesh generate(const Card& card, const std::string& generator) {
+  if (generator == "ball") {
+    const double r = card.real("R"), h = card.real("h");
+    verify_span(card, "R", 2 * std::sqrt(3.0) * r);
+    verify_size(card, "h", 4.2 * std::pow(r / h + 1, 3));
+    return ball(centre_within(card, r, 3), r, h);
+  }
+  if (generator == "cylinder") {
+    const double r = card.real("R"), l = card.real("L"), h = card.real("h");
+    verify_span(card, "R", std::sqrt(8 * r * r + l * l));
+    verify_size(card, "h", 3.2 * std::pow(r / h + 1, 2) * (l / h + 1));
+    return cylinder(r, l, h);
+  }
+  if (generator == "box" || generator == "half_ball") {
+    // About 6 / h^3 tetrahedra and 1 / h^3 nodes per unit volume (gmsh's Delaunay).
+    const double h = card.real("h");
+    if (generator == "box") {
+      const double lx = card.real("lx"), ly = card.real("ly"), lz = card.real("lz");
+      verify_span(card, "lx", std::sqrt(lx * lx + ly * ly + lz * lz));
+      verify_size(card, "h", (lx / h + 1) * (ly / h + 1) * (lz / h + 1));
+      return box(lx, ly, lz, h);
+    }
+    const double r = card.real("R");
+    verify_span(card, "R", 3 * r);
+    verify_size(card, "h", 2.1 * std::pow(r / h + 1, 3));
+    return half_ball(r, h);
+  }
   if (generator == "half_disc" || generator == "disc") {
     const double r = card.real("R");
     // The disc's box is 2R x 2R, the half disc's 2R x R.
@@ -194,7 +228,8 @@ Mesh mesh_from_card(const Card& card, const std::filesystem::path& folder) {
   std::string generator = card.has("file")
                               ? "file"
                               : card.choice("generator", {"half_disc", "half-disc", "disc", "ring",
-                                                          "rectangle", "square"});
+                                                          "rectangle", "square", "box", "half_ball",
+                                                          "half-ball", "ball", "cylinder"});
   std::replace(generator.begin(), generator.end(), '-', '_');
   const std::set<std::string>& allowed = fields_of(generator);
   for (const auto& [name, value] : card.fields) {

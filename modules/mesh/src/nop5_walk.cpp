@@ -1,6 +1,7 @@
 #include "nop5_walk.hpp"
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "mesh/topology.hpp"
 
 #include <cstdlib>
@@ -12,19 +13,24 @@ namespace {
 
 struct ElementShape {
   const char* name;
-  int vertices, edges;
+  int vertices, edges, faces;
 };
 
-ElementShape shape_of(std::int64_t ncge, const std::string& where) {
+ElementShape shape_of(std::int64_t ncge, int ndim, const std::string& where) {
+  if (ndim == 3) {
+    if (ncge == 5) return {"tetrahedron", 4, 6, 4};
+    throw Error(where + ": element type NCGE = " + std::to_string(ncge) +
+                " is not read in a 3D mesh (NDIM = 3): the model is P1 tetrahedra (NCGE = 5)");
+  }
   switch (ncge) {
   case 1:
-    return {"point", 1, 0};
+    return {"point", 1, 0, 0};
   case 2:
-    return {"segment", 2, 1};
+    return {"segment", 2, 1, 0};
   case 3:
-    return {"triangle", 3, 3};
+    return {"triangle", 3, 3, 0};
   case 4:
-    return {"quadrilateral", 4, 4};
+    return {"quadrilateral", 4, 4, 0};
   default:
     throw Error(where + ": element type NCGE = " + std::to_string(ncge) +
                 " is not a 2D element (1 point, 2 segment, 3 triangle, 4 quadrilateral)");
@@ -41,9 +47,12 @@ int reference(std::int64_t ref, const std::string& where) {
 /// Builds the Mesh while NOP5 is walked: references checked for consistency, edges kept once.
 class MeshBuilder {
 public:
-  MeshBuilder(std::vector<double> coordinates, int np) {
+  MeshBuilder(std::vector<double> coordinates, int np, int ndim) {
+    mesh.dim = ndim;
     for (int i = 0; i < np; ++i)
-      mesh.nodes.emplace_back(coordinates[2 * i], coordinates[2 * i + 1]);
+      mesh.nodes.push_back(
+          ndim == 3 ? Point(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2])
+                    : Point(coordinates[2 * i], coordinates[2 * i + 1]));
     mesh.vertex_ref.assign(np, 0);
   }
 
@@ -64,18 +73,18 @@ public:
     SIG_VERIFY(it->second == r, where << ": edge " << a + 1 << "-" << b + 1 << " has reference "
                                       << r << " here but " << it->second
                                       << " in an earlier element");
-    if (fresh) mesh.edges.push_back({a, b, r});
+    if (fresh) mesh.facets.push_back({{a, b}, r});
   }
 
   /// Triangle with the references of its sides (v0,v1), (v1,v2), (v2,v0); made
   /// counter-clockwise, the sides keeping the direction they have in it.
   void triangle(std::array<int, 3> v, std::array<std::int64_t, 3> side_ref, int subdomain,
                 long element, const std::string& where) {
-    mesh.triangles.push_back(v);
+    mesh.cells.push_back(v);
     mesh.subdomain.push_back(subdomain);
-    const bool clockwise = signed_double_area(mesh, mesh.num_triangles() - 1) < 0;
+    const bool clockwise = signed_double_area(mesh, mesh.num_cells() - 1) < 0;
     if (clockwise) {
-      std::swap(mesh.triangles.back()[1], mesh.triangles.back()[2]);
+      std::swap(mesh.cells.back()[1], mesh.cells.back()[2]);
       flipped.push_back(element);
     }
     for (int j = 0; j < 3; ++j) {
@@ -84,11 +93,34 @@ public:
     }
   }
 
+  /// Tetrahedron with the references of its faces in MODULEF's local numbering
+  /// (outward_facets, topology.cpp), made positively oriented; the faces are oriented outward
+  /// once every tetrahedron is known (orient_facets).
+  void tetrahedron(const Simplex& v, const std::array<std::int64_t, 4>& face_ref, int subdomain,
+                   long element, const std::string& where) {
+    const std::vector<Simplex> faces = outward_facets(v);
+    for (int j = 0; j < 4; ++j) {
+      const int r = reference(face_ref[j], where);
+      if (r == 0) continue;
+      const auto [it, fresh] = face_refs_.emplace(facet_key(faces[j]), r);
+      SIG_VERIFY(it->second == r, where << ": face " << j + 1 << " has reference " << r
+                                        << " here but " << it->second << " in an earlier element");
+      if (fresh) mesh.facets.push_back({faces[j], r});
+    }
+    mesh.cells.push_back(v);
+    mesh.subdomain.push_back(subdomain);
+    if (signed_cell_determinant(mesh, mesh.num_cells() - 1) < 0) {
+      std::swap(mesh.cells.back()[2], mesh.cells.back()[3]);
+      flipped.push_back(element);
+    }
+  }
+
   Mesh mesh;
-  std::vector<long> flipped; ///< NOP5 elements that were clockwise
+  std::vector<long> flipped; ///< NOP5 elements that were clockwise (left-handed in 3D)
 
 private:
   std::unordered_map<std::uint64_t, int> edge_refs_;
+  std::unordered_map<FacetKey, int, FacetKeyHash> face_refs_;
 };
 
 } // namespace
@@ -97,9 +129,10 @@ private:
 Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int64_t, 27>& nop2,
                std::vector<double> coordinates, const std::string& file) {
   const int np = static_cast<int>(nop2[word::NP]);
-  MeshBuilder build(std::move(coordinates), np);
+  const int ndim = static_cast<int>(nop2[word::NDIM]);
+  MeshBuilder build(std::move(coordinates), np, ndim);
   std::size_t k = 0;
-  std::int64_t triangles = 0, quadrilaterals = 0;
+  std::int64_t triangles = 0, quadrilaterals = 0, tetrahedra = 0, edge_refs_dropped = 0;
   for (std::int64_t e = 1; e <= nop2[word::NE]; ++e) {
     const std::string where =
         file + ": NOP5 element " + std::to_string(e) + " (word " + std::to_string(k + 1) + ")";
@@ -109,7 +142,7 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
       return nop5[k++];
     };
     const std::int64_t ncge = next(), nmae = next(), ndsde = next(), nno = next();
-    const ElementShape shape = shape_of(ncge, where);
+    const ElementShape shape = shape_of(ncge, ndim, where);
     SIG_VERIFY(nno >= shape.vertices, where << ": " << nno << " nodes for a " << shape.name);
     std::vector<std::int64_t> vertices;
     for (std::int64_t j = 0; j < nno; ++j)
@@ -129,15 +162,27 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
       v[j] = static_cast<int>(vertices[j] - 1);
     }
     std::array<std::int64_t, 4> edge{}; // references of local edges j -> j+1
+    std::array<std::int64_t, 4> face{}; // references of local faces (tetrahedra)
     if (nmae > 0) {
       const std::int64_t ining = next();
-      const int expected = ining == 2 ? shape.edges + shape.vertices : shape.vertices;
-      SIG_VERIFY(ining == 2 || ining == 3,
+      const int expected = ining == 1   ? shape.faces + shape.edges + shape.vertices
+                           : ining == 2 ? shape.edges + shape.vertices
+                                        : shape.vertices;
+      SIG_VERIFY(ining == 2 || ining == 3 || (ining == 1 && ndim == 3),
                  where << ": INING = " << ining
-                       << " is not supported (2 = edge and vertex references, 3 = vertex)");
+                       << " is not supported (1 = face, edge and vertex references in 3D, 2 = "
+                          "edge and vertex references, 3 = vertex)");
       SIG_VERIFY(nmae == 1 + expected, where << ": NMAE = " << nmae << " but INING = " << ining
                                              << " needs " << 1 + expected);
-      if (ining == 2) {
+      if (ining == 1) {
+        for (int j = 0; j < shape.faces; ++j)
+          face[j] = next();
+      }
+      if (ining <= 2 && ndim == 3) {
+        // A 3D mesh carries references on faces and vertices: an edge's is not kept.
+        for (int j = 0; j < shape.edges; ++j)
+          edge_refs_dropped += next() != 0;
+      } else if (ining == 2) {
         for (int j = 0; j < shape.edges; ++j)
           edge[j] = next();
       }
@@ -147,7 +192,10 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
     SIG_VERIFY((ndsde >= 1 || ncge < 3) && ndsde <= std::numeric_limits<int>::max(),
                where << ": sub-domain NDSDE = " << ndsde << " (must be >= 1)");
     const int subdomain = static_cast<int>(ndsde);
-    if (ncge == 3) {
+    if (ncge == 5) {
+      build.tetrahedron({v[0], v[1], v[2], v[3]}, face, subdomain, e, where);
+      ++tetrahedra;
+    } else if (ncge == 3) {
       build.triangle({v[0], v[1], v[2]}, {edge[0], edge[1], edge[2]}, subdomain, e, where);
       ++triangles;
     } else if (ncge == 4) { // split as FreeFem does: (1,2,3) + (3,4,1)
@@ -164,10 +212,17 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
              file << ": NOP2 announces " << nop2[word::NTRI] << " triangles and "
                   << nop2[word::NQUA] << " quadrilaterals, NOP5 holds " << triangles << " and "
                   << quadrilaterals);
+  SIG_VERIFY(tetrahedra == nop2[word::NTET], file << ": NOP2 announces " << nop2[word::NTET]
+                                                  << " tetrahedra, NOP5 holds " << tetrahedra);
+  if (edge_refs_dropped > 0)
+    log_warning(file + ": dropped " + std::to_string(edge_refs_dropped) +
+                " edge reference(s) of tetrahedra (a 3D mesh keeps face and vertex ones)");
   warn_entities(file, "clockwise NOP5 element(s) (element numbers)", build.flipped, "reoriented");
   Mesh mesh = std::move(build.mesh);
-  SIG_VERIFY(orient_boundary_edges(mesh) < 0,
+  SIG_VERIFY(orient_facets(mesh) < 0,
              file << ": NOP5: a referenced segment is not a side of any triangle");
+  if (ndim == 3 && mesh.cells.empty())
+    throw Error(file + ": NOP5 holds no tetrahedron: a 3D mesh (NDIM = 3) is made of them");
   return mesh;
 }
 

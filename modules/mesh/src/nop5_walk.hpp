@@ -19,6 +19,7 @@ enum Word {
   NSEG = 6,
   NTRI = 7,
   NQUA = 8,
+  NTET = 9,
   NSUP = 12,
   NP = 21,
   NTACOO = 26

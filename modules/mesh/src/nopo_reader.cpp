@@ -182,16 +182,16 @@ NopoFile parse_nopo_file(const std::string& file, const std::string& bytes) {
 
   // 3. Consistency of NOP2 with what this reader supports.
   const auto& n2 = result.nop2;
-  SIG_VERIFY(n2[word::NDIM] == 2,
-             file << ": NOP2: NDIM = " << n2[word::NDIM] << ", only 2D meshes are read");
+  SIG_VERIFY(n2[word::NDIM] == 2 || n2[word::NDIM] == 3,
+             file << ": NOP2: NDIM = " << n2[word::NDIM] << ", only 2D and 3D meshes are read");
   SIG_VERIFY(n2[word::NTACOO] <= 1, file << ": NOP2: NTACOO = " << n2[word::NTACOO]
                                          << ", only Cartesian coordinates are read");
   SIG_VERIFY(n2[word::NSUP] == 0, file << ": NOP2: super-elements are not supported");
   SIG_VERIFY(n2[word::NP] > 0 && n2[word::NP] <= max_mesh_nodes,
              file << ": NOP2: NP = " << n2[word::NP] << " points, not in 1.." << max_mesh_nodes);
-  SIG_VERIFY(l4 == 2 * n2[word::NP],
+  SIG_VERIFY(l4 == n2[word::NDIM] * n2[word::NP],
              file << ": NOP4 holds " << l4
-                  << " reals but NOP2 says NDIM * NP = " << 2 * n2[word::NP]);
+                  << " reals but NOP2 says NDIM * NP = " << n2[word::NDIM] * n2[word::NP]);
   SIG_VERIFY(n2[word::NE] > 0, file << ": NOP2: no element (NE = " << n2[word::NE] << ")");
 
   // 4. Elements and references.

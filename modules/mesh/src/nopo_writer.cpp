@@ -24,11 +24,11 @@ struct Nop5 {
 
 Nop5 build_nop5(const Mesh& mesh) {
   std::unordered_map<std::uint64_t, int> edge_ref;
-  for (const auto& e : mesh.edges)
-    edge_ref.emplace(edge_key(e.a, e.b), std::abs(e.ref));
+  for (const auto& e : mesh.facets)
+    edge_ref.emplace(edge_key(e.node[0], e.node[1]), std::abs(e.ref));
   Nop5 nop5;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const auto& tri = mesh.triangles[t];
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    const auto& tri = mesh.cells[t];
     std::array<std::int64_t, 3> e{}, v{};
     for (int j = 0; j < 3; ++j) {
       const auto it = edge_ref.find(edge_key(tri[j], tri[(j + 1) % 3]));
@@ -52,6 +52,49 @@ Nop5 build_nop5(const Mesh& mesh) {
       ++nop5.elements_with_refs;
     }
     const auto [lo, hi] = std::minmax({tri[0], tri[1], tri[2]});
+    nop5.largest_span = std::max<std::int64_t>(nop5.largest_span, hi - lo + 1);
+  }
+  return nop5;
+}
+
+/// NOP5 of a tetrahedral mesh (NCGE = 5). The references of a tetrahedron follow MODULEF's
+/// INING (MODULEF.md section 3.3): INING = 1 with its 4 face references in MODULEF's local face
+/// numbering (outward_facets, topology.cpp), its 6 edge references (0: edges carry none here)
+/// and its 4 vertex references; INING = 3 with the vertex references alone when no face of it
+/// carries one; nothing when none does.
+Nop5 build_nop5_tetrahedra(const Mesh& mesh) {
+  std::unordered_map<FacetKey, int, FacetKeyHash> face_ref;
+  for (const auto& f : mesh.facets)
+    face_ref.emplace(facet_key(f.node), std::abs(f.ref));
+  Nop5 nop5;
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    const auto& tet = mesh.cells[t];
+    std::array<std::int64_t, 4> f{}, v{};
+    const std::vector<Simplex> faces = outward_facets(tet);
+    for (int j = 0; j < 4; ++j) {
+      const auto it = face_ref.find(facet_key(faces[j]));
+      f[j] = it == face_ref.end() ? 0 : it->second;
+      v[j] = std::abs(mesh.vertex_ref[tet[j]]);
+    }
+    const bool faced = f[0] || f[1] || f[2] || f[3];
+    const bool vertices = v[0] || v[1] || v[2] || v[3];
+    const std::int64_t nmae = faced ? 15 : vertices ? 5 : 0;
+    nop5.words.insert(nop5.words.end(), {5, nmae, std::max(mesh.subdomain[t], 1), 4, tet[0] + 1,
+                                         tet[1] + 1, tet[2] + 1, tet[3] + 1});
+    if (faced) {
+      nop5.words.push_back(1);
+      nop5.words.insert(nop5.words.end(), f.begin(), f.end());
+      nop5.words.insert(nop5.words.end(), 6, 0);
+      nop5.largest_ref = std::max({nop5.largest_ref, f[0], f[1], f[2], f[3]});
+    } else if (vertices) {
+      nop5.words.push_back(3);
+    }
+    if (nmae > 0) {
+      nop5.words.insert(nop5.words.end(), v.begin(), v.end());
+      nop5.largest_ref = std::max({nop5.largest_ref, v[0], v[1], v[2], v[3]});
+      ++nop5.elements_with_refs;
+    }
+    const auto [lo, hi] = std::minmax({tet[0], tet[1], tet[2], tet[3]});
     nop5.largest_span = std::max<std::int64_t>(nop5.largest_span, hi - lo + 1);
   }
   return nop5;
@@ -98,9 +141,11 @@ std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOp
   const NopoLayout layout = nopo_layout(variant);
   const int wi = layout.int_bytes;
   const WordCodec codec{options.big_endian};
-  const Nop5 nop5 = build_nop5(mesh);
-  const std::int64_t nv = mesh.num_nodes(), nt = mesh.num_triangles();
-  const std::int64_t l4 = 2 * nv, l5 = static_cast<std::int64_t>(nop5.words.size());
+  const bool tetrahedra = mesh.dim == 3;
+  const Nop5 nop5 = tetrahedra ? build_nop5_tetrahedra(mesh) : build_nop5(mesh);
+  const std::int64_t nv = mesh.num_nodes(), nt = mesh.num_cells();
+  const std::int64_t ntri = tetrahedra ? 0 : nt, ntet = tetrahedra ? nt : 0;
+  const std::int64_t l4 = mesh.dim * nv, l5 = static_cast<std::int64_t>(nop5.words.size());
   SIG_VERIFY(wi == 8 || l5 <= std::numeric_limits<std::int32_t>::max(),
              "NOPO: the mesh is too large for 4-byte words");
   const int subdomain_max =
@@ -108,20 +153,21 @@ std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOp
 
   const std::int64_t ndsr = options.ndsr.value_or(nop5.largest_ref);
   const std::int64_t ndsd = std::max(1, subdomain_max);
-  // NOP2 (MODULEF.md section 3.2), the values FreeFem writes for 2D triangle meshes.
-  const std::array<std::int64_t, 27> nop2 = {2,    ndsr,
-                                             ndsd, 1,
-                                             nt,   0,
-                                             0,    nt,
-                                             0,    0,
-                                             0,    0,
-                                             0,    nop5.elements_with_refs,
-                                             nv,   0,
-                                             0,    0,
-                                             0,    0,
-                                             0,    nv,
-                                             2,    nop5.largest_span,
-                                             0,    l5,
+  // NOP2 (MODULEF.md section 3.2), the values FreeFem writes for 2D triangle meshes; in 3D
+  // NDIM = 3 and the elements counted as tetrahedra (NTET) instead of triangles (NTRI).
+  const std::array<std::int64_t, 27> nop2 = {mesh.dim, ndsr,
+                                             ndsd,     1,
+                                             nt,       0,
+                                             0,        ntri,
+                                             0,        ntet,
+                                             0,        0,
+                                             0,        nop5.elements_with_refs,
+                                             nv,       0,
+                                             0,        0,
+                                             0,        0,
+                                             0,        nv,
+                                             2,        nop5.largest_span,
+                                             0,        l5,
                                              1};
   auto words = [&](std::int64_t count, auto&& values) {
     std::string payload;
@@ -153,8 +199,8 @@ std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOp
   payload.clear(); // NOP4: the count is an integer word, the coordinates reals
   codec.put_int(payload, l4, wi);
   for (const auto& x : mesh.nodes) {
-    codec.put_real(payload, x.x(), layout.real_bytes);
-    codec.put_real(payload, x.y(), layout.real_bytes);
+    for (const double c : x)
+      codec.put_real(payload, c, layout.real_bytes);
   }
   append_fortran_record(file, payload, layout.marker_bytes, codec);
 

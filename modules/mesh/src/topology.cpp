@@ -13,108 +13,176 @@
 
 namespace sig {
 
-int orient_counter_clockwise(Mesh& mesh, std::vector<int>* flipped) {
+FacetKey facet_key(const Simplex& facet) {
+  FacetKey key{-1, -1, -1};
+  std::copy(facet.begin(), facet.end(), key.begin());
+  // Sorting two or three words by exchanges (std::sort on a part of the array trips GCC's
+  // -Warray-bounds).
+  if (key[0] > key[1]) std::swap(key[0], key[1]);
+  if (facet.size() == 3) {
+    if (key[1] > key[2]) std::swap(key[1], key[2]);
+    if (key[0] > key[1]) std::swap(key[0], key[1]);
+  }
+  return key;
+}
+
+// The local numbering of a tetrahedron's faces is MODULEF's (its user guide's reference
+// tetrahedron: face 1 = vertices 1 3 2, face 2 = 1 4 3, face 3 = 1 2 4, face 4 = 2 3 4; edges
+// 1-2, 2-3, 3-1, 1-4, 2-4, 3-4), so that the face references of a NOPO element (INING = 1)
+// are read and written in the order MODULEF's own modules expect. Each face so listed turns
+// counter-clockwise seen from outside a positively oriented tetrahedron (det[x1-x0, x2-x0,
+// x3-x0] > 0): its right-hand normal points out, as a traction's normal must. MODULEF.md has
+// verified the triangle's numbering on files; the tetrahedron's follows the guides and has not
+// been checked against a MODULEF file.
+std::vector<Simplex> outward_facets(const Simplex& cell) {
+  if (cell.size() == 3) return {{cell[0], cell[1]}, {cell[1], cell[2]}, {cell[2], cell[0]}};
+  return {{cell[0], cell[2], cell[1]},
+          {cell[0], cell[3], cell[2]},
+          {cell[0], cell[1], cell[3]},
+          {cell[1], cell[2], cell[3]}};
+}
+
+int orient_cells(Mesh& mesh, std::vector<int>* flipped) {
   int degenerate = -1;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const double area = signed_double_area(mesh, t);
-    if (area < 0) {
-      std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    const double measure = signed_cell_determinant(mesh, t);
+    if (measure < 0) {
+      // Swapping the last two nodes reverses the orientation of a triangle and a tetrahedron.
+      std::swap(mesh.cells[t][mesh.dim - 1], mesh.cells[t][mesh.dim]);
       if (flipped != nullptr) flipped->push_back(t);
     }
-    if (area == 0 && degenerate < 0) degenerate = t;
+    if (measure == 0 && degenerate < 0) degenerate = t;
   }
   return degenerate;
 }
 
-void orient_triangles_of_file(Mesh& mesh, const std::string& file, const std::vector<int>& lines) {
+void orient_cells_of_file(Mesh& mesh, const std::string& file, const std::vector<int>& lines) {
   std::vector<int> flipped;
-  if (const int flat = orient_counter_clockwise(mesh, &flipped); flat >= 0)
+  if (const int flat = orient_cells(mesh, &flipped); flat >= 0)
     throw InputError(file, lines[flat], "",
-                     "triangle " + std::to_string(flat + 1) +
-                         " (1-based) is degenerate: its three nodes are aligned (zero area)");
-  if (const TriangleOverlap overlap = find_overlap(mesh); overlap.second >= 0)
+                     mesh.dim == 2 ? "triangle " + std::to_string(flat + 1) +
+                                         " (1-based) is degenerate: its three nodes are aligned "
+                                         "(zero area)"
+                                   : "tetrahedron " + std::to_string(flat + 1) +
+                                         " (1-based) is degenerate: its four nodes are in one "
+                                         "plane (zero volume)");
+  if (const CellOverlap overlap = find_overlap(mesh); overlap.second >= 0)
     throw InputError(file, lines[overlap.second], "", overlap.what);
   std::vector<long> numbers;
   for (int t : flipped)
     numbers.push_back(t + 1);
-  warn_entities(file, "clockwise triangle(s) (1-based, in file order)", numbers, "reoriented");
+  warn_entities(file,
+                mesh.dim == 2 ? "clockwise triangle(s) (1-based, in file order)"
+                              : "left-handed tetrahedra (1-based, in file order)",
+                numbers, "reoriented");
 }
 
-TriangleOverlap find_overlap(const Mesh& mesh) {
-  // Counter-clockwise triangles that tile a domain run through each interior side once in each
-  // direction: a directed side met twice belongs to two triangles on the same side of it.
-  std::unordered_map<std::uint64_t, int> directed; // (from, to) -> triangle
-  directed.reserve(3 * mesh.triangles.size());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    for (int j = 0; j < 3; ++j) {
-      const std::uint64_t from = tri[j], to = tri[(j + 1) % 3];
-      const auto [it, fresh] = directed.try_emplace((from << 32) | to, t);
+namespace {
+
+/// A facet with its orientation: an edge as it is (from, to); a triangle with its nodes rotated
+/// so that the smallest comes first (a rotation keeps the triangle's orientation, the opposite
+/// face differs).
+FacetKey directed_key(const Simplex& f) {
+  FacetKey key{-1, -1, -1};
+  const int n = f.size();
+  if (n == 2) return {f[0], f[1], -1};
+  const int first = static_cast<int>(std::min_element(f.begin(), f.end()) - f.begin());
+  for (int j = 0; j < n; ++j)
+    key[j] = f[(first + j) % n];
+  return key;
+}
+
+/// The nodes in increasing order, by insertion (std::sort on a Simplex trips GCC's
+/// -Warray-bounds: it cannot see that size() <= 4).
+Simplex sorted(Simplex nodes) {
+  for (int i = 1; i < nodes.size(); ++i)
+    for (int j = i; j > 0 && nodes[j - 1] > nodes[j]; --j)
+      std::swap(nodes[j - 1], nodes[j]);
+  return nodes;
+}
+
+std::string node_list(Simplex nodes) {
+  nodes = sorted(nodes);
+  std::string list;
+  for (int v : nodes)
+    list += (list.empty() ? "" : ", ") + std::to_string(v + 1);
+  return list;
+}
+
+} // namespace
+
+CellOverlap find_overlap(const Mesh& mesh) {
+  // Positively oriented cells that tile a domain run through each interior facet once in each
+  // orientation: an oriented facet met twice belongs to two cells on the same side of it.
+  std::unordered_map<FacetKey, int, FacetKeyHash> directed; // oriented facet -> cell
+  directed.reserve((mesh.dim + 1) * mesh.cells.size());
+  const std::string cells = mesh.dim == 3 ? "tetrahedra" : "triangles";
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    for (const Simplex& f : outward_facets(mesh.cells[t])) {
+      const auto [it, fresh] = directed.try_emplace(directed_key(f), t);
       if (fresh) continue;
       const int other = it->second;
-      std::array<int, 3> a = mesh.triangles[other], b = tri;
-      std::sort(a.begin(), a.end());
-      std::sort(b.begin(), b.end());
-      const std::string pair = "triangles " + std::to_string(other + 1) + " and " +
-                               std::to_string(t + 1) + " (1-based) ";
+      const Simplex a = sorted(mesh.cells[other]), b = sorted(mesh.cells[t]);
+      const std::string pair =
+          cells + " " + std::to_string(other + 1) + " and " + std::to_string(t + 1) + " (1-based) ";
       if (a == b)
         return {other, t,
-                pair + "are one triangle listed twice (nodes " + std::to_string(a[0] + 1) + ", " +
-                    std::to_string(a[1] + 1) + ", " + std::to_string(a[2] + 1) +
+                pair + "are one " + mesh.cell_name() + " listed twice (nodes " + node_list(a) +
                     "): the body would count twice there"};
+      if (mesh.dim == 2)
+        return {other, t,
+                pair + "overlap: both lie on the same side of their common side from node " +
+                    std::to_string(f[0] + 1) + " to node " + std::to_string(f[1] + 1)};
       return {other, t,
-              pair + "overlap: both lie on the same side of their common side from node " +
-                  std::to_string(from + 1) + " to node " + std::to_string(to + 1)};
+              pair + "overlap: both lie on the same side of their common face of nodes " +
+                  node_list(f)};
     }
   }
   return {};
 }
 
 std::pair<int, int> side_with_two_references(const Mesh& mesh) {
-  std::unordered_map<std::uint64_t, int> first; // side -> first edge on it
-  for (int e = 0; e < static_cast<int>(mesh.edges.size()); ++e) {
-    const BoundaryEdge& edge = mesh.edges[e];
-    const auto [it, fresh] = first.try_emplace(edge_key(edge.a, edge.b), e);
-    if (!fresh && mesh.edges[it->second].ref != edge.ref) return {it->second, e};
+  std::unordered_map<FacetKey, int, FacetKeyHash> first; // side -> first facet on it
+  for (int e = 0; e < static_cast<int>(mesh.facets.size()); ++e) {
+    const Facet& facet = mesh.facets[e];
+    const auto [it, fresh] = first.try_emplace(facet_key(facet.node), e);
+    if (!fresh && mesh.facets[it->second].ref != facet.ref) return {it->second, e};
   }
   return {-1, -1};
 }
 
-int orient_boundary_edges(Mesh& mesh) {
+int orient_facets(Mesh& mesh) {
   struct Side {
-    int from, to, count;
+    Simplex outward; ///< as in the first cell met
+    int count;
   };
-  std::unordered_map<std::uint64_t, Side> sides;
-  sides.reserve(3 * mesh.triangles.size());
-  for (const auto& tri : mesh.triangles) {
-    for (int j = 0; j < 3; ++j) {
-      const int a = tri[j], b = tri[(j + 1) % 3];
-      auto [it, fresh] = sides.try_emplace(edge_key(a, b), Side{a, b, 0});
+  std::unordered_map<FacetKey, Side, FacetKeyHash> sides;
+  sides.reserve((mesh.dim + 1) * mesh.cells.size());
+  for (const auto& cell : mesh.cells) {
+    for (const Simplex& f : outward_facets(cell)) {
+      auto [it, fresh] = sides.try_emplace(facet_key(f), Side{f, 0});
       ++it->second.count;
     }
   }
-  std::vector<BoundaryEdge> kept;
-  kept.reserve(mesh.edges.size());
-  std::unordered_set<std::uint64_t> seen;
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-    BoundaryEdge edge = mesh.edges[e];
-    const auto it = sides.find(edge_key(edge.a, edge.b));
+  std::vector<Facet> kept;
+  kept.reserve(mesh.facets.size());
+  std::unordered_set<FacetKey, FacetKeyHash> seen;
+  for (std::size_t e = 0; e < mesh.facets.size(); ++e) {
+    Facet facet = mesh.facets[e];
+    const auto it = sides.find(facet_key(facet.node));
     if (it == sides.end()) return static_cast<int>(e);
     if (!seen.insert(it->first).second) continue;
-    if (it->second.count == 1) {
-      edge.a = it->second.from;
-      edge.b = it->second.to;
-    }
-    kept.push_back(edge);
+    if (it->second.count == 1) facet.node = it->second.outward;
+    kept.push_back(facet);
   }
-  mesh.edges = std::move(kept);
+  mesh.facets = std::move(kept);
   return -1;
 }
 
 std::vector<int> drop_unused_nodes(Mesh& mesh) {
   std::vector<int> renumber(mesh.nodes.size(), -1);
-  for (const auto& tri : mesh.triangles) {
-    for (int v : tri)
+  for (const auto& cell : mesh.cells) {
+    for (int v : cell)
       renumber[v] = 0;
   }
   int next = 0;
@@ -127,13 +195,13 @@ std::vector<int> drop_unused_nodes(Mesh& mesh) {
   }
   mesh.nodes.resize(next);
   if (!mesh.vertex_ref.empty()) mesh.vertex_ref.resize(next);
-  for (auto& tri : mesh.triangles) {
-    for (int& v : tri)
+  for (auto& cell : mesh.cells) {
+    for (int& v : cell)
       v = renumber[v];
   }
-  for (auto& edge : mesh.edges) {
-    edge.a = renumber[edge.a];
-    edge.b = renumber[edge.b];
+  for (auto& facet : mesh.facets) {
+    for (int& v : facet.node)
+      v = renumber[v];
   }
   return renumber;
 }
@@ -141,8 +209,8 @@ std::vector<int> drop_unused_nodes(Mesh& mesh) {
 std::vector<std::pair<int, int>> coincident_nodes(const Mesh& mesh) {
   std::vector<std::pair<int, int>> pairs;
   if (mesh.nodes.empty()) return pairs;
-  Eigen::Vector2d low = mesh.nodes.front(), high = low;
-  for (const Eigen::Vector2d& x : mesh.nodes) {
+  Point low = mesh.nodes.front(), high = low;
+  for (const Point& x : mesh.nodes) {
     low = low.cwiseMin(x);
     high = high.cwiseMax(x);
   }

@@ -38,6 +38,7 @@ struct States {
 States read_states(const std::filesystem::path& dir) {
   States s;
   s.mesh = sig::read_nopo(dir / "case.nopo");
+  sig::require_2d(s.mesh, "sig-error", "error norm");
   const auto ndof = static_cast<std::size_t>(2 * s.mesh.num_nodes());
   const auto b = dir / "case.b", hist = dir / "case.hist";
   const bool static_case = std::filesystem::exists(b);

@@ -101,6 +101,10 @@ int main(int argc, char** argv) {
     //    in case.hist, one .vtu each; its energies are in energy.csv already.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
+    // A 3D case is a static one without contact for now (issue 26): the stages before refused
+    // the rest.
+    if (datafile.find("TIME") != nullptr)
+      sig::require_2d(mesh, "sig-post", "time stepping (TIME card)");
     const std::string stem = output ? output->file_name("name", datafile.stem()) : datafile.stem();
     std::vector<std::filesystem::path> written;
     if (datafile.find("TIME") != nullptr) {
@@ -126,6 +130,7 @@ int main(int argc, char** argv) {
     sig::Ds cont;
     const bool contact_case = datafile.find("CONTACT") != nullptr;
     if (contact_case) {
+      sig::require_2d(mesh, "sig-post", "contact output (CONTACT card)");
       cont = sig::read_ds(args.ds_path("cont"), "CONT");
       contact = sig::contact_rows(mesh, cont, solution);
     }
@@ -138,7 +143,9 @@ int main(int argc, char** argv) {
                                                        contact_case ? &cont : nullptr, data))
         written.push_back(file);
     } else if (write_vtk) {
-      const sig::SolutionFields fields = sig::solution_fields(mesh, u, materials, contact);
+      const sig::SolutionFields fields = mesh.dim == 3
+                                             ? sig::solution_fields_3d(mesh, u, materials)
+                                             : sig::solution_fields(mesh, u, materials, contact);
       const std::string vtu = stem + "_0000.vtu";
       const bool converged = solution.integer("converged") != 0;
       sig::write_vtu(
@@ -170,7 +177,8 @@ int main(int argc, char** argv) {
                                               << " values, case.b's 'u' " << u.size());
       for (std::size_t i = 0; i < load.size(); ++i)
         work += load[i] * u[i];
-      const double strain = sig::strain_energy(mesh, u, materials);
+      const double strain = mesh.dim == 3 ? sig::strain_energy_3d(mesh, u, materials)
+                                          : sig::strain_energy(mesh, u, materials);
       summary.set("energy",
                   sig::Json(sig::Json::Object{
                       {"strain", strain}, {"external_work", work}, {"potential", strain - work}}));

@@ -121,27 +121,30 @@ Json dump_ds_json(const Ds& ds, const DumpValues& values) {
 
 std::string dump_mesh_text(const Mesh& mesh, const std::string& title) {
   std::ostringstream out;
+  const std::string cells = mesh.dim == 3 ? "tetrahedra" : "triangles";
+  const std::string facets = mesh.dim == 3 ? "faces" : "edges";
   out << "NOPO mesh  title: " << title << "\n"
-      << "  nodes " << mesh.num_nodes() << "  triangles " << mesh.num_triangles()
-      << "  referenced edges " << mesh.edges.size() << "\n";
+      << (mesh.dim == 3 ? "  3D" : "") << "  nodes " << mesh.num_nodes() << "  " << cells << " "
+      << mesh.num_cells() << "  referenced " << facets << " " << mesh.facets.size() << "\n";
   out << "  references";
   for (int r : mesh.references()) {
-    out << "  " << r << " (" << mesh.edges_with_ref(r).size() << " edges, "
+    out << "  " << r << " (" << mesh.facets_with_ref(r).size() << " " << facets << ", "
         << mesh.nodes_with_ref(r).size() << " nodes)";
   }
   out << "\n  sub-domains";
   for (int s : mesh.subdomains()) {
-    out << "  " << s << " (" << std::count(mesh.subdomain.begin(), mesh.subdomain.end(), s)
-        << " triangles)";
+    out << "  " << s << " (" << std::count(mesh.subdomain.begin(), mesh.subdomain.end(), s) << " "
+        << cells << ")";
   }
   if (!mesh.nodes.empty()) {
-    Eigen::Vector2d lo = mesh.nodes.front(), hi = mesh.nodes.front();
+    Point lo = mesh.nodes.front(), hi = mesh.nodes.front();
     for (const auto& p : mesh.nodes) {
       lo = lo.cwiseMin(p);
       hi = hi.cwiseMax(p);
     }
-    out << "\n  bounding box [" << lo.x() << ", " << hi.x() << "] x [" << lo.y() << ", " << hi.y()
-        << "]";
+    out << "\n  bounding box";
+    for (Eigen::Index k = 0; k < lo.size(); ++k)
+      out << (k ? " x [" : " [") << lo[k] << ", " << hi[k] << "]";
   }
   out << "\n";
   return out.str();
@@ -152,24 +155,36 @@ Json dump_mesh_json(const Mesh& mesh, const std::string& title, bool with_values
   j.set("kind", "NOPO");
   j.set("title", title);
   j.set("nodes", mesh.num_nodes());
-  j.set("triangles", mesh.num_triangles());
-  j.set("boundary_edges", static_cast<long>(mesh.edges.size()));
+  if (mesh.dim == 3) {
+    // A 3D mesh says so, and names its cells and facets for what they are.
+    j.set("dim", 3);
+    j.set("tetrahedra", mesh.num_cells());
+    j.set("boundary_faces", static_cast<long>(mesh.facets.size()));
+  } else {
+    j.set("triangles", mesh.num_cells());
+    j.set("boundary_edges", static_cast<long>(mesh.facets.size()));
+  }
   j.set("references", Json::array_of(mesh.references()));
   j.set("subdomains", Json::array_of(mesh.subdomains()));
   if (!with_values) return j;
   // The mesh itself, numbered from 1 as in the files.
   std::vector<double> xy;
-  for (const Eigen::Vector2d& x : mesh.nodes)
-    xy.insert(xy.end(), {x.x(), x.y()});
-  std::vector<long> triangles, edges;
-  for (const auto& t : mesh.triangles)
-    triangles.insert(triangles.end(), {t[0] + 1L, t[1] + 1L, t[2] + 1L});
-  for (const BoundaryEdge& e : mesh.edges)
-    edges.insert(edges.end(), {e.a + 1L, e.b + 1L, static_cast<long>(e.ref)});
+  for (const Point& x : mesh.nodes)
+    xy.insert(xy.end(), x.begin(), x.end());
+  std::vector<long> cells, facets;
+  for (const auto& c : mesh.cells)
+    for (int v : c)
+      cells.push_back(v + 1L);
+  for (const Facet& f : mesh.facets) {
+    for (int v : f.node)
+      facets.push_back(v + 1L);
+    facets.push_back(f.ref);
+  }
+  const std::string cell = mesh.dim == 3 ? "tetrahedron" : "triangle";
   j.set("coordinates", Json::array_of(xy));
-  j.set("triangle_nodes", Json::array_of(triangles));
-  j.set("triangle_subdomain", Json::array_of(mesh.subdomain));
-  j.set("edges", Json::array_of(edges));
+  j.set(cell + "_nodes", Json::array_of(cells));
+  j.set(cell + "_subdomain", Json::array_of(mesh.subdomain));
+  j.set(mesh.dim == 3 ? "faces" : "edges", Json::array_of(facets));
   j.set("vertex_ref", Json::array_of(mesh.vertex_ref));
   return j;
 }

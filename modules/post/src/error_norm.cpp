@@ -17,7 +17,7 @@ namespace {
 
 /// Barycentric coordinates of x in triangle t.
 Eigen::Vector3d barycentric(const Mesh& mesh, int triangle, const Eigen::Vector2d& x) {
-  const auto& tri = mesh.triangles[triangle];
+  const auto& tri = mesh.cells[triangle];
   const Eigen::Vector2d a = mesh.nodes[tri[0]], b = mesh.nodes[tri[1]], c = mesh.nodes[tri[2]];
   const Eigen::Vector2d e = b - a, f = c - a, r = x - a;
   const double det = e.x() * f.y() - e.y() * f.x(); // > 0: a checked mesh is counter-clockwise
@@ -31,20 +31,20 @@ class TriangleBins {
 public:
   explicit TriangleBins(const Mesh& mesh) : mesh_(mesh) {
     lo_ = hi_ = mesh.nodes.front();
-    for (const Eigen::Vector2d& x : mesh.nodes) {
+    for (const Point& x : mesh.nodes) {
       lo_ = lo_.cwiseMin(x);
       hi_ = hi_.cwiseMax(x);
     }
     const Eigen::Vector2d size = (hi_ - lo_).cwiseMax(1e-300);
-    const double bins = std::max(1, mesh.num_triangles());
+    const double bins = std::max(1, mesh.num_cells());
     cell_ = std::sqrt(size.x() * size.y() / bins);
     if (!(cell_ > 0)) cell_ = std::max(size.x(), size.y());
     nx_ = std::max(1, static_cast<int>(std::ceil(size.x() / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
     bins_.resize(static_cast<std::size_t>(nx_) * ny_);
-    for (int t = 0; t < mesh.num_triangles(); ++t) {
-      Eigen::Vector2d a = mesh.nodes[mesh.triangles[t][0]], b = a;
-      for (int v : mesh.triangles[t]) {
+    for (int t = 0; t < mesh.num_cells(); ++t) {
+      Eigen::Vector2d a = mesh.nodes[mesh.cells[t][0]], b = a;
+      for (int v : mesh.cells[t]) {
         a = a.cwiseMin(mesh.nodes[v]);
         b = b.cwiseMax(mesh.nodes[v]);
       }
@@ -103,7 +103,7 @@ private:
 Eigen::VectorXd prolongate(const Mesh& coarse, const Eigen::VectorXd& u, const Mesh& fine) {
   SIG_VERIFY(u.size() == 2 * coarse.num_nodes(),
              "prolongate: " << u.size() << " values for " << coarse.num_nodes() << " nodes");
-  SIG_VERIFY(coarse.num_triangles() > 0, "prolongate: the coarse mesh has no triangle");
+  SIG_VERIFY(coarse.num_cells() > 0, "prolongate: the coarse mesh has no triangle");
   const TriangleBins bins(coarse);
   Eigen::VectorXd p(2 * fine.num_nodes());
   for (int i = 0; i < fine.num_nodes(); ++i) {
@@ -112,7 +112,7 @@ Eigen::VectorXd prolongate(const Mesh& coarse, const Eigen::VectorXd& u, const M
     SIG_VERIFY(t >= 0, "prolongate: no coarse triangle near node " << i + 1);
     Eigen::Vector2d value = Eigen::Vector2d::Zero();
     for (int k = 0; k < 3; ++k)
-      value += w[k] * u.segment<2>(2 * coarse.triangles[t][k]);
+      value += w[k] * u.segment<2>(2 * coarse.cells[t][k]);
     p.segment<2>(2 * i) = value;
   }
   return p;
@@ -125,14 +125,14 @@ StrainError strain_error(const Mesh& reference, const Eigen::VectorXd& u_ref, co
                               << " nodes");
   // The reference triangles whose centroid lies in the window, or all of them.
   const auto counts = [&](int t) {
-    const auto& v = reference.triangles[t];
+    const auto& v = reference.cells[t];
     return !window ||
            window->contains(
                (reference.nodes[v[0]] + reference.nodes[v[1]] + reference.nodes[v[2]]) / 3);
   };
   if (window) {
     int inside = 0;
-    for (int t = 0; t < reference.num_triangles(); ++t)
+    for (int t = 0; t < reference.num_cells(); ++t)
       inside += counts(t);
     SIG_VERIFY(inside > 0, "strain_error: the window ["
                                << window->x0 << ", " << window->x1 << "] x [" << window->y0 << ", "

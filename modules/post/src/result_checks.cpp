@@ -47,7 +47,7 @@ std::size_t length(const Ds& ds, const std::string& name) {
 } // namespace
 
 void verify_solution_ds(const Ds& b, const Mesh& mesh) {
-  const std::size_t dofs = 2 * static_cast<std::size_t>(mesh.num_nodes());
+  const std::size_t dofs = static_cast<std::size_t>(mesh.dim) * mesh.num_nodes();
   integer_in(b, "converged", 0, 1);
   integer_in(b, "iterations", 0, 1000000000);
   SIG_VERIFY(b.reals("u").size() == dofs, b.source << ": array 'u' holds " << b.reals("u").size()

@@ -24,11 +24,11 @@ struct Segment {
 /// The sides of one triangle only.
 std::vector<Segment> boundary(const Mesh& mesh) {
   std::unordered_map<std::uint64_t, int> uses;
-  for (const auto& tri : mesh.triangles)
+  for (const auto& tri : mesh.cells)
     for (int j = 0; j < 3; ++j)
       ++uses[edge_key(tri[j], tri[(j + 1) % 3])];
   std::vector<Segment> sides;
-  for (const auto& tri : mesh.triangles)
+  for (const auto& tri : mesh.cells)
     for (int j = 0; j < 3; ++j)
       if (uses[edge_key(tri[j], tri[(j + 1) % 3])] == 1)
         sides.push_back({mesh.nodes[tri[j]], mesh.nodes[tri[(j + 1) % 3]]});
@@ -91,7 +91,7 @@ private:
 
 double size_of(const Mesh& mesh) {
   Eigen::Vector2d low = mesh.nodes.front(), high = low;
-  for (const Eigen::Vector2d& x : mesh.nodes) {
+  for (const Point& x : mesh.nodes) {
     low = low.cwiseMin(x);
     high = high.cwiseMax(x);
   }

@@ -9,7 +9,7 @@
 namespace sig {
 
 Eigen::Vector3d triangle_strain(const Mesh& mesh, const std::vector<double>& u, int t) {
-  const auto& tri = mesh.triangles[t];
+  const auto& tri = mesh.cells[t];
   const double two_area = signed_double_area(mesh, t);
   // Gradient of the barycentric coordinate of vertex i: the rotated opposite edge / (2 area).
   Eigen::Vector3d e = Eigen::Vector3d::Zero();
@@ -31,7 +31,7 @@ namespace {
 
 /// F = I + grad u of triangle t; the strain (e11, e22, 2 e12) holds the same gradient.
 Eigen::Matrix2d deformation_gradient(const Mesh& mesh, const std::vector<double>& u, int t) {
-  const auto& tri = mesh.triangles[t];
+  const auto& tri = mesh.cells[t];
   const double two_area = signed_double_area(mesh, t);
   Eigen::Matrix2d F = Eigen::Matrix2d::Identity();
   for (int i = 0; i < 3; ++i) {
@@ -50,9 +50,9 @@ CellStress cell_stresses(const Mesh& mesh, const std::vector<double>& u,
   SIG_VERIFY(u.size() == 2 * mesh.nodes.size(),
              "displacement holds " << u.size() << " values for " << mesh.num_nodes() << " nodes");
   CellStress out;
-  out.stress.reserve(4 * mesh.triangles.size());
-  out.von_mises.reserve(mesh.triangles.size());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  out.stress.reserve(4 * mesh.cells.size());
+  out.von_mises.reserve(mesh.cells.size());
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = materials.of(mesh.subdomain[t]);
     if (material.hyperelastic) {
       // Cauchy stress sigma = P F^T / J of the large-deformation law. The 2D laws return the
@@ -80,7 +80,7 @@ double strain_energy(const Mesh& mesh, const std::vector<double>& u,
   SIG_VERIFY(u.size() == 2 * mesh.nodes.size(),
              "displacement holds " << u.size() << " values for " << mesh.num_nodes() << " nodes");
   double energy = 0;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = materials.of(mesh.subdomain[t]);
     const double density = material.hyperelastic
                                ? material.hyperelastic->energy(deformation_gradient(mesh, u, t))

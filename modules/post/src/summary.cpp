@@ -59,7 +59,8 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("iterations", static_cast<long>(solution.integer("iterations")));
   s.set("dofs", static_cast<long>(solution.integer("dofs")));
   // The Newton vector holds the displacements and the multipliers the method adds (alm).
-  s.set("multipliers", static_cast<long>(solution.integer("dofs")) - 2L * mesh.num_nodes());
+  s.set("multipliers", static_cast<long>(solution.integer("dofs")) -
+                           static_cast<long>(mesh.dim) * mesh.num_nodes());
   s.set("contact_elements", elements);
   s.set("contact_nodes", active);
   Json normal = Json::object(), friction = Json::object();
@@ -79,7 +80,7 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("normal_status_counts", std::move(normal));
   s.set("friction_status_counts", std::move(friction));
   s.set("nodes", mesh.num_nodes());
-  s.set("triangles", mesh.num_triangles());
+  s.set(mesh.dim == 3 ? "tetrahedra" : "triangles", mesh.num_cells());
   s.set("backend", solution.has("linear") ? solution.text("linear") : std::string());
   s.set("residual_history", history(solution, "history_residual"));
   s.set("increment_history", history(solution, "history_increment"));

@@ -61,17 +61,19 @@ vtkNew<vtkUnstructuredGrid> make_grid(const Mesh& mesh) {
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(mesh.num_nodes());
   for (int i = 0; i < mesh.num_nodes(); ++i) {
-    points->SetPoint(i, mesh.nodes[i].x(), mesh.nodes[i].y(), 0.0);
+    points->SetPoint(i, mesh.nodes[i].x(), mesh.nodes[i].y(),
+                     mesh.dim == 3 ? mesh.nodes[i].z() : 0.0);
   }
+  const int vertices = mesh.dim + 1;
   vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(mesh.num_triangles(), 3 * mesh.num_triangles());
-  for (const auto& tri : mesh.triangles) {
-    const vtkIdType ids[3] = {tri[0], tri[1], tri[2]};
-    cells->InsertNextCell(3, ids);
+  cells->AllocateExact(mesh.num_cells(), vertices * mesh.num_cells());
+  for (const auto& cell : mesh.cells) {
+    const vtkIdType ids[4] = {cell[0], cell[1], cell[2], cell[3]};
+    cells->InsertNextCell(vertices, ids);
   }
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
-  grid->SetCells(VTK_TRIANGLE, cells);
+  grid->SetCells(mesh.dim == 3 ? VTK_TETRA : VTK_TRIANGLE, cells);
   return grid;
 }
 
@@ -89,7 +91,7 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
     grid->GetPointData()->AddArray(make_array(field, mesh.num_nodes(), where));
   }
   for (const auto& field : cell_fields) {
-    grid->GetCellData()->AddArray(make_array(field, mesh.num_triangles(), where));
+    grid->GetCellData()->AddArray(make_array(field, mesh.num_cells(), where));
   }
   for (const auto& [name, text] : field_data) {
     vtkNew<vtkUnsignedCharArray> bytes;

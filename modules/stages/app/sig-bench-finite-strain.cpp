@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
     options.small_strain_start = card.small_strain_start;
 
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    sig::require_2d(mesh, "sig-bench-finite-strain", "finite strain");
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));
     SIG_VERIFY(sig::has_hyperelastic_law(table), "the MILI has no hyperelastic law");
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));

@@ -161,6 +161,7 @@ int main(int argc, char** argv) {
 
     // 2. Mesh and assembled system; a dynamic case needs a mass.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    sig::require_2d(mesh, "sig-march", "time stepping (TIME card)");
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
     if (system.M.nonZeros() == 0)
       throw sig::InputError(datafile.path, 0, "rho",

@@ -96,6 +96,23 @@ int main(int argc, char** argv) {
     //    the words for a matrix that fails to factorize all the same.
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    if (mesh.dim == 3) {
+      // A 3D deck is one linear solve for now (issue 26): sig-contact and sig-material refused
+      // its contact and its hyperelastic laws already.
+      if (has_contact) sig::require_2d(mesh, "sig-solve", "contact (CONTACT card)");
+      if (!datafile.all("INITIAL").empty())
+        datafile.all("INITIAL").front()->fail("u", "an initial displacement in 3D is not "
+                                                   "implemented yet (issue 26)");
+      sig::verify_rigid_motions_held_3d(mesh, system.dirichlet_dofs, datafile.path);
+      sig::refuse_load_steps(datafile, "a small-strain solve is linear in the load");
+      sig::warn_unused_iteration_fields(datafile, "a small-strain deck without contact is one "
+                                                  "linear solve");
+      const sig::StaticSolution solution = sig::solve_linear_elasticity(system, backend);
+      sig::write_solution(args.ds_path("b"), solution, method, backend, datafile.title());
+      std::cout << "sig-solve: 3D, " << method << " (" << backend << "), " << solution.unknowns
+                << " dofs -> " << args.ds_path("b").string() << "\n";
+      return;
+    }
     std::optional<sig::ContactElements> contact;
     if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     const sig::Holds held = contact ? sig::holds_of(system.dirichlet_dofs, contact->node,

@@ -138,7 +138,7 @@ void FiniteStrainBulk::start_time_step(const Eigen::VectorXd& u_prev,
                            << " velocities for " << now_.u.size() << " dofs");
   // The strain at u_prev: the last evaluated iterate's when the step starts where the previous
   // one ended (the march), else a pass over the mesh.
-  if (now_.strain.F.size() == problem_.mesh->triangles.size() && u_prev == now_.u)
+  if (now_.strain.F.size() == problem_.mesh->cells.size() && u_prev == now_.u)
     previous_ = std::move(now_.strain);
   else
     previous_ = previous_strain(*problem_.mesh, *problem_.materials, u_prev);

@@ -40,7 +40,9 @@ Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice c
   case MassChoice::emm:
     // Without contact nodes the EMM would be the consistent mass under another name.
     SIG_VERIFY(!contact_nodes.empty(), "mass=emm needs the contact nodes (a CONTACT card)");
-    return equivalent_mass_matrix(system.M, mesh.nodes, contact_nodes);
+    // The integrator sees positions, not the mesh (tests/layering).
+    require_2d(mesh, "sig-march", "TIME mass=emm");
+    return equivalent_mass_matrix(system.M, plane_positions(mesh), contact_nodes);
   }
   return system.M;
 }

@@ -20,7 +20,7 @@ class Card;
 class Datafile;
 struct Mesh;
 struct MaterialTable;
-struct BoundaryEdge;
+struct Facet;
 struct TimeLoads;
 
 /// Outward unit normal of a boundary edge: pointing away from the triangle that owns it (so an
@@ -28,13 +28,18 @@ struct TimeLoads;
 /// (an interface), the right-hand normal of a -> b, i.e. the outward normal of the side on its
 /// left. Builds the edge-to-triangle map of the whole mesh on each call: meant for tests and
 /// one-off queries, not for loops over edges.
-Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const BoundaryEdge& edge);
+Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const Facet& edge);
 
 /// f at t = 0 from the TRACTION, PRESSURE, BODYFORCE and MOVINGLOAD cards (size 2 * nodes);
 /// the change of the time-dependent ones (moving, ramped) in `*time_loads` when it is given.
 /// References and regions are checked (assembly/cards.hpp), MOVINGLOAD's psi > 0 and ramp > 0.
 Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
                                const Datafile& datafile, TimeLoads* time_loads = nullptr);
+
+/// f of a 3D body (size 3 * nodes) from the TRACTION (f=fx,fy,fz), PRESSURE and BODYFORCE
+/// (f=fx,fy,fz) cards, on referenced faces and sub-domains (assembly/src/loads_3d.cpp).
+/// MOVINGLOAD and ramp= are refused on their card: 2D only for now (issue 26).
+Eigen::VectorXd assemble_loads_3d(const Mesh& mesh, const Datafile& datafile);
 
 /// The first load card of `datafile` with a ramp= field, or null: the stages without time refuse
 /// it on its own line.

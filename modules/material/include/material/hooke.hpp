@@ -22,6 +22,9 @@ struct Hooke {
   double mu() const;
   /// The 3x3 elasticity matrix: sigma = D eps with the engineering shear in eps.
   Eigen::Matrix3d D() const;
+  /// The 6x6 elasticity matrix of the 3D law (no plane mode: lambda = E nu / ((1 + nu)(1 - 2
+  /// nu))), eps = (e11, e22, e33, 2 e23, 2 e13, 2 e12), sigma = (s11, s22, s33, s23, s13, s12).
+  Eigen::Matrix<double, 6, 6> D3() const;
   Eigen::Vector3d stress(const Eigen::Vector3d& strain) const;
   /// W(eps) = eps.D.eps / 2, the stored energy per unit volume.
   double energy_density(const Eigen::Vector3d& strain) const;

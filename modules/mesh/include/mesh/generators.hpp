@@ -24,6 +24,24 @@ Mesh half_disc(double R, int N, double grading = 0);
 Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading = 0,
           bool graded_arcs = false);
 
+/// Box [0, lx] x [0, ly] x [0, lz] of tetrahedra of size h (meshes/box.geo): faces ref 1 the
+/// base x3 = 0, 2 the top x3 = lz, 3 the four sides; one sub-domain.
+Mesh box(double lx, double ly, double lz, double h);
+
+/// Hertz half ball { |x - (0, 0, R)| <= R, x3 <= R } of tetrahedra of size h
+/// (meshes/half_ball.geo): the half sphere ref 3 (Gamma3), the flat top ref 2, the top centre
+/// (0, 0, R) vertex_ref 1. Its lowest point is the origin.
+Mesh half_ball(double R, double h);
+
+/// Ball of centre `centre` (3 coordinates) and radius R of tetrahedra of size h
+/// (meshes/ball.geo): the sphere ref 3 (Gamma3).
+Mesh ball(const Point& centre, double R, double h);
+
+/// Wheel-like cylinder of radius R, axis along x2 from x2 = 0 to L through (0, *, R), resting
+/// on x3 = 0, of tetrahedra of size h (meshes/cylinder.geo): the curved side ref 3 (the tread),
+/// the two flat ends ref 2.
+Mesh cylinder(double R, double L, double h);
+
 struct RingOptions {
   int layers = 0;                     ///< nodes through the thickness; 0 = default_ring_layers(N)
   std::optional<double> gamma1_above; ///< default cy + 0.99 r_out

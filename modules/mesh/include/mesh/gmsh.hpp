@@ -1,7 +1,7 @@
 #pragma once
 // gmsh .msh files (format 2.2 and 4.1, ASCII or binary), 2D P1 meshes:
 //  - triangles (type 2): sub-domain = physical tag of their surface (1 when it has none);
-//  - lines (type 1) with a physical tag: BoundaryEdge with ref = that tag;
+//  - lines (type 1) with a physical tag: Facet with ref = that tag;
 //  - points (type 15) with a physical tag: vertex_ref of their node.
 // An entity in several physical groups (format 4.1) takes the first one. Nodes no triangle uses
 // (geometry points gmsh keeps) are dropped and the rest renumbered in file order; triangles are

@@ -6,7 +6,7 @@
 // The reader detects the record-marker width (8 or 4 bytes), the byte order, the integer word
 // (4 or 8 bytes) and the real word of NOP4 (float or double). Triangles keep their NOP5 order
 // and node order (made counter-clockwise if they are not); quadrilaterals are split into
-// (1,2,3) + (3,4,1); the references on local edge j (vertex j to j+1) become BoundaryEdge in
+// (1,2,3) + (3,4,1); the references on local edge j (vertex j to j+1) become Facet in
 // the direction of the triangle, domain on the left, an interface edge seen from both sides
 // being kept once; vertex references become vertex_ref; NDSDE becomes the sub-domain.
 //

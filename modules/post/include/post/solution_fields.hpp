@@ -21,4 +21,13 @@ SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,
                                const MaterialTable& materials,
                                const std::vector<ContactRow>& contact);
 
+/// The fields of a 3D static state (solution_fields_3d.cpp): displacement (3) at the nodes;
+/// stress (6: s11, s22, s33, s23, s13, s12), von_mises and subdomain on the tetrahedra.
+SolutionFields solution_fields_3d(const Mesh& mesh, const std::vector<double>& u,
+                                  const MaterialTable& materials);
+
+/// The stored energy sum over the tetrahedra of |T| eps.D.eps / 2 of a 3D state.
+double strain_energy_3d(const Mesh& mesh, const std::vector<double>& u,
+                        const MaterialTable& materials);
+
 } // namespace sig

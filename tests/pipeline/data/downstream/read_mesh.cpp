@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   }
   try {
     const sig::Mesh mesh = sig::read_mesh_file(argv[1]);
-    std::printf("nodes %d triangles %d\n", mesh.num_nodes(), mesh.num_triangles());
+    std::printf("nodes %d triangles %d\n", mesh.num_nodes(), mesh.num_cells());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "read_mesh: %s\n", e.what());
     return 1;

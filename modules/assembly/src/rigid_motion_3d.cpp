@@ -1,0 +1,47 @@
+// The rigid motions of a 3D body left free by its Dirichlet dofs (issue 26): the six motions u(x)
+// = a + w x (x - c) of the whole body must be held. The 2D analysis (rigid_motion.cpp) also
+// splits the mesh into parts joined by single nodes and counts contact nodes; in 3D there is no
+// contact yet and the body is taken whole.
+#include "assembly/rigid_motion.hpp"
+#include "core/error.hpp"
+#include "mesh/mesh.hpp"
+
+#include <Eigen/Dense>
+#include <sstream>
+
+namespace sig {
+
+void verify_rigid_motions_held_3d(const Mesh& mesh, const std::vector<int>& dirichlet_dofs,
+                                  const std::string& deck) {
+  SIG_VERIFY(mesh.dim == 3, "verify_rigid_motions_held_3d: the mesh is " << mesh.dim << "D");
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const Point& x : mesh.nodes)
+    centre += Eigen::Vector3d(x);
+  centre /= mesh.num_nodes();
+  const double size = std::max(diameter(mesh), 1e-300);
+  // Row per held dof (node n, component c): component c of the six motions at x_n; the motions
+  // are held when this matrix has rank 6.
+  Eigen::MatrixXd R(static_cast<Eigen::Index>(dirichlet_dofs.size()), 6);
+  for (std::size_t r = 0; r < dirichlet_dofs.size(); ++r) {
+    const int node = dirichlet_dofs[r] / 3, c = dirichlet_dofs[r] % 3;
+    const Eigen::Vector3d x = (Eigen::Vector3d(mesh.nodes[node]) - centre) / size;
+    for (int k = 0; k < 3; ++k) {
+      R(static_cast<Eigen::Index>(r), k) = c == k ? 1.0 : 0.0;
+      R(static_cast<Eigen::Index>(r), 3 + k) = Eigen::Vector3d::Unit(k).cross(x)(c);
+    }
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullV);
+  const Eigen::VectorXd sigma = svd.singularValues();
+  const Eigen::Index rank = (sigma.array() > 1e-8).count();
+  if (rank == 6) return;
+  const Eigen::VectorXd free = svd.matrixV().col(5); // the motion held least
+  std::ostringstream what;
+  what << "the body is free to move: the " << dirichlet_dofs.size()
+       << " imposed dofs leave the rigid motion of translation (" << free(0) << ", " << free(1)
+       << ", " << free(2) << ") and rotation (" << free(3) << ", " << free(4) << ", " << free(5)
+       << ") free, so the static problem has no unique solution; add DIRICHLET cards (ux=, uy=, "
+          "uz=) on references that hold the body";
+  throw InputError(deck, 0, "", what.str());
+}
+
+} // namespace sig
