@@ -17,29 +17,29 @@ namespace {
 
 double area(const Mesh& mesh, int subdomain) {
   double sum = 0;
-  for (int t = 0; t < mesh.num_triangles(); ++t)
+  for (int t = 0; t < mesh.num_cells(); ++t)
     if (mesh.subdomain[t] == subdomain) sum += 0.5 * signed_double_area(mesh, t);
   return sum;
 }
 
-double total_length(const Mesh& mesh, const std::vector<BoundaryEdge>& edges) {
+double total_length(const Mesh& mesh, const std::vector<Facet>& edges) {
   double sum = 0;
-  for (const BoundaryEdge& e : edges)
-    sum += (mesh.nodes[e.a] - mesh.nodes[e.b]).norm();
+  for (const Facet& e : edges)
+    sum += (mesh.nodes[e.node[0]] - mesh.nodes[e.node[1]]).norm();
   return sum;
 }
 
 /// The edges that one triangle only has: the boundary, and every side of a hanging node.
-std::vector<BoundaryEdge> lone_edges(const Mesh& mesh) {
+std::vector<Facet> lone_edges(const Mesh& mesh) {
   std::map<std::uint64_t, int> uses;
-  for (const auto& v : mesh.triangles)
+  for (const auto& v : mesh.cells)
     for (int k = 0; k < 3; ++k)
       ++uses[edge_key(v[k], v[(k + 1) % 3])];
-  std::vector<BoundaryEdge> lone;
+  std::vector<Facet> lone;
   for (const auto& [key, count] : uses) {
     EXPECT_LE(count, 2) << "an edge of more than two triangles";
     if (count == 1)
-      lone.push_back({static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffff), 0});
+      lone.push_back({Simplex{static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffff)}, 0});
   }
   return lone;
 }
@@ -47,7 +47,7 @@ std::vector<BoundaryEdge> lone_edges(const Mesh& mesh) {
 /// Smallest angle of the mesh, in radians.
 double smallest_angle(const Mesh& mesh) {
   double smallest = std::numbers::pi;
-  for (const auto& v : mesh.triangles)
+  for (const auto& v : mesh.cells)
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector2d p = mesh.nodes[v[(k + 1) % 3]] - mesh.nodes[v[k]];
       const Eigen::Vector2d q = mesh.nodes[v[(k + 2) % 3]] - mesh.nodes[v[k]];
@@ -69,8 +69,8 @@ void expect_kept(const Mesh& coarse, const Bisection& refined) {
               1e-12 * total_length(coarse, lone_edges(coarse)));
   EXPECT_EQ(fine.references(), coarse.references());
   for (int ref : coarse.references()) {
-    const double before = total_length(coarse, coarse.edges_with_ref(ref));
-    EXPECT_NEAR(total_length(fine, fine.edges_with_ref(ref)), before, 1e-12 * (1 + before))
+    const double before = total_length(coarse, coarse.facets_with_ref(ref));
+    EXPECT_NEAR(total_length(fine, fine.facets_with_ref(ref)), before, 1e-12 * (1 + before))
         << "reference " << ref;
   }
   for (int i = 0; i < coarse.num_nodes(); ++i)
@@ -81,17 +81,17 @@ TEST(Bisection, OneMarkedTriangleStaysConformingWithItsReferences) {
   const Mesh coarse = square(1.0, 4);
   const Bisection refined = bisect(coarse, {0});
   expect_kept(coarse, refined);
-  EXPECT_GT(refined.mesh.num_triangles(), coarse.num_triangles() + 1);
+  EXPECT_GT(refined.mesh.num_cells(), coarse.num_cells() + 1);
 }
 
 TEST(Bisection, EveryTriangleMarkedQuartersIt) {
   const Mesh coarse = rectangle(2.0, 1.0, 4, 2);
-  std::vector<int> all(coarse.triangles.size());
-  for (int t = 0; t < coarse.num_triangles(); ++t)
+  std::vector<int> all(coarse.cells.size());
+  for (int t = 0; t < coarse.num_cells(); ++t)
     all[t] = t;
   const Bisection refined = bisect(coarse, all);
   expect_kept(coarse, refined);
-  EXPECT_EQ(refined.mesh.num_triangles(), 4 * coarse.num_triangles());
+  EXPECT_EQ(refined.mesh.num_cells(), 4 * coarse.num_cells());
   EXPECT_EQ(refined.mesh.num_nodes(), 9 * 5);
 }
 
@@ -101,15 +101,15 @@ TEST(Bisection, RepeatedRefinementAtACornerKeepsTheAngles) {
   for (int step = 0; step < 10; ++step) {
     // The triangles at the origin.
     std::vector<int> marked;
-    for (int t = 0; t < mesh.num_triangles(); ++t)
-      for (int v : mesh.triangles[t])
+    for (int t = 0; t < mesh.num_cells(); ++t)
+      for (int v : mesh.cells[t])
         if (mesh.nodes[v].norm() == 0) marked.push_back(t);
     const Bisection refined = bisect(mesh, marked);
     expect_kept(mesh, refined);
     mesh = refined.mesh;
   }
   EXPECT_GE(smallest_angle(mesh), 0.5 * initial - 1e-12);
-  EXPECT_GT(mesh.num_triangles(), 40);
+  EXPECT_GT(mesh.num_cells(), 40);
 }
 
 TEST(Bisection, SubdomainsOfAFreeFemFileAndReferencesOfAGmshFile) {
@@ -118,7 +118,7 @@ TEST(Bisection, SubdomainsOfAFreeFemFileAndReferencesOfAGmshFile) {
         std::filesystem::path(SIG_SOURCE_DIR) / "tests/fuzz/corpus/gmsh/square_v41_ascii.msh"}) {
     const Mesh coarse = read_mesh_file(path);
     std::vector<int> marked;
-    for (int t = 0; t < coarse.num_triangles(); t += 3)
+    for (int t = 0; t < coarse.num_cells(); t += 3)
       marked.push_back(t);
     expect_kept(coarse, bisect(coarse, marked));
   }
@@ -127,7 +127,7 @@ TEST(Bisection, SubdomainsOfAFreeFemFileAndReferencesOfAGmshFile) {
 /// Every triangle refined: the new nodes of the arcs' edges on their circles.
 void expect_arc_nodes_on_circle(const Mesh& coarse, const std::vector<BoundaryArc>& arcs) {
   std::vector<int> marked;
-  for (int t = 0; t < coarse.num_triangles(); ++t)
+  for (int t = 0; t < coarse.num_cells(); ++t)
     marked.push_back(t);
   const Bisection refined = bisect(coarse, marked, arcs);
   const Mesh& fine = refined.mesh;
@@ -137,7 +137,7 @@ void expect_arc_nodes_on_circle(const Mesh& coarse, const std::vector<BoundaryAr
     const std::vector<int> nodes = fine.nodes_with_ref(arc.ref);
     // A new node per edge (the ring's inner circle is closed, the arcs are open).
     EXPECT_EQ(nodes.size(),
-              coarse.nodes_with_ref(arc.ref).size() + coarse.edges_with_ref(arc.ref).size())
+              coarse.nodes_with_ref(arc.ref).size() + coarse.facets_with_ref(arc.ref).size())
         << "ref " << arc.ref;
     for (int i : nodes)
       EXPECT_NEAR((fine.nodes[i] - arc.centre).norm(), arc.radius, 1e-12 * arc.radius)

@@ -40,8 +40,8 @@ Eigen::VectorXd solve_manufactured(const Mesh& mesh) {
   system.K = assemble_stiffness(mesh, table, SparsityPattern(mesh));
   system.f = Eigen::VectorXd::Zero(system.K.rows());
   std::set<int> boundary;
-  for (const BoundaryEdge& e : mesh.edges)
-    boundary.insert({e.a, e.b});
+  for (const Facet& e : mesh.facets)
+    boundary.insert({e.node[0], e.node[1]});
   system.dirichlet_values.resize(2 * static_cast<int>(boundary.size()));
   for (int node : boundary)
     for (int c = 0; c < 2; ++c) {
@@ -59,10 +59,10 @@ Eigen::VectorXd solve_manufactured(const Mesh& mesh) {
 double true_error(const Mesh& mesh, const Eigen::VectorXd& u_h) {
   const std::vector<Eigen::Vector3d> strains = element_strains(mesh, u_h);
   double sum = 0;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     std::array<Eigen::Vector3d, 3> difference;
     for (int i = 0; i < 3; ++i)
-      difference[i] = exact_strain(mesh.nodes[mesh.triangles[t][i]]) - strains[t];
+      difference[i] = exact_strain(mesh.nodes[mesh.cells[t][i]]) - strains[t];
     sum += linear_strain_square_integral(0.5 * signed_double_area(mesh, t), difference);
   }
   return std::sqrt(sum);
@@ -88,7 +88,7 @@ TEST(RecoveryEstimate, VanishesOnAConstantStrain) {
                                           5e-4 * mesh.nodes[i].x());
   const ErrorIndicators e = recovery_indicators(mesh, u);
   EXPECT_LT(e.estimate, 1e-15);
-  EXPECT_EQ(e.eta.size(), mesh.triangles.size());
+  EXPECT_EQ(e.eta.size(), mesh.cells.size());
 }
 
 TEST(RecoveryEstimate, RecoveryIsPerSubdomain) {
@@ -96,9 +96,9 @@ TEST(RecoveryEstimate, RecoveryIsPerSubdomain) {
   // recovery would see an error where the P1 solution is exact on each side.
   Mesh mesh = rectangle(2.0, 1.0, 4, 2);
   Eigen::VectorXd u(2 * mesh.num_nodes());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     double cx = 0;
-    for (int v : mesh.triangles[t])
+    for (int v : mesh.cells[t])
       cx += mesh.nodes[v].x() / 3;
     mesh.subdomain[t] = cx < 1 ? 1 : 2;
   }

@@ -16,7 +16,7 @@ namespace {
 /// The local index k of triangle t's refinement edge (v[k], v[k+1]): its longest, ties broken
 /// by the edge's node numbers so that the choice depends on the triangle alone.
 int refinement_edge(const Mesh& mesh, int t) {
-  const auto& v = mesh.triangles[t];
+  const auto& v = mesh.cells[t];
   int best = 0;
   double best_length = -1;
   std::uint64_t best_key = 0;
@@ -38,9 +38,9 @@ int refinement_edge(const Mesh& mesh, int t) {
 std::unordered_map<std::uint64_t, int> closed_edges(const Mesh& mesh,
                                                     const std::vector<int>& marked) {
   std::unordered_map<std::uint64_t, std::array<int, 2>> triangles_of; // -1: none
-  std::vector<std::uint64_t> refinement(mesh.triangles.size());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const auto& v = mesh.triangles[t];
+  std::vector<std::uint64_t> refinement(mesh.cells.size());
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    const auto& v = mesh.cells[t];
     for (int k = 0; k < 3; ++k) {
       auto [it, fresh] =
           triangles_of.try_emplace(edge_key(v[k], v[(k + 1) % 3]), std::array<int, 2>{t, -1});
@@ -55,9 +55,9 @@ std::unordered_map<std::uint64_t, int> closed_edges(const Mesh& mesh,
     if (bisected.try_emplace(key, -1).second) work.push_back(key);
   };
   for (int t : marked) {
-    SIG_VERIFY(t >= 0 && t < mesh.num_triangles(),
-               "bisect: marked triangle " << t << " of " << mesh.num_triangles());
-    const auto& v = mesh.triangles[t];
+    SIG_VERIFY(t >= 0 && t < mesh.num_cells(),
+               "bisect: marked triangle " << t << " of " << mesh.num_cells());
+    const auto& v = mesh.cells[t];
     for (int k = 0; k < 3; ++k)
       bisect_edge(edge_key(v[k], v[(k + 1) % 3]));
   }
@@ -77,7 +77,7 @@ void cut(int a, int b, int c, int subdomain, const std::unordered_map<std::uint6
          Mesh& out) {
   const auto found = bisected.find(edge_key(a, b));
   if (found == bisected.end()) {
-    out.triangles.push_back({a, b, c});
+    out.cells.push_back(Simplex{a, b, c});
     out.subdomain.push_back(subdomain);
     return;
   }
@@ -90,6 +90,8 @@ void cut(int a, int b, int c, int subdomain, const std::unordered_map<std::uint6
 
 Bisection bisect(const Mesh& mesh, const std::vector<int>& marked,
                  const std::vector<BoundaryArc>& arcs, double max_nodes) {
+  SIG_VERIFY(mesh.dim == 2,
+             "bisect: refinement of a " << mesh.dim << "D mesh is not implemented (2D only)");
   std::unordered_map<std::uint64_t, int> bisected = closed_edges(mesh, marked);
   const double nodes = static_cast<double>(mesh.num_nodes()) + static_cast<double>(bisected.size());
   SIG_VERIFY(nodes <= max_nodes, "bisect: the refined mesh would have "
@@ -108,8 +110,8 @@ Bisection bisect(const Mesh& mesh, const std::vector<int>& marked,
     keys.push_back(key);
   std::sort(keys.begin(), keys.end());
   std::unordered_map<std::uint64_t, int> ref_of;
-  for (const BoundaryEdge& e : mesh.edges)
-    ref_of[edge_key(e.a, e.b)] = e.ref;
+  for (const Facet& e : mesh.facets)
+    ref_of[edge_key(e.node[0], e.node[1])] = e.ref;
   for (std::uint64_t key : keys) {
     const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
     Eigen::Vector2d x = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
@@ -118,19 +120,19 @@ Bisection bisect(const Mesh& mesh, const std::vector<int>& marked,
     out.nodes.push_back(x);
     out.vertex_ref.push_back(0);
   }
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const auto& v = mesh.triangles[t];
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    const auto& v = mesh.cells[t];
     const int k = refinement_edge(mesh, t);
     cut(v[k], v[(k + 1) % 3], v[(k + 2) % 3], mesh.subdomain[t], bisected, out);
   }
-  for (const BoundaryEdge& e : mesh.edges) {
-    const auto found = bisected.find(edge_key(e.a, e.b));
+  for (const Facet& e : mesh.facets) {
+    const auto found = bisected.find(edge_key(e.node[0], e.node[1]));
     if (found == bisected.end()) {
-      out.edges.push_back(e);
+      out.facets.push_back(e);
       continue;
     }
-    out.edges.push_back({e.a, found->second, e.ref});
-    out.edges.push_back({found->second, e.b, e.ref});
+    out.facets.push_back({Simplex{e.node[0], found->second}, e.ref});
+    out.facets.push_back({Simplex{found->second, e.node[1]}, e.ref});
   }
   result.bisected_edges = static_cast<int>(keys.size());
   check_mesh(out, "bisect");

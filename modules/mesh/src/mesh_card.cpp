@@ -259,11 +259,11 @@ std::vector<BoundaryArc> boundary_arcs(const Card& card) {
   }
   if (generator == "disc") {
     const double r = card.real("R");
-    const Eigen::Vector2d c = centre(card);
+    const Eigen::Vector2d c = centre(card, 2);
     return {{1, c, r}, {2, c, r}, {3, c, r}, {4, c, r}};
   }
   if (generator == "ring") {
-    const Eigen::Vector2d c = centre(card);
+    const Eigen::Vector2d c = centre(card, 2);
     const double r_in = card.real("r_in"), r_out = card.real("r_out");
     return {{2, c, r_out}, {3, c, r_out}, {4, c, r_in}};
   }

@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
     }
     const auto worst = std::max_element(e.eta.begin(), e.eta.end()) - e.eta.begin();
     std::cout << "sig-estimate: eta = " << e.estimate << " (||eps(u - u_h)||_L2, Zienkiewicz-Zhu), "
-              << mesh.num_triangles() << " triangles, " << 2 * mesh.num_nodes()
+              << mesh.num_cells() << " triangles, " << 2 * mesh.num_nodes()
               << " dofs; largest eta_T = " << e.eta[worst] << " on triangle " << worst + 1 << "\n";
   });
 }

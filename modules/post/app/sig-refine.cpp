@@ -85,8 +85,8 @@ int main(int argc, char** argv) {
     const sig::Mesh mesh = sig::read_nopo(stage.ds_path("nopo"));
     const sig::Ds est = sig::read_ds(stage.ds_path("est"), "EST");
     const std::vector<double> eta = est.reals("indicator");
-    SIG_VERIFY(eta.size() == mesh.triangles.size(),
-               est.source << ": " << eta.size() << " indicators for " << mesh.num_triangles()
+    SIG_VERIFY(eta.size() == mesh.cells.size(),
+               est.source << ": " << eta.size() << " indicators for " << mesh.num_cells()
                           << " triangles of " << stage.ds_path("nopo").string());
     const sig::Datafile shape_deck =
         shape.empty() ? stage.deck : sig::Datafile::read(std::filesystem::path(shape));
@@ -98,10 +98,10 @@ int main(int argc, char** argv) {
     const std::filesystem::path out =
         mesh_file.empty() ? stage.outdir / "refined.nopo" : std::filesystem::path(mesh_file);
     sig::write_nopo(out, refined.mesh, sig::NopoVariant::i8r8, stage.deck.title(), "sig-refine");
-    std::cout << "sig-refine: marked " << marked.size() << " of " << mesh.num_triangles()
+    std::cout << "sig-refine: marked " << marked.size() << " of " << mesh.num_cells()
               << " triangles (theta " << theta << "), " << refined.bisected_edges
               << " edges bisected: " << refined.mesh.num_nodes() << " nodes, "
-              << refined.mesh.num_triangles() << " triangles, " << arcs.size() << " arcs -> "
+              << refined.mesh.num_cells() << " triangles, " << arcs.size() << " arcs -> "
               << out.string() << "\n";
   });
 }

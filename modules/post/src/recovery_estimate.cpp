@@ -26,18 +26,18 @@ std::vector<std::array<Eigen::Vector3d, 3>> recovered_strains(const Mesh& mesh,
   // Sums of area x strain and of area per (sub-domain, node): a node on a material interface
   // gets one recovered value per side.
   std::map<std::pair<int, int>, std::pair<Eigen::Vector3d, double>> sums;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     const double area = 0.5 * std::abs(signed_double_area(mesh, t));
-    for (int v : mesh.triangles[t]) {
+    for (int v : mesh.cells[t]) {
       auto [it, fresh] = sums.try_emplace({mesh.subdomain[t], v}, Eigen::Vector3d::Zero(), 0.0);
       it->second.first += area * strains[t];
       it->second.second += area;
     }
   }
-  std::vector<std::array<Eigen::Vector3d, 3>> recovered(mesh.triangles.size());
-  for (int t = 0; t < mesh.num_triangles(); ++t)
+  std::vector<std::array<Eigen::Vector3d, 3>> recovered(mesh.cells.size());
+  for (int t = 0; t < mesh.num_cells(); ++t)
     for (int i = 0; i < 3; ++i) {
-      const auto& [weighted, area] = sums.at({mesh.subdomain[t], mesh.triangles[t][i]});
+      const auto& [weighted, area] = sums.at({mesh.subdomain[t], mesh.cells[t][i]});
       recovered[t][i] = weighted / area;
     }
   return recovered;
@@ -51,13 +51,15 @@ double linear_strain_square_integral(double area, const std::array<Eigen::Vector
 }
 
 ErrorIndicators recovery_indicators(const Mesh& mesh, const Eigen::VectorXd& u) {
-  SIG_VERIFY(mesh.num_triangles() > 0, "recovery_indicators: the mesh has no triangle");
+  SIG_VERIFY(mesh.dim == 2, "sig-estimate: the error estimate of a 3D mesh is not implemented yet "
+                            "(issue 29; 2D only)");
+  SIG_VERIFY(mesh.num_cells() > 0, "recovery_indicators: the mesh has no triangle");
   const std::vector<Eigen::Vector3d> strains = element_strains(mesh, u);
   const auto recovered = recovered_strains(mesh, u);
   ErrorIndicators out;
-  out.eta.resize(mesh.triangles.size());
+  out.eta.resize(mesh.cells.size());
   double sum = 0;
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
+  for (int t = 0; t < mesh.num_cells(); ++t) {
     std::array<Eigen::Vector3d, 3> difference;
     for (int i = 0; i < 3; ++i)
       difference[i] = recovered[t][i] - strains[t];
