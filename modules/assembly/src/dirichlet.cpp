@@ -18,16 +18,18 @@ Eigen::VectorXd ReducedSystem::expand(const Eigen::VectorXd& u_free) const {
 }
 
 std::array<int, 2> ReducedSystem::contact_node_dofs(int node) const {
-  std::array<int, 2> dofs{};
-  for (int component = 0; component < 2; ++component) {
-    SIG_VERIFY(node >= 0 && 2 * node + 1 < num_full(),
-               "contact node " << node + 1 << " is not a node of the system");
-    dofs[component] = reduced_index[2 * node + component];
-    SIG_VERIFY(dofs[component] >= 0,
+  const int first = contact_node_first_dof(node, 2);
+  return {first, first + 1};
+}
+
+int ReducedSystem::contact_node_first_dof(int node, int d) const {
+  SIG_VERIFY(node >= 0 && d * node + d - 1 < num_full(),
+             "contact node " << node + 1 << " is not a node of the system");
+  for (int component = 0; component < d; ++component)
+    SIG_VERIFY(reduced_index[d * node + component] >= 0,
                "contact node " << node + 1 << " has a Dirichlet condition on component "
                                << component + 1 << "; Gamma3 and Gamma1 must not share nodes");
-  }
-  return dofs;
+  return reduced_index[d * node];
 }
 
 Eigen::VectorXd ReducedSystem::load_at(double t) const {

@@ -1,7 +1,6 @@
 // The rigid motions of a 3D body left free by its Dirichlet dofs (issue 26): the six motions u(x)
 // = a + w x (x - c) of the whole body must be held. The 2D analysis (rigid_motion.cpp) also
-// splits the mesh into parts joined by single nodes and counts contact nodes; in 3D there is no
-// contact yet and the body is taken whole.
+// splits the mesh into parts joined by single nodes; in 3D the body is taken whole.
 #include "assembly/rigid_motion.hpp"
 #include "core/error.hpp"
 #include "mesh/mesh.hpp"
@@ -12,33 +11,43 @@
 namespace sig {
 
 void verify_rigid_motions_held_3d(const Mesh& mesh, const std::vector<int>& dirichlet_dofs,
-                                  const std::string& deck) {
+                                  const std::string& deck, const std::vector<int>& contact_nodes,
+                                  const std::vector<Point>& contact_normals) {
+  SIG_VERIFY(contact_nodes.size() == contact_normals.size(),
+             "verify_rigid_motions_held_3d: " << contact_nodes.size() << " contact nodes with "
+                                              << contact_normals.size() << " normals");
   SIG_VERIFY(mesh.dim == 3, "verify_rigid_motions_held_3d: the mesh is " << mesh.dim << "D");
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (const Point& x : mesh.nodes)
     centre += Eigen::Vector3d(x);
   centre /= mesh.num_nodes();
   const double size = std::max(diameter(mesh), 1e-300);
-  // Row per held dof (node n, component c): component c of the six motions at x_n; the motions
+  // Row per hold (node n along the unit direction e): e . (the six motions at x_n); the motions
   // are held when this matrix has rank 6.
-  Eigen::MatrixXd R(static_cast<Eigen::Index>(dirichlet_dofs.size()), 6);
-  for (std::size_t r = 0; r < dirichlet_dofs.size(); ++r) {
-    const int node = dirichlet_dofs[r] / 3, c = dirichlet_dofs[r] % 3;
+  const auto rows = static_cast<Eigen::Index>(dirichlet_dofs.size() + contact_nodes.size());
+  Eigen::MatrixXd R(rows, 6);
+  const auto hold = [&](Eigen::Index r, int node, const Eigen::Vector3d& e) {
     const Eigen::Vector3d x = (Eigen::Vector3d(mesh.nodes[node]) - centre) / size;
     for (int k = 0; k < 3; ++k) {
-      R(static_cast<Eigen::Index>(r), k) = c == k ? 1.0 : 0.0;
-      R(static_cast<Eigen::Index>(r), 3 + k) = Eigen::Vector3d::Unit(k).cross(x)(c);
+      R(r, k) = e[k];
+      R(r, 3 + k) = e.dot(Eigen::Vector3d::Unit(k).cross(x));
     }
-  }
+  };
+  Eigen::Index r = 0;
+  for (const int dof : dirichlet_dofs)
+    hold(r++, dof / 3, Eigen::Vector3d::Unit(dof % 3));
+  for (std::size_t p = 0; p < contact_nodes.size(); ++p)
+    hold(r++, contact_nodes[p], Eigen::Vector3d(contact_normals[p]));
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullV);
   const Eigen::VectorXd sigma = svd.singularValues();
   const Eigen::Index rank = (sigma.array() > 1e-8).count();
   if (rank == 6) return;
   const Eigen::VectorXd free = svd.matrixV().col(5); // the motion held least
   std::ostringstream what;
-  what << "the body is free to move: the " << dirichlet_dofs.size()
-       << " imposed dofs leave the rigid motion of translation (" << free(0) << ", " << free(1)
-       << ", " << free(2) << ") and rotation (" << free(3) << ", " << free(4) << ", " << free(5)
+  what << "the body is free to move: the " << dirichlet_dofs.size() << " imposed dofs";
+  if (!contact_nodes.empty()) what << " and " << contact_nodes.size() << " contact nodes";
+  what << " leave the rigid motion of translation (" << free(0) << ", " << free(1) << ", "
+       << free(2) << ") and rotation (" << free(3) << ", " << free(4) << ", " << free(5)
        << ") free, so the static problem has no unique solution; add DIRICHLET cards (ux=, uy=, "
           "uz=) on references that hold the body";
   throw InputError(deck, 0, "", what.str());

@@ -34,8 +34,6 @@ int main(int argc, char** argv) {
 
     // 2. Contact elements from the CONTACT card, if any.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
-    if (!datafile.all("CONTACT").empty())
-      sig::require_2d(mesh, "sig-contact", "contact (CONTACT card)");
     const std::optional<sig::ContactElements> elements = sig::contact_from_cards(datafile, mesh);
     if (!elements) {
       std::cout << "sig-contact: no CONTACT card in " << args.datafile.string()
@@ -51,14 +49,17 @@ int main(int argc, char** argv) {
     if (const std::vector<int> away = sig::nodes_facing_away(mesh, e);
         2 * away.size() > e.node.size()) {
       const int i = away.front();
-      const Eigen::Vector2d& n = e.normal[i];
-      const Eigen::Vector2d& x = mesh.nodes[e.node[i]];
+      const auto coordinates = [](const sig::Point& x) {
+        std::string text = "(";
+        for (Eigen::Index k = 0; k < x.size(); ++k)
+          text += (k ? ", " : "") + std::to_string(x[k]);
+        return text + ")";
+      };
       sig::log_warning(std::to_string(away.size()) + " of " + std::to_string(e.size()) +
                        " contact nodes face the obstacle from inside the body (node " +
-                       std::to_string(e.node[i] + 1) + " at (" + std::to_string(x.x()) + ", " +
-                       std::to_string(x.y()) + "): the obstacle's normal (" +
-                       std::to_string(n.x()) + ", " + std::to_string(n.y()) +
-                       ") points along the body's outward normal there); the CONTACT card's "
+                       std::to_string(e.node[i] + 1) + " at " + coordinates(mesh.nodes[e.node[i]]) +
+                       ": the obstacle's normal " + coordinates(e.normal[i]) +
+                       " points along the body's outward normal there); the CONTACT card's "
                        "normal= must point out of the obstacle, towards the body");
     }
     std::cout << "sig-contact: " << e.size() << " contact elements on reference " << e.ref << " ("
@@ -66,7 +67,9 @@ int main(int argc, char** argv) {
               << "  Lagrange nodes " << e.lagrange_node.front() + 1 << ".."
               << e.lagrange_node.back() + 1 << " after " << e.num_nodes << " mesh nodes\n"
               << "  gap min " << e.gap.minCoeff() << " max " << e.gap.maxCoeff() << "\n"
-              << "  total weight (Gamma3 length x thickness) " << e.weight.sum() << "\n"
+              << (e.dim == 3 ? "  total weight (Gamma3 area) "
+                             : "  total weight (Gamma3 length x thickness) ")
+              << e.weight.sum() << "\n"
               << "  wrote " << cont_path.string() << "\n";
   });
 }

@@ -33,15 +33,20 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
              "write_cont " << path.string() << ": arrays of different lengths");
   std::vector<std::int64_t> node(m), lagrange(m), law(m), friction_law(m), friction_bound(m),
       friction_of(m);
-  std::vector<double> normal(2 * m), tangent(2 * m), cn(m), c3(m), depth(m), mu(m), threshold(m),
+  const int d = elements.dim;
+  SIG_VERIFY(elements.obstacle.point.size() == d && elements.obstacle.normal.size() == d,
+             "write_cont " << path.string() << ": an obstacle of another dimension than " << d);
+  std::vector<double> normal(d * m), tangent(d * m), cn(m), c3(m), depth(m), mu(m), threshold(m),
       a(m), b(m), alpha(m);
   for (int i = 0; i < m; ++i) { // files are 1-based
     node[i] = elements.node[i] + 1;
     lagrange[i] = elements.lagrange_node[i] + 1;
-    normal[2 * i] = elements.normal[i].x();
-    normal[2 * i + 1] = elements.normal[i].y();
-    tangent[2 * i] = elements.tangent[i].x();
-    tangent[2 * i + 1] = elements.tangent[i].y();
+    SIG_VERIFY(elements.normal[i].size() == d && elements.tangent[i].size() == d,
+               "write_cont " << path.string() << ": element " << i + 1 << " is not " << d << "D");
+    for (int c = 0; c < d; ++c) {
+      normal[d * i + c] = elements.normal[i][c];
+      tangent[d * i + c] = elements.tangent[i][c];
+    }
     const ContactLaw& l = elements.law[i];
     law[i] = static_cast<std::int64_t>(l.normal);
     cn[i] = l.cn;
@@ -62,8 +67,8 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
   ds.put_scalar("thickness", elements.thickness);
   ds.put("node", node);
   ds.put("lagrange_node", lagrange);
-  ds.put("normal", normal, {m, 2});
-  ds.put("tangent", tangent, {m, 2});
+  ds.put("normal", normal, {m, d});
+  ds.put("tangent", tangent, {m, d});
   ds.put("gap", std::span<const double>(elements.gap.data(), m));
   ds.put("weight", std::span<const double>(elements.weight.data(), m));
   ds.put("law", law);
@@ -79,8 +84,8 @@ void write_cont(const std::filesystem::path& path, const ContactElements& elemen
   ds.put("friction_alpha", alpha);
   ds.put("friction_of", friction_of);
   ds.put_text("obstacle_kind", elements.obstacle.kind);
-  ds.put("obstacle_point", std::span<const double>(elements.obstacle.point.data(), 2));
-  ds.put("obstacle_normal", std::span<const double>(elements.obstacle.normal.data(), 2));
+  ds.put("obstacle_point", std::span<const double>(elements.obstacle.point.data(), d));
+  ds.put("obstacle_normal", std::span<const double>(elements.obstacle.normal.data(), d));
   ds.put_scalar("obstacle_radius", elements.obstacle.radius);
   write_ds(path, ds);
 }
@@ -100,12 +105,14 @@ ContactElements read_cont(const std::filesystem::path& path, const Mesh& mesh) {
   SIG_VERIFY(num_nodes == mesh.num_nodes(), where << ": array 'num_nodes': " << num_nodes
                                                   << ", the mesh has " << mesh.num_nodes());
   elements.num_nodes = static_cast<int>(num_nodes);
+  const int d = mesh.dim;
+  elements.dim = d;
   elements.ref = static_cast<int>(ref);
   elements.thickness = ds.scalar("thickness");
   verify_in_range(elements.thickness, "MATERIAL", "thickness", where, "thickness", 1);
   // The geometry's meaning (core/ranges.hpp): an edited gap of 1e300 held the body off.
   const ValueRange gap_bound = gap_range();
-  const ValueRange weight_bound = weight_range(elements.thickness, diameter(mesh));
+  const ValueRange weight_bound = weight_range(elements.thickness, diameter(mesh), d);
   const std::vector<std::int64_t> node = ds.ints("node");
   const std::vector<std::int64_t> lagrange = ds.ints("lagrange_node");
   const std::vector<std::int64_t> law = ds.ints("law");
@@ -128,10 +135,10 @@ ContactElements read_cont(const std::filesystem::path& path, const Mesh& mesh) {
   const std::initializer_list<std::size_t> per_element = {
       lagrange.size(),   law.size(),       friction_law.size(), gap.size(),
       weight.size(),     cn.size(),        c3.size(),           depth.size(),
-      mu.size(),         threshold.size(), normal.size() / 2,   tangent.size() / 2,
+      mu.size(),         threshold.size(), normal.size() / d,   tangent.size() / d,
       a.size(),          b.size(),         alpha.size(),        friction_bound.size(),
       friction_of.size()};
-  SIG_VERIFY(normal.size() % 2 == 0 && tangent.size() % 2 == 0 &&
+  SIG_VERIFY(normal.size() % d == 0 && tangent.size() % d == 0 &&
                  std::all_of(per_element.begin(), per_element.end(),
                              [m](std::size_t size) { return size == m; }),
              where << ": arrays node, lagrange_node, normal, tangent, gap, weight and the law "
@@ -144,12 +151,13 @@ ContactElements read_cont(const std::filesystem::path& path, const Mesh& mesh) {
     SIG_VERIFY(lagrange[i] == elements.num_nodes + static_cast<std::int64_t>(i) + 1,
                where << ": array lagrange_node, element " << i + 1 << ": " << lagrange[i]
                      << " should be " << elements.num_nodes + i + 1);
-    const Eigen::Vector2d n(normal[2 * i], normal[2 * i + 1]);
+    const Point n = Eigen::Map<const Eigen::VectorXd>(normal.data() + d * i, d);
     SIG_VERIFY(std::abs(n.norm() - 1) <= 1e-12,
                where << ": array normal, element " << i + 1 << " is not a unit vector");
-    const Eigen::Vector2d t(tangent[2 * i], tangent[2 * i + 1]);
-    SIG_VERIFY((t - contact_tangent(n)).norm() <= 1e-12,
-               where << ": array tangent, element " << i + 1 << " is not (n2, -n1)");
+    const Point t = Eigen::Map<const Eigen::VectorXd>(tangent.data() + d * i, d);
+    SIG_VERIFY((t - contact_frame(n).col(0)).norm() <= 1e-12,
+               where << ": array tangent, element " << i + 1
+                     << (d == 2 ? " is not (n2, -n1)" : " is not the first tangent of its normal"));
     verify_in_range(gap[i], gap_bound, where, "gap", i + 1);
     verify_in_range(weight[i], weight_bound, where, "weight", i + 1);
     ContactLaw l;
@@ -185,10 +193,11 @@ ContactElements read_cont(const std::filesystem::path& path, const Mesh& mesh) {
   elements.obstacle.kind = ds.text("obstacle_kind");
   const std::vector<double> point = ds.reals("obstacle_point");
   const std::vector<double> obstacle_normal = ds.reals("obstacle_normal");
-  SIG_VERIFY(point.size() == 2 && obstacle_normal.size() == 2,
-             where << ": arrays obstacle_point and obstacle_normal must hold 2 values");
-  elements.obstacle.point = {point[0], point[1]};
-  elements.obstacle.normal = {obstacle_normal[0], obstacle_normal[1]};
+  SIG_VERIFY(static_cast<int>(point.size()) == d && static_cast<int>(obstacle_normal.size()) == d,
+             where << ": arrays obstacle_point and obstacle_normal must hold " << d
+                   << " values (the mesh is " << d << "D)");
+  elements.obstacle.point = Eigen::Map<const Eigen::VectorXd>(point.data(), d);
+  elements.obstacle.normal = Eigen::Map<const Eigen::VectorXd>(obstacle_normal.data(), d);
   elements.obstacle.radius = ds.scalar("obstacle_radius");
   try {
     make_obstacle(elements.obstacle); // the description must rebuild a valid obstacle

@@ -14,51 +14,64 @@ namespace sig {
 
 namespace {
 
-Eigen::Vector2d pair_field(const Card& card, const std::string& name) {
+// A point or vector of the mesh's dimension d: x,y in 2D, x,y,z in 3D.
+Point vector_field(const Card& card, const std::string& name, int d) {
   const std::vector<double> v = card.reals(name);
-  if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1])) {
+  if (static_cast<int>(v.size()) != d ||
+      !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); })) {
     std::ostringstream what;
-    what << "expects two finite numbers x,y; got " << v.size() << " value(s)";
+    what << "expects " << (d == 3 ? "three finite numbers x,y,z" : "two finite numbers x,y")
+         << " (the mesh is " << d << "D); got " << v.size() << " value(s)";
     card.fail(name, what.str());
   }
-  return {v[0], v[1]};
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), d);
 }
 
-// The reference must carry Gamma3 edges: list what the mesh has so the user can pick.
+// The reference must carry Gamma3 facets: list what the mesh has so the user can pick.
 void check_reference(const Card& card, const Mesh& mesh, int ref) {
   std::set<int> present;
   for (const Facet& e : mesh.facets)
     present.insert(e.ref);
   if (present.count(ref)) return;
   std::ostringstream what;
-  what << "reference " << ref << " carries no edge of the mesh; references on edges:";
+  what << "reference " << ref << " carries no " << mesh.facet_name()
+       << " of the mesh; references on " << mesh.facet_name() << "s:";
   if (present.empty()) what << " none";
   for (int r : present)
     what << ' ' << r;
   card.fail("ref", what.str());
 }
 
-std::unique_ptr<Obstacle> obstacle_from_card(const Card& card) {
-  const std::string kind = card.choice("obstacle", {"plane", "disc"});
+std::unique_ptr<Obstacle> obstacle_from_card(const Card& card, int d) {
+  const std::string kind = card.choice("obstacle", {"plane", "disc", "sphere", "cylinder"});
+  const std::string round = d == 3 ? "sphere" : "disc";
+  if (kind == "cylinder")
+    card.fail("obstacle",
+              "obstacle=cylinder is not implemented yet (issue 26): plane and " + round + " are");
+  if (kind != "plane" && kind != round)
+    card.fail("obstacle", "obstacle=" + kind + " is " + (d == 3 ? "2D" : "3D") + ", the mesh is " +
+                              std::to_string(d) + "D: use obstacle=" + round);
   // The fields of the other obstacle would be ignored: the deck says something it does not get.
-  const std::string other = kind == "disc" ? "plane" : "disc";
-  const std::array<const char*, 2> foreign = kind == "disc"
+  const std::string other = kind == round ? "plane" : round;
+  const std::array<const char*, 2> foreign = kind == round
                                                  ? std::array<const char*, 2>{"point", "normal"}
                                                  : std::array<const char*, 2>{"centre", "radius"};
   for (const char* field : foreign)
     if (card.has(field))
       card.fail(field, "is a field of obstacle=" + other + ", not of obstacle=" + kind +
                            " (remove it, or change the obstacle)");
-  if (kind == "disc") {
-    const Eigen::Vector2d centre = pair_field(card, "centre");
+  if (kind == round) {
+    const Point centre = vector_field(card, "centre", d);
     const double radius = card.real("radius"); // > 0: core/ranges.hpp
     return std::make_unique<Disc>(centre, radius);
   }
-  const Eigen::Vector2d point = pair_field(card, "point");
-  const Eigen::Vector2d normal = pair_field(card, "normal");
+  const Point point = vector_field(card, "point", d);
+  const Point normal = vector_field(card, "normal", d);
   if (normal.norm() == 0)
-    card.fail("normal", "zero-length normal; give the outward normal of the obstacle, pointing "
-                        "to the body's side (e.g. normal=0,1 for the foundation x2 <= 0)");
+    card.fail("normal", std::string("zero-length normal; give the outward normal of the obstacle, "
+                                    "pointing to the body's side (e.g. normal=") +
+                            (d == 3 ? "0,0,1 for the foundation x3 <= 0)"
+                                    : "0,1 for the foundation x2 <= 0)"));
   return std::make_unique<HalfPlane>(point, normal);
 }
 
@@ -168,7 +181,10 @@ std::optional<ContactElements> contact_from_cards(const Datafile& datafile, cons
   if (const std::optional<LawProblem> problem = law_problem(law))
     card.fail(problem->field == "g" && card.has("gap") ? "gap" : problem->field, problem->what);
   friction_from_cards(datafile, static_cast<int>(ref), law);
-  const std::unique_ptr<Obstacle> obstacle = obstacle_from_card(card);
+  if (mesh.dim == 3 && law.friction != FrictionLaw::none)
+    friction.front()->fail("law", "friction in 3D is not implemented yet (issue 26): the 3D "
+                                  "contact is frictionless for now (law=none)");
+  const std::unique_ptr<Obstacle> obstacle = obstacle_from_card(card, mesh.dim);
   std::vector<int> excluded;
   std::vector<int> zone = mesh.nodes_with_ref(static_cast<int>(ref));
   std::sort(zone.begin(), zone.end());

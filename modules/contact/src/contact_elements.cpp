@@ -2,7 +2,10 @@
 
 #include "core/error.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -17,17 +20,53 @@ namespace {
 // edge: below it a negative gap is set to 0, beyond it the node starts inside the obstacle.
 constexpr double kRoundoffGap = 1e-9;
 
-// The Gamma3 edges without repetition (an interface edge may be stored from both sides); the
-// first stored direction is kept.
-std::vector<Facet> unique_edges(const Mesh& mesh, int ref) {
-  std::vector<Facet> edges;
-  std::set<std::pair<int, int>> seen;
-  for (const Facet& e : mesh.facets) {
-    if (e.ref != ref) continue;
-    if (seen.insert({std::min(e.node[0], e.node[1]), std::max(e.node[0], e.node[1])}).second)
-      edges.push_back(e);
+const Eigen::IOFormat kCoordinates(Eigen::StreamPrecision, Eigen::DontAlignCols, ", ", ", ", "", "",
+                                   "(", ")");
+
+// The Gamma3 facets without repetition (an interface facet may be stored from both sides); the
+// first stored orientation is kept.
+std::vector<Facet> unique_facets(const Mesh& mesh, int ref) {
+  std::vector<Facet> facets;
+  std::set<std::array<int, 3>> seen;
+  for (const Facet& f : mesh.facets) {
+    if (f.ref != ref) continue;
+    std::array<int, 3> key{-1, -1, -1}; // an edge's third entry stays -1
+    for (int k = 0; k < std::min(f.node.size(), 3); ++k)
+      key[k] = f.node[k];
+    std::sort(key.begin(), key.end());
+    if (seen.insert(key).second) facets.push_back(f);
   }
-  return edges;
+  return facets;
+}
+
+// The measure of a facet (length of an edge, area of a face) and its outward normal scaled by
+// that measure (2D: the edge a -> b turned clockwise, the domain on its left; 3D: the right-hand
+// rule of mesh.hpp's Facet).
+double facet_measure(const Mesh& mesh, const Facet& f) {
+  const Point& a = mesh.nodes[f.node[0]];
+  if (mesh.dim == 2) return (mesh.nodes[f.node[1]] - a).norm();
+  const Eigen::Vector3d ab = mesh.nodes[f.node[1]] - a, ac = mesh.nodes[f.node[2]] - a;
+  return 0.5 * ab.cross(ac).norm();
+}
+
+Point outward_normal(const Mesh& mesh, const Facet& f) {
+  const Point& a = mesh.nodes[f.node[0]];
+  if (mesh.dim == 2) {
+    const Point d = mesh.nodes[f.node[1]] - a;
+    return Point(d.y(), -d.x());
+  }
+  const Eigen::Vector3d ab = mesh.nodes[f.node[1]] - a, ac = mesh.nodes[f.node[2]] - a;
+  return Point(0.5 * ab.cross(ac));
+}
+
+// The shortest side of the facets: the length roundoff is measured against.
+double shortest_side(const Mesh& mesh, const std::vector<Facet>& facets) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const Facet& f : facets)
+    for (int a = 0; a < f.node.size(); ++a)
+      for (int b = a + 1; b < f.node.size(); ++b)
+        shortest = std::min(shortest, (mesh.nodes[f.node[b]] - mesh.nodes[f.node[a]]).norm());
+  return shortest;
 }
 
 // The nodes of `edges` along the boundary chains they form (see build_contact_elements).
@@ -101,6 +140,14 @@ double ContactElements::bound(int i) const {
   return law[i].has_wall() ? gap[i] + law[i].depth : std::numeric_limits<double>::infinity();
 }
 
+std::vector<ContactFrame> ContactElements::frames() const {
+  std::vector<ContactFrame> R;
+  R.reserve(normal.size());
+  for (int i = 0; i < size(); ++i)
+    R.push_back(frame(i));
+  return R;
+}
+
 ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle& obstacle,
                                        const ContactLaw& law, double thickness,
                                        const std::vector<int>& excluded) {
@@ -109,29 +156,40 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
   const std::optional<LawProblem> inadmissible = law_problem(law);
   SIG_VERIFY(!inadmissible,
              "contact elements: " << inadmissible->field << " " << inadmissible->what);
-  const std::vector<Facet> edges = unique_edges(mesh, ref);
-  SIG_VERIFY(!edges.empty(), "contact elements: no mesh edge carries reference " << ref);
+  SIG_VERIFY(obstacle.dim() == mesh.dim, "contact elements: a "
+                                             << obstacle.dim() << "D " << obstacle.kind()
+                                             << " obstacle for a " << mesh.dim << "D mesh");
+  const std::vector<Facet> facets = unique_facets(mesh, ref);
+  SIG_VERIFY(!facets.empty(),
+             "contact elements: no mesh " << mesh.facet_name() << " carries reference " << ref);
 
-  // Tributary weights: each Gamma3 edge gives half its length to each end node.
+  // Tributary weights: each Gamma3 facet gives its measure over its d nodes to each of them.
   std::map<int, double> weight_of;
-  double shortest = std::numeric_limits<double>::infinity();
-  for (const Facet& e : edges) {
-    SIG_VERIFY(e.node[0] >= 0 && e.node[0] < mesh.num_nodes() && e.node[1] >= 0 &&
-                   e.node[1] < mesh.num_nodes() && e.node[0] != e.node[1],
-               "contact elements: edge (" << e.node[0] + 1 << ", " << e.node[1] + 1
-                                          << ") with reference " << ref << " is invalid");
-    const double length = (mesh.nodes[e.node[1]] - mesh.nodes[e.node[0]]).norm();
-    weight_of[e.node[0]] += 0.5 * length * thickness;
-    weight_of[e.node[1]] += 0.5 * length * thickness;
-    shortest = std::min(shortest, length);
+  for (const Facet& f : facets) {
+    std::set<int> distinct;
+    for (int k : f.node) {
+      SIG_VERIFY(k >= 0 && k < mesh.num_nodes() && distinct.insert(k).second,
+                 "contact elements: a " << mesh.facet_name() << " with reference " << ref
+                                        << " has an invalid or repeated node " << k + 1);
+    }
+    const double share = facet_measure(mesh, f) / mesh.dim * (mesh.dim == 2 ? thickness : 1.0);
+    for (int k : f.node)
+      weight_of[k] += share;
   }
+  const double shortest = shortest_side(mesh, facets);
 
   ContactElements elements;
+  elements.dim = mesh.dim;
   elements.num_nodes = mesh.num_nodes();
   elements.ref = ref;
   elements.thickness = thickness;
   elements.obstacle = obstacle.description();
-  elements.node = nodes_along_boundary(edges);
+  if (mesh.dim == 2) {
+    elements.node = nodes_along_boundary(facets);
+  } else {
+    for (const auto& entry : weight_of)
+      elements.node.push_back(entry.first);
+  }
   const std::set<int> skip(excluded.begin(), excluded.end());
   std::erase_if(elements.node, [&](int k) { return skip.count(k) > 0; });
   SIG_VERIFY(!elements.node.empty(),
@@ -141,16 +199,16 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
   elements.weight.resize(m);
   for (int i = 0; i < m; ++i) {
     const int k = elements.node[i];
-    const Eigen::Vector2d& x = mesh.nodes[k];
+    const Point& x = mesh.nodes[k];
     double distance = obstacle.signed_distance(x);
     SIG_VERIFY(distance >= -kRoundoffGap * shortest,
-               "contact elements: node " << k + 1 << " (" << x.x() << ", " << x.y()
-                                         << ") starts inside the " << obstacle.kind()
+               "contact elements: node " << k + 1 << " " << x.transpose().format(kCoordinates)
+                                         << " starts inside the " << obstacle.kind()
                                          << " obstacle (signed distance " << distance << ")");
     distance = std::max(distance, 0.0);
     elements.lagrange_node.push_back(elements.num_nodes + i);
     elements.normal.push_back(obstacle.normal(x));
-    elements.tangent.push_back(contact_tangent(elements.normal.back()));
+    elements.tangent.push_back(Point(elements.frame(i).col(0)));
     elements.gap(i) = distance;
     elements.weight(i) = weight_of.at(k);
     elements.law.push_back(law);
@@ -159,14 +217,11 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
 }
 
 std::vector<int> nodes_facing_away(const Mesh& mesh, const ContactElements& elements) {
-  // The stored edges have the domain on their left: the outward normal of a -> b is the
-  // direction b - a turned clockwise.
-  std::map<int, Eigen::Vector2d> outward;
-  for (const Facet& e : unique_edges(mesh, elements.ref)) {
-    const Eigen::Vector2d d = mesh.nodes[e.node[1]] - mesh.nodes[e.node[0]];
-    const Eigen::Vector2d n(d.y(), -d.x());
-    for (int k : {e.node[0], e.node[1]})
-      outward.try_emplace(k, Eigen::Vector2d::Zero()).first->second += n;
+  std::map<int, Point> outward;
+  for (const Facet& f : unique_facets(mesh, elements.ref)) {
+    const Point n = outward_normal(mesh, f);
+    for (int k : f.node)
+      outward.try_emplace(k, Point(Point::Zero(mesh.dim))).first->second += n;
   }
   std::vector<int> away;
   for (int i = 0; i < elements.size(); ++i)
@@ -175,14 +230,15 @@ std::vector<int> nodes_facing_away(const Mesh& mesh, const ContactElements& elem
 }
 
 Eigen::SparseMatrix<double> normal_operator(const ContactElements& elements, int ndof) {
+  const int d = elements.dim;
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(2 * elements.size());
+  entries.reserve(static_cast<std::size_t>(d) * elements.size());
   for (int i = 0; i < elements.size(); ++i) {
     const int k = elements.node[i];
-    SIG_VERIFY(k >= 0 && 2 * k + 1 < ndof,
+    SIG_VERIFY(k >= 0 && d * k + d - 1 < ndof,
                "normal operator: contact node " << k + 1 << " has no dofs among " << ndof);
-    entries.emplace_back(i, 2 * k, -elements.normal[i].x());
-    entries.emplace_back(i, 2 * k + 1, -elements.normal[i].y());
+    for (int c = 0; c < d; ++c)
+      entries.emplace_back(i, d * k + c, -elements.normal[i][c]);
   }
   Eigen::SparseMatrix<double> b_n(elements.size(), ndof);
   b_n.setFromTriplets(entries.begin(), entries.end());

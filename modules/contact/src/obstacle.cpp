@@ -3,15 +3,32 @@
 #include "core/error.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace sig {
 
-HalfPlane::HalfPlane(const Eigen::Vector2d& point, const Eigen::Vector2d& normal) : point_(point) {
+namespace {
+
+std::string coordinates(const Point& x) {
+  std::ostringstream out;
+  out << "(";
+  for (Eigen::Index k = 0; k < x.size(); ++k)
+    out << (k ? ", " : "") << x[k];
+  out << ")";
+  return out.str();
+}
+
+} // namespace
+
+HalfPlane::HalfPlane(const Point& point, const Point& normal) : point_(point) {
+  SIG_VERIFY((normal.size() == 2 || normal.size() == 3) && point.size() == normal.size(),
+             "half plane: a point of " << point.size() << " and a normal of " << normal.size()
+                                       << " components; both must have 2 (2D) or 3 (3D)");
   const double length = normal.norm();
   SIG_VERIFY(std::isfinite(length) && length > 0,
-             "half plane: the normal (" << normal.x() << ", " << normal.y()
-                                        << ") has zero length; give the outward normal of the "
-                                           "obstacle, e.g. (0, 1) for the foundation x2 <= 0");
+             "half plane: the normal " << coordinates(normal)
+                                       << " has zero length; give the outward normal of the "
+                                          "obstacle, e.g. (0, 1) for the foundation x2 <= 0");
   SIG_VERIFY(point.allFinite(), "half plane: the point is not finite");
   n_ = normal / length;
 }
@@ -20,34 +37,41 @@ ObstacleDescription HalfPlane::description() const {
   return {"plane", point_, n_, 0.0};
 }
 
-Disc::Disc(const Eigen::Vector2d& centre, double radius) : centre_(centre), radius_(radius) {
+Disc::Disc(const Point& centre, double radius) : centre_(centre), radius_(radius) {
+  SIG_VERIFY(centre.size() == 2 || centre.size() == 3,
+             "disc obstacle: a centre of " << centre.size() << " components; 2 or 3");
   SIG_VERIFY(std::isfinite(radius) && radius > 0,
-             "disc obstacle: radius " << radius << " must be > 0");
-  SIG_VERIFY(centre.allFinite(), "disc obstacle: the centre is not finite");
+             kind() << " obstacle: radius " << radius << " must be > 0");
+  SIG_VERIFY(centre.allFinite(), kind() << " obstacle: the centre is not finite");
 }
 
-double Disc::signed_distance(const Eigen::Vector2d& x) const {
+double Disc::signed_distance(const Point& x) const {
   return (x - centre_).norm() - radius_;
 }
 
-Eigen::Vector2d Disc::normal(const Eigen::Vector2d& x) const {
-  const Eigen::Vector2d radial = x - centre_;
+Point Disc::normal(const Point& x) const {
+  const Point radial = x - centre_;
   const double length = radial.norm();
-  SIG_VERIFY(length > 0, "disc obstacle: the normal is undefined at the centre ("
-                             << centre_.x() << ", " << centre_.y() << ")");
+  SIG_VERIFY(length > 0,
+             kind() << " obstacle: the normal is undefined at the centre " << coordinates(centre_));
   return radial / length;
 }
 
 ObstacleDescription Disc::description() const {
-  return {"disc", centre_, Eigen::Vector2d::Zero(), radius_};
+  return {kind(), centre_, Point(Point::Zero(centre_.size())), radius_};
 }
 
 std::unique_ptr<Obstacle> make_obstacle(const ObstacleDescription& description) {
   if (description.kind == "plane")
     return std::make_unique<HalfPlane>(description.point, description.normal);
-  if (description.kind == "disc")
+  if (description.kind == "disc" || description.kind == "sphere") {
+    SIG_VERIFY(description.point.size() == (description.kind == "sphere" ? 3 : 2),
+               "a " << description.kind << " obstacle with a centre of " << description.point.size()
+                    << " components");
     return std::make_unique<Disc>(description.point, description.radius);
-  SIG_VERIFY(false, "obstacle kind '" << description.kind << "' is unknown; known: plane, disc");
+  }
+  SIG_VERIFY(false,
+             "obstacle kind '" << description.kind << "' is unknown; known: plane, disc, sphere");
   return nullptr; // not reached
 }
 

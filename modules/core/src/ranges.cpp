@@ -187,7 +187,11 @@ ValueRange gap_range() {
           "(1e30 a coordinate)"};
 }
 
-ValueRange weight_range(double thickness, double diameter) {
+ValueRange weight_range(double thickness, double diameter, int dim) {
+  if (dim == 3)
+    return {0, diameter * diameter, true, false,
+            "a weight is a third of a node's contact faces, together smaller than the square of "
+            "the mesh's diameter"};
   return {0, thickness * diameter, true, false,
           "a weight is half of a node's two contact edges, each no longer than the mesh's "
           "diameter, times the thickness"};

@@ -1,6 +1,8 @@
 // The march in velocity on a linear bulk (linear_contact_march.hpp).
 #include "integrator/linear_contact_march.hpp"
 
+#include "solver/nodal_frames.hpp"
+
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/condensed_bulk.hpp"
@@ -41,9 +43,12 @@ LinearContactMarch::LinearContactMarch(VelocityScheme& scheme, const VelocityCon
                        << c.setting.size() << " laws");
   method_ = make_contact_method(parameters);
   options_ = newton_options(parameters);
-  condensation_ =
-      std::make_unique<ContactCondensation>(S, c.dofs, c.normal, c.setting.has_friction(), backend,
-                                            true); // S is positive definite
+  std::vector<int> first_dofs;
+  for (const std::array<int, 2>& dofs : c.dofs)
+    first_dofs.push_back(dofs[0]); // the second follows it (ReducedSystem::contact_node_dofs)
+  condensation_ = std::make_unique<ContactCondensation>(
+      S, std::move(first_dofs), frames_of(c.normal), c.setting.has_friction(), backend,
+      true); // S is positive definite
   Eigen::VectorXd default_stiffness(c.size());
   for (int p = 0; p < c.size(); ++p)
     default_stiffness[p] = off_wall_stiffness(*method_, c.setting.law[p], c.setting.weight[p]);

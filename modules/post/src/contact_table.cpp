@@ -19,9 +19,11 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
   const auto normal_status = numbers(solution, "normal_status");
   const auto friction_status = numbers(solution, "friction_status");
   const std::size_t m = node.size();
-  SIG_VERIFY(
-      normal.size() == 2 * m && tangent.size() == 2 * m && gap.size() == m && weight.size() == m,
-      cont.source << ": arrays node, normal, tangent (m x 2), gap, weight disagree for m = " << m);
+  const std::size_t d = static_cast<std::size_t>(mesh.dim);
+  SIG_VERIFY(normal.size() == d * m && tangent.size() == d * m && gap.size() == m &&
+                 weight.size() == m,
+             cont.source << ": arrays node, normal, tangent (m x " << d
+                         << "), gap, weight disagree for m = " << m);
   SIG_VERIFY(multiplier.size() == m && tangential.size() == m && normal_status.size() == m &&
                  friction_status.size() == m,
              solution.source << ": arrays multiplier, tangential_multiplier, normal_status and "
@@ -29,7 +31,7 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
                              << multiplier.size() << ", " << tangential.size() << ", "
                              << normal_status.size() << " and " << friction_status.size()
                              << " values for " << m << " contact elements");
-  SIG_VERIFY(u.size() == 2 * mesh.nodes.size(), solution.source << ": array 'u' holds " << u.size()
+  SIG_VERIFY(u.size() == d * mesh.nodes.size(), solution.source << ": array 'u' holds " << u.size()
                                                                 << " values for "
                                                                 << mesh.num_nodes() << " nodes");
   std::vector<ContactRow> rows(m);
@@ -41,12 +43,17 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
     const int k = static_cast<int>(node[i]) - 1;
     auto& r = rows[i];
     r.node = k + 1;
-    r.x1 = mesh.nodes[k].x();
-    r.x2 = mesh.nodes[k].y();
-    r.u1 = u[2 * k];
-    r.u2 = u[2 * k + 1];
-    // u_n = -n . u with n the obstacle's outward normal (contact/contact_elements.hpp).
-    const double un = -(r.u1 * normal[2 * i] + r.u2 * normal[2 * i + 1]);
+    r.dim = mesh.dim;
+    double un = 0, slip = 0;
+    for (std::size_t c = 0; c < d; ++c) {
+      const double x = mesh.nodes[k][static_cast<Eigen::Index>(c)], uc = u[d * k + c];
+      (c == 0 ? r.x1 : c == 1 ? r.x2 : r.x3) = x;
+      (c == 0 ? r.u1 : c == 1 ? r.u2 : r.u3) = uc;
+      // u_n = -n . u with n the obstacle's outward normal (contact/contact_elements.hpp); the
+      // slip along the (first) tangent.
+      un -= uc * normal[d * i + c];
+      slip += uc * tangent[d * i + c];
+    }
     r.gap = gap[i] - un;
     r.multiplier = multiplier[i];
     r.weight = weight[i];
@@ -55,7 +62,7 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
     r.pressure = multiplier[i] / weight[i];
     r.tangential_multiplier = tangential[i];
     r.tangential_pressure = tangential[i] / weight[i];
-    r.slip = r.u1 * tangent[2 * i] + r.u2 * tangent[2 * i + 1];
+    r.slip = slip;
     try {
       r.normal_status = normal_status_of_code(static_cast<long>(normal_status[i]));
       r.friction_status = friction_status_of_code(static_cast<long>(friction_status[i]));
@@ -69,18 +76,26 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
 }
 
 std::string contact_csv(const std::vector<ContactRow>& rows, bool converged) {
-  std::string out = "node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,"
-                    "friction_status,tangential_multiplier,tangential_pressure,slip,converged\n";
+  const bool three = !rows.empty() && rows.front().dim == 3;
+  std::string out = three ? "node,x1,x2,x3,u1,u2,u3," : "node,x1,x2,u1,u2,";
+  out += "gap,multiplier,pressure,status,normal_status,friction_status,tangential_multiplier,"
+         "tangential_pressure,slip,converged\n";
   char line[768];
   for (const auto& r : rows) {
     const char* status = r.contact                               ? "contact"
                          : r.normal_status == NormalStatus::held ? "held"
                                                                  : "free";
-    std::snprintf(line, sizeof line,
-                  "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%s,%s,%.17g,%.17g,%.17g,%d\n",
-                  r.node, r.x1, r.x2, r.u1, r.u2, r.gap, r.multiplier, r.pressure, status,
-                  label(r.normal_status).c_str(), label(r.friction_status).c_str(),
-                  r.tangential_multiplier, r.tangential_pressure, r.slip, converged ? 1 : 0);
+    if (three)
+      std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,", r.node, r.x1,
+                    r.x2, r.x3, r.u1, r.u2, r.u3);
+    else
+      std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.17g,", r.node, r.x1, r.x2, r.u1,
+                    r.u2);
+    out += line;
+    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%s,%s,%s,%.17g,%.17g,%.17g,%d\n", r.gap,
+                  r.multiplier, r.pressure, status, label(r.normal_status).c_str(),
+                  label(r.friction_status).c_str(), r.tangential_multiplier, r.tangential_pressure,
+                  r.slip, converged ? 1 : 0);
     out += line;
   }
   return out;

@@ -20,40 +20,40 @@ int position_in(const std::vector<int>& interface, int dof) {
 
 } // namespace
 
-ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K,
-                                         const std::vector<std::array<int, 2>>& node_dofs,
-                                         std::vector<Eigen::Vector2d> normals, bool tangential,
+ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K, std::vector<int> first_dofs,
+                                         std::vector<ContactFrame> frames, bool tangential,
                                          const std::string& backend, bool positive_definite)
-    : K_(std::move(K)), normals_(std::move(normals)), dofs_(node_dofs) {
-  const int m = static_cast<int>(dofs_.size());
-  SIG_VERIFY(static_cast<int>(normals_.size()) == m,
-             "contact condensation: " << normals_.size() << " normals for " << m << " nodes");
+    : K_(std::move(K)), frames_of_nodes_(std::move(frames)), first_(std::move(first_dofs)) {
+  const int m = static_cast<int>(first_.size());
+  SIG_VERIFY(static_cast<int>(frames_of_nodes_.size()) == m,
+             "contact condensation: " << frames_of_nodes_.size() << " frames for " << m
+                                      << " nodes");
+  d_ = m > 0 ? static_cast<int>(frames_of_nodes_.front().rows()) : 2;
+  for (const ContactFrame& R : frames_of_nodes_)
+    SIG_VERIFY(R.rows() == d_ && R.cols() == d_, "contact condensation: frames of different sizes");
+  // [choice] One tangential unknown per node: the 3D frictional condensation (two slips per
+  // node) is not implemented yet (issue 26), and the cards refuse friction in 3D.
+  SIG_VERIFY(!tangential || d_ == 2, "contact condensation: friction in 3D is not implemented yet");
   // 1. Nodal frames, so each normal displacement and slip is one unknown; applied in place, K
   //    keeps its pattern.
   const Stopwatch clock;
-  std::vector<int> first_dofs(m);
-  for (int p = 0; p < m; ++p) {
-    SIG_VERIFY(dofs_[p][1] == dofs_[p][0] + 1,
-               "contact node " << p + 1 << ": its dofs are not consecutive");
-    first_dofs[p] = dofs_[p][0];
-  }
   K_.makeCompressed();
-  frames_ = std::make_unique<FrameRotation>(K_, std::move(first_dofs));
-  frames_->rotate(K_, normals_);
+  frames_ = std::make_unique<FrameRotation>(K_, first_, d_);
+  frames_->rotate(K_, frames_of_nodes_);
 
   // 2. The Schur complement onto the normal unknowns (and the slips with friction): one sparse
   //    factorization of the rest, the body with Gamma3 held, positive definite even when K is
-  //    not.
+  //    not. The normal unknown is the frame's last component, the slip its first.
   for (int p = 0; p < m; ++p) {
-    interface_.push_back(dofs_[p][1]);
-    if (tangential) interface_.push_back(dofs_[p][0]);
+    interface_.push_back(first_[p] + d_ - 1);
+    if (tangential) interface_.push_back(first_[p]);
   }
   std::sort(interface_.begin(), interface_.end());
   SIG_VERIFY(std::adjacent_find(interface_.begin(), interface_.end()) == interface_.end(),
              "a node appears in two contact elements");
   for (int p = 0; p < m; ++p) {
-    normal_dof_.push_back(position_in(interface_, dofs_[p][1]));
-    if (tangential) tangential_dof_.push_back(position_in(interface_, dofs_[p][0]));
+    normal_dof_.push_back(position_in(interface_, first_[p] + d_ - 1));
+    if (tangential) tangential_dof_.push_back(position_in(interface_, first_[p]));
   }
   try {
     schur_ = std::make_unique<SchurComplement>(K_, interface_, backend, MatrixKind::spd,
@@ -93,14 +93,14 @@ Eigen::VectorXd ContactCondensation::condense(const Eigen::VectorXd& f) {
   SIG_VERIFY(f.size() == K_.rows(),
              "contact condensation: a load of size " << f.size() << " for " << K_.rows());
   load_ = f;
-  frames_->to_frames(load_, normals_);
+  frames_->to_frames(load_, frames_of_nodes_);
   return schur_->condense(load_);
 }
 
 Eigen::VectorXd ContactCondensation::expand(const Eigen::VectorXd& w) {
   SIG_VERIFY(load_.size() == K_.rows(), "contact condensation: expand() before any condense()");
   Eigen::VectorXd u = schur_->expand(load_, w);
-  frames_->from_frames(u, normals_);
+  frames_->from_frames(u, frames_of_nodes_);
   return u;
 }
 
@@ -108,7 +108,7 @@ Eigen::VectorXd ContactCondensation::restrict(const Eigen::VectorXd& u) const {
   SIG_VERIFY(u.size() == K_.rows(),
              "contact condensation: a vector of size " << u.size() << " for " << K_.rows());
   Eigen::VectorXd framed = u;
-  frames_->to_frames(framed, normals_);
+  frames_->to_frames(framed, frames_of_nodes_);
   Eigen::VectorXd w(static_cast<Eigen::Index>(interface_.size()));
   for (std::size_t k = 0; k < interface_.size(); ++k)
     w[static_cast<Eigen::Index>(k)] = framed[interface_[k]];
@@ -119,11 +119,11 @@ double ContactCondensation::relative_residual(const Eigen::VectorXd& u, const Ei
                                               const Eigen::VectorXd& T) const {
   SIG_VERIFY(load_.size() == K_.rows(), "contact condensation: no load condensed yet");
   Eigen::VectorXd framed = u;
-  frames_->to_frames(framed, normals_);
+  frames_->to_frames(framed, frames_of_nodes_);
   Eigen::VectorXd r = K_ * framed - load_;
   for (int p = 0; p < contacts(); ++p) {
-    r[dofs_[p][1]] += N[p];
-    if (tangential()) r[dofs_[p][0]] += T[p];
+    r[first_[p] + d_ - 1] += N[p];
+    if (tangential()) r[first_[p]] += T[p];
   }
   return r.norm() / std::max(load_.norm(), 1e-300);
 }

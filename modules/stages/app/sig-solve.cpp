@@ -96,33 +96,32 @@ int main(int argc, char** argv) {
     //    the words for a matrix that fails to factorize all the same.
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    std::optional<sig::ContactElements> contact;
+    if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     if (mesh.dim == 3) {
-      // A 3D deck is one linear solve for now (issue 26): sig-contact and sig-material refused
-      // its contact and its hyperelastic laws already.
-      if (has_contact) sig::require_2d(mesh, "sig-solve", "contact (CONTACT card)");
+      // A 3D deck is small strain for now (issue 26): sig-material refused its hyperelastic laws,
+      // sig-contact its friction.
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail("u", "an initial displacement in 3D is not "
                                                    "implemented yet (issue 26)");
-      sig::verify_rigid_motions_held_3d(mesh, system.dirichlet_dofs, datafile.path);
-      sig::refuse_load_steps(datafile, "a small-strain solve is linear in the load");
-      sig::warn_unused_iteration_fields(datafile, "a small-strain deck without contact is one "
-                                                  "linear solve");
-      const sig::StaticSolution solution = sig::solve_linear_elasticity(system, backend);
-      sig::write_solution(args.ds_path("b"), solution, method, backend, datafile.title());
-      std::cout << "sig-solve: 3D, " << method << " (" << backend << "), " << solution.unknowns
-                << " dofs -> " << args.ds_path("b").string() << "\n";
-      return;
+      if (contact)
+        sig::verify_rigid_motions_held_3d(mesh, system.dirichlet_dofs, datafile.path, contact->node,
+                                          contact->normal);
+      else
+        sig::verify_rigid_motions_held_3d(mesh, system.dirichlet_dofs, datafile.path);
+    } else {
+      const std::vector<Eigen::Vector2d> normals =
+          contact ? std::vector<Eigen::Vector2d>(contact->normal.begin(), contact->normal.end())
+                  : std::vector<Eigen::Vector2d>{};
+      const sig::Holds held = contact ? sig::holds_of(system.dirichlet_dofs, contact->node, normals,
+                                                      contact->has_friction())
+                                      : sig::holds_of(system.dirichlet_dofs);
+      sig::verify_rigid_motions_held(mesh, held, datafile.path);
+      sig::explain_factorization_failures(
+          [deck = datafile.path, outdir = args.outdir, held](const std::string& library) {
+            return deck + ": " + sig::explain_failed_factorization(outdir, &held, false, library);
+          });
     }
-    std::optional<sig::ContactElements> contact;
-    if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
-    const sig::Holds held = contact ? sig::holds_of(system.dirichlet_dofs, contact->node,
-                                                    contact->normal, contact->has_friction())
-                                    : sig::holds_of(system.dirichlet_dofs);
-    sig::verify_rigid_motions_held(mesh, held, datafile.path);
-    sig::explain_factorization_failures(
-        [deck = datafile.path, outdir = args.outdir, held](const std::string& library) {
-          return deck + ": " + sig::explain_failed_factorization(outdir, &held, false, library);
-        });
 
     // 3. Large deformation when a law is hyperelastic (the TAE's K is then unused).
     const sig::MaterialTable table = sig::read_mili(args.ds_path("mili"));

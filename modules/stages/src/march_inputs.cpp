@@ -99,7 +99,7 @@ VelocityContact velocity_contact(const ContactElements& elements, const ReducedS
   VelocityContact c;
   for (int p = 0; p < elements.size(); ++p)
     c.dofs.push_back(reduced.contact_node_dofs(elements.node[p]));
-  c.normal = elements.normal;
+  c.normal.assign(elements.normal.begin(), elements.normal.end()); // 2D: sig-march requires it
   c.setting = {elements.law, elements.weight};
   return c;
 }

@@ -14,18 +14,18 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 namespace sig {
 
 namespace {
 
-/// The reduced dofs (u1, u2) of each contact node, in element order.
-std::vector<std::array<int, 2>> contact_dofs(const ReducedSystem& reduced,
-                                             const ContactElements& contact) {
-  std::vector<std::array<int, 2>> dofs;
+/// The reduced index of the first of the d dofs of each contact node, in element order.
+std::vector<int> contact_first_dofs(const ReducedSystem& reduced, const ContactElements& contact) {
+  std::vector<int> first;
   for (int p = 0; p < contact.size(); ++p)
-    dofs.push_back(reduced.contact_node_dofs(contact.node[p]));
-  return dofs;
+    first.push_back(reduced.contact_node_first_dof(contact.node[p], contact.dim));
+  return first;
 }
 
 } // namespace
@@ -34,8 +34,9 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
   std::vector<int> held;
   for (int p = 0; p < contact.size(); ++p) {
     ContactLaw& law = contact.law[p];
-    for (int component = 0; component < 2; ++component) {
-      const int dof = 2 * contact.node[p] + component;
+    const int d = contact.dim;
+    for (int component = 0; component < d; ++component) {
+      const int dof = d * contact.node[p] + component;
       const auto at =
           std::lower_bound(system.dirichlet_dofs.begin(), system.dirichlet_dofs.end(), dof);
       if (at == system.dirichlet_dofs.end() || *at != dof) continue;
@@ -51,17 +52,22 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
                     std::to_string(contact.node[p] + 1) +
                     ") has its normal component held by a DIRICHLET card: it is out of the "
                     "contact set, its normal force the condition's reaction");
-      } else if (std::abs(along_t) >= kAligned) {
+      } else if (d == 2 && std::abs(along_t) >= kAligned) {
+        // In 3D a held axis of the tangent plane is one direction of a two-component slip, which
+        // the law's scalar held slip cannot say (contact_kernel.hpp refuses it).
         law.held_tangential = true;
         law.held_slip = along_t * value;
       } else {
-        const Eigen::Vector2d n = contact.normal[p];
+        std::ostringstream n;
+        n << contact.normal[p].transpose().format(Eigen::IOFormat(
+            Eigen::StreamPrecision, Eigen::DontAlignCols, ", ", ", ", "", "", "(", ")"));
         SIG_VERIFY(false, "contact node " << p + 1 << " (mesh node " << contact.node[p] + 1
                                           << "): a DIRICHLET card holds u" << component + 1
-                                          << ", which is neither the obstacle's normal (" << n.x()
-                                          << ", " << n.y()
-                                          << ") nor its tangent there; hold only the normal or "
-                                             "the tangential component of a contact node, or "
+                                          << ", which is neither the obstacle's normal " << n.str()
+                                          << (d == 2 ? " nor its tangent there; hold only the "
+                                                       "normal or the tangential component"
+                                                     : " there; hold only the normal component")
+                                          << " of a contact node, or "
                                              "take the node out of the contact zone (CONTACT "
                                              "exclude=REF)");
       }
@@ -102,13 +108,14 @@ StaticSolution solve_static_contact(const LinearSystem& system, ContactElements 
              "a DIRICHLET card holds a component of a contact node, which the penalty method "
              "cannot impose (it has no multipliers): use SOLVER method=alm or pdas");
   ReducedSystem reduced = reduce(system, held);
-  const std::vector<std::array<int, 2>> dofs = contact_dofs(reduced, contact);
+  const std::vector<int> first_dofs = contact_first_dofs(reduced, contact);
   const bool friction = contact.has_friction();
   StaticSolution s;
 
   // 1. The bulk in nodal frames condensed onto the normal displacements of the contact nodes
   //    (and their slips with friction): one sparse factorization.
-  ContactCondensation condensation(std::move(reduced.K), dofs, contact.normal, friction, backend);
+  ContactCondensation condensation(std::move(reduced.K), first_dofs, contact.frames(), friction,
+                                   backend);
   s.seconds["frames"] = condensation.seconds_frames();
   s.seconds["factorize"] = condensation.seconds_factorize();
   s.seconds["schur"] = condensation.seconds_schur();
@@ -168,8 +175,9 @@ StaticSolution solve_static_contact(const LinearSystem& system, ContactElements 
     // Displacements beyond 1e10 times the contact boundary's length (or its largest gap) resolve
     // the gaps to worse than 1e-6 of that length (round-off 1e-16 of the displacement): loads
     // that large against the stiffness, not a free motion, break the equilibrium.
-    const double length =
-        std::max(contact.gap.maxCoeff(), contact.weight.sum() / contact.thickness);
+    const double extent = contact.dim == 3 ? std::sqrt(contact.weight.sum())
+                                           : contact.weight.sum() / contact.thickness;
+    const double length = std::max(contact.gap.maxCoeff(), extent);
     const double reach = s.u.cwiseAbs().maxCoeff();
     SIG_VERIFY(reach <= 1e10 * length,
                "the contact solve cannot hold its conditions: the displacement reaches "

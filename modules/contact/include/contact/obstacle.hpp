@@ -6,7 +6,10 @@
 // Sign convention (fixed for the whole code): d(x) > 0 outside the obstacle, on the side where
 // the deformable body lives; n(x) is the unit normal of the obstacle pointing from the obstacle
 // into the body's side. The foundation of the thesis scenes, x2 <= 0, is
-// HalfPlane({0, 0}, {0, 1}).
+// HalfPlane({0, 0}, {0, 1}). Points have the mesh's dimension: a half plane and a disc in 2D, a
+// half space and a ball (kind "sphere", its boundary) in 3D, one class each.
+#include "mesh/mesh.hpp"
+
 #include <Eigen/Core>
 #include <memory>
 #include <string>
@@ -15,53 +18,56 @@ namespace sig {
 
 /// What a contact DS stores about its obstacle, enough to rebuild it (make_obstacle).
 struct ObstacleDescription {
-  std::string kind;                                 ///< "plane" or "disc"
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();  ///< plane: a boundary point; disc: centre
-  Eigen::Vector2d normal = Eigen::Vector2d::Zero(); ///< plane: outward unit normal; disc: 0
-  double radius = 0;                                ///< disc only
+  std::string kind;  ///< "plane", "disc" (2D) or "sphere" (3D)
+  Point point;       ///< plane: a boundary point; disc, sphere: centre
+  Point normal;      ///< plane: outward unit normal; disc, sphere: 0
+  double radius = 0; ///< disc and sphere only
 };
 
 class Obstacle {
 public:
   virtual ~Obstacle() = default;
   /// d(x): distance to the obstacle boundary, > 0 on the body's side, < 0 inside.
-  virtual double signed_distance(const Eigen::Vector2d& x) const = 0;
+  virtual double signed_distance(const Point& x) const = 0;
   /// n(proj(x)): outward unit normal of the obstacle at the projection of x on its boundary.
-  virtual Eigen::Vector2d normal(const Eigen::Vector2d& x) const = 0;
+  virtual Point normal(const Point& x) const = 0;
+  /// The dimension of the space it lives in: 2 or 3.
+  virtual int dim() const = 0;
   virtual std::string kind() const = 0;
   virtual ObstacleDescription description() const = 0;
   /// proj(x) = x - d(x) n(x): exact for obstacles whose d is the true distance (all here).
-  Eigen::Vector2d projection(const Eigen::Vector2d& x) const {
-    return x - signed_distance(x) * normal(x);
-  }
+  Point projection(const Point& x) const { return x - signed_distance(x) * normal(x); }
 };
 
-/// The half plane {x : (x - p).n <= 0}; the body lives where (x - p).n > 0.
+/// The half plane (half space in 3D) {x : (x - p).n <= 0}; the body lives where (x - p).n > 0.
 class HalfPlane final : public Obstacle {
 public:
-  /// `normal` is normalized; a zero-length or non-finite normal is a sig::Error.
-  HalfPlane(const Eigen::Vector2d& point, const Eigen::Vector2d& normal);
-  double signed_distance(const Eigen::Vector2d& x) const override { return (x - point_).dot(n_); }
-  Eigen::Vector2d normal(const Eigen::Vector2d&) const override { return n_; }
+  /// `normal` is normalized; a zero-length or non-finite normal, or a point and a normal of
+  /// different dimensions (not 2 or 3), is a sig::Error.
+  HalfPlane(const Point& point, const Point& normal);
+  double signed_distance(const Point& x) const override { return (x - point_).dot(n_); }
+  Point normal(const Point&) const override { return n_; }
+  int dim() const override { return static_cast<int>(n_.size()); }
   std::string kind() const override { return "plane"; }
   ObstacleDescription description() const override;
 
 private:
-  Eigen::Vector2d point_, n_;
+  Point point_, n_;
 };
 
-/// A rigid disc {x : |x - c| <= R}; the body lives outside it. The normal is undefined at the
-/// centre, where asking for it is a sig::Error.
+/// A rigid disc {x : |x - c| <= R} (a ball in 3D, kind "sphere"); the body lives outside it. The
+/// normal is undefined at the centre, where asking for it is a sig::Error.
 class Disc final : public Obstacle {
 public:
-  Disc(const Eigen::Vector2d& centre, double radius); ///< radius > 0
-  double signed_distance(const Eigen::Vector2d& x) const override;
-  Eigen::Vector2d normal(const Eigen::Vector2d& x) const override;
-  std::string kind() const override { return "disc"; }
+  Disc(const Point& centre, double radius); ///< radius > 0, centre of 2 or 3 components
+  double signed_distance(const Point& x) const override;
+  Point normal(const Point& x) const override;
+  int dim() const override { return static_cast<int>(centre_.size()); }
+  std::string kind() const override { return dim() == 3 ? "sphere" : "disc"; }
   ObstacleDescription description() const override;
 
 private:
-  Eigen::Vector2d centre_;
+  Point centre_;
   double radius_;
 };
 

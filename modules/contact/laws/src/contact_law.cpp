@@ -1,11 +1,32 @@
 #include "contact/contact_law.hpp"
 
+#include <Eigen/Geometry>
+
 #include "core/error.hpp"
 
 #include <cmath>
 #include <sstream>
 
 namespace sig {
+
+ContactFrame contact_frame(const Eigen::Ref<const Eigen::VectorXd>& n) {
+  const auto d = n.size();
+  SIG_VERIFY(d == 2 || d == 3, "contact frame: a normal of " << d << " components");
+  ContactFrame R(d, d);
+  if (d == 2) {
+    R.col(0) = contact_tangent(n);
+  } else {
+    Eigen::Index axis = 0;
+    n.cwiseAbs().minCoeff(&axis);
+    const Eigen::Vector3d normal = n;
+    Eigen::Vector3d t1 = Eigen::Vector3d::Unit(axis) - normal[axis] * normal;
+    t1.normalize();
+    R.col(0) = t1;
+    R.col(1) = normal.cross(t1);
+  }
+  R.col(d - 1) = -n;
+  return R;
+}
 
 std::string to_string(NormalLaw law) {
   switch (law) {

@@ -78,7 +78,7 @@ inline constexpr double kLargestGap = 4 * kLargestMagnitude;
 ValueRange gap_range();
 /// - a contact weight (half of each of a node's two Gamma3 edges, times the thickness) is in
 ///   (0, thickness x D]: neither edge is longer than D.
-ValueRange weight_range(double thickness, double diameter);
+ValueRange weight_range(double thickness, double diameter, int dim = 2);
 /// Throw sig::Error "FILE: array 'ARRAY', row ROW: VALUE is not RANGE (WHY)" if `value` is
 /// outside `range` (rows 1-based).
 void verify_in_range(double value, const ValueRange& range, const std::string& file,

@@ -17,8 +17,9 @@ namespace sig {
 
 struct ContactRow {
   int node = 0; ///< 1-based mesh node
-  double x1 = 0, x2 = 0;
-  double u1 = 0, u2 = 0;
+  int dim = 2;  ///< the mesh's: x3 and u3 are 0 in 2D
+  double x1 = 0, x2 = 0, x3 = 0;
+  double u1 = 0, u2 = 0, u3 = 0;
   double gap = 0;        ///< current normal gap d - u_n, u_n = -n . u (n: obstacle normal)
   double multiplier = 0; ///< nodal normal contact force
   double pressure = 0;   ///< multiplier / weight (tributary length)
@@ -38,6 +39,7 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
 
 /// contact.csv: header `node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,
 /// friction_status,tangential_multiplier,tangential_pressure,slip,converged`, status written as
+/// in 3D x3 after x2 and u3 after u2 (rows of a 3D mesh); the status written as
 /// the word `contact`, `free` or `held` (a Dirichlet condition holds the normal component), the
 /// statuses as the thesis's labels (free, CN, CU, held; -, S=, S+, S-), numbers with 17
 /// significant digits; `converged` is 0 on every row of a solve that did not converge (Nv), so

@@ -11,6 +11,7 @@
 // load per time step with the step matrix in place of K) share it: the contact methods iterate on
 // problem()'s small dense matrix, which the condensed bulk (solver/condensed_bulk.hpp) factorizes
 // once more, densely.
+#include "contact/contact_law.hpp"
 #include "solver/condensed_bulk.hpp"
 
 #include <Eigen/Core>
@@ -28,22 +29,22 @@ class SchurComplement;
 
 class ContactCondensation {
 public:
-  /// K: symmetric, on the free dofs; node_dofs[p]: the two consecutive free dofs (u1, u2) of
-  /// contact node p, normals[p] its obstacle normal; `tangential`: the slips are unknowns too
-  /// (friction). backend: cholmod | umfpack | mumps. sig::Error when a node's dofs are not
-  /// consecutive, a node appears twice, or the bulk with the contact components held cannot be
+  /// K: symmetric, on the free dofs; first_dofs[p]: the first of the d consecutive free dofs of
+  /// contact node p, frames[p] its d x d contact frame (contact_frame: tangents, then -n);
+  /// `tangential`: the slips are unknowns too (friction). backend: cholmod | umfpack | mumps.
+  /// sig::Error when the frames differ in size, a node appears twice, or the bulk with the
+  /// contact components held cannot be
   /// factorized: then a rigid motion of the body is held by nothing (the message says so).
   /// `positive_definite`: K itself is (a body held by Dirichlet conditions, the step matrix of a
   /// march), which lets CHOLMOD factorize it whole and split its solves (solver/schur.hpp).
-  ContactCondensation(Eigen::SparseMatrix<double> K,
-                      const std::vector<std::array<int, 2>>& node_dofs,
-                      std::vector<Eigen::Vector2d> normals, bool tangential,
-                      const std::string& backend, bool positive_definite = false);
+  ContactCondensation(Eigen::SparseMatrix<double> K, std::vector<int> first_dofs,
+                      std::vector<ContactFrame> frames, bool tangential, const std::string& backend,
+                      bool positive_definite = false);
   ~ContactCondensation();
   ContactCondensation(const ContactCondensation&) = delete;
   ContactCondensation& operator=(const ContactCondensation&) = delete;
 
-  int contacts() const { return static_cast<int>(normals_.size()); }
+  int contacts() const { return static_cast<int>(frames_of_nodes_.size()); }
   bool tangential() const { return !tangential_dof_.empty(); }
 
   /// The small problem of the load f (free dofs): the Schur complement, condense(f), the
@@ -68,8 +69,9 @@ public:
 
 private:
   Eigen::SparseMatrix<double> K_; ///< in frames
-  std::vector<Eigen::Vector2d> normals_;
-  std::vector<std::array<int, 2>> dofs_;
+  std::vector<ContactFrame> frames_of_nodes_;
+  std::vector<int> first_;     ///< per contact node: its first dof, the others following
+  int d_ = 2;                  ///< dofs per node
   std::vector<int> interface_; ///< sorted free dofs of the condensed unknowns
   std::vector<int> normal_dof_, tangential_dof_;
   std::unique_ptr<FrameRotation> frames_;

@@ -71,6 +71,15 @@ inline Eigen::Vector2d contact_tangent(const Eigen::Vector2d& n) {
   return {n.y(), -n.x()};
 }
 
+/// The contact frame of a node, d x d (d = 2, 3): its columns are the tangents and -n, so that
+/// u = R w takes w = (slips, normal displacement towards the obstacle). 2D: (t, -n) with t =
+/// contact_tangent(n). 3D: (t1, t2, -n) with t1 the coordinate axis least aligned with n (the
+/// first of equals) made orthogonal to n, and t2 = n x t1: on the foundation x3 >= 0 (n = e3),
+/// t1 = e1 and t2 = e2, and det R = -1 in both dimensions. The axis is chosen from n alone, so
+/// equal normals get equal frames.
+using ContactFrame = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 3, 3>;
+ContactFrame contact_frame(const Eigen::Ref<const Eigen::VectorXd>& n);
+
 enum class NormalLaw {
   signorini = 1,
   compliance = 2,
