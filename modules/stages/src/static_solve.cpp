@@ -61,15 +61,17 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
         std::ostringstream n;
         n << contact.normal[p].transpose().format(Eigen::IOFormat(
             Eigen::StreamPrecision, Eigen::DontAlignCols, ", ", ", ", "", "", "(", ")"));
-        SIG_VERIFY(false, "contact node " << p + 1 << " (mesh node " << contact.node[p] + 1
-                                          << "): a DIRICHLET card holds u" << component + 1
-                                          << ", which is neither the obstacle's normal " << n.str()
-                                          << (d == 2 ? " nor its tangent there; hold only the "
-                                                       "normal or the tangential component"
-                                                     : " there; hold only the normal component")
-                                          << " of a contact node, or "
-                                             "take the node out of the contact zone (CONTACT "
-                                             "exclude=REF)");
+        SIG_VERIFY(false, "contact node "
+                              << p + 1 << " (mesh node " << contact.node[p] + 1
+                              << "): a DIRICHLET card holds u" << component + 1 << ", which is "
+                              << (d == 2 ? "neither the obstacle's normal "
+                                         : "not along the obstacle's normal ")
+                              << n.str()
+                              << (d == 2 ? " nor its tangent there; hold only the normal or the "
+                                           "tangential component"
+                                         : " there; hold only the normal component")
+                              << " of a contact node, or take the node out of the contact zone "
+                                 "(CONTACT exclude=REF)");
       }
       held.push_back(dof);
     }
