@@ -226,6 +226,11 @@ const std::vector<CardSpec>& card_schema() {
             "every method and bulk; no takes full steps, the thesis's algorithm, a cycle then "
             "ending the solve",
             "auto"},
+           {"candidate_gap",
+            "static small-strain solve: condense only the contact nodes whose initial gap is at "
+            "most this length, > 0 (a 3D contact boundary has thousands of nodes, most far from "
+            "the obstacle); a node outside that comes to touch widens the zone and the solve "
+            "starts again, so the solution is the one without it; default every contact node"},
        }},
       {"CONVEXIFICATION",
        false,

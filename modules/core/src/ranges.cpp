@@ -78,6 +78,7 @@ constexpr FieldRange table[] = {
     {"SOLVER", "r", positive},
     {"SOLVER", "gamma", positive},
     {"SOLVER", "c", positive},
+    {"SOLVER", "candidate_gap", positive},
     {"SOLVER", "eps", tolerance},
     {"SOLVER", "maxit", iterations},
     {"CONVEXIFICATION", "eps", tolerance},

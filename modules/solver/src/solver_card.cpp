@@ -68,6 +68,14 @@ SolverCard read_solver_card(const Datafile& datafile, bool march) {
   p.eps = solver.real("eps", p.eps);
   p.max_iterations = static_cast<int>(solver.integer("maxit", p.max_iterations));
   p.search = solver.choice("search", {"auto", "yes", "no"});
+  if (solver.has("candidate_gap")) {
+    if (march) // said as sig-march says every SOLVER field it does not use
+      log_warning(solver.file + ":" + std::to_string(solver.line) +
+                  ": SOLVER candidate_gap=" + solver.text("candidate_gap") +
+                  " is not used by sig-march (a march condenses every contact node): ignored");
+    else
+      p.candidate_gap = solver.real("candidate_gap");
+  }
   // r, gamma, c > 0, eps, maxit and LOADSTEPS n: the cards' ranges (core/ranges.hpp).
 
   if (const Card* loop = datafile.find("CONVEXIFICATION")) {

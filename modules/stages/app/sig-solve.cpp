@@ -29,6 +29,7 @@
 #include "stages/finite_strain_stage.hpp"
 #include "stages/solution_ds.hpp"
 
+#include <cmath>
 #include <iostream>
 #include <optional>
 
@@ -134,6 +135,10 @@ int main(int argc, char** argv) {
       if (const sig::Card* friction = sig::friction_card_with_law(datafile))
         friction->fail("law", "friction in large deformation is not implemented (a hyperelastic "
                               "MATERIAL): the frictional solve is small strain");
+      if (std::isfinite(parameters.candidate_gap))
+        datafile.find("SOLVER")->fail("candidate_gap",
+                                      "is for a small-strain solve: the large-deformation solve "
+                                      "follows every contact node");
       sig::FiniteStrainOptions options;
       options.contact = parameters;
       options.backend = backend;

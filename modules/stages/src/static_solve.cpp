@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -101,10 +102,164 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
   return s;
 }
 
+namespace {
+
+/// The elements `zone` (indices, sorted) of `contact`.
+ContactElements elements_of(const ContactElements& contact, const std::vector<int>& zone) {
+  ContactElements part = contact;
+  part.node.clear();
+  part.lagrange_node.clear();
+  part.normal.clear();
+  part.tangent.clear();
+  part.law.clear();
+  part.gap.resize(static_cast<Eigen::Index>(zone.size()));
+  part.weight.resize(static_cast<Eigen::Index>(zone.size()));
+  for (std::size_t k = 0; k < zone.size(); ++k) {
+    const int i = zone[k];
+    part.node.push_back(contact.node[i]);
+    part.lagrange_node.push_back(contact.lagrange_node[i]);
+    part.normal.push_back(contact.normal[i]);
+    part.tangent.push_back(contact.tangent[i]);
+    part.law.push_back(contact.law[i]);
+    part.gap[static_cast<Eigen::Index>(k)] = contact.gap[i];
+    part.weight[static_cast<Eigen::Index>(k)] = contact.weight[i];
+  }
+  return part;
+}
+
+/// The contact nodes a solve condenses: those of initial gap at most `bound`, and those with a
+/// Dirichlet condition (held in their frames by the contact solve).
+std::vector<int> candidates(const LinearSystem& system, const ContactElements& contact,
+                            double bound) {
+  std::vector<int> zone;
+  const int d = contact.dim;
+  for (int i = 0; i < contact.size(); ++i) {
+    bool held = false;
+    for (int c = 0; c < d; ++c)
+      held = held || std::binary_search(system.dirichlet_dofs.begin(), system.dirichlet_dofs.end(),
+                                        d * contact.node[i] + c);
+    if (held || contact.gap[i] <= bound) zone.push_back(i);
+  }
+  return zone;
+}
+
+/// The solution on the elements `zone` of `contact` spread over all of them: the others are
+/// free, without force.
+void spread(StaticSolution& s, const std::vector<int>& zone, int m) {
+  const auto spread_vector = [&](Eigen::VectorXd& v) {
+    Eigen::VectorXd all = Eigen::VectorXd::Zero(m);
+    for (std::size_t k = 0; k < zone.size(); ++k)
+      all[zone[k]] = v[static_cast<Eigen::Index>(k)];
+    v = std::move(all);
+  };
+  spread_vector(s.multiplier);
+  spread_vector(s.tangential);
+  std::vector<NormalStatus> normal(m, NormalStatus::free);
+  std::vector<FrictionStatus> friction(m, FrictionStatus::none);
+  for (std::size_t k = 0; k < zone.size(); ++k) {
+    normal[zone[k]] = s.normal_status[k];
+    friction[zone[k]] = s.friction_status[k];
+  }
+  s.normal_status = std::move(normal);
+  s.friction_status = std::move(friction);
+  for (IterationRecord& r : s.history) {
+    if (r.wall.size() != zone.size()) continue;
+    std::vector<std::int8_t> wall(m, 0);
+    for (std::size_t k = 0; k < zone.size(); ++k)
+      wall[zone[k]] = r.wall[k];
+    r.wall = std::move(wall);
+  }
+}
+
+/// The largest initial gap of a node outside `zone` that the displacement u (full, d dofs per
+/// node) brings beyond the obstacle surface, or -1 if none does.
+double largest_gap_entered(const ContactElements& contact, const std::vector<int>& zone,
+                           const Eigen::VectorXd& u) {
+  const int d = contact.dim;
+  // Round-off of a node resting on the surface: of the contact boundary's size.
+  const double extent =
+      contact.dim == 3 ? std::sqrt(contact.weight.sum()) : contact.weight.sum() / contact.thickness;
+  double entered = -1;
+  std::size_t k = 0;
+  for (int i = 0; i < contact.size(); ++i) {
+    if (k < zone.size() && zone[k] == i) {
+      ++k;
+      continue;
+    }
+    const double u_n = -contact.normal[i].dot(u.segment(d * contact.node[i], d));
+    if (u_n - contact.gap[i] > 1e-12 * extent) entered = std::max(entered, contact.gap[i]);
+  }
+  return entered;
+}
+
+/// The solve of solve_static_contact on every node of `contact`.
+StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
+                           const ContactSolverParameters& parameters, const std::string& backend,
+                           const Eigen::VectorXd& start, const StaticConvexification& loop);
+
+} // namespace
+
 StaticSolution solve_static_contact(const LinearSystem& system, ContactElements contact,
                                     const ContactSolverParameters& parameters,
                                     const std::string& backend, const Eigen::VectorXd& start,
                                     const StaticConvexification& loop) {
+  if (!std::isfinite(parameters.candidate_gap))
+    return solve_whole(system, std::move(contact), parameters, backend, start, loop);
+  // Only the candidates are condensed (SOLVER candidate_gap=): the dense Schur complement of a 3D
+  // contact boundary grows as the square of its nodes. A node outside that the solution brings
+  // through the obstacle widens the zone to twice its gap, and the solve starts again: the
+  // solution is then that of every node.
+  double bound = parameters.candidate_gap;
+  // [choice] At least the 8 d nodes of least gap: fewer (two nodes of a ball) may leave a tilt
+  // of the body held by nothing but the proximal term, whose solve says nothing.
+  {
+    std::vector<double> gaps(contact.gap.begin(), contact.gap.end());
+    const auto least =
+        std::min<std::size_t>(gaps.size(), 8 * static_cast<std::size_t>(contact.dim));
+    std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(least - 1),
+                     gaps.end());
+    bound = std::max(bound, gaps[least - 1]);
+  }
+  std::map<std::string, double> seconds;
+  for (int round = 1;; ++round) {
+    const std::vector<int> zone = candidates(system, contact, bound);
+    SIG_VERIFY(!zone.empty(), "no contact node has an initial gap below SOLVER candidate_gap="
+                                  << parameters.candidate_gap << " (the least is "
+                                  << contact.gap.minCoeff() << ")");
+    StaticSolution s =
+        solve_whole(system, elements_of(contact, zone), parameters, backend, start, loop);
+    for (const auto& [phase, time] : s.seconds)
+      seconds[phase] += time;
+    const bool whole = static_cast<int>(zone.size()) == contact.size();
+    if (!whole && !s.converged) { // the zone may not hold the body: widen it
+      log_info("contact zone: the solve on " + std::to_string(zone.size()) +
+               " candidates (gap <= " + std::to_string(bound) + ") did not converge (" + s.failure +
+               "): the zone widens and the solve restarts");
+      bound *= 4;
+      continue;
+    }
+    const double entered = whole ? -1 : largest_gap_entered(contact, zone, s.u);
+    if (entered < 0) {
+      spread(s, zone, contact.size());
+      s.seconds = seconds;
+      log_info("contact zone: " + std::to_string(zone.size()) + " of " +
+               std::to_string(contact.size()) +
+               " contact nodes condensed (initial gap <= " + std::to_string(bound) + "), " +
+               std::to_string(round) + (round == 1 ? " solve" : " solves"));
+      return s;
+    }
+    log_info("contact zone: a node of initial gap " + std::to_string(entered) + " outside the " +
+             std::to_string(zone.size()) + " candidates (gap <= " + std::to_string(bound) +
+             ") comes to touch: the zone widens and the solve restarts");
+    bound = std::max(2 * bound, 2 * entered);
+  }
+}
+
+namespace {
+
+StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
+                           const ContactSolverParameters& parameters, const std::string& backend,
+                           const Eigen::VectorXd& start, const StaticConvexification& loop) {
   const std::vector<int> held = hold_on_contact_nodes(system, contact);
   SIG_VERIFY(held.empty() || parameters.method != "penalty",
              "a DIRICHLET card holds a component of a contact node, which the penalty method "
@@ -197,5 +352,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, ContactElements 
   s.unknowns = system.num_dofs() + condensed.multiplier_unknowns;
   return s;
 }
+
+} // namespace
 
 } // namespace sig

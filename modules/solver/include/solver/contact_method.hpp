@@ -17,6 +17,7 @@
 //               unit area: the contact forces are springs, there are no multipliers
 #include "contact/contact_law.hpp"
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -32,7 +33,7 @@ struct ContactSolverParameters {
   static double card_default(const char* field);
   static std::string card_default_text(const char* field);
   static constexpr int solve_max_iterations = 100; ///< sig-solve's maxit
-  static constexpr double solve_eps = 1e-5;         ///< sig-solve's eps
+  static constexpr double solve_eps = 1e-5;        ///< sig-solve's eps
 
   std::string method = "pdas";          ///< alm | penalty | pdas | projection
   double r = card_default("r");         ///< ALM augmentation / penalty stiffness
@@ -43,6 +44,9 @@ struct ContactSolverParameters {
   /// Globalization of the contact Newton (solver/NEWTON.md): "auto" and "yes" globalize every
   /// method on every bulk; "no" takes the thesis's full steps (contact_newton.hpp).
   std::string search = card_default_text("search");
+  /// The static small-strain solve's candidates (static_solve.hpp): the contact nodes whose
+  /// initial gap is at most this are condensed; infinite (every node) by default.
+  double candidate_gap = std::numeric_limits<double>::infinity();
 };
 
 /// Card field `SOLVER method=` of the contact methods.
