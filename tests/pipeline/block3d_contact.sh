@@ -5,7 +5,8 @@
 # exact solution is uniaxial, and P1 reproduces it (a patch test of the 3D contact path: frames,
 # condensation onto the contact normals, tributary areas): every base node in contact, its
 # pressure (nodal force over tributary area) p, the nodal forces summing to p times the base's
-# area, the base on the plane, the top lowered by p lz / E; contact.csv has x3 and u3. The same
+# area, the base on the plane, the top lowered by p lz / E; contact.csv has x3 and u3, the .vtu
+# the contact pressure and status. The same
 # deck with every method; a deck with a 2D obstacle, with friction or with a sphere in 2D words
 # is refused naming the field.
 set -euo pipefail
@@ -66,6 +67,19 @@ print(f"block3d ({method}): {len(rows)} contact nodes, pressure off by {worst:.2
 sys.exit(1 if problems else 0)
 PY
 done
+
+# ParaView: the .vtu of the pdas run has tetrahedra's stress and the contact fields at the nodes.
+checks=$((checks + 1))
+vtu=$work/pdas/pdas_0000.vtu
+if [ ! -f "$vtu" ]; then
+  fail "no $vtu"
+else
+  header=$(head -c 20000 "$vtu" | tr -d '\000' | sed -n '/<UnstructuredGrid>/,/<AppendedData/p')
+  for field in 'Name="displacement" NumberOfComponents="3"' 'Name="contact_pressure"' \
+    'Name="contact_status"' 'Name="stress" NumberOfComponents="6"'; do
+    grep -aqF -- "$field" <<<"$header" || fail "the .vtu lacks $field"
+  done
+fi
 
 # Decks in the wrong dimension's words, refused naming the field.
 refused() { # NAME SED-EXPRESSION FIELD

@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
         written.push_back(file);
     } else if (write_vtk) {
       const sig::SolutionFields fields = mesh.dim == 3
-                                             ? sig::solution_fields_3d(mesh, u, materials)
+                                             ? sig::solution_fields_3d(mesh, u, materials, contact)
                                              : sig::solution_fields(mesh, u, materials, contact);
       const std::string vtu = stem + "_0000.vtu";
       const bool converged = solution.integer("converged") != 0;

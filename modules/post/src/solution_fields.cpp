@@ -5,6 +5,27 @@
 
 namespace sig {
 
+void add_contact_fields(SolutionFields& f, std::size_t n, const std::vector<ContactRow>& contact) {
+  if (contact.empty()) return;
+  // Statuses as their DS codes (contact/contact_status.hpp): normal 0 free, 1 CN, 2 CU;
+  // friction 0 none, 1 S=, 2 S+, 3 S-.
+  VtkField pressure{"contact_pressure", 1, std::vector<double>(n, 0.0)};
+  VtkField status{"contact_status", 1, std::vector<double>(n, 0.0), true};
+  VtkField normal{"normal_status", 1, std::vector<double>(n, 0.0), true};
+  VtkField friction{"friction_status", 1, std::vector<double>(n, 0.0), true};
+  VtkField tangential{"tangential_pressure", 1, std::vector<double>(n, 0.0)};
+  for (const auto& row : contact) {
+    const std::size_t i = row.node - 1;
+    pressure.values[i] = row.pressure;
+    status.values[i] = row.contact ? 1.0 : 0.0;
+    normal.values[i] = static_cast<double>(row.normal_status);
+    friction.values[i] = static_cast<double>(row.friction_status);
+    tangential.values[i] = row.tangential_pressure;
+  }
+  for (VtkField* field : {&pressure, &status, &normal, &friction, &tangential})
+    f.point.push_back(std::move(*field));
+}
+
 SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,
                                const MaterialTable& materials,
                                const std::vector<ContactRow>& contact) {
@@ -18,25 +39,7 @@ SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,
     displacement.values[3 * i + 1] = u[2 * i + 1];
   }
   f.point.push_back(std::move(displacement));
-  if (!contact.empty()) {
-    // Statuses as their DS codes (contact/contact_status.hpp): normal 0 free, 1 CN, 2 CU;
-    // friction 0 none, 1 S=, 2 S+, 3 S-.
-    VtkField pressure{"contact_pressure", 1, std::vector<double>(n, 0.0)};
-    VtkField status{"contact_status", 1, std::vector<double>(n, 0.0), true};
-    VtkField normal{"normal_status", 1, std::vector<double>(n, 0.0), true};
-    VtkField friction{"friction_status", 1, std::vector<double>(n, 0.0), true};
-    VtkField tangential{"tangential_pressure", 1, std::vector<double>(n, 0.0)};
-    for (const auto& row : contact) {
-      const std::size_t i = row.node - 1;
-      pressure.values[i] = row.pressure;
-      status.values[i] = row.contact ? 1.0 : 0.0;
-      normal.values[i] = static_cast<double>(row.normal_status);
-      friction.values[i] = static_cast<double>(row.friction_status);
-      tangential.values[i] = row.tangential_pressure;
-    }
-    for (VtkField* field : {&pressure, &status, &normal, &friction, &tangential})
-      f.point.push_back(std::move(*field));
-  }
+  add_contact_fields(f, n, contact);
 
   CellStress stress = cell_stresses(mesh, u, materials);
   f.cell.push_back({"stress", 4, std::move(stress.stress)});

@@ -1,7 +1,7 @@
 // What a solved 3D static case shows in ParaView (issue 26): the displacement's three
-// components at the nodes; on the tetrahedra the stress tensor's six components (s11, s22, s33,
-// s23, s13, s12), von Mises and the sub-domain. The strain is the P1 simplex routine's
-// (assembly/p1_simplex.hpp), the one the stiffness is made of.
+// components and the contact fields at the nodes; on the tetrahedra the stress tensor's six
+// components (s11, s22, s33, s23, s13, s12), von Mises and the sub-domain. The strain is the P1
+// simplex routine's (assembly/p1_simplex.hpp), the one the stiffness is made of.
 #include "assembly/p1_simplex.hpp"
 #include "core/error.hpp"
 #include "material/hooke.hpp"
@@ -24,12 +24,14 @@ Eigen::Matrix<double, 6, 1> cell_strain(const Mesh& mesh, const std::vector<doub
 } // namespace
 
 SolutionFields solution_fields_3d(const Mesh& mesh, const std::vector<double>& u,
-                                  const MaterialTable& materials) {
+                                  const MaterialTable& materials,
+                                  const std::vector<ContactRow>& contact) {
   const std::size_t n = mesh.nodes.size();
   SIG_VERIFY(mesh.dim == 3 && u.size() == 3 * n,
              "displacement holds " << u.size() << " values for " << n << " nodes in 3D");
   SolutionFields f;
   f.point.push_back({"displacement", 3, u});
+  add_contact_fields(f, n, contact);
   VtkField stress{"stress", 6, {}};
   VtkField von_mises{"von_mises", 1, {}};
   for (int t = 0; t < mesh.num_cells(); ++t) {

@@ -21,10 +21,16 @@ SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,
                                const MaterialTable& materials,
                                const std::vector<ContactRow>& contact);
 
-/// The fields of a 3D static state (solution_fields_3d.cpp): displacement (3) at the nodes;
-/// stress (6: s11, s22, s33, s23, s13, s12), von_mises and subdomain on the tetrahedra.
+/// The fields of a 3D static state (solution_fields_3d.cpp): displacement (3) and the contact
+/// fields of solution_fields at the nodes; stress (6: s11, s22, s33, s23, s13, s12), von_mises
+/// and subdomain on the tetrahedra.
 SolutionFields solution_fields_3d(const Mesh& mesh, const std::vector<double>& u,
-                                  const MaterialTable& materials);
+                                  const MaterialTable& materials,
+                                  const std::vector<ContactRow>& contact = {});
+
+/// The contact fields at the n nodes (contact_pressure, contact_status, normal_status,
+/// friction_status, tangential_pressure; 0 off Gamma3), none when `contact` is empty.
+void add_contact_fields(SolutionFields& f, std::size_t n, const std::vector<ContactRow>& contact);
 
 /// The stored energy sum over the tetrahedra of |T| eps.D.eps / 2 of a 3D state.
 double strain_energy_3d(const Mesh& mesh, const std::vector<double>& u,
