@@ -135,10 +135,12 @@ TEST(ContIo3d, RoundTripAndDimensionChecked) {
   EXPECT_EQ(back.obstacle.kind, "sphere");
   EXPECT_EQ(back.obstacle.point, e.obstacle.point);
   EXPECT_EQ(back.obstacle.radius, 3);
-  // The file of a 3D mesh read against another mesh is refused.
-  Mesh other = mesh;
-  other.nodes.pop_back();
-  EXPECT_THROW(read_cont(dir / "box.cont", other), Error);
+  // The file of a 3D mesh read against a 2D mesh of as many nodes is refused.
+  Mesh flat = mesh;
+  flat.dim = 2;
+  for (Point& x : flat.nodes)
+    x = Point(x.x(), x.y());
+  EXPECT_THROW(read_cont(dir / "box.cont", flat), Error);
 }
 
 } // namespace

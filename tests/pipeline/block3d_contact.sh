@@ -32,8 +32,8 @@ p, E, lz = 1e6, 210e9, 1.0
 # penalty's wall is a spring: the body sinks by p / r = 1e-5 of the top's drop, uniformly
 exact = 2e-5 if method == "penalty" else 1e-9
 problems = []
-if not rows or "x3" not in rows[0] or "u3" not in rows[0]:
-    problems.append("contact.csv has no x3 / u3 column")
+if not rows or any(c not in rows[0] for c in ("x3", "u3", "slip_1", "tangential_force_3")):
+    problems.append("contact.csv lacks a 3D column (x3, u3, slip_1..3, tangential_force_1..3)")
 if any(r["converged"] != "1" for r in rows):
     problems.append("not converged")
 if any(r["status"] != "contact" for r in rows):

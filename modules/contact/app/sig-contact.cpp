@@ -49,16 +49,11 @@ int main(int argc, char** argv) {
     if (const std::vector<int> away = sig::nodes_facing_away(mesh, e);
         2 * away.size() > e.node.size()) {
       const int i = away.front();
-      const auto coordinates = [](const sig::Point& x) {
-        std::string text = "(";
-        for (Eigen::Index k = 0; k < x.size(); ++k)
-          text += (k ? ", " : "") + std::to_string(x[k]);
-        return text + ")";
-      };
       sig::log_warning(std::to_string(away.size()) + " of " + std::to_string(e.size()) +
                        " contact nodes face the obstacle from inside the body (node " +
-                       std::to_string(e.node[i] + 1) + " at " + coordinates(mesh.nodes[e.node[i]]) +
-                       ": the obstacle's normal " + coordinates(e.normal[i]) +
+                       std::to_string(e.node[i] + 1) + " at " +
+                       sig::coordinates(mesh.nodes[e.node[i]]) + ": the obstacle's normal " +
+                       sig::coordinates(e.normal[i]) +
                        " points along the body's outward normal there); the CONTACT card's "
                        "normal= must point out of the obstacle, towards the body");
     }

@@ -20,9 +20,6 @@ namespace {
 // edge: below it a negative gap is set to 0, beyond it the node starts inside the obstacle.
 constexpr double kRoundoffGap = 1e-9;
 
-const Eigen::IOFormat kCoordinates(Eigen::StreamPrecision, Eigen::DontAlignCols, ", ", ", ", "", "",
-                                   "(", ")");
-
 // The Gamma3 facets without repetition (an interface facet may be stored from both sides); the
 // first stored orientation is kept.
 std::vector<Facet> unique_facets(const Mesh& mesh, int ref) {
@@ -202,9 +199,9 @@ ContactElements build_contact_elements(const Mesh& mesh, int ref, const Obstacle
     const Point& x = mesh.nodes[k];
     double distance = obstacle.signed_distance(x);
     SIG_VERIFY(distance >= -kRoundoffGap * shortest,
-               "contact elements: node " << k + 1 << " " << x.transpose().format(kCoordinates)
-                                         << " starts inside the " << obstacle.kind()
-                                         << " obstacle (signed distance " << distance << ")");
+               "contact elements: node " << k + 1 << " " << coordinates(x) << " starts inside the "
+                                         << obstacle.kind() << " obstacle (signed distance "
+                                         << distance << ")");
     distance = std::max(distance, 0.0);
     elements.lagrange_node.push_back(elements.num_nodes + i);
     elements.normal.push_back(obstacle.normal(x));

@@ -3,22 +3,8 @@
 #include "core/error.hpp"
 
 #include <cmath>
-#include <sstream>
 
 namespace sig {
-
-namespace {
-
-std::string coordinates(const Point& x) {
-  std::ostringstream out;
-  out << "(";
-  for (Eigen::Index k = 0; k < x.size(); ++k)
-    out << (k ? ", " : "") << x[k];
-  out << ")";
-  return out.str();
-}
-
-} // namespace
 
 HalfPlane::HalfPlane(const Point& point, const Point& normal) : point_(point) {
   SIG_VERIFY((normal.size() == 2 || normal.size() == 3) && point.size() == normal.size(),

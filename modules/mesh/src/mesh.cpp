@@ -18,16 +18,6 @@ void sort_unique(std::vector<int>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
-/// "(x, y)" or "(x, y, z)".
-std::string coordinates(const Point& x) {
-  std::ostringstream out;
-  out << "(";
-  for (Eigen::Index k = 0; k < x.size(); ++k)
-    out << (k ? ", " : "") << x[k];
-  out << ")";
-  return out.str();
-}
-
 } // namespace
 
 std::vector<int> Mesh::nodes_with_ref(int ref) const {
@@ -91,6 +81,15 @@ double diameter(const Mesh& mesh) {
     high = high.cwiseMax(x);
   }
   return (high - low).norm();
+}
+
+std::string coordinates(const Point& x) {
+  std::ostringstream out;
+  out << "(";
+  for (Eigen::Index k = 0; k < x.size(); ++k)
+    out << (k ? ", " : "") << x[k];
+  out << ")";
+  return out.str();
 }
 
 void require_2d(const Mesh& mesh, const std::string& stage, const std::string& what) {

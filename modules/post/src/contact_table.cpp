@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "ds_values.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace sig {
@@ -63,6 +64,18 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
     r.tangential_multiplier = tangential[i];
     r.tangential_pressure = tangential[i] / weight[i];
     r.slip = slip;
+    if (d == 3) { // magnitudes, and the vectors in global axes
+      double slip_squared = 0;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double uc = c == 0 ? r.u1 : c == 1 ? r.u2 : r.u3;
+        r.slip_vector[c] = uc + un * normal[3 * i + c]; // u - (n . u) n, n . u = -u_n
+        slip_squared += r.slip_vector[c] * r.slip_vector[c];
+        r.tangential_force[c] = tangential[i] * tangent[3 * i + c];
+      }
+      r.slip = std::sqrt(slip_squared);
+      r.tangential_multiplier = std::abs(tangential[i]);
+      r.tangential_pressure = std::abs(tangential[i]) / weight[i];
+    }
     try {
       r.normal_status = normal_status_of_code(static_cast<long>(normal_status[i]));
       r.friction_status = friction_status_of_code(static_cast<long>(friction_status[i]));
@@ -79,7 +92,10 @@ std::string contact_csv(const std::vector<ContactRow>& rows, bool converged) {
   const bool three = !rows.empty() && rows.front().dim == 3;
   std::string out = three ? "node,x1,x2,x3,u1,u2,u3," : "node,x1,x2,u1,u2,";
   out += "gap,multiplier,pressure,status,normal_status,friction_status,tangential_multiplier,"
-         "tangential_pressure,slip,converged\n";
+         "tangential_pressure,slip,";
+  out += three ? "slip_1,slip_2,slip_3,tangential_force_1,tangential_force_2,tangential_force_3,"
+                 "converged\n"
+               : "converged\n";
   char line[768];
   for (const auto& r : rows) {
     const char* status = r.contact                               ? "contact"
@@ -92,11 +108,18 @@ std::string contact_csv(const std::vector<ContactRow>& rows, bool converged) {
       std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.17g,", r.node, r.x1, r.x2, r.u1,
                     r.u2);
     out += line;
-    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%s,%s,%s,%.17g,%.17g,%.17g,%d\n", r.gap,
+    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%s,%s,%s,%.17g,%.17g,%.17g,", r.gap,
                   r.multiplier, r.pressure, status, label(r.normal_status).c_str(),
                   label(r.friction_status).c_str(), r.tangential_multiplier, r.tangential_pressure,
-                  r.slip, converged ? 1 : 0);
+                  r.slip);
     out += line;
+    if (three) {
+      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,", r.slip_vector[0],
+                    r.slip_vector[1], r.slip_vector[2], r.tangential_force[0],
+                    r.tangential_force[1], r.tangential_force[2]);
+      out += line;
+    }
+    out += converged ? "1\n" : "0\n";
   }
   return out;
 }

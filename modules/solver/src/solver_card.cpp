@@ -157,7 +157,7 @@ void verify_total_iterations(const Datafile& datafile, int default_maxit, long t
 void warn_unused_iteration_fields(const Datafile& datafile, const std::string& why) {
   const Card* solver = datafile.find("SOLVER");
   if (solver == nullptr) return;
-  for (const char* field : {"eps", "maxit", "search"})
+  for (const char* field : {"eps", "maxit", "search", "candidate_gap"})
     if (solver->has(field))
       log_warning(solver->file + ":" + std::to_string(solver->line) + ": SOLVER " + field + "=" +
                   solver->text(field) + " is not used: " + why + ": ignored");

@@ -182,6 +182,11 @@ int main(int argc, char** argv) {
       const bool loop = sig::needs_convexification(contact->law);
       Eigen::VectorXd start;
       if (!datafile.all("INITIAL").empty()) start = sig::initial_fields(datafile, mesh).u;
+      if (std::isfinite(parameters.candidate_gap))
+        if (const std::string problem = sig::candidate_zone_problem(*contact); !problem.empty())
+          datafile.find("SOLVER")->fail("candidate_gap",
+                                        "condenses only the nodes near the obstacle, but " +
+                                            problem + ": remove it");
       solution = sig::solve_static_contact(system, *contact, parameters, backend, start,
                                            {card.convexification, loop ? &mesh : nullptr});
     }

@@ -6,6 +6,7 @@
 #include "core/log.hpp"
 #include "solver/condensed_contact.hpp"
 #include "solver/contact_condensation.hpp"
+#include "solver/convexification.hpp"
 #include "solver/linear_solver.hpp"
 #include "stages/newton_outcome.hpp"
 
@@ -59,15 +60,12 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
         law.held_tangential = true;
         law.held_slip = along_t * value;
       } else {
-        std::ostringstream n;
-        n << contact.normal[p].transpose().format(Eigen::IOFormat(
-            Eigen::StreamPrecision, Eigen::DontAlignCols, ", ", ", ", "", "", "(", ")"));
         SIG_VERIFY(false, "contact node "
                               << p + 1 << " (mesh node " << contact.node[p] + 1
                               << "): a DIRICHLET card holds u" << component + 1 << ", which is "
                               << (d == 2 ? "neither the obstacle's normal "
                                          : "not along the obstacle's normal ")
-                              << n.str()
+                              << coordinates(contact.normal[p])
                               << (d == 2 ? " nor its tangent there; hold only the normal or the "
                                            "tangential component"
                                          : " there; hold only the normal component")
@@ -177,8 +175,7 @@ double largest_gap_entered(const ContactElements& contact, const std::vector<int
                            const Eigen::VectorXd& u) {
   const int d = contact.dim;
   // Round-off of a node resting on the surface: of the contact boundary's size.
-  const double extent =
-      contact.dim == 3 ? std::sqrt(contact.weight.sum()) : contact.weight.sum() / contact.thickness;
+  const double extent = contact.extent();
   double entered = -1;
   std::size_t k = 0;
   for (int i = 0; i < contact.size(); ++i) {
@@ -199,16 +196,35 @@ StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
 
 } // namespace
 
+std::string candidate_zone_problem(const ContactElements& contact) {
+  for (const ContactLaw& law : contact.law) {
+    if (law.normal == NormalLaw::compliance_bilateral)
+      return "law=compliance-bilateral pulls the nodes that are apart from the obstacle too";
+    if (law.friction == FrictionLaw::tresca)
+      return "Tresca's threshold acts on every contact node, apart from the obstacle or not";
+    if (law.in_velocity()) return "a law of the velocity has no initial gap to choose by";
+  }
+  if (needs_convexification(contact.law))
+    return "the convexification loop of law=nonmonotone keeps a coefficient on every node";
+  return {};
+}
+
 StaticSolution solve_static_contact(const LinearSystem& system, ContactElements contact,
                                     const ContactSolverParameters& parameters,
                                     const std::string& backend, const Eigen::VectorXd& start,
                                     const StaticConvexification& loop) {
   if (!std::isfinite(parameters.candidate_gap))
     return solve_whole(system, std::move(contact), parameters, backend, start, loop);
+  const std::string problem = candidate_zone_problem(contact);
+  SIG_VERIFY(problem.empty(), "SOLVER candidate_gap= condenses only the nodes near the obstacle, "
+                              "but "
+                                  << problem);
   // Only the candidates are condensed (SOLVER candidate_gap=): the dense Schur complement of a 3D
-  // contact boundary grows as the square of its nodes. A node outside that the solution brings
+  // contact boundary grows as the square of its nodes. Outside the zone a node carries no force
+  // while it is apart from the obstacle (candidate_zone_problem). One that the solution brings
   // through the obstacle widens the zone to twice its gap, and the solve starts again: the
-  // solution is then that of every node.
+  // solution is then that of every node. A zone whose solve fails (it may not hold the body)
+  // widens four times.
   double bound = parameters.candidate_gap;
   // [choice] At least the 8 d nodes of least gap: fewer (two nodes of a ball) may leave a tilt
   // of the body held by nothing but the proximal term, whose solve says nothing.
@@ -221,36 +237,49 @@ StaticSolution solve_static_contact(const LinearSystem& system, ContactElements 
     bound = std::max(bound, gaps[least - 1]);
   }
   std::map<std::string, double> seconds;
+  std::vector<IterationRecord> history; // every round's iterations, walls over every node
+  const auto text = [](double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
+  };
   for (int round = 1;; ++round) {
     const std::vector<int> zone = candidates(system, contact, bound);
-    SIG_VERIFY(!zone.empty(), "no contact node has an initial gap below SOLVER candidate_gap="
-                                  << parameters.candidate_gap << " (the least is "
-                                  << contact.gap.minCoeff() << ")");
-    StaticSolution s =
-        solve_whole(system, elements_of(contact, zone), parameters, backend, start, loop);
+    const bool whole = static_cast<int>(zone.size()) == contact.size();
+    const std::string candidates_text = std::to_string(zone.size()) + " of " +
+                                        std::to_string(contact.size()) +
+                                        " contact nodes (initial gap <= " + text(bound) + ")";
+    StaticSolution s;
+    try {
+      s = solve_whole(system, elements_of(contact, zone), parameters, backend, start, loop);
+    } catch (const Error& e) {
+      if (whole) throw;
+      log_info("contact zone: the solve on " + candidates_text + " failed (" + e.what() +
+               "): the zone widens and the solve restarts");
+      bound *= 4;
+      continue;
+    }
     for (const auto& [phase, time] : s.seconds)
       seconds[phase] += time;
-    const bool whole = static_cast<int>(zone.size()) == contact.size();
+    spread(s, zone, contact.size());
+    history.insert(history.end(), s.history.begin(), s.history.end());
     if (!whole && !s.converged) { // the zone may not hold the body: widen it
-      log_info("contact zone: the solve on " + std::to_string(zone.size()) +
-               " candidates (gap <= " + std::to_string(bound) + ") did not converge (" + s.failure +
+      log_info("contact zone: the solve on " + candidates_text + " did not converge (" + s.failure +
                "): the zone widens and the solve restarts");
       bound *= 4;
       continue;
     }
     const double entered = whole ? -1 : largest_gap_entered(contact, zone, s.u);
     if (entered < 0) {
-      spread(s, zone, contact.size());
       s.seconds = seconds;
-      log_info("contact zone: " + std::to_string(zone.size()) + " of " +
-               std::to_string(contact.size()) +
-               " contact nodes condensed (initial gap <= " + std::to_string(bound) + "), " +
-               std::to_string(round) + (round == 1 ? " solve" : " solves"));
+      s.history = std::move(history);
+      log_info("contact zone: " + candidates_text + " condensed, " + std::to_string(round) +
+               (round == 1 ? " solve" : " solves") + ", " + std::to_string(s.history.size()) +
+               " iterations in all");
       return s;
     }
-    log_info("contact zone: a node of initial gap " + std::to_string(entered) + " outside the " +
-             std::to_string(zone.size()) + " candidates (gap <= " + std::to_string(bound) +
-             ") comes to touch: the zone widens and the solve restarts");
+    log_info("contact zone: a node of initial gap " + text(entered) + " outside the " +
+             candidates_text + " comes to touch: the zone widens and the solve restarts");
     bound = std::max(2 * bound, 2 * entered);
   }
 }
@@ -329,16 +358,14 @@ StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
     s.history = s.convexification->inner_history;
   }
   if (c.converged && imbalance > std::max(1e3 * parameters.eps, 1e-6)) {
-    // Displacements beyond 1e10 times the contact boundary's length (or its largest gap) resolve
+    // Displacements beyond 1e10 times the contact boundary's size (or its largest gap) resolve
     // the gaps to worse than 1e-6 of that length (round-off 1e-16 of the displacement): loads
     // that large against the stiffness, not a free motion, break the equilibrium.
-    const double extent = contact.dim == 3 ? std::sqrt(contact.weight.sum())
-                                           : contact.weight.sum() / contact.thickness;
-    const double length = std::max(contact.gap.maxCoeff(), extent);
+    const double length = std::max(contact.gap.maxCoeff(), contact.extent());
     const double reach = s.u.cwiseAbs().maxCoeff();
     SIG_VERIFY(reach <= 1e10 * length,
                "the contact solve cannot hold its conditions: the displacement reaches "
-                   << reach << ", " << reach / length << " times the contact boundary's length "
+                   << reach << ", " << reach / length << " times the contact boundary's size "
                    << length
                    << ", so the loads are that large against the stiffness (TRACTION f=, PRESSURE "
                       "p=, BODYFORCE f= against MATERIAL E=) and the gaps are lost in the "

@@ -27,6 +27,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -58,6 +59,8 @@ struct ContactElements {
   bool has_friction() const;
   /// The unilateral bound of element i on u_n: d_i + g_i (infinite without a wall).
   double bound(int i) const;
+  /// The size of the contact boundary: its length (2D) or the square root of its area (3D).
+  double extent() const { return dim == 3 ? std::sqrt(weight.sum()) : weight.sum() / thickness; }
   /// contact_frame(normal[i]): the tangents and -n as columns.
   ContactFrame frame(int i) const { return contact_frame(normal[i]); }
   /// The frames of every element.

@@ -123,6 +123,9 @@ inline std::vector<Eigen::Vector2d> plane_positions(const Mesh& mesh) {
   return {mesh.nodes.begin(), mesh.nodes.end()};
 }
 
+/// "(x, y)" or "(x, y, z)", in the stream's default precision: a point or vector in messages.
+std::string coordinates(const Point& x);
+
 /// Throw sig::Error naming `stage` and `what` (the card or the part of the model) when `mesh` is
 /// not 2D: the parts of the code that are 2D-only say so rather than misread a 3D mesh.
 void require_2d(const Mesh& mesh, const std::string& stage, const std::string& what);

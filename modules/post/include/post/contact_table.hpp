@@ -10,6 +10,7 @@
 #include "mesh/mesh.hpp"
 #include "post/hertz.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,9 @@ struct ContactRow {
   FrictionStatus friction_status = FrictionStatus::none;
   double tangential_multiplier = 0; ///< nodal tangential force T
   double tangential_pressure = 0;   ///< T / weight
-  double slip = 0;                  ///< u_t = t . u
+  double slip = 0;                  ///< u_t = t . u (3D: |u_t|, u_t = u - (n . u) n)
+  /// 3D: u_t and the tangential force T t1 in global axes (the solve's T lies along t1)
+  std::array<double, 3> slip_vector{}, tangential_force{};
 };
 
 /// Join case.cont (node, normal, tangent, gap, weight) with case.b (u, multiplier,
@@ -38,12 +41,13 @@ struct ContactRow {
 std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds& solution);
 
 /// contact.csv: header `node,x1,x2,u1,u2,gap,multiplier,pressure,status,normal_status,
-/// friction_status,tangential_multiplier,tangential_pressure,slip,converged`, status written as
-/// in 3D x3 after x2 and u3 after u2 (rows of a 3D mesh); the status written as
-/// the word `contact`, `free` or `held` (a Dirichlet condition holds the normal component), the
-/// statuses as the thesis's labels (free, CN, CU, held; -, S=, S+, S-), numbers with 17
-/// significant digits; `converged` is 0 on every row of a solve that did not converge (Nv), so
-/// that no row reads as a result.
+/// friction_status,tangential_multiplier,tangential_pressure,slip,converged`; in 3D x3 after x2,
+/// u3 after u2, and slip_1..3, tangential_force_1..3 (global axes) before converged, the scalar
+/// tangential_multiplier, tangential_pressure and slip then their magnitudes. The status is
+/// written as the word `contact`, `free` or `held` (a Dirichlet condition holds the normal
+/// component), the statuses as the thesis's labels (free, CN, CU, held; -, S=, S+, S-), numbers
+/// with 17 significant digits; `converged` is 0 on every row of a solve that did not converge
+/// (Nv), so that no row reads as a result.
 std::string contact_csv(const std::vector<ContactRow>& rows, bool converged);
 
 /// The rows as Hertz samples, x measured from the vertical line x1 = centre_x1.

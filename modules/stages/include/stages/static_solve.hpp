@@ -23,7 +23,7 @@ namespace sig {
 struct Mesh;
 
 struct StaticSolution {
-  Eigen::VectorXd u;          ///< full displacement (2 dofs per node)
+  Eigen::VectorXd u;          ///< full displacement (d dofs per node)
   Eigen::VectorXd multiplier; ///< normal contact force per element (empty without contact)
   Eigen::VectorXd tangential; ///< tangential contact force per element
   std::vector<NormalStatus> normal_status;
@@ -55,7 +55,15 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 /// neither the node's normal nor its tangent.
 std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElements& contact);
 
-/// `start` (empty: 0) is the first iterate of the displacement, 2 dofs per node: a warm start.
+/// Why SOLVER candidate_gap= cannot serve these contact elements (a law that acts on nodes apart
+/// from the obstacle: Tresca, compliance-bilateral, a law of the velocity, the nonmonotone loop),
+/// or empty.
+std::string candidate_zone_problem(const ContactElements& contact);
+
+/// `start` (empty: 0) is the first iterate of the displacement, d dofs per node: a warm start.
+/// With a finite parameters.candidate_gap only the contact nodes of small initial gap are
+/// condensed, the zone widening until no node outside it comes to touch (the history then holds
+/// every round's iterations); sig::Error if candidate_zone_problem says it cannot serve.
 /// A nonmonotone law runs the loop with `loop`. Dirichlet conditions on contact nodes are held
 /// in the nodes' frames (hold_on_contact_nodes). Non-convergence of the method (or of the loop)
 /// is returned; a body with a rigid motion that neither its
