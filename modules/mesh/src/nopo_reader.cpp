@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <sstream>
+#include <string_view>
 
 namespace sig {
 namespace {
@@ -119,32 +121,45 @@ std::string text_of_words(const std::string& raw, int int_bytes, int first, int 
   return end == std::string::npos ? std::string() : text.substr(0, end + 1);
 }
 
-// Read in one piece of the file's size (no stream copy): the records must tile the file, so the
-// whole of it is needed.
-std::string read_bytes(const std::filesystem::path& path) {
+// Read in one piece of the file's size (no stream copy, no zero fill first): the records must
+// tile the file, so the whole of it is needed.
+struct FileBytes {
+  std::unique_ptr<char[]> data;
+  std::size_t size = 0;
+  std::string_view view() const { return {data.get(), size}; }
+};
+
+FileBytes read_bytes(const std::filesystem::path& path) {
   verify_regular_file(path, "NOPO file");
   std::error_code error;
   const auto size = std::filesystem::file_size(path, error);
   SIG_VERIFY(!error, path.string() << ": cannot open the NOPO file: " << error.message());
   std::ifstream in(path, std::ios::binary);
   SIG_VERIFY(in, path.string() << ": cannot open the NOPO file");
-  std::string bytes(size, '\0');
-  in.read(bytes.data(), static_cast<std::streamsize>(size));
+  FileBytes bytes{std::unique_ptr<char[]>(new char[size]), size};
+  in.read(bytes.data.get(), static_cast<std::streamsize>(size));
   SIG_VERIFY(in.gcount() == static_cast<std::streamsize>(size),
              path.string() << ": read error (" << in.gcount() << " of " << size << " bytes)");
   return bytes;
 }
 
+NopoFile parse_nopo_bytes(const std::string& file, std::string_view bytes);
+
 } // namespace
 
 NopoFile read_nopo_file(const std::filesystem::path& path) {
   const PhaseTimer timer("read");
-  NopoFile result = parse_nopo_file(path.string(), read_bytes(path));
+  NopoFile result = parse_nopo_bytes(path.string(), read_bytes(path).view());
   note_case_file("NOPO", path, result.fingerprint); // a stage's case.nopo: an input
   return result;
 }
 
 NopoFile parse_nopo_file(const std::string& file, const std::string& bytes) {
+  return parse_nopo_bytes(file, bytes);
+}
+
+namespace {
+NopoFile parse_nopo_bytes(const std::string& file, std::string_view bytes) {
   const FortranRecords records = split_fortran_records(bytes, file);
   NopoFile result;
   result.layout.marker_bytes = records.marker_bytes;
@@ -223,6 +238,8 @@ NopoFile parse_nopo_file(const std::string& file, const std::string& bytes) {
   check_mesh(result.mesh, file);
   return result;
 }
+
+} // namespace
 
 Mesh read_nopo(const std::filesystem::path& path) {
   return read_nopo_file(path).mesh;

@@ -171,9 +171,17 @@ CellOverlap find_overlap(const Mesh& mesh) {
     if (end - begin < 2) continue;
     // Within a bucket the entries are in scan order; sorted by key, then position, a repeated
     // oriented facet's first two occurrences are neighbours.
-    std::sort(begin, end, [](const Entry& a, const Entry& c) {
+    // Insertion sort for the usual bucket: the few facets around one node.
+    const auto less = [](const Entry& a, const Entry& c) {
       return std::tie(a.second, a.third, a.position) < std::tie(c.second, c.third, c.position);
-    });
+    };
+    if (end - begin > 16) {
+      std::sort(begin, end, less);
+    } else {
+      for (auto i = begin + 1; i != end; ++i)
+        for (auto j = i; j != begin && less(*j, *(j - 1)); --j)
+          std::iter_swap(j, j - 1);
+    }
     for (auto it = begin; it + 1 != end; ++it) {
       const auto next = it + 1;
       if (next->second != it->second || next->third != it->third) continue;
