@@ -464,6 +464,70 @@ TEST(Crc, CheckValueOfTheZlibPolynomial) {
   EXPECT_EQ(crc32(fox.data(), fox.size()), 0x414FA339u);
 }
 
+// Issue 27: a reader that needs a few arrays of a large DS reads those; the fingerprint is
+// read_ds's, the layout is still checked, the selected arrays' CRCs too.
+TEST(DS, SelectedArraysAreReadAndTheRestSkipped) {
+  ScratchFolder dir;
+  const auto path = dir / "case.tae";
+  write_ds(path, sample_ds());
+  const Ds whole = read_ds(path, "TAE");
+  const Ds part = read_ds(path, "TAE", [](const std::string& name) { return name == "f"; });
+  EXPECT_EQ(part.fingerprint, whole.fingerprint);
+  EXPECT_EQ(part.reals("f"), whole.reals("f"));
+  EXPECT_FALSE(part.has("K_val"));
+  EXPECT_FALSE(part.has("law"));
+  const Ds none = read_ds_record(path, "TAE", [](const std::string&) { return false; });
+  EXPECT_EQ(none.fingerprint, whole.fingerprint);
+  EXPECT_TRUE(none.arrays().empty());
+
+  // A damaged payload of a selected array is caught, of a skipped one not (its reader would).
+  std::string bytes = slurp(path);
+  bytes[payload_offset(bytes, "K_val") + 17] ^= 0x10;
+  spit(path, bytes);
+  EXPECT_NO_THROW(read_ds(path, "TAE", [](const std::string& name) { return name == "f"; }));
+  try {
+    read_ds(path, "TAE", [](const std::string& name) { return name == "K_val"; });
+    FAIL() << "a corrupted selected payload was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path.string() + ": array 'K_val': CRC mismatch (file corrupted)");
+  }
+  // Truncation is caught wherever the file is cut, skipped arrays or not.
+  const std::string good = slurp(path);
+  for (std::size_t length = 0; length < good.size(); ++length) {
+    spit(path, good.substr(0, length));
+    EXPECT_THROW(read_ds(path, "TAE", [](const std::string&) { return false; }), Error)
+        << "cut at " << length;
+  }
+  spit(path, good + "x");
+  EXPECT_THROW(read_ds(path, "TAE", [](const std::string&) { return false; }), Error);
+}
+
+// The CRC folds 8 bytes a step: every length and alignment against the bit-by-bit definition.
+TEST(Crc, EveryLengthAndAlignmentMatchesTheDefinition) {
+  const auto reference = [](const unsigned char* p, std::size_t n) {
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (std::size_t i = 0; i < n; ++i) {
+      c ^= p[i];
+      for (int k = 0; k < 8; ++k)
+        c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+    }
+    return c ^ 0xFFFFFFFFu;
+  };
+  std::vector<unsigned char> bytes(4096 + 16);
+  std::uint32_t state = 12345;
+  for (auto& b : bytes) {
+    state = state * 1103515245u + 12345u;
+    b = static_cast<unsigned char>(state >> 16);
+  }
+  for (std::size_t offset = 0; offset < 8; ++offset)
+    for (std::size_t n : {0, 1, 7, 8, 9, 15, 16, 17, 63, 64, 65, 1000, 4096})
+      EXPECT_EQ(crc32(bytes.data() + offset, n), reference(bytes.data() + offset, n))
+          << "offset " << offset << ", " << n << " bytes";
+  // Pieces of any size continue one another.
+  EXPECT_EQ(crc32(bytes.data() + 13, 4000, crc32(bytes.data(), 13)), reference(bytes.data(), 4013));
+}
+
 } // namespace
 } // namespace sig
 

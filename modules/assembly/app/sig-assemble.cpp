@@ -4,6 +4,7 @@
 #include "assembly/system.hpp"
 #include "core/datafile.hpp"
 #include "core/log.hpp"
+#include "core/phase_times.hpp"
 #include "core/stage.hpp"
 #include "core/stage_cards.hpp"
 #include "material/mili.hpp"
@@ -34,7 +35,10 @@ int main(int argc, char** argv) {
       finite_strain = finite_strain || entry.hyperelastic != nullptr;
 
     // 2. Pattern, stiffness, mass, loads, Dirichlet dofs.
-    const sig::LinearSystem system = sig::assemble_system(mesh, table, datafile);
+    const sig::LinearSystem system = [&] {
+      const sig::PhaseTimer timer("assemble");
+      return sig::assemble_system(mesh, table, datafile);
+    }();
 
     // 3. Write the TAE and report its size.
     sig::write_tae(args.ds_path("tae"), system, datafile.title());

@@ -2,6 +2,7 @@
 
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/phase_times.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -114,6 +115,7 @@ void AtomicFile::commit() {
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
+  const PhaseTimer timer("write");
   AtomicFile file(path);
   file.write(contents.data(), contents.size());
   file.commit();

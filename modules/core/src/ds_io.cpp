@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/finite.hpp"
 #include "core/input_file.hpp"
+#include "core/phase_times.hpp"
 #include "core/provenance.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -156,6 +158,26 @@ public:
     crc_ = crc32(data, size, crc_);
     left_ -= size;
   }
+  /// Skip `size` bytes of an unread payload (checked against the bytes left, not CRC'd).
+  void skip(std::uint64_t size, const char* what) {
+    SIG_VERIFY(size <= left_, path_ << ": truncated in " << context_ << " (expected " << size
+                                    << " bytes of " << what << ", " << left_ << " left)");
+    in_->seekg(static_cast<std::streamoff>(size), std::ios::cur);
+    SIG_VERIFY(*in_, path_ << ": read error in " << context_);
+    left_ -= size;
+  }
+  /// The CRC stored at the end of a record whose payload was skipped: taken as it is.
+  std::uint32_t stored_crc() {
+    std::uint32_t stored;
+    SIG_VERIFY(sizeof stored <= left_, path_ << ": truncated in " << context_ << " (expected "
+                                             << sizeof stored << " bytes of CRC, " << left_
+                                             << " left)");
+    in_->read(reinterpret_cast<char*>(&stored), sizeof stored);
+    SIG_VERIFY(*in_, path_ << ": read error in " << context_);
+    left_ -= sizeof stored;
+    crc_ = 0;
+    return stored;
+  }
   template <class T> T value(const char* what) {
     T v;
     read(&v, sizeof v, what);
@@ -193,7 +215,10 @@ DsHeader read_header(DsReader& in) {
   return header;
 }
 
-DsArray read_array(DsReader& in, std::uint32_t index, std::uint64_t& fingerprint) {
+/// The next array, or std::nullopt when `wanted` does not select it (its payload skipped);
+/// `array_name` is its name either way.
+std::optional<DsArray> read_array(DsReader& in, std::uint32_t index, std::uint64_t& fingerprint,
+                                  const DsSelection& wanted, std::string& array_name) {
   in.set_context("array #" + std::to_string(index + 1));
   in.start_record();
   char name[name_bytes];
@@ -201,6 +226,7 @@ DsArray read_array(DsReader& in, std::uint32_t index, std::uint64_t& fingerprint
   DsArray array;
   array.name.assign(name, strnlen(name, name_bytes));
   in.set_context("array '" + array.name + "'");
+  array_name = array.name;
   SIG_VERIFY(!array.name.empty() && name[name_bytes - 1] == '\0',
              in.path() << ": array #" << index + 1 << ": bad name (file corrupted)");
   const auto type = in.value<std::uint32_t>("type");
@@ -227,6 +253,11 @@ DsArray read_array(DsReader& in, std::uint32_t index, std::uint64_t& fingerprint
   SIG_VERIFY(payload <= in.left(), in.path()
                                        << ": truncated in array '" << array.name << "' (expected "
                                        << payload << " bytes of data, " << in.left() << " left)");
+  if (wanted && array.name != provenance_array && !wanted(array.name)) {
+    in.skip(payload, "data");
+    fingerprint = fold_fingerprint(fingerprint, in.stored_crc());
+    return std::nullopt;
+  }
   array.bytes.resize(payload);
   in.read(array.bytes.data(), payload, "data");
   fingerprint = fold_fingerprint(fingerprint, in.check_crc());
@@ -236,6 +267,7 @@ DsArray read_array(DsReader& in, std::uint32_t index, std::uint64_t& fingerprint
 } // namespace
 
 void write_ds(const std::filesystem::path& path, const Ds& ds) {
+  const PhaseTimer timer("write");
   check_writable(path, ds);
   // Inside a stage the DS records the inputs it was built from, replacing what it may hold.
   std::vector<const DsArray*> arrays;
@@ -272,7 +304,7 @@ void write_ds(const std::filesystem::path& path, const Ds& ds) {
 }
 
 namespace {
-Ds read_all(DsReader& in, const std::string& expected_kind) {
+Ds read_all(DsReader& in, const std::string& expected_kind, const DsSelection& wanted = {}) {
   char file_magic[sizeof magic];
   in.read(file_magic, sizeof magic, "magic");
   SIG_VERIFY(std::memcmp(file_magic, magic, sizeof magic) == 0,
@@ -294,10 +326,12 @@ Ds read_all(DsReader& in, const std::string& expected_kind) {
                                                     << ": DS type is '" << ds.header.kind
                                                     << "', expected '" << expected_kind << "'");
   std::uint64_t fingerprint = fnv1a64(nullptr, 0);
+  std::set<std::string> names;
   for (std::uint32_t k = 0; k < n_arrays; ++k) {
-    DsArray array = read_array(in, k, fingerprint);
-    SIG_VERIFY(!ds.has(array.name), in.path() << ": array '" << array.name << "': repeated");
-    ds.put(std::move(array));
+    std::string name;
+    std::optional<DsArray> array = read_array(in, k, fingerprint, wanted, name);
+    SIG_VERIFY(names.insert(name).second, in.path() << ": array '" << name << "': repeated");
+    if (array) ds.put(std::move(*array));
   }
   in.set_context("trailer");
   char end[sizeof trailer];
@@ -312,9 +346,15 @@ Ds read_all(DsReader& in, const std::string& expected_kind) {
 } // namespace
 
 Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) {
+  return read_ds(path, expected_kind, DsSelection{});
+}
+
+Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind,
+           const DsSelection& wanted) {
+  const PhaseTimer timer("read");
   SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
   DsReader in(path);
-  Ds ds = read_all(in, expected_kind);
+  Ds ds = read_all(in, expected_kind, wanted);
   note_case_input(ds.header.kind, path, ds.fingerprint,
                   ds.has(provenance_array) ? parse_provenance(ds.text(provenance_array), ds.source)
                                            : Provenance{});
@@ -322,9 +362,15 @@ Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) 
 }
 
 Ds read_ds_record(const std::filesystem::path& path, const std::string& expected_kind) {
+  return read_ds_record(path, expected_kind, DsSelection{});
+}
+
+Ds read_ds_record(const std::filesystem::path& path, const std::string& expected_kind,
+                  const DsSelection& wanted) {
+  const PhaseTimer timer("read");
   SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
   DsReader in(path);
-  return read_all(in, expected_kind);
+  return read_all(in, expected_kind, wanted);
 }
 
 Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind) {

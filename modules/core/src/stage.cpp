@@ -5,6 +5,7 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/phase_times.hpp"
 #include "core/provenance.hpp"
 #include "core/stage_guard.hpp"
 #include "revision.hpp"
@@ -188,6 +189,7 @@ int run_stage(const std::string& stage, const std::function<void()>& body) {
     std::cerr << program_name(stage) << ": error: unknown exception" << std::endl;
   }
   leave_stage_body();
+  append_phase_times(program_name(stage));
   factorization_explainer() = nullptr;
   close_case();
   // What the stage printed is a result too (sig-dump > file): a failed write is an error.

@@ -1,6 +1,7 @@
 #include "gmsh_run.hpp"
 
 #include "core/error.hpp"
+#include "core/phase_times.hpp"
 #include "core/temporary_folder.hpp"
 #include "mesh/gmsh.hpp"
 
@@ -98,7 +99,10 @@ Mesh mesh_with_gmsh(const std::string& name, const std::string& script,
     arguments.insert(arguments.end(), {"-setnumber", key, text.str()});
   }
   arguments.insert(arguments.end(), {"-o", msh.string()});
-  const int status = run_gmsh(arguments, log);
+  const int status = [&] {
+    const PhaseTimer timer("gmsh"); // gmsh's own mesh generation
+    return run_gmsh(arguments, log);
+  }();
 
   std::ifstream in(log);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -109,6 +113,7 @@ Mesh mesh_with_gmsh(const std::string& name, const std::string& script,
                  text.find("Error") == std::string::npos && std::filesystem::exists(msh),
              "gmsh failed on " << name << ".geo (status " << status << ", command: " << command
                                << ")" << last_lines(log, 8));
+  const PhaseTimer timer("read");
   return read_gmsh(msh);
 }
 

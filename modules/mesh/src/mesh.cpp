@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <unordered_set>
+#include <unordered_map>
 
 namespace sig {
 namespace {
@@ -108,7 +108,7 @@ double smallest_height(const Mesh& mesh, int c, double longest) {
   const double det = signed_cell_determinant(mesh, c);
   if (mesh.dim == 2) return det / longest;
   double largest_face = 0; // twice the area of the largest face
-  for (const Simplex& f : outward_facets(mesh.cells[c])) {
+  for (const Simplex& f : outward_facet_array(mesh.cells[c])) {
     const Eigen::Vector3d x0 = mesh.nodes[f[0]];
     const Eigen::Vector3d u = Eigen::Vector3d(mesh.nodes[f[1]]) - x0;
     const Eigen::Vector3d v = Eigen::Vector3d(mesh.nodes[f[2]]) - x0;
@@ -206,11 +206,22 @@ void check_mesh(const Mesh& mesh, const std::string& source) {
   verify_scale(mesh, source);
   if (const CellOverlap overlap = find_overlap(mesh); overlap.second >= 0)
     SIG_VERIFY(false, source << ": " << overlap.what);
-  std::unordered_set<FacetKey, FacetKeyHash> sides;
-  for (const auto& c : mesh.cells) {
-    for (const Simplex& f : outward_facets(c))
-      sides.insert(facet_key(f));
-  }
+  // The referenced facets' keys, marked when a cell has them as a facet (cells' facets off the
+  // referenced nodes skipped unhashed: one pass over the cells, no table of all their facets).
+  std::unordered_map<FacetKey, bool, FacetKeyHash> sides;
+  sides.reserve(mesh.facets.size());
+  for (const Facet& f : mesh.facets)
+    if (f.node.size() == mesh.dim) sides.emplace(facet_key(f.node), false);
+  const std::vector<char> on = nodes_on_facets(mesh);
+  if (!sides.empty())
+    for (const auto& c : mesh.cells)
+      for (const Simplex& f : outward_facet_array(c))
+        if (all_marked(on, f))
+          if (const auto it = sides.find(facet_key(f)); it != sides.end()) it->second = true;
+  const auto is_side = [&](const Simplex& nodes) {
+    const auto it = sides.find(facet_key(nodes));
+    return it != sides.end() && it->second;
+  };
   const std::string facet = mesh.facet_name();
   for (std::size_t e = 0; e < mesh.facets.size(); ++e) {
     const Facet& f = mesh.facets[e];
@@ -222,14 +233,13 @@ void check_mesh(const Mesh& mesh, const std::string& source) {
     SIG_VERIFY(f.ref >= 1, source << ": " << facet << " " << e + 1 << " (1-based) has reference "
                                   << f.ref << " (must be >= 1)");
     if (mesh.dim == 2)
-      SIG_VERIFY(sides.count(facet_key(f.node)),
-                 source << ": edge " << e + 1 << " (1-based) from node " << f.node[0] + 1
-                        << " to node " << f.node[1] + 1 << " is not a side of any triangle");
+      SIG_VERIFY(is_side(f.node), source << ": edge " << e + 1 << " (1-based) from node "
+                                         << f.node[0] + 1 << " to node " << f.node[1] + 1
+                                         << " is not a side of any triangle");
     else
-      SIG_VERIFY(sides.count(facet_key(f.node)),
-                 source << ": face " << e + 1 << " (1-based) of nodes " << f.node[0] + 1 << ", "
-                        << f.node[1] + 1 << ", " << f.node[2] + 1
-                        << " is not a face of any tetrahedron");
+      SIG_VERIFY(is_side(f.node), source << ": face " << e + 1 << " (1-based) of nodes "
+                                         << f.node[0] + 1 << ", " << f.node[1] + 1 << ", "
+                                         << f.node[2] + 1 << " is not a face of any tetrahedron");
   }
 }
 

@@ -6,20 +6,40 @@
 
 #include <cstdlib>
 #include <limits>
+#include <ostream>
+#include <sstream>
 #include <unordered_map>
 
 namespace sig {
 namespace {
+
+/// Where an element of NOP5 starts, for messages: "FILE: NOP5 element E (word K)", written only
+/// when a message is (a string per element costs more than the whole walk).
+struct ElementAt {
+  const std::string& file;
+  std::int64_t element;
+  std::size_t word;
+};
+
+std::ostream& operator<<(std::ostream& out, const ElementAt& at) {
+  return out << at.file << ": NOP5 element " << at.element << " (word " << at.word << ")";
+}
+
+std::string text(const ElementAt& at) {
+  std::ostringstream out;
+  out << at;
+  return out.str();
+}
 
 struct ElementShape {
   const char* name;
   int vertices, edges, faces;
 };
 
-ElementShape shape_of(std::int64_t ncge, int ndim, const std::string& where) {
+ElementShape shape_of(std::int64_t ncge, int ndim, const ElementAt& where) {
   if (ndim == 3) {
     if (ncge == 5) return {"tetrahedron", 4, 6, 4};
-    throw Error(where + ": element type NCGE = " + std::to_string(ncge) +
+    throw Error(text(where) + ": element type NCGE = " + std::to_string(ncge) +
                 " is not read in a 3D mesh (NDIM = 3): the model is P1 tetrahedra (NCGE = 5)");
   }
   switch (ncge) {
@@ -32,13 +52,13 @@ ElementShape shape_of(std::int64_t ncge, int ndim, const std::string& where) {
   case 4:
     return {"quadrilateral", 4, 4, 0};
   default:
-    throw Error(where + ": element type NCGE = " + std::to_string(ncge) +
+    throw Error(text(where) + ": element type NCGE = " + std::to_string(ncge) +
                 " is not a 2D element (1 point, 2 segment, 3 triangle, 4 quadrilateral)");
   }
 }
 
 /// A reference word: its absolute value, which must be an int.
-int reference(std::int64_t ref, const std::string& where) {
+int reference(std::int64_t ref, const ElementAt& where) {
   SIG_VERIFY(ref >= -std::numeric_limits<int>::max() && ref <= std::numeric_limits<int>::max(),
              where << ": reference " << ref << " is out of range");
   return static_cast<int>(ref < 0 ? -ref : ref);
@@ -47,8 +67,11 @@ int reference(std::int64_t ref, const std::string& where) {
 /// Builds the Mesh while NOP5 is walked: references checked for consistency, edges kept once.
 class MeshBuilder {
 public:
-  MeshBuilder(std::vector<double> coordinates, int np, int ndim) {
+  MeshBuilder(std::vector<double> coordinates, int np, int ndim, std::int64_t elements) {
     mesh.dim = ndim;
+    mesh.nodes.reserve(np);
+    mesh.cells.reserve(elements);
+    mesh.subdomain.reserve(elements);
     for (int i = 0; i < np; ++i)
       mesh.nodes.push_back(
           ndim == 3 ? Point(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2])
@@ -56,7 +79,7 @@ public:
     mesh.vertex_ref.assign(np, 0);
   }
 
-  void vertex_ref(int v, std::int64_t ref, const std::string& where) {
+  void vertex_ref(int v, std::int64_t ref, const ElementAt& where) {
     const int r = reference(ref, where);
     if (r == 0) return;
     SIG_VERIFY(mesh.vertex_ref[v] == 0 || mesh.vertex_ref[v] == r,
@@ -66,7 +89,7 @@ public:
   }
 
   /// Edge (a, b) with reference `ref`, in this direction, kept once.
-  void edge_ref(int a, int b, std::int64_t ref, const std::string& where) {
+  void edge_ref(int a, int b, std::int64_t ref, const ElementAt& where) {
     const int r = reference(ref, where);
     if (r == 0) return;
     const auto [it, fresh] = edge_refs_.emplace(edge_key(a, b), r);
@@ -79,7 +102,7 @@ public:
   /// Triangle with the references of its sides (v0,v1), (v1,v2), (v2,v0); made
   /// counter-clockwise, the sides keeping the direction they have in it.
   void triangle(std::array<int, 3> v, std::array<std::int64_t, 3> side_ref, int subdomain,
-                long element, const std::string& where) {
+                long element, const ElementAt& where) {
     mesh.cells.push_back(v);
     mesh.subdomain.push_back(subdomain);
     const bool clockwise = signed_double_area(mesh, mesh.num_cells() - 1) < 0;
@@ -97,15 +120,15 @@ public:
   /// (outward_facets, topology.cpp), made positively oriented; the faces are oriented outward
   /// once every tetrahedron is known (orient_facets).
   void tetrahedron(const Simplex& v, const std::array<std::int64_t, 4>& face_ref, int subdomain,
-                   long element, const std::string& where) {
-    const std::vector<Simplex> faces = outward_facets(v);
+                   long element, const ElementAt& where) {
+    const OutwardFacets faces = outward_facet_array(v);
     for (int j = 0; j < 4; ++j) {
       const int r = reference(face_ref[j], where);
       if (r == 0) continue;
-      const auto [it, fresh] = face_refs_.emplace(facet_key(faces[j]), r);
+      const auto [it, fresh] = face_refs_.emplace(facet_key(faces.facet[j]), r);
       SIG_VERIFY(it->second == r, where << ": face " << j + 1 << " has reference " << r
                                         << " here but " << it->second << " in an earlier element");
-      if (fresh) mesh.facets.push_back({faces[j], r});
+      if (fresh) mesh.facets.push_back({faces.facet[j], r});
     }
     mesh.cells.push_back(v);
     mesh.subdomain.push_back(subdomain);
@@ -130,12 +153,12 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
                std::vector<double> coordinates, const std::string& file) {
   const int np = static_cast<int>(nop2[word::NP]);
   const int ndim = static_cast<int>(nop2[word::NDIM]);
-  MeshBuilder build(std::move(coordinates), np, ndim);
+  MeshBuilder build(std::move(coordinates), np, ndim, nop2[word::NE]);
   std::size_t k = 0;
   std::int64_t triangles = 0, quadrilaterals = 0, tetrahedra = 0, edge_refs_dropped = 0;
+  std::vector<std::int64_t> vertices; // of one element, reused
   for (std::int64_t e = 1; e <= nop2[word::NE]; ++e) {
-    const std::string where =
-        file + ": NOP5 element " + std::to_string(e) + " (word " + std::to_string(k + 1) + ")";
+    const ElementAt where{file, e, k + 1};
     auto next = [&]() {
       SIG_VERIFY(k < nop5.size(),
                  where << " runs past the end of NOP5 (" << nop5.size() << " words)");
@@ -144,7 +167,7 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
     const std::int64_t ncge = next(), nmae = next(), ndsde = next(), nno = next();
     const ElementShape shape = shape_of(ncge, ndim, where);
     SIG_VERIFY(nno >= shape.vertices, where << ": " << nno << " nodes for a " << shape.name);
-    std::vector<std::int64_t> vertices;
+    vertices.clear();
     for (std::int64_t j = 0; j < nno; ++j)
       vertices.push_back(next());
     if (nop2[word::NCOPNP] == 0) { // nodes are not the vertices: the point list follows

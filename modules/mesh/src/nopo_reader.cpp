@@ -1,14 +1,18 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/phase_times.hpp"
 #include "core/provenance.hpp"
 #include "fortran_records.hpp"
 #include "mesh/nopo.hpp"
 #include "nop5_walk.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
+#include <memory>
 #include <sstream>
+#include <string_view>
 
 namespace sig {
 namespace {
@@ -21,9 +25,11 @@ public:
       : records_(records), codec_{records.big_endian}, int_bytes_(int_bytes),
         file_(std::move(file)) {}
 
-  /// `n` integers; raw() then holds their bytes (for the text words of NOP0).
-  std::vector<std::int64_t> ints(const std::string& name, std::int64_t n) {
+  /// `n` integers; with `keep_raw`, raw() then holds their bytes (for the text words of NOP0).
+  std::vector<std::int64_t> ints(const std::string& name, std::int64_t n, bool keep_raw = false) {
     std::vector<std::int64_t> values;
+    values.reserve(
+        static_cast<std::size_t>(std::min<std::int64_t>(n, records_left_bytes() / int_bytes_)));
     raw_.clear();
     while (static_cast<std::int64_t>(values.size()) < n) {
       const auto [count, body] = next_record(name, n - static_cast<std::int64_t>(values.size()));
@@ -32,9 +38,15 @@ public:
                      body.size() / int_bytes_ == static_cast<std::size_t>(count),
                  where(name) << ": " << body.size() << " bytes for " << count << " words of "
                              << int_bytes_ << " bytes");
-      for (std::int64_t k = 0; k < count; ++k)
-        values.push_back(codec_.get_int(body.data() + k * int_bytes_, int_bytes_));
-      raw_.append(body);
+      if (!codec_.big_endian && int_bytes_ == 8) { // our case.nopo: the words as they lie
+        const std::size_t done = values.size();
+        values.resize(done + static_cast<std::size_t>(count));
+        std::memcpy(values.data() + done, body.data(), body.size());
+      } else {
+        for (std::int64_t k = 0; k < count; ++k)
+          values.push_back(codec_.get_int(body.data() + k * int_bytes_, int_bytes_));
+      }
+      if (keep_raw) raw_.append(body);
     }
     return values;
   }
@@ -49,8 +61,14 @@ public:
                  where(name) << ": " << size << " bytes for " << count
                              << " reals (neither float nor double)");
       real_bytes = static_cast<int>(size / count);
-      for (std::int64_t k = 0; k < count; ++k)
-        values.push_back(codec_.get_real(body.data() + k * real_bytes, real_bytes));
+      if (!codec_.big_endian && real_bytes == 8) {
+        const std::size_t done = values.size();
+        values.resize(done + static_cast<std::size_t>(count));
+        std::memcpy(values.data() + done, body.data(), body.size());
+      } else {
+        for (std::int64_t k = 0; k < count; ++k)
+          values.push_back(codec_.get_real(body.data() + k * real_bytes, real_bytes));
+      }
     }
     return values;
   }
@@ -61,6 +79,13 @@ public:
     next_ += n;
   }
   std::size_t records_left() const { return records_.payloads.size() - next_; }
+  /// The payload bytes of the records left: no count from the file reserves more than that.
+  std::int64_t records_left_bytes() const {
+    std::int64_t bytes = 0;
+    for (std::size_t r = next_; r < records_.payloads.size(); ++r)
+      bytes += static_cast<std::int64_t>(records_.payloads[r].size());
+    return bytes;
+  }
   const std::string& raw() const { return raw_; }
   std::string where(const std::string& name) const {
     return file_ + ": record " + std::to_string(next_) + " (" + name + ")";
@@ -96,31 +121,45 @@ std::string text_of_words(const std::string& raw, int int_bytes, int first, int 
   return end == std::string::npos ? std::string() : text.substr(0, end + 1);
 }
 
-// Read in one piece of the file's size (no stream copy): the records must tile the file, so the
-// whole of it is needed.
-std::string read_bytes(const std::filesystem::path& path) {
+// Read in one piece of the file's size (no stream copy, no zero fill first): the records must
+// tile the file, so the whole of it is needed.
+struct FileBytes {
+  std::unique_ptr<char[]> data;
+  std::size_t size = 0;
+  std::string_view view() const { return {data.get(), size}; }
+};
+
+FileBytes read_bytes(const std::filesystem::path& path) {
   verify_regular_file(path, "NOPO file");
   std::error_code error;
   const auto size = std::filesystem::file_size(path, error);
   SIG_VERIFY(!error, path.string() << ": cannot open the NOPO file: " << error.message());
   std::ifstream in(path, std::ios::binary);
   SIG_VERIFY(in, path.string() << ": cannot open the NOPO file");
-  std::string bytes(size, '\0');
-  in.read(bytes.data(), static_cast<std::streamsize>(size));
+  FileBytes bytes{std::unique_ptr<char[]>(new char[size]), size};
+  in.read(bytes.data.get(), static_cast<std::streamsize>(size));
   SIG_VERIFY(in.gcount() == static_cast<std::streamsize>(size),
              path.string() << ": read error (" << in.gcount() << " of " << size << " bytes)");
   return bytes;
 }
 
+NopoFile parse_nopo_bytes(const std::string& file, std::string_view bytes);
+
 } // namespace
 
 NopoFile read_nopo_file(const std::filesystem::path& path) {
-  NopoFile result = parse_nopo_file(path.string(), read_bytes(path));
+  const PhaseTimer timer("read");
+  NopoFile result = parse_nopo_bytes(path.string(), read_bytes(path).view());
   note_case_file("NOPO", path, result.fingerprint); // a stage's case.nopo: an input
   return result;
 }
 
 NopoFile parse_nopo_file(const std::string& file, const std::string& bytes) {
+  return parse_nopo_bytes(file, bytes);
+}
+
+namespace {
+NopoFile parse_nopo_bytes(const std::string& file, std::string_view bytes) {
   const FortranRecords records = split_fortran_records(bytes, file);
   NopoFile result;
   result.layout.marker_bytes = records.marker_bytes;
@@ -148,7 +187,7 @@ NopoFile parse_nopo_file(const std::string& file, const std::string& bytes) {
 
   // 2. The arrays, in order: NOP0, [NOP1 + NTACM arrays], NOP2, [NOP3], NOP4, NOP5.
   ArrayReader arrays(records, int_bytes, file);
-  const std::vector<std::int64_t> nop0 = arrays.ints("NOP0", 32);
+  const std::vector<std::int64_t> nop0 = arrays.ints("NOP0", 32, true);
   result.text.title = text_of_words(arrays.raw(), int_bytes, 0, 20);
   result.text.date = text_of_words(arrays.raw(), int_bytes, 20, 2);
   result.text.creator = text_of_words(arrays.raw(), int_bytes, 22, 6);
@@ -199,6 +238,8 @@ NopoFile parse_nopo_file(const std::string& file, const std::string& bytes) {
   check_mesh(result.mesh, file);
   return result;
 }
+
+} // namespace
 
 Mesh read_nopo(const std::filesystem::path& path) {
   return read_nopo_file(path).mesh;

@@ -1,5 +1,6 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/phase_times.hpp"
 #include "core/provenance.hpp"
 #include "core/stage.hpp"
 #include "fortran_records.hpp"
@@ -7,8 +8,10 @@
 #include "mesh/topology.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdlib>
 #include <limits>
+#include <type_traits>
 #include <unordered_map>
 
 namespace sig {
@@ -26,12 +29,15 @@ Nop5 build_nop5(const Mesh& mesh) {
   std::unordered_map<std::uint64_t, int> edge_ref;
   for (const auto& e : mesh.facets)
     edge_ref.emplace(edge_key(e.node[0], e.node[1]), std::abs(e.ref));
+  const std::vector<char> on = nodes_on_facets(mesh); // a side off them has no reference
   Nop5 nop5;
+  nop5.words.reserve(8 * mesh.cells.size());
   for (int t = 0; t < mesh.num_cells(); ++t) {
     const auto& tri = mesh.cells[t];
     std::array<std::int64_t, 3> e{}, v{};
     for (int j = 0; j < 3; ++j) {
-      const auto it = edge_ref.find(edge_key(tri[j], tri[(j + 1) % 3]));
+      const int a = tri[j], b = tri[(j + 1) % 3];
+      const auto it = on[a] && on[b] ? edge_ref.find(edge_key(a, b)) : edge_ref.end();
       e[j] = it == edge_ref.end() ? 0 : it->second;
       v[j] = std::abs(mesh.vertex_ref[tri[j]]);
     }
@@ -66,13 +72,16 @@ Nop5 build_nop5_tetrahedra(const Mesh& mesh) {
   std::unordered_map<FacetKey, int, FacetKeyHash> face_ref;
   for (const auto& f : mesh.facets)
     face_ref.emplace(facet_key(f.node), std::abs(f.ref));
+  const std::vector<char> on = nodes_on_facets(mesh); // a face off them has no reference
   Nop5 nop5;
+  nop5.words.reserve(9 * mesh.cells.size());
   for (int t = 0; t < mesh.num_cells(); ++t) {
     const auto& tet = mesh.cells[t];
     std::array<std::int64_t, 4> f{}, v{};
-    const std::vector<Simplex> faces = outward_facets(tet);
+    const OutwardFacets faces = outward_facet_array(tet);
     for (int j = 0; j < 4; ++j) {
-      const auto it = face_ref.find(facet_key(faces[j]));
+      const auto it = all_marked(on, faces.facet[j]) ? face_ref.find(facet_key(faces.facet[j]))
+                                                     : face_ref.end();
       f[j] = it == face_ref.end() ? 0 : it->second;
       v[j] = std::abs(mesh.vertex_ref[tet[j]]);
     }
@@ -100,6 +109,25 @@ Nop5 build_nop5_tetrahedra(const Mesh& mesh) {
   return nop5;
 }
 
+/// Append `values` as words of `bytes` bytes: on a little-endian host the 8-byte little-endian
+/// words of our case.nopo are the values' own bytes.
+template <class T>
+void put_words(std::string& out, const std::vector<T>& values, int bytes, const WordCodec& codec) {
+  if constexpr (sizeof(T) == 8) {
+    if (!codec.big_endian && bytes == 8 && std::endian::native == std::endian::little) {
+      out.append(reinterpret_cast<const char*>(values.data()), values.size() * 8);
+      return;
+    }
+  }
+  out.reserve(out.size() + values.size() * bytes);
+  for (const T x : values) {
+    if constexpr (std::is_floating_point_v<T>)
+      codec.put_real(out, x, bytes);
+    else
+      codec.put_int(out, x, bytes);
+  }
+}
+
 /// Text packed 4 characters per integer word, in the first 4 bytes of the word in file order
 /// (FreeFem's union of char[4] and long), blank padded to `words` words.
 void put_text(std::string& out, const std::string& text, int words, int int_bytes) {
@@ -125,18 +153,15 @@ NopoLayout nopo_layout(NopoVariant variant) {
   return {};
 }
 
-std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOptions& options) {
-  if (options.stamp_fingerprint) {
-    // The fingerprint leaves NOP0 out, so the file without it gives it.
-    NopoWriteOptions plain = options;
-    plain.stamp_fingerprint = false;
-    const std::string file = encode_nopo(mesh, variant, plain);
-    std::string creator = options.text.creator.substr(0, 8);
-    creator.resize(8, ' ');
-    plain.text.creator =
-        creator + fingerprint_text(nopo_fingerprint(split_fortran_records(file, "NOPO writer")));
-    return encode_nopo(mesh, variant, plain);
-  }
+namespace {
+
+/// The bytes of a NOPO file and its fingerprint (mesh/nopo.hpp).
+struct EncodedNopo {
+  std::string bytes;
+  std::uint64_t fingerprint = 0;
+};
+
+EncodedNopo encode(const Mesh& mesh, NopoVariant variant, const NopoWriteOptions& options) {
   check_mesh(mesh, "NOPO writer");
   const NopoLayout layout = nopo_layout(variant);
   const int wi = layout.int_bytes;
@@ -169,11 +194,10 @@ std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOp
                                              2,        nop5.largest_span,
                                              0,        l5,
                                              1};
-  auto words = [&](std::int64_t count, auto&& values) {
+  auto words = [&](std::int64_t count, const auto& values) {
     std::string payload;
     codec.put_int(payload, count, wi);
-    for (std::int64_t x : values)
-      codec.put_int(payload, x, wi);
+    put_words(payload, std::vector<std::int64_t>(values.begin(), values.end()), wi, codec);
     return payload;
   };
 
@@ -188,6 +212,8 @@ std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOp
   codec.put_int(payload, 32, wi);
   put_text(payload, options.text.title, 20, wi);
   put_text(payload, options.text.date, 2, wi);
+  // Where the creator's 6 words lie in the file: the fingerprint is written there once known.
+  const std::size_t creator_at = file.size() + layout.marker_bytes + payload.size();
   put_text(payload, options.text.creator, 6, wi);
   put_text(payload, "NOPO", 1, wi);
   for (std::int64_t x : {0, 1, 0})
@@ -198,32 +224,55 @@ std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOp
 
   payload.clear(); // NOP4: the count is an integer word, the coordinates reals
   codec.put_int(payload, l4, wi);
+  std::vector<double> coordinates;
+  coordinates.reserve(static_cast<std::size_t>(l4));
   for (const auto& x : mesh.nodes) {
     for (const double c : x)
-      codec.put_real(payload, c, layout.real_bytes);
+      coordinates.push_back(c);
   }
+  put_words(payload, coordinates, layout.real_bytes, codec);
   append_fortran_record(file, payload, layout.marker_bytes, codec);
 
-  append_fortran_record(file, words(l5, nop5.words), layout.marker_bytes, codec);
-  return file;
+  payload.clear();
+  codec.put_int(payload, l5, wi);
+  put_words(payload, nop5.words, wi, codec);
+  append_fortran_record(file, payload, layout.marker_bytes, codec);
+
+  // The fingerprint leaves NOP0 out: it is the same before and after the creator is stamped.
+  const std::uint64_t fingerprint = nopo_fingerprint(split_fortran_records(file, "NOPO writer"));
+  if (options.stamp_fingerprint) {
+    std::string creator = options.text.creator.substr(0, 8);
+    creator.resize(8, ' ');
+    std::string stamped;
+    put_text(stamped, creator + fingerprint_text(fingerprint), 6, wi);
+    file.replace(creator_at, stamped.size(), stamped);
+  }
+  return {std::move(file), fingerprint};
+}
+
+} // namespace
+
+std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOptions& options) {
+  return encode(mesh, variant, options).bytes;
 }
 
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
                 const NopoWriteOptions& options) {
+  const PhaseTimer timer("write");
   write_file_atomically(path, encode_nopo(mesh, variant, options));
 }
 
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
                 const std::string& title, const std::string& creator) {
+  const PhaseTimer timer("write");
   NopoWriteOptions options;
   options.text = {title, ds_date(), creator};
   options.stamp_fingerprint = true;
-  const std::string file = encode_nopo(mesh, variant, options);
-  write_file_atomically(path, file);
+  const EncodedNopo file = encode(mesh, variant, options);
+  write_file_atomically(path, file.bytes);
   // Written after the mesh: a stage killed between the two leaves a record of another mesh,
   // which the next stage refuses.
-  write_provenance_beside(
-      path, "NOPO", nopo_fingerprint(split_fortran_records(file, "NOPO writer")), title, creator);
+  write_provenance_beside(path, "NOPO", file.fingerprint, title, creator);
 }
 
 } // namespace sig

@@ -68,6 +68,30 @@ bool TokenReader::at_end() {
 }
 
 std::string_view TokenReader::word() {
+  // Fast path: the blanks skipped and the token taken within the buffer, the token returned as a
+  // view into it (valid, as token_ is, until the next call); a token that reaches the buffer's end
+  // (or is too long) takes the character-wise path below.
+  while (fill()) {
+    while (begin_ < end_ && is_space(static_cast<unsigned char>(buffer_[begin_]))) {
+      if (buffer_[begin_] == '\n') ++scan_line_;
+      ++begin_;
+      ++offset_;
+    }
+    if (begin_ < end_) break;
+  }
+  if (begin_ < end_) {
+    std::size_t stop = begin_;
+    while (stop < end_ && stop - begin_ < max_token &&
+           !is_space(static_cast<unsigned char>(buffer_[stop])))
+      ++stop;
+    if (stop < end_ && is_space(static_cast<unsigned char>(buffer_[stop]))) {
+      line_ = scan_line_;
+      const std::string_view token(buffer_.data() + begin_, stop - begin_);
+      offset_ += stop - begin_;
+      begin_ = stop;
+      return token;
+    }
+  }
   if (at_end()) {
     line_ = scan_line_;
     fail("unexpected end of file");

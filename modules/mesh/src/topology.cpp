@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <tuple>
 
 #include <unordered_map>
 #include <unordered_set>
@@ -34,12 +35,31 @@ FacetKey facet_key(const Simplex& facet) {
 // x3-x0] > 0): its right-hand normal points out, as a traction's normal must. MODULEF.md has
 // verified the triangle's numbering on files; the tetrahedron's follows the guides and has not
 // been checked against a MODULEF file.
+OutwardFacets outward_facet_array(const Simplex& cell) {
+  if (cell.size() == 3)
+    return {{Simplex{cell[0], cell[1]}, Simplex{cell[1], cell[2]}, Simplex{cell[2], cell[0]}}, 3};
+  return {{Simplex{cell[0], cell[2], cell[1]}, Simplex{cell[0], cell[3], cell[2]},
+           Simplex{cell[0], cell[1], cell[3]}, Simplex{cell[1], cell[2], cell[3]}},
+          4};
+}
+
 std::vector<Simplex> outward_facets(const Simplex& cell) {
-  if (cell.size() == 3) return {{cell[0], cell[1]}, {cell[1], cell[2]}, {cell[2], cell[0]}};
-  return {{cell[0], cell[2], cell[1]},
-          {cell[0], cell[3], cell[2]},
-          {cell[0], cell[1], cell[3]},
-          {cell[1], cell[2], cell[3]}};
+  const OutwardFacets facets = outward_facet_array(cell);
+  return {facets.begin(), facets.end()};
+}
+
+std::vector<char> nodes_on_facets(const Mesh& mesh) {
+  std::vector<char> on(mesh.nodes.size(), 0);
+  for (const Facet& f : mesh.facets)
+    for (int v : f.node)
+      if (v >= 0 && static_cast<std::size_t>(v) < on.size()) on[v] = 1;
+  return on;
+}
+
+bool all_marked(const std::vector<char>& marks, const Simplex& f) {
+  for (int v : f)
+    if (v < 0 || static_cast<std::size_t>(v) >= marks.size() || !marks[v]) return false;
+  return true;
 }
 
 int orient_cells(Mesh& mesh, std::vector<int>* flipped) {
@@ -113,32 +133,83 @@ std::string node_list(Simplex nodes) {
 
 CellOverlap find_overlap(const Mesh& mesh) {
   // Positively oriented cells that tile a domain run through each interior facet once in each
-  // orientation: an oriented facet met twice belongs to two cells on the same side of it.
-  std::unordered_map<FacetKey, int, FacetKeyHash> directed; // oriented facet -> cell
-  directed.reserve((mesh.dim + 1) * mesh.cells.size());
-  const std::string cells = mesh.dim == 3 ? "tetrahedra" : "triangles";
-  for (int t = 0; t < mesh.num_cells(); ++t) {
-    for (const Simplex& f : outward_facets(mesh.cells[t])) {
-      const auto [it, fresh] = directed.try_emplace(directed_key(f), t);
-      if (fresh) continue;
-      const int other = it->second;
-      const Simplex a = sorted(mesh.cells[other]), b = sorted(mesh.cells[t]);
-      const std::string pair =
-          cells + " " + std::to_string(other + 1) + " and " + std::to_string(t + 1) + " (1-based) ";
-      if (a == b)
-        return {other, t,
-                pair + "are one " + mesh.cell_name() + " listed twice (nodes " + node_list(a) +
-                    "): the body would count twice there"};
-      if (mesh.dim == 2)
-        return {other, t,
-                pair + "overlap: both lie on the same side of their common side from node " +
-                    std::to_string(f[0] + 1) + " to node " + std::to_string(f[1] + 1)};
-      return {other, t,
-              pair + "overlap: both lie on the same side of their common face of nodes " +
-                  node_list(f)};
+  // orientation: an oriented facet met twice belongs to two cells on the same side of it. The
+  // oriented facets are bucketed by their first node (a counting sort, no hash table: a mesh of
+  // millions of cells is checked in a fraction of a second); the overlap reported is the one a
+  // scan of the cells in order meets first: the earliest second occurrence of an oriented facet,
+  // with the cell of its first.
+  const int per = mesh.dim + 1;
+  const auto facets = static_cast<std::int64_t>(per) * mesh.num_cells();
+  int top = -1;
+  for (const Simplex& cell : mesh.cells)
+    for (int v : cell) {
+      SIG_VERIFY(v >= 0, "find_overlap: negative node index " << v);
+      top = std::max(top, v);
+    }
+  std::vector<std::int64_t> start(static_cast<std::size_t>(top) + 2, 0);
+  for (const Simplex& cell : mesh.cells)
+    for (const Simplex& f : outward_facet_array(cell))
+      ++start[directed_key(f)[0] + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  struct Entry {
+    int second, third;     // the oriented facet's other two key words
+    std::int64_t position; // cell * per + local facet: the scan order
+  };
+  std::vector<Entry> entries(static_cast<std::size_t>(facets));
+  {
+    std::vector<std::int64_t> next(start.begin(), start.end() - 1);
+    std::int64_t position = 0;
+    for (const Simplex& cell : mesh.cells)
+      for (const Simplex& f : outward_facet_array(cell)) {
+        const FacetKey key = directed_key(f);
+        entries[next[key[0]]++] = {key[1], key[2], position++};
+      }
+  }
+  std::int64_t first = -1, second = -1; // positions of the overlap met first
+  for (std::size_t b = 0; b + 1 < start.size(); ++b) {
+    const auto begin = entries.begin() + start[b], end = entries.begin() + start[b + 1];
+    if (end - begin < 2) continue;
+    // Within a bucket the entries are in scan order; sorted by key, then position, a repeated
+    // oriented facet's first two occurrences are neighbours.
+    // Insertion sort for the usual bucket: the few facets around one node.
+    const auto less = [](const Entry& a, const Entry& c) {
+      return std::tie(a.second, a.third, a.position) < std::tie(c.second, c.third, c.position);
+    };
+    if (end - begin > 16) {
+      std::sort(begin, end, less);
+    } else {
+      for (auto i = begin + 1; i != end; ++i)
+        for (auto j = i; j != begin && less(*j, *(j - 1)); --j)
+          std::iter_swap(j, j - 1);
+    }
+    for (auto it = begin; it + 1 != end; ++it) {
+      const auto next = it + 1;
+      if (next->second != it->second || next->third != it->third) continue;
+      if (it != begin && (it - 1)->second == it->second && (it - 1)->third == it->third) continue;
+      if (second < 0 || next->position < second) {
+        first = it->position;
+        second = next->position;
+      }
     }
   }
-  return {};
+  if (second < 0) return {};
+  const int other = static_cast<int>(first / per), t = static_cast<int>(second / per);
+  const Simplex f = outward_facet_array(mesh.cells[t]).facet[second % per];
+  const std::string cells = mesh.dim == 3 ? "tetrahedra" : "triangles";
+  const Simplex a = sorted(mesh.cells[other]), b = sorted(mesh.cells[t]);
+  const std::string pair =
+      cells + " " + std::to_string(other + 1) + " and " + std::to_string(t + 1) + " (1-based) ";
+  if (a == b)
+    return {other, t,
+            pair + "are one " + mesh.cell_name() + " listed twice (nodes " + node_list(a) +
+                "): the body would count twice there"};
+  if (mesh.dim == 2)
+    return {other, t,
+            pair + "overlap: both lie on the same side of their common side from node " +
+                std::to_string(f[0] + 1) + " to node " + std::to_string(f[1] + 1)};
+  return {other, t,
+          pair + "overlap: both lie on the same side of their common face of nodes " +
+              node_list(f)};
 }
 
 std::pair<int, int> side_with_two_references(const Mesh& mesh) {
@@ -154,23 +225,30 @@ std::pair<int, int> side_with_two_references(const Mesh& mesh) {
 int orient_facets(Mesh& mesh) {
   struct Side {
     Simplex outward; ///< as in the first cell met
-    int count;
+    int count = 0;
   };
+  // Only the referenced sides are looked up (a cell's facet whose nodes are not all on referenced
+  // facets is skipped without hashing): the cells are scanned once, in order.
   std::unordered_map<FacetKey, Side, FacetKeyHash> sides;
-  sides.reserve((mesh.dim + 1) * mesh.cells.size());
-  for (const auto& cell : mesh.cells) {
-    for (const Simplex& f : outward_facets(cell)) {
-      auto [it, fresh] = sides.try_emplace(facet_key(f), Side{f, 0});
-      ++it->second.count;
-    }
-  }
+  sides.reserve(mesh.facets.size());
+  for (const Facet& facet : mesh.facets)
+    sides.try_emplace(facet_key(facet.node));
+  const std::vector<char> on = nodes_on_facets(mesh);
+  if (!sides.empty())
+    for (const auto& cell : mesh.cells)
+      for (const Simplex& f : outward_facet_array(cell)) {
+        if (!all_marked(on, f)) continue;
+        const auto it = sides.find(facet_key(f));
+        if (it == sides.end()) continue;
+        if (it->second.count++ == 0) it->second.outward = f;
+      }
   std::vector<Facet> kept;
   kept.reserve(mesh.facets.size());
   std::unordered_set<FacetKey, FacetKeyHash> seen;
   for (std::size_t e = 0; e < mesh.facets.size(); ++e) {
     Facet facet = mesh.facets[e];
     const auto it = sides.find(facet_key(facet.node));
-    if (it == sides.end()) return static_cast<int>(e);
+    if (it->second.count == 0) return static_cast<int>(e);
     if (!seen.insert(it->first).second) continue;
     if (it->second.count == 1) facet.node = it->second.outward;
     kept.push_back(facet);

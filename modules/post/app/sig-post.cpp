@@ -162,9 +162,12 @@ int main(int argc, char** argv) {
     }
 
     // 6. summary.json with the times of every stage that recorded some.
+    // Of case.tae (hundreds of MB at scale) the loads and the phase times only.
     std::optional<sig::Ds> tae;
     if (std::filesystem::exists(args.ds_path("tae")))
-      tae = sig::read_ds(args.ds_path("tae"), "TAE");
+      tae = sig::read_ds(args.ds_path("tae"), "TAE", [](const std::string& name) {
+        return name == "f" || name.starts_with("time_");
+      });
     const auto times =
         sig::gather_times({tae ? &*tae : nullptr, contact_case ? &cont : nullptr, &solution});
     sig::Json summary = sig::build_summary(datafile.title(), mesh, solution, contact, times);

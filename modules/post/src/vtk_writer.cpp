@@ -3,6 +3,7 @@
 #include "core/ds.hpp"
 #include "core/error.hpp"
 #include "core/finite.hpp"
+#include "core/phase_times.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -82,6 +83,7 @@ vtkNew<vtkUnstructuredGrid> make_grid(const Mesh& mesh) {
 void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
                const std::vector<VtkField>& point_fields, const std::vector<VtkField>& cell_fields,
                const VtkText& field_data, const VtkNumbers& field_numbers) {
+  const PhaseTimer timer("write");
   const std::string where = path.string();
   const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   SIG_VERIFY(std::filesystem::is_directory(folder),
@@ -116,6 +118,9 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff(); // raw binary: smaller and faster than base64
   writer->SetCompressorTypeToZLib();
+  // zlib's fastest level: a .vtu of 1.5M triangles is written several times faster than at VTK's
+  // default (5), a few per cent larger, and read by every reader of zlib-compressed VTK XML.
+  writer->SetCompressionLevel(1);
   const int ok = writer->Write();
   if (ok != 1 || writer->GetErrorCode() != 0) {
     std::error_code ignored;

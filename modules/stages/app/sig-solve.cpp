@@ -21,6 +21,7 @@
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/phase_times.hpp"
 #include "core/stage.hpp"
 #include "core/stage_cards.hpp"
 #include "material/mili.hpp"
@@ -172,6 +173,7 @@ int main(int argc, char** argv) {
     sig::refuse_load_steps(datafile, "a small-strain solve is linear in the load (the contact "
                                      "methods solve it whole)");
     sig::StaticSolution solution;
+    std::optional<sig::PhaseTimer> timer(std::in_place, "solve");
     if (!has_contact) { // method=linear (read_solver_card)
       sig::warn_unused_iteration_fields(datafile, "a small-strain deck without contact is one "
                                                   "linear solve");
@@ -190,6 +192,8 @@ int main(int argc, char** argv) {
       solution = sig::solve_static_contact(system, *contact, parameters, backend, start,
                                            {card.convexification, loop ? &mesh : nullptr});
     }
+
+    timer.reset();
 
     // 5. Write case.b and report.
     sig::write_solution(args.ds_path("b"), solution, method, backend, datafile.title());

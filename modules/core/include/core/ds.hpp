@@ -28,6 +28,7 @@
 //   "ENDS" trailer (a truncated file is caught even when it ends on an array boundary).
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -116,6 +117,22 @@ Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind =
 /// read_ds without registering the DS as an input of the case: a record kept beside another file
 /// (core/provenance.hpp), a case's files looked at from outside (core/stale.hpp).
 Ds read_ds_record(const std::filesystem::path& path, const std::string& expected_kind = "");
+
+/// The arrays a reader takes from a DS (by name); the others it skips on disk.
+using DsSelection = std::function<bool(const std::string& name)>;
+
+/// read_ds of only the arrays `wanted` selects (and "provenance", always): a stage that needs
+/// a few kB of a DS of hundreds of MB (sig-post's loads from case.tae) reads those. The whole
+/// file is still checked for its layout (magic, version, every record's name, type, shape and
+/// size against what the file holds, the trailer), the selected arrays for their CRC; a skipped
+/// array's stored CRC enters the fingerprint as read_ds folds it (the same fingerprint), unchecked
+/// against its payload. Asking the Ds for an array not selected is an error saying "missing".
+Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind,
+           const DsSelection& wanted);
+
+/// read_ds_record of the selected arrays only (core/stale.hpp: a fingerprint, a provenance).
+Ds read_ds_record(const std::filesystem::path& path, const std::string& expected_kind,
+                  const DsSelection& wanted);
 
 /// The same checks on the bytes of a file called `name` (tests, fuzzing); registers no input.
 Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind = "");

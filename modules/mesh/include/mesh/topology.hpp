@@ -38,6 +38,22 @@ struct FacetKeyHash {
 /// topology.cpp for the numbering and why.
 std::vector<Simplex> outward_facets(const Simplex& cell);
 
+/// outward_facets without allocating, for the loops over every cell of a large mesh.
+struct OutwardFacets {
+  std::array<Simplex, 4> facet{};
+  int count = 0;
+  const Simplex* begin() const { return facet.data(); }
+  const Simplex* end() const { return facet.data() + count; }
+};
+OutwardFacets outward_facet_array(const Simplex& cell);
+
+/// Per node of `mesh`: 1 when it is a node of a referenced facet (mesh.facets), else 0. A cell's
+/// facet with a node off them is none of the referenced ones: the loops over every cell skip it
+/// (all_marked) without a hash look-up.
+std::vector<char> nodes_on_facets(const Mesh& mesh);
+/// Every node of `f` is marked in `marks` (and in its range).
+bool all_marked(const std::vector<char>& marks, const Simplex& f);
+
 /// Make every cell positively oriented (swap its last two nodes), listing the flipped ones in
 /// `flipped` if given. Returns -1, or the index of the first degenerate (zero-measure) cell,
 /// which no orientation can mend: the readers report it with its line in the file.
