@@ -25,8 +25,11 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
                  weight.size() == m,
              cont.source << ": arrays node, normal, tangent (m x " << d
                          << "), gap, weight disagree for m = " << m);
-  SIG_VERIFY(multiplier.size() == m && tangential.size() == m && normal_status.size() == m &&
-                 friction_status.size() == m,
+  // In 3D with friction, two tangential components per element, along t1 and t2 = n x t1 (the
+  // contact frame, contact_law.hpp).
+  const bool pair = d == 3 && m > 0 && tangential.size() == 2 * m;
+  SIG_VERIFY(multiplier.size() == m && (tangential.size() == m || pair) &&
+                 normal_status.size() == m && friction_status.size() == m,
              solution.source << ": arrays multiplier, tangential_multiplier, normal_status and "
                                 "friction_status hold "
                              << multiplier.size() << ", " << tangential.size() << ", "
@@ -61,20 +64,25 @@ std::vector<ContactRow> contact_rows(const Mesh& mesh, const Ds& cont, const Ds&
     SIG_VERIFY(weight[i] > 0,
                cont.source << ": array 'weight' holds " << weight[i] << " at element " << i + 1);
     r.pressure = multiplier[i] / weight[i];
-    r.tangential_multiplier = tangential[i];
-    r.tangential_pressure = tangential[i] / weight[i];
+    const double T1 = tangential[pair ? 2 * i : i], T2 = pair ? tangential[2 * i + 1] : 0.0;
+    r.tangential_multiplier = T1;
+    r.tangential_pressure = T1 / weight[i];
     r.slip = slip;
     if (d == 3) { // magnitudes, and the vectors in global axes
       double slip_squared = 0;
+      const double* n = &normal[3 * i];
+      const double* t1 = &tangent[3 * i];
+      const double t2[3] = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
+                            n[0] * t1[1] - n[1] * t1[0]};
       for (std::size_t c = 0; c < 3; ++c) {
         const double uc = c == 0 ? r.u1 : c == 1 ? r.u2 : r.u3;
         r.slip_vector[c] = uc + un * normal[3 * i + c]; // u - (n . u) n, n . u = -u_n
         slip_squared += r.slip_vector[c] * r.slip_vector[c];
-        r.tangential_force[c] = tangential[i] * tangent[3 * i + c];
+        r.tangential_force[c] = T1 * t1[c] + T2 * t2[c];
       }
       r.slip = std::sqrt(slip_squared);
-      r.tangential_multiplier = std::abs(tangential[i]);
-      r.tangential_pressure = std::abs(tangential[i]) / weight[i];
+      r.tangential_multiplier = std::hypot(T1, T2);
+      r.tangential_pressure = std::hypot(T1, T2) / weight[i];
     }
     try {
       r.normal_status = normal_status_of_code(static_cast<long>(normal_status[i]));

@@ -55,7 +55,9 @@ void verify_solution_ds(const Ds& b, const Mesh& mesh) {
   displacements_in_range(b, mesh);
   const std::int64_t m =
       b.has("multiplier") ? static_cast<std::int64_t>(length(b, "multiplier")) : 0;
-  integer_in(b, "dofs", static_cast<std::int64_t>(dofs), static_cast<std::int64_t>(dofs) + 2 * m);
+  // ALM's multipliers: d per contact node at most (a normal one and d - 1 tangential).
+  integer_in(b, "dofs", static_cast<std::int64_t>(dofs),
+             static_cast<std::int64_t>(dofs) + mesh.dim * m);
   if (m > 0) {
     for (const char* name : {"tangential_multiplier", "status", "normal_status", "friction_status"})
       SIG_VERIFY(!b.has(name) || length(b, name) == static_cast<std::size_t>(m),

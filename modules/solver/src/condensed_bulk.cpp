@@ -20,15 +20,19 @@ CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_n
   SIG_VERIFY(p_.S.rows() == n && p_.S.cols() == n, "condensed bulk: S is " << p_.S.rows() << " x "
                                                                            << p_.S.cols() << " for "
                                                                            << n << " unknowns");
-  SIG_VERIFY(p_.gap.size() == m &&
-                 (p_.tangential_dof.empty() || static_cast<int>(p_.tangential_dof.size()) == m),
-             "condensed bulk: one gap (and one tangential dof, if any) per contact node");
+  if (m > 0 && !p_.tangential_dof.empty())
+    tangents_ = static_cast<int>(p_.tangential_dof.size()) / m;
+  SIG_VERIFY(p_.gap.size() == m && (p_.tangential_dof.empty() ||
+                                    (static_cast<int>(p_.tangential_dof.size()) == tangents_ * m &&
+                                     (tangents_ == 1 || tangents_ == 2))),
+             "condensed bulk: one gap (and one or two tangential dofs, if any) per contact node");
   if (default_normal_stiffness.size() == 0) default_normal_stiffness = Eigen::VectorXd::Zero(m);
   SIG_VERIFY(default_normal_stiffness.size() == m,
              "condensed bulk: one default stiffness per contact node");
   SIG_VERIFY(p_.regularization >= 0, "condensed bulk: negative regularization");
 
   node_of_.assign(n, -1);
+  tangent_of_.assign(n, -1);
   default_stiffness_ = Eigen::VectorXd::Zero(n);
   const auto claim = [&](int dof, int node) {
     SIG_VERIFY(dof >= 0 && dof < n && node_of_[dof] < 0, "condensed bulk: contact node "
@@ -38,7 +42,11 @@ CondensedBulk::CondensedBulk(CondensedProblem problem, Eigen::VectorXd default_n
   };
   for (int p = 0; p < m; ++p) {
     claim(p_.normal_dof[p], p);
-    if (has_tangential()) claim(p_.tangential_dof[p], p);
+    if (has_tangential())
+      for (int k = 0; k < tangents_; ++k) {
+        claim(p_.tangential_dof[tangents_ * p + k], p);
+        tangent_of_[p_.tangential_dof[tangents_ * p + k]] = k;
+      }
     default_stiffness_[p_.normal_dof[p]] = default_normal_stiffness[p];
   }
 
@@ -82,7 +90,9 @@ void CondensedBulk::order_nodes(const std::vector<int>& nodes) {
   node_start_.assign(contacts(), 0);
   for (int p : nodes) {
     node_start_[p] = static_cast<int>(order_.size());
-    if (has_tangential()) order_.push_back(p_.tangential_dof[p]);
+    if (has_tangential())
+      for (int k = 0; k < tangents_; ++k)
+        order_.push_back(p_.tangential_dof[tangents_ * p + k]);
     order_.push_back(p_.normal_dof[p]);
   }
   position_.assign(n, 0);
@@ -164,7 +174,9 @@ void CondensedBulk::tail_schur(int start) {
 bool CondensedBulk::is_default(int node, const NodeConditions& c) const {
   DofCondition normal;
   normal.stiffness = default_stiffness_[p_.normal_dof[node]];
-  return c.normal == normal && (!has_tangential() || c.tangential == DofCondition{});
+  return c.normal == normal &&
+         (!has_tangential() || (c.tangential == DofCondition{} && c.tangential2 == DofCondition{} &&
+                                c.tangential_12 == 0));
 }
 
 Eigen::VectorXd CondensedBulk::penetration() const {
@@ -175,20 +187,21 @@ Eigen::VectorXd CondensedBulk::penetration() const {
 }
 
 Eigen::VectorXd CondensedBulk::slip() const {
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(contacts());
-  if (has_tangential())
-    for (int p = 0; p < contacts(); ++p)
-      q[p] = w_[p_.tangential_dof[p]];
+  if (!has_tangential()) return Eigen::VectorXd::Zero(contacts());
+  Eigen::VectorXd q(p_.tangential_dof.size());
+  for (std::size_t k = 0; k < p_.tangential_dof.size(); ++k)
+    q[static_cast<Eigen::Index>(k)] = w_[p_.tangential_dof[k]];
   return q;
 }
 
 double CondensedBulk::equilibrium_residual(const Eigen::VectorXd& N,
                                            const Eigen::VectorXd& T) const {
   Eigen::VectorXd r = Sw_ - p_.f;
-  for (int p = 0; p < contacts(); ++p) {
+  for (int p = 0; p < contacts(); ++p)
     r[p_.normal_dof[p]] += N[p];
-    if (has_tangential()) r[p_.tangential_dof[p]] += T[p];
-  }
+  if (has_tangential())
+    for (std::size_t k = 0; k < p_.tangential_dof.size(); ++k)
+      r[p_.tangential_dof[k]] += T[static_cast<Eigen::Index>(k)];
   return r.norm();
 }
 
@@ -218,7 +231,7 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   for (int p = 0; p < m; ++p)
     if (!is_default(p, conditions[p])) {
       zone[p] = 1;
-      zone_unknowns += has_tangential() ? 2 : 1;
+      zone_unknowns += has_tangential() ? 1 + tangents_ : 1;
     }
   const auto tail_start = [&] {
     int start = n;
@@ -256,12 +269,21 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   const auto condition = [&](int i) -> const DofCondition& {
     const int dof = order_[start + i];
     const NodeConditions& node = conditions[node_of_[dof]];
-    return dof == p_.normal_dof[node_of_[dof]] ? node.normal : node.tangential;
+    return dof == p_.normal_dof[node_of_[dof]] ? node.normal : node.tangent(tangent_of_[dof]);
   };
   const auto k0 = [&](int i) { return default_stiffness_[order_[start + i]]; };
   const auto now = [&](int i) { return w_[order_[start + i]]; };
   const auto normal_of = [&](int i) {
     return position_[p_.normal_dof[node_of_[order_[start + i]]]] - start;
+  };
+  // 3D: the other tangent of tangential unknown i, and the stiffness between the two.
+  const auto other_tangent_of = [&](int i) {
+    const int dof = order_[start + i];
+    return position_[p_.tangential_dof[tangents_ * node_of_[dof] + 1 - tangent_of_[dof]]] - start;
+  };
+  const auto tangential_12 = [&](int i) {
+    const int dof = order_[start + i];
+    return tangent_of_[dof] < 0 ? 0.0 : conditions[node_of_[dof]].tangential_12;
   };
   Eigen::VectorXd z_tail = Eigen::VectorXd::Zero(tail);
   std::vector<int> unknown(tail, -1), free;
@@ -283,6 +305,14 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
     row = H_.row(i);
     row[i] += ci.stiffness - k0(i);
     double right = c[i] - ci.force + (ci.stiffness - k0(i)) * now(i);
+    if (const double k12 = tangential_12(i); k12 != 0) {
+      // The slip branch's block in 3D: symmetric, but not definite on a branch held where the
+      // node sticks (|z| < s), so factorized as the coupled systems are.
+      coupled = true;
+      row[other_tangent_of(i)] += k12;
+      right += k12 * now(other_tangent_of(i));
+    }
+    if (tangents_ == 2 && ci.stiffness < 0) coupled = true; // that block, diagonal
     if (ci.cross != 0) {
       coupled = true;
       row[normal_of(i)] += ci.cross;
@@ -346,7 +376,7 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   StepSolution s;
   s.normal_increment.resize(m);
   s.normal_force.resize(m);
-  s.tangential_force = Eigen::VectorXd::Zero(m);
+  s.tangential_force = Eigen::VectorXd::Zero(has_tangential() ? tangents_ * m : m);
   const auto force_at = [&](int dof) {
     const int k = position_[dof];
     const double spring = default_stiffness_[dof] * step_[dof];
@@ -355,9 +385,9 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   for (int p = 0; p < m; ++p) {
     s.normal_increment[p] = step_[p_.normal_dof[p]];
     s.normal_force[p] = force_at(p_.normal_dof[p]);
-    if (has_tangential()) {
-      s.tangential_force[p] = force_at(p_.tangential_dof[p]);
-    }
+    if (has_tangential())
+      for (int k = 0; k < tangents_; ++k)
+        s.tangential_force[tangents_ * p + k] = force_at(p_.tangential_dof[tangents_ * p + k]);
   }
   s.proximal_force = p_.regularization * step_.norm();
   base_ = w_;

@@ -40,7 +40,10 @@ CondensedSolution solve_condensed_contact(CondensedProblem problem, const Contac
     s.contact = solve_contact(bulk, setting, *method, inner, iterate);
   }
   s.w = bulk.displacement();
-  s.multiplier_unknowns = m * method->multiplier_unknowns(friction);
+  // A method's tangential multiplier has d - 1 components per node (two in 3D).
+  int per_node = method->multiplier_unknowns(friction);
+  if (friction && per_node > 1) per_node += bulk.tangents() - 1;
+  s.multiplier_unknowns = m * per_node;
   return s;
 }
 

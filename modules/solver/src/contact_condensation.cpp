@@ -31,9 +31,6 @@ ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K, std::vec
   d_ = m > 0 ? static_cast<int>(frames_of_nodes_.front().rows()) : 2;
   for (const ContactFrame& R : frames_of_nodes_)
     SIG_VERIFY(R.rows() == d_ && R.cols() == d_, "contact condensation: frames of different sizes");
-  // [choice] One tangential unknown per node: the 3D frictional condensation (two slips per
-  // node) is not implemented yet (issue 26), and the cards refuse friction in 3D.
-  SIG_VERIFY(!tangential || d_ == 2, "contact condensation: friction in 3D is not implemented yet");
   // 1. Nodal frames, so each normal displacement and slip is one unknown; applied in place, K
   //    keeps its pattern.
   const Stopwatch clock;
@@ -43,17 +40,22 @@ ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K, std::vec
 
   // 2. The Schur complement onto the normal unknowns (and the slips with friction): one sparse
   //    factorization of the rest, the body with Gamma3 held, positive definite even when K is
-  //    not. The normal unknown is the frame's last component, the slip its first.
+  //    not. The normal unknown is the frame's last component, the slip its d - 1 first (t, or
+  //    t1 and t2).
   for (int p = 0; p < m; ++p) {
     interface_.push_back(first_[p] + d_ - 1);
-    if (tangential) interface_.push_back(first_[p]);
+    if (tangential)
+      for (int k = 0; k < d_ - 1; ++k)
+        interface_.push_back(first_[p] + k);
   }
   std::sort(interface_.begin(), interface_.end());
   SIG_VERIFY(std::adjacent_find(interface_.begin(), interface_.end()) == interface_.end(),
              "a node appears in two contact elements");
   for (int p = 0; p < m; ++p) {
     normal_dof_.push_back(position_in(interface_, first_[p] + d_ - 1));
-    if (tangential) tangential_dof_.push_back(position_in(interface_, first_[p]));
+    if (tangential)
+      for (int k = 0; k < d_ - 1; ++k)
+        tangential_dof_.push_back(position_in(interface_, first_[p] + k));
   }
   try {
     schur_ = std::make_unique<SchurComplement>(K_, interface_, backend, MatrixKind::spd,
@@ -123,7 +125,9 @@ double ContactCondensation::relative_residual(const Eigen::VectorXd& u, const Ei
   Eigen::VectorXd r = K_ * framed - load_;
   for (int p = 0; p < contacts(); ++p) {
     r[first_[p] + d_ - 1] += N[p];
-    if (tangential()) r[first_[p]] += T[p];
+    if (tangential())
+      for (int k = 0; k < d_ - 1; ++k)
+        r[first_[p] + k] += T[(d_ - 1) * p + k];
   }
   return r.norm() / std::max(load_.norm(), 1e-300);
 }

@@ -5,6 +5,8 @@
 #include "core/error.hpp"
 #include "solver/newton_guard.hpp"
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -27,9 +29,65 @@ struct ContactPoint {
   double residual = 0;       ///< ||R|| (header), absolute
 };
 
+/// The tangential quantities of the d-dimensional driver: per node a scalar (2D) or the two
+/// components in the node's tangents (3D), stored flat (contact_bulk.hpp), node p's at
+/// (d - 1) p.
+template <int d> Tangent<d> tangent_at(const Eigen::VectorXd& v, int p) {
+  if constexpr (d == 2)
+    return v[p];
+  else
+    return v.template segment<d - 1>((d - 1) * p);
+}
+template <int d> void set_tangent(Eigen::VectorXd& v, int p, const Tangent<d>& x) {
+  if constexpr (d == 2)
+    v[p] = x;
+  else
+    v.template segment<d - 1>((d - 1) * p) = x;
+}
+inline double squared(double x) {
+  return std::pow(x, 2);
+}
+template <int n> double squared(const Eigen::Matrix<double, n, 1>& x) {
+  return x.squaredNorm();
+}
+/// A branch as a set of active, stick and slip nodes: in 3D the slip's direction turns
+/// continuously and only whether the node slips makes the set (the cycles, the settled test,
+/// a kink along a step); in 2D the branch itself.
+template <int d> KernelBranch combinatorial(const KernelBranchIn<d>& b) {
+  if constexpr (d == 2)
+    return b;
+  else
+    return {b.wall, b.stick, b.slip.isZero() ? 0 : 1};
+}
+template <int d> std::vector<KernelBranch> combinatorial(const std::vector<KernelBranchIn<d>>& b) {
+  if constexpr (d == 2) {
+    return b;
+  } else {
+    std::vector<KernelBranch> c;
+    c.reserve(b.size());
+    for (const auto& x : b)
+      c.push_back(combinatorial<d>(x));
+    return c;
+  }
+}
+/// A node's branch of the last iteration (as ContactIterate keeps it) to hold in a test: in 3D
+/// its slip direction is the kernel's own wherever z != 0, zero at z = 0.
+template <int d> KernelBranchIn<d> expanded(const KernelBranch& b) {
+  if constexpr (d == 2)
+    return b;
+  else
+    return {b.wall, b.stick, SlipDirection<d>::Zero()};
+}
+template <int d> bool slipping(const ContactKernelIn<d>& k) {
+  if constexpr (d == 2)
+    return k.slip != 0;
+  else
+    return !k.slip.isZero();
+}
+
 /// Step (ii) at an iterate: the branch of every node, its condition for step (iii), the record.
-struct Test {
-  std::vector<NodeBranch> branch;
+template <int d> struct Test {
+  std::vector<KernelBranchIn<d>> branch;
   std::vector<NodeConditions> conditions;
   IterationRecord record;
 };
@@ -40,12 +98,19 @@ struct Step {
   Eigen::VectorXd lambda, t;
 };
 
-class Driver {
+template <int d> class Driver {
+  using Kernel = ContactKernelIn<d>;
+  using Branch = KernelBranchIn<d>;
+  using Tan = Tangent<d>;
+  using Test = sig::Test<d>;
+
 public:
   Driver(ContactBulk& bulk, const ContactSetting& setting, const ContactMethod& method,
          const ContactNewtonOptions& options)
       : bulk_(bulk), s_(setting), method_(method), options_(options), m_(setting.size()),
-        friction_(bulk.has_tangential()) {}
+        friction_(bulk.has_tangential()) {
+    static_assert(d == 2 || d == 3);
+  }
 
   ContactNewtonResult run(ContactIterate& iterate);
 
@@ -76,16 +141,16 @@ private:
   double weight(int p) const { return s_.weight[p]; }
   /// The kernel of node p at (q_n, q_t) with multipliers (lambda, t) as nodal forces (penalty:
   /// none), augmented by r (r_t on the slip if given), on the branch `on` if given.
-  ContactKernel kernel(int p, double q_n, double q_t, double lambda, double t, double r,
-                       const NodeBranch* on = nullptr, double r_t = 0) const;
+  Kernel kernel(int p, double q_n, const Tan& q_t, double lambda, const Tan& t, double r,
+                const Branch* on = nullptr, double r_t = 0) const;
   /// The method's test (ii): its augmentation r on the wall, and on the slip the smaller of r
   /// and the node's natural scale where the method has multipliers (header). Once the steps are
   /// monotone, a method with multipliers tests at the natural scale on both: its step is then
   /// the Newton step of the merit itself, a descent direction wherever the merit is smooth,
   /// which a step tested at another augmentation is not where the two tests choose different
   /// branches (a monotone search along it stalls there: Tresca's half disc at r = 316 E / h).
-  ContactKernel tested(int p, double q_n, double q_t, double lambda, double t,
-                       const NodeBranch* on = nullptr) const {
+  Kernel tested(int p, double q_n, const Tan& q_t, double lambda, const Tan& t,
+                const Branch* on = nullptr) const {
     return kernel(p, q_n, q_t, lambda, t, normal_augmentation(p), on, tangential_augmentation(p));
   }
   bool tests_the_merit() const { return monotone_ && method_.has_multipliers(); }
@@ -98,9 +163,12 @@ private:
     return method_.has_multipliers() ? std::min(r, natural_[p]) : r;
   }
   ContactPoint point(const Eigen::VectorXd& lambda, const Eigen::VectorXd& t,
-                     const std::vector<NodeBranch>* held = nullptr,
+                     const std::vector<Branch>* held = nullptr,
                      const Eigen::VectorXd* origin = nullptr) const;
-  NodeConditions node_conditions(int p, const ContactKernel& k, double q_n, double q_t) const;
+  NodeConditions node_conditions(int p, const Kernel& k, double q_n, const Tan& q_t,
+                                 const Tan& t) const;
+  void tangential_conditions_3d(int p, const Kernel& k, const Tan& q_t, const Tan& t,
+                                NodeConditions& c) const;
 
   void start(ContactIterate& iterate);
   Test test(const ContactPoint& now, const ContactIterate& iterate, bool one_change);
@@ -146,9 +214,10 @@ private:
 
 /// The kernel of node p at (q_n, q_t) with multipliers (lambda, t) as nodal forces (penalty:
 /// none), augmented by r, on the branch `on` if given.
-ContactKernel Driver::kernel(int p, double q_n, double q_t, double lambda, double t, double r,
-                             const NodeBranch* on, double r_t) const {
-  NodeVariables x{q_n, q_t, 0.0, 0.0};
+template <int d>
+ContactKernelIn<d> Driver<d>::kernel(int p, double q_n, const Tan& q_t, double lambda, const Tan& t,
+                                     double r, const Branch* on, double r_t) const {
+  NodeVariablesIn<d> x{q_n, q_t, 0.0, zero_tangent<d>()};
   if (method_.has_multipliers()) {
     x.lambda = lambda / weight(p);
     x.t = t / weight(p);
@@ -163,35 +232,40 @@ ContactKernel Driver::kernel(int p, double q_n, double q_t, double lambda, doubl
 /// functions at each node's natural augmentation; on the branches `held` of a step's test if
 /// given, whose off-wall rows are then the step's condition there (lambda = 0, or projection's
 /// Robin law from the step's origin `origin`).
-ContactPoint Driver::point(const Eigen::VectorXd& lambda, const Eigen::VectorXd& t,
-                           const std::vector<NodeBranch>* held,
-                           const Eigen::VectorXd* origin) const {
+template <int d>
+ContactPoint Driver<d>::point(const Eigen::VectorXd& lambda, const Eigen::VectorXd& t,
+                              const std::vector<Branch>* held,
+                              const Eigen::VectorXd* origin) const {
   ContactPoint c{bulk_.penetration(), bulk_.slip(), lambda, t, 0.0};
-  Eigen::VectorXd N(m_), T(m_);
+  Eigen::VectorXd N(m_), T((d - 1) * m_);
   double complementarity = 0;
   for (int p = 0; p < m_; ++p) {
-    const NodeBranch* on = held ? &(*held)[p] : nullptr;
+    const Branch* on = held ? &(*held)[p] : nullptr;
     if (method_.has_multipliers()) {
-      const ContactKernel k = kernel(p, c.q_n[p], c.q_t[p], lambda[p], t[p], natural_[p], on);
+      const Kernel k = kernel(p, c.q_n[p], tangent_at<d>(c.q_t, p), lambda[p], tangent_at<d>(t, p),
+                              natural_[p], on);
       N[p] = weight(p) * k.compliance + lambda[p];
-      T[p] = t[p];
-      Eigen::Vector2d C = weight(p) * k.complementarity;
+      set_tangent<d>(T, p, tangent_at<d>(t, p));
+      Eigen::Matrix<double, d, 1> C = weight(p) * k.complementarity;
       if (on && !on->wall)
         C[0] -= off_wall_stiffness(method_, s_.law[p], weight(p)) * (c.q_n[p] - (*origin)[p]);
       complementarity += C.squaredNorm();
     } else { // penalty: its springs are the model, their r is not an algorithm's parameter
-      const ContactKernel k = kernel(p, c.q_n[p], c.q_t[p], 0.0, 0.0, method_.augmentation(), on);
+      const Kernel k = kernel(p, c.q_n[p], tangent_at<d>(c.q_t, p), 0.0, zero_tangent<d>(),
+                              method_.augmentation(), on);
       N[p] = weight(p) * k.normal;
-      T[p] = weight(p) * k.tangential;
+      set_tangent<d>(T, p, weight(p) * k.tangential);
     }
   }
   c.residual = std::sqrt(std::pow(bulk_.equilibrium_residual(N, T), 2) + complementarity);
   return c;
 }
 
-/// Step (iii): the condition of node p on the branch of kernel k.
-NodeConditions Driver::node_conditions(int p, const ContactKernel& k, double q_n,
-                                       double q_t) const {
+/// Step (iii): the condition of node p on the branch of kernel k at slip q_t and tangential
+/// multiplier t (a nodal force).
+template <int d>
+NodeConditions Driver<d>::node_conditions(int p, const Kernel& k, double q_n, const Tan& q_t,
+                                          const Tan& t) const {
   const ContactLaw& law = s_.law[p];
   const double w = weight(p);
   NodeConditions c;
@@ -203,29 +277,93 @@ NodeConditions Driver::node_conditions(int p, const ContactKernel& k, double q_n
     c.normal.stiffness = w * k.d_force(0, kQn) + off_wall_stiffness(method_, law, w);
   }
   if (!law.has_friction()) return c;
-  if (k.stick && method_.has_multipliers()) {
-    c.tangential.imposed = true;
-    c.tangential.value = law.held_slip - q_t; // stick: back to the slip it holds, 0 or held
-  } else if (k.stick) {
-    c.tangential.force = w * k.tangential;
-    c.tangential.stiffness = w * k.d_force(1, kQt);
-  } else if (k.bound_slope != 0 && c.normal.imposed) {
-    c.tangential.coupling = k.slip * k.bound_slope; // T = sigma mu N, N the wall's reaction
+  if constexpr (d == 2) {
+    (void)t;
+    if (k.stick && method_.has_multipliers()) {
+      c.tangential.imposed = true;
+      c.tangential.value = law.held_slip - q_t; // stick: back to the slip it holds, 0 or held
+    } else if (k.stick) {
+      c.tangential.force = w * k.tangential;
+      c.tangential.stiffness = w * k.d_force(1, kQt);
+    } else if (k.bound_slope != 0 && c.normal.imposed) {
+      c.tangential.coupling = k.slip * k.bound_slope; // T = sigma mu N, N the wall's reaction
+    } else {
+      // T = sigma s with s the kernel's bound law: a threshold, mu p(q_n) (bound=compliance), or
+      // mu N with N the kernel's normal force law, not the projection's Robin term (a
+      // relaxation of the inactive nodes, not a contact force).
+      c.tangential.force = w * k.slip * k.bound;
+      c.tangential.cross = w * k.slip * k.d_bound(kQn);
+    }
   } else {
-    // T = sigma s with s the kernel's bound law: a threshold, mu p(q_n) (bound=compliance), or
-    // mu N with N the kernel's normal force law, not the projection's Robin term (a
-    // relaxation of the inactive nodes, not a contact force).
-    c.tangential.force = w * k.slip * k.bound;
-    c.tangential.cross = w * k.slip * k.d_bound(kQn);
+    tangential_conditions_3d(p, k, q_t, t, c);
   }
   return c;
 }
 
-void Driver::start(ContactIterate& iterate) {
+/// The 3D tangential conditions of node p (d = 3): stick, both slips held (multipliers) or
+/// penalty's spring; slip, the force T = s e, e = z / |z|, z = t + r_t q_t, whose Newton step on
+/// C_t = t - T(t, q_t) = 0 is (I - A) dt = T - t + B dq_t + e ds with A = dT/dt = s (I - e e^T)
+/// / |z| and B = dT/dq_t = r_t A: the step's multiplier, t + dt, is then the force law
+///     T+ = (I - M) t + e (s + ds) + M B dq_t,   M = (I - A)^-1
+/// (M e = e), s + ds = mu N+ with Coulomb's bound on the wall (N+ its reaction: the coupling e mu)
+/// or s's own law in q_n (cross). In 2D A = B = 0 and this is the scalar law above, T = sigma s.
+/// Penalty (no multipliers) takes T = w T(q_t) + w B dq_t.
+template <int d>
+void Driver<d>::tangential_conditions_3d(int p, const Kernel& k, const Tan& q_t, const Tan& t,
+                                         NodeConditions& c) const {
+  using Block = Eigen::Matrix<double, d - 1, d - 1>;
+  using Col = KernelColumns<d>;
+  const double w = weight(p);
+  const bool multipliers = method_.has_multipliers();
+  Tan force = Tan::Zero(), coupling = Tan::Zero(), cross = Tan::Zero();
+  Block stiffness = Block::Zero();
+  const auto rows = k.d_force.template bottomRows<d - 1>();
+  const Block B = rows.template middleCols<d - 1>(Col::q_t);
+  if (k.stick && multipliers) {
+    for (int i = 0; i < d - 1; ++i) {
+      c.tangent(i).imposed = true;
+      c.tangent(i).value = -q_t[i]; // back to no slip (a held slip is refused in 3D)
+    }
+    return;
+  }
+  if (k.stick) {
+    force = w * k.tangential;
+    stiffness = w * B;
+  } else if (!multipliers) {
+    force = w * k.tangential;
+    stiffness = w * B;
+    cross = w * k.slip * k.d_bound(Col::q_n);
+  } else {
+    const Block A = rows.template middleCols<d - 1>(Col::t);
+    const Block I_A = Block::Identity() - A;
+    // |z| = s makes I - A singular: only on a held slip branch where the node sits on the
+    // disc's edge; the step then treats the direction as fixed (M = I), as in 2D.
+    const Block M = std::abs(I_A.determinant()) > 1e-12 ? Block(I_A.inverse()) : Block::Identity();
+    const Tan x_t = t / w; // the multiplier as a pressure, as the kernel's
+    stiffness = w * M * B;
+    force = w * (Block::Identity() - M) * x_t;
+    if (k.bound_slope != 0 && c.normal.imposed) {
+      coupling = k.slip * k.bound_slope;
+    } else {
+      force += w * k.slip * k.bound;
+      cross = w * k.slip * k.d_bound(Col::q_n);
+    }
+  }
+  for (int i = 0; i < d - 1; ++i) {
+    DofCondition& ci = c.tangent(i);
+    ci.force = force[i];
+    ci.stiffness = stiffness(i, i);
+    ci.coupling = coupling[i];
+    ci.cross = cross[i];
+  }
+  c.tangential_12 = 0.5 * (stiffness(0, 1) + stiffness(1, 0));
+}
+
+template <int d> void Driver<d>::start(ContactIterate& iterate) {
   if (iterate.lambda.size() == 0) iterate.lambda = Eigen::VectorXd::Zero(m_);
-  if (iterate.t.size() == 0) iterate.t = Eigen::VectorXd::Zero(m_);
+  if (iterate.t.size() == 0) iterate.t = Eigen::VectorXd::Zero((d - 1) * m_);
   SIG_VERIFY(bulk_.contacts() == m_ && s_.weight.size() == m_ && iterate.lambda.size() == m_ &&
-                 iterate.t.size() == m_,
+                 iterate.t.size() == (d - 1) * m_,
              "contact Newton: the bulk has " << bulk_.contacts() << " contact nodes, the setting "
                                              << m_);
   SIG_VERIFY(friction_ || !s_.has_friction(),
@@ -248,8 +386,9 @@ void Driver::start(ContactIterate& iterate) {
 /// set may cycle (Murty, "Note on a Bard-type scheme for solving the complementarity problem",
 /// Opsearch 11, 1974; Judice and Pires, Comput. Oper. Res. 21, 1994, as the fallback of block
 /// principal pivoting).
-Test Driver::test(const ContactPoint& now, const ContactIterate& iterate, bool one_change) {
-  Test test{std::vector<NodeBranch>(m_), std::vector<NodeConditions>(m_), {}};
+template <int d>
+Test<d> Driver<d>::test(const ContactPoint& now, const ContactIterate& iterate, bool one_change) {
+  Test test{std::vector<Branch>(m_), std::vector<NodeConditions>(m_), {}};
   IterationRecord& record = test.record;
   record.wall.resize(m_);
   result_.normal_status.resize(m_);
@@ -259,18 +398,22 @@ Test Driver::test(const ContactPoint& now, const ContactIterate& iterate, bool o
     const bool was_on_wall = !iterate.branch.empty() && iterate.branch[p].wall;
     const bool was_inactive = !iterate.branch.empty() && !was_on_wall;
     const double lambda = method_.tested_multiplier(iterate.lambda[p], was_inactive);
-    ContactKernel k = tested(p, now.q_n[p], now.q_t[p], lambda, iterate.t[p]);
-    if (one_change && branch_of(k) != iterate.branch[p]) {
-      if (changed) k = tested(p, now.q_n[p], now.q_t[p], lambda, iterate.t[p], &iterate.branch[p]);
+    const Tan q_t = tangent_at<d>(now.q_t, p), t = tangent_at<d>(iterate.t, p);
+    Kernel k = tested(p, now.q_n[p], q_t, lambda, t);
+    if (one_change && combinatorial<d>(branch_of(k)) != iterate.branch[p]) {
+      if (changed) {
+        const Branch held = expanded<d>(iterate.branch[p]);
+        k = tested(p, now.q_n[p], q_t, lambda, t, &held);
+      }
       changed = true;
     }
     test.branch[p] = branch_of(k);
-    test.conditions[p] = node_conditions(p, k, now.q_n[p], now.q_t[p]);
+    test.conditions[p] = node_conditions(p, k, now.q_n[p], q_t, t);
     record.active += k.wall_active && !k.held ? 1 : 0;
     record.wall[p] = k.wall_active && !k.held ? 1 : 0;
     if (!k.held && k.wall_active != was_on_wall) ++(k.wall_active ? record.entered : record.left);
     record.stick += k.stick ? 1 : 0;
-    record.slip += k.slip != 0 && k.bound > 0 ? 1 : 0;
+    record.slip += slipping<d>(k) && k.bound > 0 ? 1 : 0;
     // The statuses of the last test, so a failed iteration still reports where it stood.
     result_.normal_status[p] = normal_status(k);
     result_.friction_status[p] = friction_status(s_.law[p], k);
@@ -280,7 +423,7 @@ Test Driver::test(const ContactPoint& now, const ContactIterate& iterate, bool o
 
 /// Step (iii): the linear step and the multipliers at its full length; false if its matrix
 /// cannot be factorized.
-bool Driver::solve(const Test& test, const ContactPoint& now, Step& step) {
+template <int d> bool Driver<d>::solve(const Test& test, const ContactPoint& now, Step& step) {
   try {
     Eigen::VectorXd N = now.lambda; // the present normal forces (an obstacle's curvature)
     for (int p = 0; p < m_; ++p)
@@ -293,7 +436,7 @@ bool Driver::solve(const Test& test, const ContactPoint& now, Step& step) {
     return false;
   }
   step.lambda = Eigen::VectorXd::Zero(m_);
-  step.t = Eigen::VectorXd::Zero(m_);
+  step.t = Eigen::VectorXd::Zero((d - 1) * m_);
   if (!method_.has_multipliers()) return true;
   for (int p = 0; p < m_; ++p) {
     const ContactLaw& law = s_.law[p];
@@ -303,14 +446,16 @@ bool Driver::solve(const Test& test, const ContactPoint& now, Step& step) {
     else // projection's Robin force, 0 for the Neumann condition
       step.lambda[p] =
           off_wall_stiffness(method_, law, weight(p)) * step.solution.normal_increment[p];
-    if (law.has_friction()) step.t[p] = step.solution.tangential_force[p];
+    if (law.has_friction())
+      set_tangent<d>(step.t, p, tangent_at<d>(step.solution.tangential_force, p));
   }
   return true;
 }
 
 /// The bulk moved to alpha along the step, its state in `at`; false outside the bulk's domain
 /// (an inverted element) or with a residual that is not finite.
-bool Driver::trial(double alpha, const ContactPoint& now, const Step& step, ContactPoint& at) {
+template <int d>
+bool Driver<d>::trial(double alpha, const ContactPoint& now, const Step& step, ContactPoint& at) {
   if (!bulk_.move(alpha)) return false;
   at = point(now.lambda + alpha * (step.lambda - now.lambda), now.t + alpha * (step.t - now.t));
   return std::isfinite(at.residual);
@@ -318,8 +463,9 @@ bool Driver::trial(double alpha, const ContactPoint& now, const Step& step, Cont
 
 /// The step's length (header), the bulk left at it and its state in `next`; 0 if no length is
 /// admissible (the failure set).
-double Driver::step_length(const Test& test, const ContactPoint& now, const Step& step,
-                           ContactPoint& next) {
+template <int d>
+double Driver<d>::step_length(const Test& test, const ContactPoint& now, const Step& step,
+                              ContactPoint& next) {
   if (!options_.globalize) {
     if (!trial(1.0, now, step, next)) {
       fail(NewtonFailure::divergence, "the full step leaves the bulk's domain (an inverted "
@@ -346,7 +492,8 @@ double Driver::step_length(const Test& test, const ContactPoint& now, const Step
 
 /// An unheld step (header): cut where a node first comes to hold the body; 0 if none does along
 /// it (the step is then searched as any other, and remembered as a drift).
-double Driver::unheld_length(const ContactPoint& now, const Step& step, ContactPoint& next) {
+template <int d>
+double Driver<d>::unheld_length(const ContactPoint& now, const Step& step, ContactPoint& next) {
   ContactPoint full;
   if (!trial(1.0, now, step, full)) {
     fail(NewtonFailure::divergence, "the unheld step's full length is not admissible");
@@ -368,10 +515,11 @@ double Driver::unheld_length(const ContactPoint& now, const Step& step, ContactP
 /// residual of the system the step linearized (its branches held) falls by Armijo's test and the
 /// residual itself stays below kRelaxation times the reference; monotone, the residual falls by
 /// Armijo's test. If none passes, the admissible trial of least merit.
-double Driver::searched_length(const Test& test, const ContactPoint& now, const Step& step,
-                               ContactPoint& next) {
+template <int d>
+double Driver<d>::searched_length(const Test& test, const ContactPoint& now, const Step& step,
+                                  ContactPoint& next) {
   const Eigen::VectorXd origin = now.q_n;
-  const std::vector<NodeBranch>* held = monotone_ ? nullptr : &test.branch;
+  const std::vector<Branch>* held = monotone_ ? nullptr : &test.branch;
   const auto merit = [&](const ContactPoint& c) {
     return held ? point(c.lambda, c.t, held, &origin).residual : c.residual;
   };
@@ -413,7 +561,8 @@ double Driver::searched_length(const Test& test, const ContactPoint& now, const 
 /// one the step is the Newton step of the pieces it linearized, so the residual falls there by
 /// the fraction taken, where every halving may land beyond some kink); 0 if none is admissible
 /// or none has lowered the residual kEscapes + 1 times in a row (the failure set).
-double Driver::monotone_length(const ContactPoint& now, const Step& step, ContactPoint& next) {
+template <int d>
+double Driver<d>::monotone_length(const ContactPoint& now, const Step& step, ContactPoint& next) {
   std::vector<double> lengths;
   for (int h = 0; h <= kMaxHalvings; ++h)
     lengths.push_back(std::ldexp(1.0, -h));
@@ -454,19 +603,22 @@ double Driver::monotone_length(const ContactPoint& now, const Step& step, Contac
 /// differs from the one it had at 2^-60 by `departs(at_start, at_alpha)` (nodes that never do
 /// are left out; with `only_first`, only crossings before the least found so far). Geometric
 /// samples up from 2^-60 (an unheld step is long), then bisection.
+template <int d>
 template <class Departs>
-std::vector<double> Driver::crossings(const ContactPoint& from, const ContactPoint& to,
-                                      Departs departs, bool only_first) const {
+std::vector<double> Driver<d>::crossings(const ContactPoint& from, const ContactPoint& to,
+                                         Departs departs, bool only_first) const {
   const auto at = [&](int p, double a) {
     const auto mix = [a](double x0, double x1) { return x0 + a * (x1 - x0); };
-    return tested(p, mix(from.q_n[p], to.q_n[p]), mix(from.q_t[p], to.q_t[p]),
-                  mix(from.lambda[p], to.lambda[p]), mix(from.t[p], to.t[p]));
+    const auto mix_t = [a](const Tan& x0, const Tan& x1) -> Tan { return x0 + a * (x1 - x0); };
+    return tested(
+        p, mix(from.q_n[p], to.q_n[p]), mix_t(tangent_at<d>(from.q_t, p), tangent_at<d>(to.q_t, p)),
+        mix(from.lambda[p], to.lambda[p]), mix_t(tangent_at<d>(from.t, p), tangent_at<d>(to.t, p)));
   };
   constexpr int kFirst = 60;
   double first = std::numeric_limits<double>::infinity();
   std::vector<double> found;
   for (int p = 0; p < m_; ++p) {
-    const ContactKernel start = at(p, std::ldexp(1.0, -kFirst));
+    const Kernel start = at(p, std::ldexp(1.0, -kFirst));
     double below = 0, above = -1;
     for (int j = kFirst - 1; j >= 0 && above < 0; --j) {
       const double a = std::ldexp(1.0, -j);
@@ -486,15 +638,13 @@ std::vector<double> Driver::crossings(const ContactPoint& from, const ContactPoi
 
 /// Along an unheld step, where a node first comes to hold more of the body: its wall becomes
 /// active, its compliance engages, or it enters the stick branch.
-double Driver::first_hold(const ContactPoint& from, const ContactPoint& to) const {
-  const auto holding = [](const ContactKernel& k) {
+template <int d>
+double Driver<d>::first_hold(const ContactPoint& from, const ContactPoint& to) const {
+  const auto holding = [](const Kernel& k) {
     return (k.wall_active || k.compliance > 0 ? 1 : 0) + (k.stick ? 1 : 0);
   };
   const std::vector<double> at = crossings(
-      from, to,
-      [&](const ContactKernel& start, const ContactKernel& k) {
-        return holding(k) > holding(start);
-      },
+      from, to, [&](const Kernel& start, const Kernel& k) { return holding(k) > holding(start); },
       true);
   return at.empty() ? std::numeric_limits<double>::infinity()
                     : *std::min_element(at.begin(), at.end());
@@ -502,24 +652,28 @@ double Driver::first_hold(const ContactPoint& from, const ContactPoint& to) cons
 
 /// Along a step, where each node first crosses a kink of its kernel: the breakpoints of the
 /// residual, piecewise smooth in alpha.
-std::vector<double> Driver::kinks(const ContactPoint& from, const ContactPoint& to) const {
+template <int d>
+std::vector<double> Driver<d>::kinks(const ContactPoint& from, const ContactPoint& to) const {
   return crossings(
       from, to,
-      [](const ContactKernel& start, const ContactKernel& k) {
-        return branch_of(k) != branch_of(start) ||
+      [](const Kernel& start, const Kernel& k) {
+        return combinatorial<d>(branch_of(k)) != combinatorial<d>(branch_of(start)) ||
                (k.compliance_slope == 0) != (start.compliance_slope == 0);
       },
       false);
 }
 
 /// Step (iv)'s measures of the iteration that moved the state from `before` to `now`.
-void Driver::record(Test& test, const ContactPoint& before, const ContactPoint& now, double alpha) {
+template <int d>
+void Driver<d>::record(Test& test, const ContactPoint& before, const ContactPoint& now,
+                       double alpha) {
   double dx2 = std::pow(bulk_.displacement_step(), 2), x2 = std::pow(bulk_.displacement_norm(), 2);
   for (int p = 0; p < m_; ++p) {
     const double w = weight(p);
+    const Tan t = tangent_at<d>(now.t, p);
     dx2 += std::pow((now.lambda[p] - before.lambda[p]) / w, 2) +
-           std::pow((now.t[p] - before.t[p]) / w, 2);
-    x2 += std::pow(now.lambda[p] / w, 2) + std::pow(now.t[p] / w, 2);
+           squared(Tan((t - tangent_at<d>(before.t, p)) / w));
+    x2 += std::pow(now.lambda[p] / w, 2) + squared(Tan(t / w));
   }
   IterationRecord& r = test.record;
   r.residual = now.residual / bulk_.force_scale();
@@ -533,7 +687,7 @@ void Driver::record(Test& test, const ContactPoint& before, const ContactPoint& 
 
 /// After an accepted step: the globalization's bookkeeping, true if the solve must stop (the
 /// failure set).
-bool Driver::stopped(int iteration, double first_residual) {
+template <int d> bool Driver<d>::stopped(int iteration, double first_residual) {
   const double residual = result_.history.back().residual * bulk_.force_scale();
   memory_.push(residual);
   if (residual < best_) {
@@ -556,7 +710,7 @@ bool Driver::stopped(int iteration, double first_residual) {
 
 /// The result's forces at the last iterate: compliance plus multipliers, or penalty's springs;
 /// the failure named if the solve did not converge.
-void Driver::finish(const ContactPoint& now) {
+template <int d> void Driver<d>::finish(const ContactPoint& now) {
   // A solve that ends without converging soon after an unheld step that nothing held has
   // drifted: the load's part along a rigid motion is not held (the load beyond the friction
   // bound, the obstacle on the wrong side).
@@ -582,23 +736,25 @@ void Driver::finish(const ContactPoint& now) {
       fail(NewtonFailure::iteration_limit, "no convergence within the iteration limit");
   }
   result_.normal_force.resize(m_);
-  result_.tangential_force.resize(m_);
+  result_.tangential_force.resize((d - 1) * m_);
   for (int p = 0; p < m_; ++p) {
-    const ContactKernel k = tested(p, now.q_n[p], now.q_t[p], now.lambda[p], now.t[p]);
+    const Tan t = tangent_at<d>(now.t, p);
+    const Kernel k = tested(p, now.q_n[p], tangent_at<d>(now.q_t, p), now.lambda[p], t);
     result_.normal_force[p] =
         method_.has_multipliers() ? weight(p) * k.compliance + now.lambda[p] : weight(p) * k.normal;
-    result_.tangential_force[p] = method_.has_multipliers() ? now.t[p] : weight(p) * k.tangential;
+    set_tangent<d>(result_.tangential_force, p,
+                   method_.has_multipliers() ? t : Tan(weight(p) * k.tangential));
   }
 }
 
-ContactNewtonResult Driver::run(ContactIterate& iterate) {
+template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
   start(iterate);
   ContactPoint now = point(iterate.lambda, iterate.t);
   const double first_residual = best_ = now.residual;
   memory_.push(now.residual);
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     Test t = test(now, iterate, one_change_);
-    if (cycles_.repeats(t.branch, now.residual)) {
+    if (cycles_.repeats(combinatorial<d>(t.branch), now.residual)) {
       if (!options_.globalize || !restrict_steps()) {
         fail(NewtonFailure::cycling,
              "the active and stick/slip sets of iteration " + std::to_string(iteration) +
@@ -621,8 +777,9 @@ ContactNewtonResult Driver::run(ContactIterate& iterate) {
     now = std::move(next);
     iterate.lambda = now.lambda;
     iterate.t = now.t;
-    const bool settled = !method_.needs_settled_statuses() || t.branch == iterate.branch;
-    iterate.branch = std::move(t.branch);
+    std::vector<KernelBranch> branch = combinatorial<d>(t.branch);
+    const bool settled = !method_.needs_settled_statuses() || branch == iterate.branch;
+    iterate.branch = std::move(branch);
     const IterationRecord& r = result_.history.back();
     if (r.increment <= options_.eps && r.residual <= options_.eps && settled && bulk_.settled()) {
       result_.converged = true;
@@ -653,7 +810,9 @@ bool ContactSetting::has_friction() const {
 ContactNewtonResult solve_contact(ContactBulk& bulk, const ContactSetting& setting,
                                   const ContactMethod& method, const ContactNewtonOptions& options,
                                   ContactIterate& iterate) {
-  return Driver(bulk, setting, method, options).run(iterate);
+  if (bulk.has_tangential() && bulk.tangents() == 2)
+    return Driver<3>(bulk, setting, method, options).run(iterate);
+  return Driver<2>(bulk, setting, method, options).run(iterate);
 }
 
 } // namespace sig

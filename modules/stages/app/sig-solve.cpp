@@ -102,13 +102,13 @@ int main(int argc, char** argv) {
     if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     if (mesh.dim == 3) {
       // A 3D deck is small strain for now (issue 26): sig-material refused its hyperelastic laws,
-      // sig-contact its friction.
+      // sig-contact the friction laws other than Tresca and Coulomb.
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail("u", "an initial displacement in 3D is not "
                                                    "implemented yet (issue 26)");
       if (contact)
         sig::verify_rigid_motions_held_3d(mesh, system.dirichlet_dofs, datafile.path, contact->node,
-                                          contact->normal);
+                                          contact->normal, contact->has_friction());
       else
         sig::verify_rigid_motions_held_3d(mesh, system.dirichlet_dofs, datafile.path);
     } else {

@@ -13,8 +13,10 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
                        const std::vector<NormalStatus>& normal_status,
                        const std::vector<FrictionStatus>& friction_status) {
   const auto m = static_cast<std::size_t>(normal.size());
-  SIG_VERIFY(static_cast<std::size_t>(tangential.size()) == m && normal_status.size() == m &&
-                 friction_status.size() == m,
+  // In 3D two tangential components per node, along its tangents t1, t2 (contact_frame).
+  const bool pair = m > 0 && static_cast<std::size_t>(tangential.size()) == 2 * m;
+  SIG_VERIFY((static_cast<std::size_t>(tangential.size()) == m || pair) &&
+                 normal_status.size() == m && friction_status.size() == m,
              "contact state: " << normal.size() << " normal forces, " << tangential.size()
                                << " tangential, " << normal_status.size() << " and "
                                << friction_status.size() << " statuses");
@@ -25,7 +27,11 @@ void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::Vecto
     friction_code[p] = static_cast<std::int64_t>(friction_status[p]);
   }
   ds.put("multiplier", std::span<const double>(normal.data(), m));
-  ds.put("tangential_multiplier", std::span<const double>(tangential.data(), m));
+  if (pair)
+    ds.put("tangential_multiplier", std::span<const double>(tangential.data(), 2 * m),
+           {static_cast<std::int64_t>(m), 2});
+  else
+    ds.put("tangential_multiplier", std::span<const double>(tangential.data(), m));
   ds.put("status", std::span<const std::int64_t>(status));
   ds.put("normal_status", std::span<const std::int64_t>(normal_code));
   ds.put("friction_status", std::span<const std::int64_t>(friction_code));

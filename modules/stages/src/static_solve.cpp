@@ -144,10 +144,13 @@ std::vector<int> candidates(const LinearSystem& system, const ContactElements& c
 /// The solution on the elements `zone` of `contact` spread over all of them: the others are
 /// free, without force.
 void spread(StaticSolution& s, const std::vector<int>& zone, int m) {
+  // c components per element (the tangential force: two in 3D with friction).
   const auto spread_vector = [&](Eigen::VectorXd& v) {
-    Eigen::VectorXd all = Eigen::VectorXd::Zero(m);
+    const int c = zone.empty() ? 1 : static_cast<int>(v.size() / std::ssize(zone));
+    Eigen::VectorXd all = Eigen::VectorXd::Zero(c * m);
     for (std::size_t k = 0; k < zone.size(); ++k)
-      all[zone[k]] = v[static_cast<Eigen::Index>(k)];
+      for (int j = 0; j < c; ++j)
+        all[c * zone[k] + j] = v[c * static_cast<Eigen::Index>(k) + j];
     v = std::move(all);
   };
   spread_vector(s.multiplier);

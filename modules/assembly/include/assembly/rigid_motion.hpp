@@ -56,11 +56,13 @@ std::string describe(const FreePart& part);
 void verify_rigid_motions_held(const Mesh& mesh, const Holds& held, const std::string& deck);
 
 /// The same for a 3D body held by `dirichlet_dofs` (dof = 3 node + component) and by the contact
-/// nodes along their obstacle normals (where a static solve condenses onto them): its six rigid
-/// motions, the body taken whole (rigid_motion_3d.cpp).
+/// nodes along their obstacle normals (where a static solve condenses onto them), and with
+/// `friction` along their tangent planes too: its six rigid motions, the body taken whole
+/// (rigid_motion_3d.cpp).
 void verify_rigid_motions_held_3d(const Mesh& mesh, const std::vector<int>& dirichlet_dofs,
                                   const std::string& deck,
                                   const std::vector<int>& contact_nodes = {},
-                                  const std::vector<Point>& contact_normals = {});
+                                  const std::vector<Point>& contact_normals = {},
+                                  bool friction = false);
 
 } // namespace sig

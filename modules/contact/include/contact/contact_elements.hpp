@@ -106,7 +106,8 @@ inline double gap_at(const Obstacle& obstacle, const Point& x) {
 ///   FRICTION ref=3 law=coulomb mu=0.3          (or law=tresca threshold=2, law=none)
 ///   FRICTION ref=3 law=nonmonotone a=2 b=0.02 alpha=1 of=slip bound=compliance
 /// In 3D every vector has three components (point=x,y,z normal=nx,ny,nz) and the round obstacle
-///   is obstacle=sphere centre=x,y,z radius=R; friction in 3D is refused for now (issue 26).
+///   is obstacle=sphere centre=x,y,z radius=R; friction in 3D is law=tresca or law=coulomb (the
+///   others are refused for now, issue 26).
 /// ref must carry facets on the mesh; law defaults to signorini, g to 0 (gap= is its old
 /// spelling; compliance-unilateral must give it); a field the law does not use is an error, as is a
 /// FRICTION card whose ref has no CONTACT card. Thickness 1 (plane strain). Errors are

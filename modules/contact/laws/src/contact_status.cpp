@@ -4,21 +4,46 @@
 
 namespace sig {
 
-NormalStatus normal_status(const ContactKernel& kernel) {
+namespace {
+
+template <int d> NormalStatus normal_status_in(const ContactKernelIn<d>& kernel) {
   if (kernel.held) return NormalStatus::held;
   if (kernel.wall_active) return NormalStatus::unilateral;
   // != 0: a bilateral spring in tension is on its compliance branch too.
   return kernel.compliance != 0 ? NormalStatus::compliance : NormalStatus::free;
 }
 
-FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel) {
+template <int d>
+FrictionStatus friction_status_in(const ContactLaw& law, const ContactKernelIn<d>& kernel) {
   if (!law.has_friction()) return FrictionStatus::none;
   if (kernel.stick) return FrictionStatus::stick;
-  if (law.has_coefficient() && normal_status(kernel) == NormalStatus::free)
+  if (law.has_coefficient() && normal_status_in<d>(kernel) == NormalStatus::free)
     return FrictionStatus::none; // no normal force, so no friction
-  if (kernel.slip > 0) return FrictionStatus::slip_forward;
-  if (kernel.slip < 0) return FrictionStatus::slip_backward;
+  if constexpr (d == 2) {
+    if (kernel.slip > 0) return FrictionStatus::slip_forward;
+    if (kernel.slip < 0) return FrictionStatus::slip_backward;
+  } else {
+    if (!kernel.slip.isZero()) return FrictionStatus::slip_forward; // along its slip (header)
+  }
   return FrictionStatus::none; // a zero bound and nothing to slip along
+}
+
+} // namespace
+
+NormalStatus normal_status(const ContactKernel& kernel) {
+  return normal_status_in<2>(kernel);
+}
+
+FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel) {
+  return friction_status_in<2>(law, kernel);
+}
+
+NormalStatus normal_status(const ContactKernelIn<3>& kernel) {
+  return normal_status_in<3>(kernel);
+}
+
+FrictionStatus friction_status(const ContactLaw& law, const ContactKernelIn<3>& kernel) {
+  return friction_status_in<3>(law, kernel);
 }
 
 std::string label(NormalStatus status) {

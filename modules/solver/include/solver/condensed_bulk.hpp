@@ -32,12 +32,14 @@
 namespace sig {
 
 struct CondensedProblem {
-  Eigen::MatrixXd S;               ///< symmetric positive semi-definite, n x n
-  Eigen::VectorXd f;               ///< condensed load, n
-  std::vector<int> normal_dof;     ///< per contact node: its w_n among the n unknowns
-  std::vector<int> tangential_dof; ///< per contact node: its w_t, or empty without friction
-  Eigen::VectorXd gap;             ///< d per contact node: q_n = w_n - d (the slip is w_t)
-  double regularization = 0;       ///< eps of the proximal term, >= 0
+  Eigen::MatrixXd S;           ///< symmetric positive semi-definite, n x n
+  Eigen::VectorXd f;           ///< condensed load, n
+  std::vector<int> normal_dof; ///< per contact node: its w_n among the n unknowns
+  /// per contact node: its w_t (2D) or w_t1, w_t2 (3D, node p's at 2 p and 2 p + 1), or empty
+  /// without friction
+  std::vector<int> tangential_dof;
+  Eigen::VectorXd gap;       ///< d per contact node: q_n = w_n - d (the slip is w_t)
+  double regularization = 0; ///< eps of the proximal term, >= 0
 };
 
 class CondensedBulk final : public ContactBulk {
@@ -50,6 +52,7 @@ public:
 
   int contacts() const override { return static_cast<int>(p_.normal_dof.size()); }
   bool has_tangential() const override { return !p_.tangential_dof.empty(); }
+  int tangents() const override { return tangents_; }
   Eigen::VectorXd penetration() const override;
   Eigen::VectorXd slip() const override;
   double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const override;
@@ -87,6 +90,8 @@ private:
   std::vector<int> position_;         ///< unknown -> position
   std::vector<int> node_start_;       ///< per contact node: the first position of its unknowns
   std::vector<int> node_of_;          ///< per unknown: its contact node, or -1
+  std::vector<int> tangent_of_;       ///< per unknown: its tangent (0, 1), or -1
+  int tangents_ = 1;                  ///< tangential unknowns per node, with friction
   Eigen::MatrixXd B_; ///< the permuted B, whole: its trailing blocks start every tail's H
   /// B_ factorized in place: the Cholesky factor L in the lower triangle (B's strict upper
   /// triangle is left above it, unread)

@@ -17,6 +17,12 @@
 //     T = force + stiffness dw_t + coupling N + cross dw_n
 // (Coulomb's slip, T = sigma mu N: coupling = sigma mu where the normal is imposed, N its
 // reaction; otherwise force and cross carry sigma mu times N's own force law).
+// In 3D (d = 3) the slip w_t and the force T have two components, along the node's tangents t1
+// and t2 (contact_frame): each component has its own condition, and a force law's stiffness is
+// a 2 x 2 block, its off-diagonal entry `tangential_12` (dT1/dw_t2 = dT2/dw_t1: the slip
+// branch's s r (I - e e^T) / (|z| - s), symmetric). Both components are imposed or neither. The
+// per-node vectors of the tangential quantities (slip(), T, StepSolution::tangential_force) are
+// then flat, the components of node p at (d - 1) p + k; in 2D that is one value per node.
 #include <Eigen/Core>
 
 #include <vector>
@@ -34,13 +40,18 @@ struct DofCondition {
 };
 
 struct NodeConditions {
-  DofCondition normal, tangential;
+  DofCondition normal, tangential; ///< tangential: along t (2D), t1 (3D)
+  DofCondition tangential2;        ///< 3D: along t2
+  double tangential_12 = 0;        ///< 3D: the force laws' stiffness between w_t1 and w_t2
+  /// The condition of tangential component k (0: t or t1, 1: t2).
+  DofCondition& tangent(int k) { return k == 0 ? tangential : tangential2; }
+  const DofCondition& tangent(int k) const { return k == 0 ? tangential : tangential2; }
 };
 
 struct StepSolution {
   Eigen::VectorXd normal_increment; ///< dw_n per contact node
   Eigen::VectorXd normal_force;     ///< N after the step, per node
-  Eigen::VectorXd tangential_force; ///< T after the step, per node
+  Eigen::VectorXd tangential_force; ///< T after the step, d - 1 components per node (header)
   /// ||eps dw||, the force of a proximal term eps dw the step carries (0 without one): where it
   /// balances a part of the residual, the conditions hold no rigid motion of the body that the
   /// load pushes (the driver's unheld steps, contact_newton.hpp).
@@ -55,13 +66,16 @@ public:
   /// True if the contact nodes' slips are unknowns (friction); otherwise only w_n is, and the
   /// tangential conditions are ignored (T = 0).
   virtual bool has_tangential() const = 0;
+  /// The tangential components per contact node where has_tangential(): d - 1.
+  virtual int tangents() const { return 1; }
 
-  /// Penetration q_n = w_n - d beyond the obstacle surface and slip q_t, per contact node, at
-  /// the iterate.
+  /// Penetration q_n = w_n - d beyond the obstacle surface, per contact node, and slip q_t
+  /// (tangents() components per node, flat as the header says) at the iterate.
   virtual Eigen::VectorXd penetration() const = 0;
   virtual Eigen::VectorXd slip() const = 0;
 
-  /// ||r + contact forces|| over the free dofs at the iterate, with nodal contact forces N and T.
+  /// ||r + contact forces|| over the free dofs at the iterate, with nodal contact forces N and T
+  /// (T flat, tangents() per node).
   virtual double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const = 0;
   /// The force the residual test divides by.
   virtual double force_scale() const = 0;

@@ -58,7 +58,8 @@ public:
   /// The condensed unknowns (frame components) of a free-dof vector u: a warm start.
   Eigen::VectorXd restrict(const Eigen::VectorXd& u) const;
   /// ||K u - f + contact forces|| / ||f|| for free dofs u (original frame), the load of the last
-  /// condense() and nodal contact forces N (normal) and T (tangential, ignored without friction).
+  /// condense() and nodal contact forces N (normal) and T (tangential, d - 1 per node along the
+  /// node's tangents, ignored without friction).
   double relative_residual(const Eigen::VectorXd& u, const Eigen::VectorXd& N,
                            const Eigen::VectorXd& T) const;
 

@@ -52,6 +52,10 @@
 //    elasticity would absorb (at r = 30 k the frictional Hertz deck kept every node slipping and
 //    drifted, 1 of 15 nodes entering stick per unheld cut), while below it the test is the
 //    thesis's. The solution does not depend on r_t; the wall's test keeps r.
+// One code for d = 2 and 3 (a template on d, the 3D driver where the bulk has two tangential
+// unknowns per node): in 3D the slip and the tangential multiplier of a node are vectors of its
+// tangent plane, the stick test |t + r q_t| <= s the cone's, and a slipping node's step the
+// linearized projection on the disc (contact_newton.cpp, tangential_conditions_3d).
 // A solve that does not converge is a result: converged = false, the reason (NewtonFailure),
 // the failure's text and the history.
 #include "contact/contact_kernel.hpp"
@@ -84,7 +88,10 @@ using NodeBranch = KernelBranch;
 /// of the last iteration: a warm start in, the solution out. Empty vectors start from zero.
 struct ContactIterate {
   Eigen::VectorXd lambda; ///< wall multipliers
-  Eigen::VectorXd t;      ///< tangential multipliers
+  /// tangential multipliers, d - 1 per node (flat as contact_bulk.hpp's tangential vectors)
+  Eigen::VectorXd t;
+  /// In 3D the branch as a set (wall, stick, slipping or not: slip 1 or 0): the direction of a
+  /// slip turns continuously, the sets repeat.
   std::vector<NodeBranch> branch;
 };
 
@@ -131,7 +138,7 @@ struct ContactNewtonResult {
   std::vector<IterationRecord> history;
   std::vector<double> step_length;  ///< line-search alpha per iteration (1 for linear bulks)
   Eigen::VectorXd normal_force;     ///< N per node at the end (nodal force, >= 0 at a solution)
-  Eigen::VectorXd tangential_force; ///< T per node
+  Eigen::VectorXd tangential_force; ///< T per node, d - 1 components each (flat)
   std::vector<NormalStatus> normal_status;     ///< of the last iteration's branches
   std::vector<FrictionStatus> friction_status; ///< of the last iteration's branches
   int iterations() const { return static_cast<int>(history.size()); }

@@ -25,7 +25,9 @@ struct Mesh;
 struct StaticSolution {
   Eigen::VectorXd u;          ///< full displacement (d dofs per node)
   Eigen::VectorXd multiplier; ///< normal contact force per element (empty without contact)
-  Eigen::VectorXd tangential; ///< tangential contact force per element
+  /// tangential contact force per element: along t in 2D, the components along t1, t2 in 3D
+  /// with friction (two per element, element i's at 2 i)
+  Eigen::VectorXd tangential;
   std::vector<NormalStatus> normal_status;
   std::vector<FrictionStatus> friction_status;
   bool converged = true;

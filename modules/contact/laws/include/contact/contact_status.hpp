@@ -7,7 +7,9 @@
 //   tangential  S= (stick, the kernel's stick branch), S+ / S- (slip towards +t / -t: a zero
 //               Tresca threshold slips everywhere), or none: no friction law, Coulomb-type friction
 //               (coulomb, nonmonotone) on a node with no normal force (no friction acts), or a zero
-//               bound with nothing to slip along
+//               bound with nothing to slip along. In 3D a slipping node is S+: it slips along
+//               its slip's direction, which the solution's slip vector gives (contact.csv's
+//               slip_1..3)
 // The integer codes are the ones DS files store (case.b arrays normal_status, friction_status).
 #include "contact/contact_kernel.hpp"
 
@@ -20,6 +22,8 @@ enum class FrictionStatus { none = 0, stick = 1, slip_forward = 2, slip_backward
 
 NormalStatus normal_status(const ContactKernel& kernel);
 FrictionStatus friction_status(const ContactLaw& law, const ContactKernel& kernel);
+NormalStatus normal_status(const ContactKernelIn<3>& kernel);
+FrictionStatus friction_status(const ContactLaw& law, const ContactKernelIn<3>& kernel);
 
 /// "free", "CN", "CU", "held"; "-", "S=", "S+", "S-" (the thesis's labels).
 std::string label(NormalStatus status);
