@@ -30,7 +30,7 @@ const std::set<std::string>& fields_of(const std::string& generator) {
       {"rectangle", {"lx", "ly", "nx", "ny", "refs", "pattern"}},
       {"square", {"lx", "nx", "refs", "pattern"}},
       {"box", {"lx", "ly", "lz", "h"}},
-      {"half_ball", {"r", "h"}},
+      {"half_ball", {"r", "h", "grading", "cap"}},
       {"ball", {"centre", "center", "r", "h"}},
       {"cylinder", {"r", "l", "h"}},
       {"file", {"coincident"}},
@@ -164,8 +164,9 @@ Mesh generate(const Card& card, const std::string& generator) {
     }
     const double r = card.real("R");
     verify_span(card, "R", 3 * r);
+    // Graded, the size at the pole is h: a bound as if uniform (the grading only coarsens).
     verify_size(card, "h", 2.1 * std::pow(r / h + 1, 3));
-    return half_ball(r, h);
+    return half_ball(r, h, card.real("grading"), card.has("cap") ? card.real("cap") : 0);
   }
   if (generator == "half_disc" || generator == "disc") {
     const double r = card.real("R");
