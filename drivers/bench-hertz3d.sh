@@ -3,7 +3,7 @@
 #                          [--no-whole]: how fast the frictionless 3D Hertz ball solves (issue 26),
 # against the floor of the problem and against GetFEM.
 #
-# The half ball of meshes/half_ball_graded.geo (R = 8, graded towards the pole: size H + G x
+# The half ball of meshes/half_ball.geo (R = 8, graded towards the pole: size H + G x
 # distance; defaults 0.025 and 0.1, GetFEM's fine mesh of datafiles/scene3d/GETFEM.md, 28887
 # dofs), E = 150, nu = 0.3, a traction of total P = 14 on its flat top (Hertz's a = R / 10), held
 # there in x1 and x2, on the rigid plane x3 = 0, frictionless. Runs:
@@ -57,7 +57,7 @@ number='^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$'
 [[ $grading =~ $number ]] || die "--grading must be a number >= 0, got '$grading'"
 require_positive --repeat "$repeat"
 require_stages mesh material contact assemble solve post
-command -v gmsh >/dev/null || die "gmsh is needed to mesh meshes/half_ball_graded.geo"
+command -v gmsh >/dev/null || die "gmsh is needed to mesh meshes/half_ball.geo"
 
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
@@ -73,7 +73,7 @@ a = (3 * P * R / (4 * E / (1 - nu * nu))) ** (1 / 3)
 print(a, a * a / R, P / (math.pi * R * R))")
 
 mesh=$out/half_ball.msh
-gmsh "$root/meshes/half_ball_graded.geo" -3 -format msh22 -setnumber R $R -setnumber h "$h" \
+gmsh "$root/meshes/half_ball.geo" -3 -format msh22 -setnumber R $R -setnumber h "$h" \
   -setnumber grading "$grading" -o "$mesh" >"$out/gmsh.log" 2>&1 || die "gmsh failed (log: $out/gmsh.log)"
 
 # write_deck FILE SOLVER-FIELDS [floor]: the deck, or the floor's (the top clamped, no contact).
@@ -192,7 +192,7 @@ getfem = json.loads(Path(info["getfem"]).read_text()) if info.get("getfem") else
 k = len(runs[floor_name])
 lines = [f"# Frictionless 3D Hertz ball benchmark (issue 26)", "",
          f"Produced by `{info['command']}` on {info['date']} ({info['host']}, revision "
-         f"{info['revision']}). Mesh meshes/half_ball_graded.geo, h = {info['h']}, grading = "
+         f"{info['revision']}). Mesh meshes/half_ball.geo, h = {info['h']}, grading = "
          f"{info['grading']}: {runs[floor_name][0]['dofs']} dofs. Medians of {k} runs taken round "
          f"robin. Phases = summary.json's times without sig-assemble's `assemble`; wall = the "
          f"sig-solve process (reading case.tae included). Candidates: the contact nodes of initial "

@@ -3,19 +3,19 @@
 friction, and Cattaneo-Mindlin's tangential step; the GetFEM side of the 3D comparisons.
 
     /usr/bin/python3 postproc/getfem_hertz3d.py [--msh FILE | --h H --grading G] [--R R] [--E E]
-        [--nu NU] [--P P] [--mu MU] [--tangential Q] [--eps EPS] [--version V] [--repeat K]
-        [--json FILE] [--workdir DIR]
+        [--nu NU] [--P P | --pressure p] [--clamp-top] [--mu MU] [--tangential Q] [--eps EPS]
+        [--version V] [--repeat K] [--json FILE] [--workdir DIR]
 
 What is solved:
   - the body: the lower half of the ball of centre (0, 0, R) and radius R, its flat face on top at
-    z = R, touching the plane z = 0 at the origin, meshed by gmsh from meshes/half_ball_graded.geo
+    z = R, touching the plane z = 0 at the origin, meshed by gmsh from meshes/half_ball.geo
     (tetrahedra graded towards the origin: size h + grading * distance, capped at R / 4; --msh
     takes a mesh of that script instead, msh 2.2 with its physical groups 1 volume, 2 top face,
     3 curved face);
   - P1 isotropic linearized elasticity in 3D (E, nu; R = 8, E = 150, nu = 0.3 by default: scene
     7a's data), IM_TETRAHEDRON(2);
   - the load: a uniform pressure P / |top| on the top face (|top| the meshed face's area: total force P, default 14: Hertz's
-    a / R = 0.0998). The half ball is not a half-space: Hertz's formulas assume the load is
+    a / R = 0.0998); --pressure p: the pressure p instead, of total P = p |top|. The half ball is not a half-space: Hertz's formulas assume the load is
     applied at infinity of a half-space, here it is applied at height R = 10 a, so the measured
     a and p0 carry a finite-body error besides the mesh error (for the half disc of scene 7a the
     same effect is -0.74 % on p0, ../shared/PEERS.md);
@@ -35,6 +35,9 @@ What is solved:
     moment Q R of the tangential load about the contact (a weak clamp of the top face against
     rotation, as a test machine's crosshead): without them the moment would tilt the ball and
     shift the contact patch by Q R / P, more than a, which is not Cattaneo-Mindlin's problem;
+    --clamp-top (frictionless only) replaces these rows by u_x = u_y = 0 at every node of the top
+    face (nodal Dirichlet rows through multipliers, exact), the holds of our decks' DIRICHLET ref=2
+    ux=0 uy=0: the tilts and the vertical translation are then held by the contact alone;
   - the start: the rigid shift u = (0, 0, -a_H^2 / (4 R)) (a_H Hertz's radius), which pushes the
     nodes within a_H / sqrt(2) of the axis into the plane: from u = 0 one node touches and the
     first tangent is singular (as in getfem_hertz.py);
@@ -86,8 +89,8 @@ except ImportError:
     sys.exit("getfem_hertz3d.py: error: cannot import getfem (Debian: python3-getfem; use /usr/bin/python3)")
 
 ROOT = Path(__file__).resolve().parent.parent
-GEO = ROOT / "meshes" / "half_ball_graded.geo"
-VOLUME, TOP, CURVED = 1, 2, 3  # physical groups of half_ball_graded.geo
+GEO = ROOT / "meshes" / "half_ball.geo"
+VOLUME, TOP, CURVED = 1, 2, 3  # physical groups of half_ball.geo
 CONTACT_TOL = 1e-9  # in contact when N > CONTACT_TOL max N
 SLIP_TOL = 1e-6     # slipping when |T| >= mu N - SLIP_TOL mu max N
 
@@ -98,13 +101,17 @@ def fail(message):
 
 def parse_args():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--msh", type=Path, help="a mesh of meshes/half_ball_graded.geo (msh 2.2) instead of meshing")
+    parser.add_argument("--msh", type=Path, help="a mesh of meshes/half_ball.geo (msh 2.2) instead of meshing")
     parser.add_argument("--h", type=float, default=0.08, help="mesh size at the origin (default 0.08)")
     parser.add_argument("--grading", type=float, default=0.2, help="mesh size growth with distance (default 0.2)")
     parser.add_argument("--R", type=float, default=8.0, help="radius (default 8)")
     parser.add_argument("--E", type=float, default=150.0, help="Young's modulus (default 150)")
     parser.add_argument("--nu", type=float, default=0.3, help="Poisson's ratio (default 0.3)")
     parser.add_argument("--P", type=float, default=14.0, help="total normal load (default 14)")
+    parser.add_argument("--pressure", type=float, metavar="p",
+                        help="the top face's pressure p instead of P / |top| (then P = p |top|)")
+    parser.add_argument("--clamp-top", action="store_true",
+                        help="u_x = u_y = 0 at the top face's nodes instead of the weak rigid-motion rows")
     parser.add_argument("--mu", type=float, default=0.0, help="Coulomb coefficient (default 0: frictionless)")
     parser.add_argument("--tangential", type=float, metavar="Q", help="second step: tangential load Q < mu P")
     parser.add_argument("--eps", type=float, default=1e-8, help="GetFEM's max_res (default 1e-8)")
@@ -116,6 +123,10 @@ def parse_args():
     args = parse_timed_args(parser, fail)
     if args.mu < 0 or args.P <= 0 or args.R <= 0 or args.E <= 0 or not 0 <= args.nu < 0.5:
         fail("need mu >= 0, P > 0, R > 0, E > 0, 0 <= nu < 0.5")
+    if args.pressure is not None and not args.pressure > 0:
+        fail(f"--pressure p needs p > 0, got {args.pressure:g}")
+    if args.clamp_top and args.mu > 0:
+        fail("--clamp-top is frictionless only (the clamp would carry the tangential load)")
     if args.tangential is not None and not 0 < args.tangential < args.mu * args.P:
         fail(f"--tangential Q needs 0 < Q < mu P = {args.mu * args.P:g} (set --mu)")
     return args
@@ -132,14 +143,14 @@ def hertz(P, R, E, nu):
 
 
 def load_mesh(args):
-    """GetFEM's mesh of --msh, or of half_ball_graded.geo meshed with --h, --grading, --R."""
+    """GetFEM's mesh of --msh, or of half_ball.geo meshed with --h, --grading, --R."""
     with tempfile.TemporaryDirectory() as tmp:
         workdir = args.workdir or Path(tmp)
         workdir.mkdir(parents=True, exist_ok=True)
         try:
             msh = args.msh or gmsh_mesh(GEO, workdir / f"half_ball_h{args.h:g}_g{args.grading:g}.msh",
                                         3, {"R": args.R, "h": args.h, "grading": args.grading})
-            return import_gmsh(msh, (VOLUME, TOP, CURVED)), str(args.msh or f"half_ball_graded.geo h {args.h:g} grading {args.grading:g}")
+            return import_gmsh(msh, (VOLUME, TOP, CURVED)), str(args.msh or f"half_ball.geo h {args.h:g} grading {args.grading:g}")
         except RuntimeError as e:
             fail(f"{e} (GetFEM 5.4 renumbers the regions of msh 4.1: mesh with -format msh22)")
 
@@ -150,10 +161,10 @@ def top_area(mim):
     return float(gf.asm_generic(mim, 0, "1", TOP))
 
 
-def add_loads(md, mim, P):
-    """The uniform pressure P / |top| on the top face (data "pressure"; |top| the meshed area, so
-    that the total is P) and a tangential traction (data "shear", zero until the second step)."""
-    md.add_initialized_data("pressure", [0.0, 0.0, -P / top_area(mim)])
+def add_loads(md, mim, pressure):
+    """The uniform pressure on the top face (data "pressure") and a tangential traction (data
+    "shear", zero until the second step)."""
+    md.add_initialized_data("pressure", [0.0, 0.0, -pressure])
     md.add_source_term_brick(mim, "u", "pressure", TOP)
     md.add_initialized_data("shear", [0.0, 0.0, 0.0])
     md.add_source_term_brick(mim, "u", "shear", TOP)
@@ -174,6 +185,18 @@ def add_rigid_constraints(md, mim, mfu, names):
             B[k, int(j)] = row[j]
     md.add_variable("rigid", len(names))
     md.add_constraint_with_multipliers("u", "rigid", B, np.zeros(len(names)))
+
+
+def clamp_top(md, mfu):
+    """u_x = u_y = 0 at every node of the top face: one row per dof through the multiplier
+    variable "clamp" (its values are the nodal reactions)."""
+    dofs = np.sort(mfu.basic_dof_on_region(TOP))
+    held = [int(d) for k, d in enumerate(dofs) if k % 3 != 2]  # qdim 3: x, y, z per node
+    B = gf.Spmat("empty", len(held), mfu.nbdof())
+    for row, dof in enumerate(held):
+        B[row, dof] = 1.0
+    md.add_variable("clamp", len(held))
+    md.add_constraint_with_multipliers("u", "clamp", B, np.zeros(len(held)))
 
 
 def contact_nodes(mfu, mim):
@@ -307,7 +330,8 @@ def measure(md, mfu, mesh, nodes, args, H, Q):
     if len(at_centre) != 3:
         fail(f"found {len(at_centre)} dofs at the top centre (0, 0, {args.R:g}), expected 3")
     m["approach"] = float(-u[np.sort(at_centre)[2]])  # qdim 3: the third dof of a node is u_z
-    m["rigid_reactions"] = [float(v) for v in np.atleast_1d(md.variable("rigid"))]
+    m["rigid_reactions"] = ([] if args.clamp_top else
+                            [float(v) for v in np.atleast_1d(md.variable("rigid"))])
     m["hertz"] = compare(m, H, args.P, Q, args.mu)
     m["nodes"] = node_table(N, T, xyz, weights, status, mesh)
     return m
@@ -318,12 +342,23 @@ def main():
     H = hertz(args.P, args.R, args.E, args.nu)
     mesh, mesh_text = load_mesh(args)
     md, mfu, mim = isotropic_elasticity(mesh, args.E, args.nu, "IM_TETRAHEDRON(2)")
-    add_loads(md, mim, args.P)
-    rows = ["twist", "tilt_x", "tilt_y"] + (["mean_x", "mean_y"] if args.mu == 0 else [])
-    add_rigid_constraints(md, mim, mfu, rows)
+    if args.pressure is None:
+        pressure = args.P / top_area(mim)  # the meshed area: the total is P
+    else:
+        pressure, args.P = args.pressure, args.pressure * top_area(mim)
+        H = hertz(args.P, args.R, args.E, args.nu)
+    add_loads(md, mim, pressure)
+    if args.clamp_top:
+        rows = []
+        clamp_top(md, mfu)
+        holds = ["clamp"]
+    else:
+        rows = ["twist", "tilt_x", "tilt_y"] + (["mean_x", "mean_y"] if args.mu == 0 else [])
+        add_rigid_constraints(md, mim, mfu, rows)
+        holds = ["rigid"]
     nodes = contact_nodes(mfu, mim)
     multipliers = add_contact(md, mim, len(nodes[0]), args.E, args.mu, args.version)
-    names = ["u", "rigid"] + multipliers
+    names = ["u"] + holds + multipliers
     start = {name: np.zeros_like(np.atleast_1d(md.variable(name)), dtype=float) for name in names}
     start["u"][2::3] = -H["a"] ** 2 / (4 * args.R)
 
@@ -337,9 +372,12 @@ def main():
     summary = {
         "getfem_version": getfem_version(),
         "description": (f"half ball R = {args.R:g} ({mesh_text}), P1 tetrahedra, E = {args.E:g}, "
-                        f"nu = {args.nu:g}, pressure on the top face total P = {args.P:g}, nodal contact "
-                        f"brick with z >= 0 version {args.version}, r = E, mu = {args.mu:g}, max_res "
-                        f"{args.eps:g}, lsolver auto, start u_z = -a^2/(4R), top-face constraints {rows}"),
+                        f"nu = {args.nu:g}, pressure {pressure:.10g} on the top face, total P = {args.P:g}, "
+                        f"nodal contact brick with z >= 0 version {args.version}, r = E, mu = {args.mu:g}, "
+                        f"max_res {args.eps:g}, lsolver auto, start u_z = -a^2/(4R), "
+                        + ("top face's nodes held in x and y" if args.clamp_top
+                           else f"top-face constraints {rows}")),
+        "pressure": pressure, "clamp_top": args.clamp_top,
         "R": args.R, "E": args.E, "nu": args.nu, "P": args.P, "mu": args.mu, "Q": args.tangential,
         "mesh": mesh_text, "dofs": int(mfu.nbdof()), "points": int(mesh.nbpts()),
         "tetrahedra": int(mesh.nbcvs()), "contact_candidates": len(nodes[0]),

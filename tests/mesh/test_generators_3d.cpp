@@ -43,6 +43,31 @@ TEST(Generators3d, HalfBall) {
     EXPECT_NEAR(mesh.nodes[i].z(), R, 1e-12);
 }
 
+// Graded towards the pole (size h + grading x distance, capped): the pole is a node, the mesh is
+// fine there and coarse away from it, so that it has fewer nodes than the uniform mesh of size h;
+// the references are the uniform mesh's.
+TEST(Generators3d, HalfBallGraded) {
+  if (!testing::have_gmsh()) GTEST_SKIP() << "no gmsh";
+  const double R = 2, h = 0.2;
+  const Mesh uniform = half_ball(R, h);
+  const Mesh graded = half_ball(R, h, 0.3);
+  EXPECT_LT(graded.nodes.size(), uniform.nodes.size() / 2);
+  EXPECT_EQ(graded.references(), uniform.references());
+  const auto pole =
+      std::min_element(graded.nodes.begin(), graded.nodes.end(),
+                       [](const Point& a, const Point& b) { return a.norm() < b.norm(); });
+  EXPECT_LT(pole->norm(), 1e-12 * R);
+  // The nodes nearest the pole are about h away; the top's nodes, capped at R / 4, farther.
+  double nearest = 1e300;
+  for (const Point& x : graded.nodes)
+    if (x.norm() > 1e-12 * R) nearest = std::min(nearest, x.norm());
+  EXPECT_LT(nearest, 1.5 * h);
+  EXPECT_GT(nearest, 0.3 * h);
+  const double exact = 2 * std::numbers::pi * R * R * R / 3;
+  EXPECT_GT(testing::measure_of(graded), 0.9 * exact);
+  EXPECT_LT(testing::measure_of(graded), exact);
+}
+
 TEST(Generators3d, Ball) {
   if (!testing::have_gmsh()) GTEST_SKIP() << "no gmsh";
   const Point centre(1, -2, 3);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Pipeline test, the GetFEM side of the 3D Hertz ball (issue 26, postproc/getfem_hertz3d.py) on the
-# coarse mesh of meshes/half_ball_graded.geo (h = 0.08, grading 0.2: 3672 dofs; R = 8, E = 150,
+# coarse mesh of meshes/half_ball.geo (h = 0.08, grading 0.2: 3672 dofs; R = 8, E = 150,
 # nu = 0.3, P = 14, so Hertz's a = 0.799 = R / 10, p0 = 10.48), in a few seconds:
 #  - frictionless, and Coulomb mu = 0.3 with the Cattaneo-Mindlin step Q = 2.1 = mu P / 2: every
 #    Newton solve converges;

@@ -45,8 +45,11 @@ const std::vector<CardSpec>& card_schema() {
             "union-jack (four triangles around the cell centre)",
             "alternating"},
            {"grading",
-            "growth of the mesh size per unit distance from the contact boundary (0: uniform)",
+            "growth of the mesh size per unit distance from the contact boundary (0: uniform); "
+            "half-ball: from its pole",
             "0"},
+           {"cap",
+            "half-ball: the largest mesh size of the graded mesh (default R / 4, at least h)"},
            {"arcs",
             "disc: uniform (N/4 segments on every quarter) | graded (N/4 on the bottom quarter, "
             "the others sized by the grading: fine only near contact)",

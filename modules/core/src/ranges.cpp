@@ -57,6 +57,7 @@ constexpr FieldRange table[] = {
     {"MESH", "ny", count_from_1},
     {"MESH", "refs", reference},
     {"MESH", "grading", non_negative},
+    {"MESH", "cap", positive},
     {"MATERIAL", "region", reference},
     {"MATERIAL", "E", positive},
     {"MATERIAL", "nu", poisson},

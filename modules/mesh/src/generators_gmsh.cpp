@@ -122,11 +122,14 @@ Mesh box(double lx, double ly, double lz, double h) {
   return mesh;
 }
 
-Mesh half_ball(double R, double h) {
-  verify_size_law("half_ball", R, 0);
+Mesh half_ball(double R, double h, double grading, double cap) {
+  verify_size_law("half_ball", R, grading);
   SIG_VERIFY(h > 0 && std::isfinite(h), "half_ball: mesh size " << h << " must be > 0");
+  SIG_VERIFY(cap >= 0 && std::isfinite(cap), "half_ball: cap " << cap << " must be >= 0");
   const double scale = gmsh_scale(R);
-  Mesh mesh = mesh_with_gmsh("half_ball", geo::half_ball, {{"R", R / scale}, {"h", h / scale}}, 3);
+  Mesh mesh = mesh_with_gmsh(
+      "half_ball", geo::half_ball,
+      {{"R", R / scale}, {"h", h / scale}, {"grading", grading}, {"cap", cap / scale}}, 3);
   scale_nodes(mesh, scale);
   check_mesh(mesh, "half_ball");
   return mesh;

@@ -28,10 +28,11 @@ Mesh disc(const Eigen::Vector2d& center, double R, int N, double grading = 0,
 /// base x3 = 0, 2 the top x3 = lz, 3 the four sides; one sub-domain.
 Mesh box(double lx, double ly, double lz, double h);
 
-/// Hertz half ball { |x - (0, 0, R)| <= R, x3 <= R } of tetrahedra of size h
-/// (meshes/half_ball.geo): the half sphere ref 3 (Gamma3), the flat top ref 2, the top centre
-/// (0, 0, R) vertex_ref 1. Its lowest point is the origin.
-Mesh half_ball(double R, double h);
+/// Hertz half ball { |x - (0, 0, R)| <= R, x3 <= R } of tetrahedra (meshes/half_ball.geo): the
+/// half sphere ref 3 (Gamma3), the flat top ref 2, the top centre (0, 0, R) vertex_ref 1. Its
+/// lowest point, the pole, is the origin and a node. Mesh size h + grading * d at distance d
+/// from the pole, capped at `cap` (0: R / 4; never below h); grading = 0: uniform, size h.
+Mesh half_ball(double R, double h, double grading = 0, double cap = 0);
 
 /// Ball of centre `centre` (3 coordinates) and radius R of tetrahedra of size h
 /// (meshes/ball.geo): the sphere ref 3 (Gamma3).

@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Requirement (issue 26, "Against GetFEM 3D"): on the same tetrahedral mesh of the half ball,
+# with the same load and the same holds, our frictionless 3D contact solve and GetFEM 5.4's nodal
+# contact brick give the same discrete solution: every contact node's normal nodal force to 1e-6
+# of the largest, the same nodes in contact (but those within 1e-8 of the largest force of the
+# threshold), both stopped at a residual of 1e-10. The holds: the flat top's nodes held in x and
+# y (our DIRICHLET ref=2 ux=0 uy=0; GetFEM's --clamp-top), the tilts and the vertical translation
+# held by the contact alone; the load: the pressure p on the top. Ours starts from rest, GetFEM
+# from its rigid shift (the solution is unique). Skips without GetFEM (python3-getfem).
+set -euo pipefail
+source "$(dirname "$0")/lib/common.sh"
+require_command gmsh "the half ball is meshed by gmsh"
+/usr/bin/python3 -c 'import getfem' 2>/dev/null || skip "/usr/bin/python3 cannot import getfem"
+
+geo=$root/meshes/half_ball.geo
+mesh=$work/half_ball.msh
+gmsh "$geo" -3 -format msh22 -setnumber R 8 -setnumber h 0.08 -setnumber grading 0.2 -o "$mesh" \
+  >"$work/gmsh.log" 2>&1 || die "gmsh failed: $(tail -3 "$work/gmsh.log")"
+p=0.0696302876
+
+/usr/bin/python3 "$root/postproc/getfem_hertz3d.py" --msh "$mesh" --clamp-top --pressure $p \
+  --eps 1e-10 --repeat 1 --json "$work/getfem.json" >"$work/getfem.log" 2>&1 ||
+  die "postproc/getfem_hertz3d.py failed: $(tail -3 "$work/getfem.log")"
+
+cat >"$work/ball.dat" <<DECK
+# The half ball of postproc/getfem_hertz3d.py (R = 8, E = 150, nu = 0.3, GPa-m), its top held in
+# x and y and pressed by p, on the plane x3 = 0, frictionless.
+TITLE half ball against GetFEM
+MESH file=$mesh
+MATERIAL law=hooke E=150 nu=0.3
+DIRICHLET ref=2 ux=0 uy=0
+TRACTION ref=2 f=0,0,-$p
+CONTACT ref=3 obstacle=plane point=0,0,0 normal=0,0,1 law=signorini exclude=2
+SOLVER method=pdas eps=1e-10
+OUTPUT vtk=no
+DECK
+"$root/drivers/chain.sh" "$work/ball.dat" -o "$work/ours" >"$work/ours.log" 2>&1 ||
+  { tail -20 "$work/ours.log"; die "drivers/chain.sh failed"; }
+
+checks=$((checks + 1))
+"$python" - "$work/ours/contact.csv" "$work/getfem.json" <<'PY' || fail "ours against GetFEM"
+import csv, json, sys
+ours = list(csv.DictReader(open(sys.argv[1])))
+g = json.load(open(sys.argv[2]))
+if not g["converged"]:
+    sys.exit("GetFEM did not converge")
+key = lambda x, y, z: (round(x, 9), round(y, 9), round(z, 9))
+theirs = {key(n["x"], n["y"], n["z"]): n for n in g["steps"][0]["nodes"]} if "nodes" in g["steps"][0] \
+    else {key(n["x"], n["y"], n["z"]): n for n in g["nodes"]}
+largest = max(n["normal_force"] for n in theirs.values())
+problems, worst, matched, statuses = [], 0.0, 0, 0
+for r in ours:
+    if r["converged"] != "1":
+        problems.append("ours did not converge")
+        break
+    n = theirs.get(key(float(r["x1"]), float(r["x2"]), float(r["x3"])))
+    if n is None:
+        problems.append(f"node {r['node']} ({r['x1']}, {r['x2']}, {r['x3']}) not in GetFEM's table")
+        continue
+    matched += 1
+    N = float(r["multiplier"])
+    worst = max(worst, abs(N - n["normal_force"]))
+    threshold = 1e-9 * largest
+    near = abs(n["normal_force"] - threshold) < 1e-8 * largest
+    if not near and (r["status"] == "contact") != (n["normal_force"] > threshold):
+        statuses += 1
+if matched < len(theirs) - sum(1 for k in theirs if abs(k[2] - 8) < 1e-9):
+    problems.append(f"{matched} of GetFEM's {len(theirs)} nodes matched")
+if worst > 1e-6 * largest:
+    problems.append(f"normal nodal forces differ by {worst:.3g} ({worst / largest:.2g} of the largest)")
+if statuses:
+    problems.append(f"{statuses} nodes differ in status")
+for p in problems:
+    print(p)
+print(f"against GetFEM: {matched} nodes, forces within {worst / largest:.2g} of the largest "
+      f"({largest:.4g}), {statuses} statuses differ")
+sys.exit(1 if problems else 0)
+PY
+finish "the frictionless 3D solve is GetFEM's on the same mesh"
