@@ -343,7 +343,8 @@ def main():
               "leading one, so the stick zone shrinks and moves towards +x1 (the centroid "
               "column), the more so the larger beta. A load history (the normal load first, its "
               "radial traction and Spence's partial slip set before the shear) is another problem, "
-              "not solved here; CM's analysis holds exactly only at beta = 0. P1 tetrahedra lock as nu tends to 1/2, so nu = 0.45 "
+              "not solved here; CM's analysis holds exactly only at beta = 0. P1 tetrahedra lock "
+              "as nu tends to 1/2, so nu = 0.45 "
               "(beta = 0.09) is the closest we go; its stick radius is the one checked against CM "
               "above.", ""]
 
