@@ -248,7 +248,11 @@ def main():
     runs = [Run(out, name, mesh, nu, mu, R, E) for name, mesh, nu in parse_runs(info)]
     nu_deck = deck.number("MATERIAL", "nu")
     ladder = sorted((r for r in runs if r.nu == nu_deck), key=lambda r: -r.mesh[0])
-    trend = sorted((r for r in runs if r.mesh == ladder[-1].mesh), key=lambda r: r.nu)
+    others = {r.mesh for r in runs if r.nu != nu_deck}
+    if len(others) != 1:
+        raise ReportError(f"{out}: the runs of nu other than {nu_deck:g} are on {len(others)} meshes, "
+                          "the trend wants one")
+    trend = sorted((r for r in runs if r.mesh in others), key=lambda r: r.nu)
     checks = Checks()
     bad = [r.name for r in runs if not r.converged]
     checks.add("every run converges", not bad, detail="all converge" if not bad else ", ".join(bad))
@@ -331,8 +335,12 @@ def main():
                          "stick centroid x1 / a"], rows,
                         caption=f"nu trend on the mesh (h, grading) = "
                                 f"({trend[0].mesh[0]:g}, {trend[0].mesh[1]:g})" if trend else "")
+    low = trend[0]
+    if low.m is not None:
+        stick_slip_chart(out / "stick_slip_low_nu.png", low, mu)
     lines += ["## How far a rigid flat with nu < 0.5 follows Cattaneo-Mindlin", "",
               trend_table.markdown(), "",
+              f"![stick and slip at nu = {low.nu:g}](stick_slip_low_nu.png)" if low.m else "", "",
               "Cattaneo and Mindlin's solution assumes that the normal load makes no tangential "
               "traction: true when Dundurs' beta = 0, for a rigid flat beta = (1 - 2 nu) / "
               "(2 (1 - nu)), zero only at nu = 1/2. With nu < 1/2 the pressure draws the surface of "
@@ -358,7 +366,8 @@ def main():
     write_text_atomically(out / "summary.json", json.dumps(summary, indent=1, default=str) + "\n")
     write_report(out, "\n".join(lines) + "\n", "3d_cattaneo", title, info, checks,
                  key_table=key_table, charts={"stick_slip": "stick_slip.png",
-                                              "traction": "traction.png"})
+                                              "traction": "traction.png",
+                                              "stick_slip_low_nu": "stick_slip_low_nu.png"})
     print(f"{out / 'report.md'}: {checks.summary()}\n{checks.table().markdown()}")
     return 0 if checks.ok else 1
 
