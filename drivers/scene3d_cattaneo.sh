@@ -28,7 +28,7 @@ usage() {
   cat <<EOF
 usage: drivers/scene3d_cattaneo.sh [--quick] [-o OUTDIR]
 Cattaneo-Mindlin on the Hertz half ball (datafiles/scene3d/cattaneo_mindlin.dat), then its report.
-  --quick     the two coarsest meshes only (about 30 s)
+  --quick     the two coarsest meshes only (about 10 s)
   -o OUTDIR   results folder (default out/scene3d_cattaneo)
   -h, --help  this message
 Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
