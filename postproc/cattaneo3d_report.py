@@ -23,18 +23,16 @@ slip node radius beside it (the ragged edge of an unstructured mesh), the centro
 nodes, the largest | |T| - mu N | / (mu N) of the slip nodes.
 """
 import argparse
-import json
 import math
 from pathlib import Path
 
 import numpy as np
 
 from hertz3d_report import hertz, radius
-from sigreport import (Checks, Deck, ReportError, Table, main_guard, pyplot, read_command,
-                       read_csv_columns, read_ds, read_summary, save_figure, solve_seconds,
-                       write_report)
+from sigreport import (Checks, Deck, ReportError, Table, finish_report, main_guard, pyplot,
+                       read_command, read_csv_columns, read_ds, read_summary, save_figure,
+                       solve_seconds)
 from sigreport.ds import sig_dump_json
-from sigreport.files import write_text_atomically
 
 FORCE_TOL = 1e-8    # the contact forces against the clamp's reaction, relative to P
 CONE_TOL = 1e-6     # |T| = mu N on every slip node, relative
@@ -361,15 +359,11 @@ def main():
                          "converged": r.converged, "iterations": r.iterations,
                          "seconds": r.seconds, "dundurs_beta": dundurs_beta(r.nu),
                          **({k: v for k, v in r.m.items() if not isinstance(v, np.ndarray)}
-                            if r.m else {})} for r in runs],
-               "checks": checks.as_json()}
-    write_text_atomically(out / "summary.json", json.dumps(summary, indent=1, default=str) + "\n")
-    write_report(out, "\n".join(lines) + "\n", "3d_cattaneo", title, info, checks,
-                 key_table=key_table, charts={"stick_slip": "stick_slip.png",
-                                              "traction": "traction.png",
-                                              "stick_slip_low_nu": "stick_slip_low_nu.png"})
-    print(f"{out / 'report.md'}: {checks.summary()}\n{checks.table().markdown()}")
-    return 0 if checks.ok else 1
+                            if r.m else {})} for r in runs]}
+    return finish_report(out, "\n".join(lines) + "\n", "3d_cattaneo", title, info, checks, summary,
+                         key_table=key_table,
+                         charts={"stick_slip": "stick_slip.png", "traction": "traction.png",
+                                 "stick_slip_low_nu": "stick_slip_low_nu.png"})
 
 
 if __name__ == "__main__":
