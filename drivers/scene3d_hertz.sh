@@ -34,10 +34,7 @@ invocation="drivers/scene3d_hertz.sh${*:+ $*}"
 template=$root/datafiles/scene3d/hertz_ball.dat
 parse_quick_out out/scene3d_hertz "$@"
 
-require_stages mesh material contact assemble solve post dump
-require_decks "$template"
-require_charts
-command -v "${SIG_GMSH:-gmsh}" >/dev/null || die "gmsh is needed to mesh the half ball"
+require_half_ball_scene
 
 # The ladder: (h at the pole, grading), each mesh about 3x the dofs of the one before.
 if [ $quick -eq 1 ]; then

@@ -20,17 +20,15 @@ against p(r) over the nodes within a (the error of the speed-accuracy chart), th
 approach is -u3 at the top centre (case.b). Built on the report library postproc/sigreport.
 """
 import argparse
-import json
 import math
 from pathlib import Path
 
 import numpy as np
 
-from sigreport import (Checks, Deck, Point, ReportError, Series, Table, loglog_slope, main_guard,
-                       pyplot, read_command, read_csv_columns, read_ds, read_summary,
-                       save_figure, solve_seconds, speed_accuracy_chart, write_report)
+from sigreport import (Checks, Deck, Point, ReportError, Series, Table, finish_report, loglog_slope,
+                       main_guard, pyplot, read_command, read_csv_columns, read_ds, read_summary,
+                       save_figure, solve_seconds, speed_accuracy_chart)
 from sigreport.ds import sig_dump_json
-from sigreport.files import write_text_atomically
 
 plt = pyplot()
 
@@ -367,18 +365,11 @@ def main():
                "rates": {k: list(v) for k, v in rates.items()}, "force_gap": gaps,
                "finite_body_estimate": finite,
                "runs": [{k: v for k, v in r.items() if not isinstance(v, (np.ndarray, Path))}
-                        for r in runs.values()],
-               "checks": checks.as_json()}
-    write_text_atomically(out / "summary.json", json.dumps(summary, indent=1, default=str) + "\n")
-    write_report(out, "\n".join(lines) + "\n", "3d_hertz", title, info, checks,
-                 key_table=key_table, charts={"speed_accuracy": "speed_accuracy.png",
-                                              "profile": "profile.png",
-                                              "convergence": "convergence.png"})
-    print(f"{out / 'report.md'}: {checks.summary()}")
-    for c in checks:
-        print(f"{c.result}: {c.name}: {c.ours if c.ours is not None else c.detail}")
-    return 0 if checks.ok else 1
-
+                        for r in runs.values()]}
+    return finish_report(out, "\n".join(lines) + "\n", "3d_hertz", title, info, checks, summary,
+                         key_table=key_table, charts={"speed_accuracy": "speed_accuracy.png",
+                                                      "profile": "profile.png",
+                                                      "convergence": "convergence.png"})
 
 if __name__ == "__main__":
     main_guard(main)

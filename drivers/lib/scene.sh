@@ -28,6 +28,15 @@ require_charts() {
     die "$python lacks matplotlib or numpy (Debian: python3-matplotlib python3-numpy)"
 }
 
+# require_half_ball_scene: what the half-ball scenes (scene3d_hertz.sh, scene3d_cattaneo.sh) need:
+# the stages of a static solve, their deck $template, the reports' Python and gmsh.
+require_half_ball_scene() {
+  require_stages mesh material contact assemble solve post dump
+  require_decks "$template"
+  require_charts
+  command -v "${SIG_GMSH:-gmsh}" >/dev/null || die "gmsh is needed to mesh the half ball"
+}
+
 # parse_options SPEC... -- "$@": a driver's options by SPEC, and -h, --help (the driver's usage).
 # A SPEC "OPTION=VAR" takes a value ("-o=out": -o DIR sets out); "OPTION:VAR=VALUE" is a flag
 # ("--quick:quick=1"); "@VAR" collects the arguments that do not start with - into the array VAR

@@ -26,7 +26,8 @@ Modules (each docstring states its API):
           energy_measures, impact_window, energy_curves, speed_point, stability_status
   scene   read_command, read_summary, solve_seconds, read_csv_columns, find_pvd,
           write_scene_json(out, scene, title, command, checks, key_table, charts, pvd),
-          write_report(out, text, ...): report.md and then scene.json
+          write_report(out, text, ...): report.md and then scene.json; finish_report(out, text,
+          ..., checks, summary, ...): summary.json too, the checks printed, the exit status
 
 A scene report, in outline (scene7a_report.py, scene4_report.py): one function a section,
 returning its markdown lines and adding its checks; main() reads the folder and joins them.
@@ -63,7 +64,8 @@ __all__ = [
     "tolerance_text", "within", "Check", "Checks", "Deck", "read_deck", "Ds", "read_ds",
     "ReportError", "loglog_slope", "March", "read_error", "Mesh",
     "EARLIER_STAGE_PHASES", "find_pvd", "read_command", "read_csv_columns", "read_summary",
-    "solve_seconds", "write_report", "write_scene_json", "Table", "markdown_table", "THESIS_CSV",
+    "solve_seconds", "finish_report", "write_report", "write_scene_json", "Table",
+    "markdown_table", "THESIS_CSV",
     "ThesisValues", "load_thesis", "main_guard",
 ]
 
@@ -79,8 +81,8 @@ from .figure import ChartError, axis_unit, save_figure
 from .fits import loglog_slope
 from .march import March, read_error
 from .mesh import Mesh
-from .scene import (EARLIER_STAGE_PHASES, find_pvd, read_command, read_csv_columns, read_summary,
-                    solve_seconds, write_report, write_scene_json)
+from .scene import (EARLIER_STAGE_PHASES, find_pvd, finish_report, read_command, read_csv_columns,
+                    read_summary, solve_seconds, write_report, write_scene_json)
 from .table import Table, markdown_table
 from .thesis import THESIS_CSV, ThesisValues, load_thesis
 

@@ -180,3 +180,18 @@ def write_report(out, text, scene, title, command, checks=(), key_table=None, ch
     write_scene_json(out, scene, title, command, checks, key_table=key_table, charts=charts,
                      pvd=pvd)
     return path
+
+
+def finish_report(out, text, scene, title, command, checks, summary, key_table=None, charts=None):
+    """The end of a scene report: OUT/summary.json (`summary` and the checks), report.md and
+    scene.json (write_report), the checks printed one a line; returns the exit status, 0 when
+    no check fails."""
+    summary = {**summary, "checks": checks.as_json()}
+    write_text_atomically(Path(out) / "summary.json",
+                          json.dumps(summary, indent=1, default=str) + "\n")
+    path = write_report(out, text, scene, title, command, checks, key_table=key_table,
+                        charts=charts)
+    print(f"{path}: {checks.summary()}")
+    for c in checks:
+        print(f"{c.result}: {c.name}: {c.ours if c.ours is not None else c.detail}")
+    return 0 if checks.ok else 1
