@@ -613,18 +613,29 @@ def adapted_steps(scene):
 
 def uniform_ladder(scene):
     """The clamped uniform ladder: [{n, dofs, error (against n_ref), overkill (against the
-    overkill reference, not finer everywhere), solve_s, wall_s}]."""
+    overkill reference, not finer everywhere), solve_s}]."""
     ladder = []
     for n in scene.info["squares"].split():
         run = scene.run(f"fig47/n{n}")
         overkill = run.dir / "error_overkill.json"
-        wall = run.dir / "chain_wall.txt"
         ladder.append({"n": int(n), "dofs": run.summary["dofs"], "error": run.error()[1],
                        "overkill": (json.loads(overkill.read_text())["error"]
                                     if overkill.is_file() else None),
-                       "solve_s": run.seconds,
-                       "wall_s": float(wall.read_text()) if wall.is_file() else None})
+                       "solve_s": run.seconds})
     return ladder
+
+
+def timed_uniform(scene, finest):
+    """The finest uniform mesh judged, run again by drivers/chain.sh beside the adaptive loop:
+    its solve time (sig-solve's phases but assembly) and its chain's wall clock."""
+    run = scene.run("fig47/adapted/uniform")
+    if run.summary["dofs"] != finest["dofs"]:
+        raise ReportError(f"{run.dir}: {run.summary['dofs']} dofs, not n = {finest['n']}'s "
+                          f"{finest['dofs']}")
+    wall = run.dir / "chain_wall.txt"
+    if not wall.is_file():
+        raise ReportError(f"{wall}: missing (drivers/scene4.sh times the chain)")
+    return run.seconds, float(wall.read_text())
 
 
 def loop_cost(steps, last):
@@ -697,7 +708,7 @@ def section_fig47_adapted(scene, uniform_rate):
                      f"{s['wall_s'] + s['refine_wall_s']:.2f}"])
     urows = [[f"1/{u['n']}", u["dofs"], fmt(u["error"], 3),
               fmt(corrected(u["error"], eta_uniform), 3), fmt(u["overkill"], 3),
-              fmt(u["solve_s"], 3), fmt(u["wall_s"], 3)] for u in ladder]
+              fmt(u["solve_s"], 3)] for u in ladder]
     png = scene.chart("fig4_7_adapted", adapted_figure(scene.out / "fig4_7_adapted.png", steps,
                                                        ladder, eta_overkill, eta_uniform, ref,
                                                        slope))
@@ -730,10 +741,12 @@ def section_fig47_adapted(scene, uniform_rate):
     else:
         ratio = reached["dofs"] / finest["dofs"]
         own, wall = loop_cost(steps, steps.index(reached))
-        own_ratio, wall_ratio = own / finest["solve_s"], wall / finest["wall_s"]
+        uniform_solve, uniform_wall = timed_uniform(scene, finest)
+        own_ratio, wall_ratio = own / uniform_solve, wall / uniform_wall
         result.update({"reached_step": reached["step"], "reached_dofs": reached["dofs"],
                        "dofs_ratio": ratio, "loop_seconds": own, "loop_wall": wall,
-                       "uniform_solve_s": finest["solve_s"], "uniform_wall_s": finest["wall_s"],
+                       "uniform_solve_s": uniform_solve, "uniform_wall_s": uniform_wall,
+                       "ladder_solve_s": finest["solve_s"],
                        "time_ratio": own_ratio, "wall_ratio": wall_ratio})
         checks.add(f"Fig 4.7 adapted: {finest_name}'s error reached with at most a fifth of its "
                    "dofs", ratio <= DOFS_FRACTION,
@@ -742,12 +755,12 @@ def section_fig47_adapted(scene, uniform_rate):
         checks.add(f"Fig 4.7 adapted: the whole loop to that error (solve + estimate + refine, "
                    f"the stages' own times) in at most half n = {finest['n']}'s solve time",
                    own_ratio <= TIME_FRACTION,
-                   ours=f"{own:.3f} s / {finest['solve_s']:.3f} s = {own_ratio:.2f}",
+                   ours=f"{own:.3f} s / {uniform_solve:.3f} s = {own_ratio:.2f}",
                    target="<= 0.5")
         checks.add(f"Fig 4.7 adapted: the whole loop to that error in at most half n = "
                    f"{finest['n']}'s time, wall clocks of every stage (mesh ... post, estimate, "
                    "refine) against its chain's", wall_ratio <= TIME_FRACTION,
-                   ours=f"{wall:.2f} s / {finest['wall_s']:.2f} s = {wall_ratio:.2f}",
+                   ours=f"{wall:.2f} s / {uniform_wall:.2f} s = {wall_ratio:.2f}",
                    target="<= 0.5")
         time_text = (
             f"*Time.* The loop up to step {reached['step']} (steps 0 ... {reached['step']} "
@@ -756,19 +769,22 @@ def section_fig47_adapted(scene, uniform_rate):
             f"sig-refine's marking and bisection: {sum(s['solve_s'] for s in steps[:reached['step'] + 1]):.3f} "
             f"+ {sum(s['estimate_s'] for s in steps[:reached['step'] + 1]):.3f} + "
             f"{sum(s['refine_s'] for s in steps[:reached['step']]):.3f} s) against "
-            f"{finest['solve_s']:.3f} s for the solve of n = {finest['n']}: {own_ratio:.2f} of "
-            f"it. In wall clocks, every process of the loop (chain.sh's mesh, material, contact, "
-            f"assemble, solve, post, then sig-estimate and sig-refine) {wall:.2f} s against "
-            f"{finest['wall_s']:.2f} s for the uniform mesh's chain (mesh ... post): "
-            f"{wall_ratio:.2f}. "
+            f"{uniform_solve:.3f} s for the solve of n = {finest['n']} (run again by "
+            f"drivers/chain.sh beside the loop, fig47/adapted/uniform; the ladder's run took "
+            f"{finest['solve_s']:.3f} s): {own_ratio:.2f} of it. In wall clocks, every process "
+            f"of the loop (chain.sh's mesh, material, contact, assemble, solve, post, then "
+            f"sig-estimate and sig-refine) {wall:.2f} s against {uniform_wall:.2f} s for the "
+            f"uniform mesh's chain.sh (mesh ... post): {wall_ratio:.2f}. "
             + ("" if wall_ratio <= TIME_FRACTION else
-               f"The wall clocks miss the target by {wall_ratio / TIME_FRACTION:.1f} times: each "
+               f"The wall clocks miss the target by a factor {wall_ratio / TIME_FRACTION:.2f}: each "
                f"step starts 8 processes that read and write their DS files, a fixed cost of "
                f"about {min(s['wall_s'] for s in steps):.2f} s per step even on the smallest "
                f"mesh, which {len(steps[:reached['step'] + 1])} small steps pay over and over "
                "while the uniform mesh pays it once; the stages' own work is the check above. ")
             + ("" if own_ratio <= TIME_FRACTION else
-               f"The stages' own times miss the target by {own_ratio / TIME_FRACTION:.1f} times. ")
+               f"The stages' own times miss the target by a factor {own_ratio / TIME_FRACTION:.2f}: "
+               "on the small meshes of the first steps a solve costs its fixed part (MUMPS's "
+               "analysis, the loop's setup) rather than its dofs. ")
             + "The times are from this run of the driver on a shared machine.")
     result["checks"] = [c.as_json() for c in checks if c.name.startswith("Fig 4.7 adapted")]
     (scene.out / "fig47_adapted.json").write_text(json.dumps(result, indent=1) + "\n")
@@ -815,7 +831,7 @@ def section_fig47_adapted(scene, uniform_rate):
                         "refine s", "wall s"], rows), "",
         f"Uniform meshes, Gamma1 clamped:", "",
         markdown_table(["h", "dofs", f"error vs n = {ref}", f"+ n = {ref}'s",
-                        "vs overkill (not finer everywhere)", "solve s", "wall s (chain)"],
+                        "vs overkill (not finer everywhere)", "solve s"],
                        urows), "",
         f"*Rates.* Adapted: slope {slope:.3f} against dofs over steps {fit[0]['step']}-"
         f"{fit[-1]['step']} (the first steps refine a mesh too coarse to be asymptotic), the "
