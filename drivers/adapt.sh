@@ -9,7 +9,12 @@
 # It stops after K steps (default 4) or at the first step with N dofs or more (default: no
 # budget). OUTDIR (default out/<stem>-adapt) gets adapt.csv: step, dofs, estimate (sig-estimate's
 # eta, in the norm of V) and, with --reference DIR (a chain's output on a finer mesh), error
-# (sig-error's absolute error against it) and effectivity (estimate / error).
+# (sig-error's absolute error against it) and effectivity (estimate / error); then the loop's
+# cost per step: estimate_s and refine_s, the stages' own times (sig-estimate's indicators,
+# case.est `seconds`; sig-refine's marking and bisection, from its log; 0 at the last step, which
+# is not refined), wall_s, the wall clock of the step's chain and sig-estimate processes, and
+# refine_wall_s, sig-refine's (sig-error's measure left out of both). The solve's own time is
+# the step's summary.json `times`.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -47,15 +52,21 @@ fi
 mkdir -p "$outdir"
 deck_path=$(cd "$(dirname "$deck")" && pwd)/$name
 
-# The value of array NAME of a DS, from sig-dump's JSON.
-ds_value() {
+# The values of the scalar arrays NAME,NAME... of a DS, space-separated, from sig-dump's JSON.
+ds_values() {
   "$bin/sig-dump" --json --values="$2" "$1" | python3 -c 'import json, sys
 arrays = {a["name"]: a for a in json.load(sys.stdin)["arrays"]}
-print(arrays[sys.argv[1]]["values"][0])' "$2"
+print(" ".join(str(arrays[name]["values"][0]) for name in sys.argv[1].split(",")))' "$2"
+}
+
+# The seconds since START_US (microseconds of $EPOCHREALTIME without its point), to the us.
+seconds_since() {
+  local us=$((${EPOCHREALTIME/./} - $1))
+  printf '%d.%06d' $((us / 1000000)) $((us % 1000000))
 }
 
 csv=$outdir/adapt.csv
-echo "step,dofs,estimate,error,effectivity" >"$csv"
+echo "step,dofs,estimate,error,effectivity,estimate_s,refine_s,wall_s,refine_wall_s" >"$csv"
 for ((k = 0; k < steps; k++)); do
   dir=$outdir/step$k
   step_deck=$deck_path
@@ -66,27 +77,38 @@ for ((k = 0; k < steps; k++)); do
       'toupper($1) == "MESH" { print mesh; next } { print }' "$deck_path" >"$step_deck"
   fi
   mkdir -p "$dir"
+  t0=${EPOCHREALTIME/./}
   "$root/drivers/chain.sh" "$step_deck" -o "$dir" >"$dir/chain.log" 2>&1 ||
     { cat "$dir/chain.log" >&2; echo "adapt.sh: step $k: the chain failed" >&2; exit 1; }
   "$bin/sig-estimate" "$step_deck" -o "$dir" >"$dir/estimate.log" 2>&1 ||
     { cat "$dir/estimate.log" >&2; echo "adapt.sh: step $k: sig-estimate failed" >&2; exit 1; }
-  estimate=$(ds_value "$dir/case.est" estimate)
-  step_dofs=$(ds_value "$dir/case.est" dofs)
+  wall=$(seconds_since "$t0")
+  read -r estimate step_dofs estimate_s < <(ds_values "$dir/case.est" estimate,dofs,seconds)
+  [ -n "$estimate_s" ] || { echo "adapt.sh: step $k: cannot read $dir/case.est" >&2; exit 1; }
   error= effectivity=
   if [ -n "$reference" ]; then
     error=$("$bin/sig-error" --json "$dir" "$reference" |
       python3 -c 'import json, sys; print(json.load(sys.stdin)["error"])')
     effectivity=$(python3 -c "print($estimate / $error if $error > 0 else '')")
   fi
-  echo "$k,$step_dofs,$estimate,$error,$effectivity" >>"$csv"
   echo "adapt.sh: step $k: $step_dofs dofs, estimate $estimate${error:+, error $error, effectivity $effectivity}"
-  [ "$k" -lt $((steps - 1)) ] || break
-  if [ "$dofs" -gt 0 ] && [ "$step_dofs" -ge "$dofs" ]; then
+  refine_s=0 refine_wall=0
+  last=0
+  [ "$k" -lt $((steps - 1)) ] || last=1
+  if [ $last -eq 0 ] && [ "$dofs" -gt 0 ] && [ "$step_dofs" -ge "$dofs" ]; then
     echo "adapt.sh: $step_dofs dofs reach the budget of $dofs: stopped"
-    break
+    last=1
   fi
-  "$bin/sig-refine" "$step_deck" -o "$dir" --theta "$theta" --shape "$deck_path" \
-    >"$dir/refine.log" 2>&1 ||
-    { cat "$dir/refine.log" >&2; echo "adapt.sh: step $k: sig-refine failed" >&2; exit 1; }
+  if [ $last -eq 0 ]; then
+    t0=${EPOCHREALTIME/./}
+    "$bin/sig-refine" "$step_deck" -o "$dir" --theta "$theta" --shape "$deck_path" \
+      >"$dir/refine.log" 2>&1 ||
+      { cat "$dir/refine.log" >&2; echo "adapt.sh: step $k: sig-refine failed" >&2; exit 1; }
+    refine_wall=$(seconds_since "$t0")
+    refine_s=$(sed -n 's/.*; mark and refine \([0-9.e+-]*\) s$/\1/p' "$dir/refine.log")
+    [ -n "$refine_s" ] || { echo "adapt.sh: step $k: no time in $dir/refine.log" >&2; exit 1; }
+  fi
+  echo "$k,$step_dofs,$estimate,$error,$effectivity,$estimate_s,$refine_s,$wall,$refine_wall" >>"$csv"
+  [ $last -eq 0 ] || break
 done
 echo "$csv"

@@ -29,6 +29,15 @@
 #                     2 ... 64 against 128), Gamma1 clamped (the deck); fig47/rollers/n<n> the
 #                     same with rollers on Gamma1 (u1 = 0 only), a solution without the clamped
 #                     corners' singularity
+#   fig47/adapted     the clamped square adapted (issue 29): drivers/adapt.sh from n = 8
+#                     (Dörfler theta 0.5, 9 steps, 162 ... ~15k dofs; --quick: 5 steps), each
+#                     step<k>/ against the overkill reference overkill2/, the last adapted mesh
+#                     refined uniformly twice (sig-refine --theta 1; overkill1/ once), finer
+#                     everywhere than every adapted mesh; the uniform reference n512 (n128)
+#                     gets its own estimate (case.est) and every uniform run its error against
+#                     overkill2 beside its own (error_overkill.json); fig47/adapted/uniform:
+#                     the finest uniform mesh judged (n = 256; 64) again by drivers/chain.sh,
+#                     timed as the adaptive steps are (chain_wall.txt)
 #   map/<M>/alpha<alpha>_a<a>_b<b>  the stability map of the loop: alpha in 1 10 100 300 1000,
 #                     (a, b) in (2, 1.9) (2, 1) (2, 0.02) (5, 0.02) on C, M (and G, T); a run that is
 #                     Nv or cycles again with relaxation 0.5 (..._relaxed)
@@ -47,7 +56,7 @@ usage() {
 usage: drivers/scene4.sh [--quick] [-o OUTDIR]
   --quick     the map on M for alpha = 1, 100, 1000, the inner methods on the Fig 4.2
               case, Fig 4.5 on G (eps = 1e-3, 1e-5, 1e-7), T the reference, Fig 4.7 up to
-              n = 64 against 128 (under a minute)
+              n = 64 against 128 and 5 adaptive steps (about a minute)
   -o OUTDIR   results folder (default out/scene4)
   -h, --help  this message
 Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
@@ -59,7 +68,7 @@ template=$root/datafiles/scene4/ball.dat
 square=$root/datafiles/scene4/square.dat
 parse_quick_out out/scene4 "$@"
 
-require_stages mesh material contact assemble solve post error
+require_stages mesh material contact assemble solve post error estimate refine dump
 require_decks "$template" "$square"
 require_charts
 
@@ -77,6 +86,7 @@ if [ $quick -eq 1 ]; then
   reference=T
   squares=(2 4 8 16 32 64)
   square_reference=128
+  adapt_steps=5
 else
   meshes=(C M G T)
   map_meshes=(C M G T)
@@ -84,6 +94,7 @@ else
   reference=R
   squares=(2 4 8 16 32 64 128 256)
   square_reference=512
+  adapt_steps=9
 fi
 
 mkdir -p "$out"
@@ -138,6 +149,7 @@ runs=${#all_meshes[@]}                                    # bases
 runs=$((runs + ${#all_meshes[@]} + 2 + 4))                # fig42, fig43, fig44
 runs=$((runs + 2 + 2 * ${#tolerances[@]} * 2 + 2))       # fig45
 runs=$((runs + 4 + 4 * (${#squares[@]} + 1)))             # fig46, fig47 (base + run, 2 BCs)
+runs=$((runs + 4))                                        # fig47/adapted: loop, 2 overkills, n
 runs=$((runs + ${#map_meshes[@]} * ${#alphas[@]} * ${#pairs[@]})) # map
 runs=$((runs + ${#method_cases[@]} * (16 + 4)))          # methods
 runs=$((runs + ${#meshes[@]} * 5))                        # speed
@@ -151,6 +163,7 @@ progress_begin $runs
   echo "reference: $reference"
   echo "squares: ${squares[*]}"
   echo "square_reference: $square_reference"
+  echo "adapt_steps: $adapt_steps"
 } >"$out/command.txt"
 cp "$template" "$out/ball.template.dat"
 cp "$square" "$out/square.template.dat"
@@ -222,6 +235,62 @@ for bc in clamped rollers; do
   for n in "${squares[@]}"; do
     error_json "$folder/n$n" "$folder/n$square_reference"
   done
+done
+
+# Fig 4.7 adapted (issue 29): the clamped square from n = 8, solve -> estimate -> mark -> refine
+# (drivers/adapt.sh, Dörfler theta 0.5), against the overkill reference: the last adapted mesh
+# refined uniformly twice, finer everywhere than every adapted mesh (the adapted meshes nest: each
+# refines the one before). The uniform reference gets its own estimate, and every uniform run its
+# error against the overkill beside its own against n = $square_reference.
+adapted=$out/fig47/adapted
+mkdir -p "$adapted"
+deck_variant "$square" "$adapted/square.dat" --set MESH.nx=8 --set OUTPUT.vtk=no
+"$root/drivers/adapt.sh" "$adapted/square.dat" -o "$adapted" --steps "$adapt_steps" --theta 0.5 \
+  >"$adapted/adapt.log" 2>&1 || { tail -20 "$adapted/adapt.log" >&2; die "adapt.sh failed"; }
+progress_step "fig47/adapted ($adapt_steps steps)"
+# logged LOG COMMAND...: COMMAND's output appended to LOG, shown and fatal when it fails.
+logged() {
+  local log=$1
+  shift
+  "$@" >>"$log" 2>&1 || { cat "$log" >&2; die "$(basename "$1") failed (log: $log)"; }
+}
+from_dir=$adapted/step$((adapt_steps - 1))
+from_deck=$adapted/step$((adapt_steps - 1)).dat
+[ "$adapt_steps" -gt 1 ] || from_deck=$adapted/square.dat
+for level in 1 2; do
+  name=overkill$level
+  logged "$adapted/$name.log" "$bin/sig-refine" "$from_deck" -o "$from_dir" --theta 1 \
+    --shape "$adapted/square.dat" --mesh "$adapted/$name.nopo"
+  awk -v mesh="MESH file=$name.nopo" 'toupper($1) == "MESH" { print mesh; next } { print }' \
+    "$adapted/square.dat" >"$adapted/$name.dat"
+  mkdir -p "$adapted/$name"
+  logged "$adapted/$name.log" "$root/drivers/chain.sh" "$adapted/$name.dat" -o "$adapted/$name"
+  logged "$adapted/$name.log" "$bin/sig-estimate" "$adapted/$name.dat" -o "$adapted/$name"
+  from_dir=$adapted/$name from_deck=$adapted/$name.dat
+  progress_step "fig47/adapted/$name"
+done
+# The finest uniform mesh judged, by the same chain as the adaptive steps, for its wall clock.
+finest=${squares[-1]}
+mkdir -p "$adapted/uniform"
+t0=${EPOCHREALTIME/./}
+logged "$adapted/uniform.log" "$root/drivers/chain.sh" "$out/fig47/base_n$finest/square.dat" \
+  -o "$adapted/uniform"
+us=$((${EPOCHREALTIME/./} - t0))
+printf '%d.%06d\n' $((us / 1000000)) $((us % 1000000)) >"$adapted/uniform/chain_wall.txt"
+progress_step "fig47/adapted/uniform (n = $finest by chain.sh)"
+for ((k = 0; k < adapt_steps; k++)); do
+  [ ! -d "$adapted/step$k" ] || error_json "fig47/adapted/step$k" fig47/adapted/overkill2
+done
+error_json fig47/adapted/overkill1 fig47/adapted/overkill2
+run_stage estimate "$out/fig47/n$square_reference/square.dat" "$out/fig47/n$square_reference" ||
+  failed+=("$out/fig47/n$square_reference (sig-estimate)")
+for n in "${squares[@]}"; do
+  "$bin/sig-error" --json "$out/fig47/n$n" "$adapted/overkill2" \
+    >"$out/fig47/n$n/error_overkill.json" ||
+    {
+      failed+=("$out/fig47/n$n (sig-error against the overkill)")
+      rm -f "$out/fig47/n$n/error_overkill.json"
+    }
 done
 
 # The stability map of the loop: alpha x (a - b) x mesh; Nv or cycling runs again relaxed.

@@ -4,8 +4,14 @@
 # then the requirements on the results:
 #  - every check of the report passes (Fig 4.2's status pattern on every mesh, Fig 4.4's limits
 #    equal to the Signorini and pure compliance solves, Fig 4.6's difference falling with rho,
-#    Fig 4.7's rate 1 +- 0.15 on the square with rollers on Gamma1, ...), but Fig 4.7's rate with
-#    Gamma1 clamped, which the corner singularity holds at 0.6-0.9 (the report says why);
+#    Fig 4.7's rate 1 +- 0.15 on the square with rollers on Gamma1, ...); Fig 4.7's uniform rate
+#    with Gamma1 clamped is shown, not checked: the corner singularity holds it at 0.6-0.9;
+#  - Fig 4.7 adapted (issue 29), 5 steps of drivers/adapt.sh from n = 8 against the overkill (the
+#    last adapted mesh refined uniformly twice): the error falls with the dofs at slope
+#    0.5 +- 0.075 over steps 2-4, the effectivity is in [0.3, 3] on every mesh, both estimates
+#    of the references are below the errors they correct; the quick ladder's finest uniform mesh
+#    (n = 64) is too coarse for the fifth of the dofs and half the time (the full driver checks
+#    them), so those two checks may fail here;
 #  - scene.json (PROTOCOL.md 6) names files that exist, with the Fig 4.5 table as its key table;
 #  - the figure runs have a .pvd whose .vtu carries the statuses as point data;
 #  - every run's summary.json records the loop (outer count, inner counts per convex solve).
@@ -20,20 +26,38 @@ require_python matplotlib numpy
 quick_driver scene4
 
 "$python" - "$work/scene4" <<'EOF'
-import json, re, sys
+import json, sys
 from pathlib import Path
 
 from pipeline_checks import check, check_scene_index, finish
 
 out = Path(sys.argv[1])
-clamped = lambda c: "Gamma1 clamped" in c["name"]
-scene = check_scene_index(out, "4", 12, allowed=clamped)
-for check_ in filter(clamped, scene["checks"]):
-    # The rate of the clamped square is the corner singularity's, below 1 (the report explains
-    # it): measured, not a pass.
-    rate = float(re.search(r"ours ([0-9.]+)", check_["detail"]).group(1))
-    check(0.6 <= rate <= 0.9, f"Fig 4.7, Gamma1 clamped: rate {rate} in [0.6, 0.9], the "
-          "corner singularity's")
+# The quick ladder's finest uniform mesh is n = 64: the claims against it (a fifth of its dofs,
+# half its time) need the full ladder.
+against_finest = lambda c: "Fig 4.7 adapted" in c["name"] and (
+    "a fifth" in c["name"] or "half" in c["name"])
+scene = check_scene_index(out, "4", 13, allowed=against_finest)
+adapted = json.loads((out / "fig47_adapted.json").read_text())
+rate = adapted["uniform_rate_h"]
+check(0.6 <= rate <= 0.9, f"Fig 4.7, Gamma1 clamped, uniform: rate {rate:.3f} in [0.6, 0.9], the "
+      "corner singularity's (shown, not a report check)")
+slope = adapted["adapted_slope"]
+check(abs(slope - 0.5) <= 0.075, f"Fig 4.7 adapted: slope {slope:.3f} against dofs in 0.5 +- 0.075 "
+      f"over steps {adapted['fit_steps']}")
+check(len(adapted["steps"]) == 5 and all(0.3 <= e <= 3 for e in adapted["effectivity"]),
+      f"Fig 4.7 adapted: 5 steps, effectivities {[round(e, 2) for e in adapted['effectivity']]} "
+      "in [0.3, 3]")
+errors = [s["error"] for s in adapted["steps"]]
+check(all(a > b for a, b in zip(errors, errors[1:])) and
+      adapted["overkill_estimate"] < errors[-1] and adapted["overkill1_error"] < errors[-1],
+      f"Fig 4.7 adapted: errors {errors} fall, the overkill's own estimate "
+      f"{adapted['overkill_estimate']:.3g} and the once-refined's distance "
+      f"{adapted['overkill1_error']:.3g} below the last")
+check(all(s["solve_s"] > 0 and s["estimate_s"] > 0 and s["wall_s"] > 0 for s in adapted["steps"])
+      and all(s["refine_s"] > 0 for s in adapted["steps"][:-1]),
+      "Fig 4.7 adapted: every step's stage times recorded")
+check(any(c["name"].startswith("Fig 4.7 adapted") and "a fifth" in c["name"]
+          for c in scene["checks"]), "Fig 4.7 adapted: the fifth of the dofs is a report check")
 check(any("rollers" in c["name"] and c["pass"] is True for c in scene["checks"]),
       "Fig 4.7, Gamma1 on rollers: rate 1 +- 0.15")
 check("Fig 4.5" in scene["key_table"]["caption"] and len(scene["key_table"]["rows"]) == 2,
