@@ -80,6 +80,7 @@ from pathlib import Path
 
 import numpy as np
 
+from hertz3d_report import hertz  # Hertz's a, p0 and approach, as our report takes them
 from getfem_common import (getfem_version, gmsh_mesh, import_gmsh, isotropic_elasticity,
                            parse_timed_args, print_summary, timed_solves, tributary_areas)
 
@@ -130,16 +131,6 @@ def parse_args():
     if args.tangential is not None and not 0 < args.tangential < args.mu * args.P:
         fail(f"--tangential Q needs 0 < Q < mu P = {args.mu * args.P:g} (set --mu)")
     return args
-
-
-def hertz(P, R, E, nu):
-    """Hertz's sphere on a rigid plane: E*, a, p0, approach."""
-    E_star = E / (1 - nu**2)
-    a = (3 * P * R / (4 * E_star)) ** (1 / 3)
-    p0 = 3 * P / (2 * math.pi * a**2)
-    # the mean of p0 sqrt(1 - r^2 / a^2) over r < a / 2: p0 (8 / 3) (1 - (3 / 4)^(3 / 2))
-    return {"E_star": E_star, "a": a, "p0": p0, "approach": a**2 / R,
-            "p_mean_centre": p0 * 8 / 3 * (1 - 0.75**1.5)}
 
 
 def load_mesh(args):

@@ -46,9 +46,11 @@ WEDGE = math.radians(10)    # the nodes of a radius: within 10 degrees of the ax
 
 
 def hertz(P, R, E, nu):
+    """Hertz's sphere on a rigid plane: E*, a, p0, approach (getfem_hertz3d.py takes it too)."""
     E_star = E / (1 - nu**2)
     a = (3 * P * R / (4 * E_star)) ** (1 / 3)
     p0 = 3 * P / (2 * math.pi * a**2)
+    # the mean of p0 sqrt(1 - r^2 / a^2) over r < a / 2: p0 (8 / 3) (1 - (3 / 4)^(3 / 2))
     return {"E_star": E_star, "a": a, "p0": p0, "approach": a**2 / R,
             "p_mean_centre": p0 * 8 / 3 * (1 - 0.75**1.5)}
 
