@@ -3,7 +3,7 @@
 friction, and Cattaneo-Mindlin's tangential step; the GetFEM side of the 3D comparisons.
 
     /usr/bin/python3 postproc/getfem_hertz3d.py [--msh FILE | --h H --grading G] [--R R] [--E E]
-        [--nu NU] [--P P | --pressure p] [--clamp-top] [--mu MU] [--tangential Q] [--eps EPS]
+        [--nu NU] [--P P | --pressure p] [--clamp-top [--top-shift DX] [--top-drop DZ]] [--mu MU] [--tangential Q] [--eps EPS]
         [--version V] [--repeat K] [--json FILE] [--workdir DIR]
 
 What is solved:
@@ -35,9 +35,15 @@ What is solved:
     moment Q R of the tangential load about the contact (a weak clamp of the top face against
     rotation, as a test machine's crosshead): without them the moment would tilt the ball and
     shift the contact patch by Q R / P, more than a, which is not Cattaneo-Mindlin's problem;
-    --clamp-top (frictionless only) replaces these rows by u_x = u_y = 0 at every node of the top
-    face (nodal Dirichlet rows through multipliers, exact), the holds of our decks' DIRICHLET ref=2
-    ux=0 uy=0: the tilts and the vertical translation are then held by the contact alone;
+    --clamp-top replaces these rows by u_x = u_y = 0 at every node of the top face (nodal
+    Dirichlet rows through multipliers, exact), the holds of our decks' DIRICHLET ref=2 ux=0 uy=0:
+    the tilts and the vertical translation are then held by the contact alone; with friction the
+    clamp carries the tangential reaction, and --top-shift DX prescribes u_x = DX there instead
+    (DIRICHLET ref=2 ux=DX uy=0); a shift alone rolls the ball about its contact (the tilts are
+    free), so --top-drop DZ also prescribes u_z = -DZ there (DIRICHLET ref=2 ux=DX uy=0 uz=-DZ: the
+    top clamped and moved, the load then a displacement; the pressure, on held dofs, goes into the
+    reactions), the top dragged sideways and down so that the contact sticks at its centre and
+    slips at its rim;
   - the start: the rigid shift u = (0, 0, -a_H^2 / (4 R)) (a_H Hertz's radius), which pushes the
     nodes within a_H / sqrt(2) of the axis into the plane: from u = 0 one node touches and the
     first tangent is singular (as in getfem_hertz.py);
@@ -113,6 +119,10 @@ def parse_args():
                         help="the top face's pressure p instead of P / |top| (then P = p |top|)")
     parser.add_argument("--clamp-top", action="store_true",
                         help="u_x = u_y = 0 at the top face's nodes instead of the weak rigid-motion rows")
+    parser.add_argument("--top-shift", type=float, default=0.0, metavar="DX",
+                        help="with --clamp-top: u_x = DX at the top face's nodes (default 0)")
+    parser.add_argument("--top-drop", type=float, metavar="DZ",
+                        help="with --clamp-top: also u_z = -DZ at the top face's nodes")
     parser.add_argument("--mu", type=float, default=0.0, help="Coulomb coefficient (default 0: frictionless)")
     parser.add_argument("--tangential", type=float, metavar="Q", help="second step: tangential load Q < mu P")
     parser.add_argument("--eps", type=float, default=1e-8, help="GetFEM's max_res (default 1e-8)")
@@ -126,8 +136,10 @@ def parse_args():
         fail("need mu >= 0, P > 0, R > 0, E > 0, 0 <= nu < 0.5")
     if args.pressure is not None and not args.pressure > 0:
         fail(f"--pressure p needs p > 0, got {args.pressure:g}")
-    if args.clamp_top and args.mu > 0:
-        fail("--clamp-top is frictionless only (the clamp would carry the tangential load)")
+    if (args.top_shift != 0 or args.top_drop is not None) and not args.clamp_top:
+        fail("--top-shift and --top-drop need --clamp-top")
+    if args.clamp_top and args.tangential is not None:
+        fail("--tangential needs the weak rigid-motion rows, not --clamp-top (the clamp would carry Q)")
     if args.tangential is not None and not 0 < args.tangential < args.mu * args.P:
         fail(f"--tangential Q needs 0 < Q < mu P = {args.mu * args.P:g} (set --mu)")
     return args
@@ -178,16 +190,17 @@ def add_rigid_constraints(md, mim, mfu, names):
     md.add_constraint_with_multipliers("u", "rigid", B, np.zeros(len(names)))
 
 
-def clamp_top(md, mfu):
-    """u_x = u_y = 0 at every node of the top face: one row per dof through the multiplier
-    variable "clamp" (its values are the nodal reactions)."""
+def clamp_top(md, mfu, shift, drop):
+    """u_x = shift, u_y = 0 (and u_z = -drop unless drop is None) at every node of the top face:
+    one row per dof through the multiplier variable "clamp" (its values are the nodal reactions)."""
     dofs = np.sort(mfu.basic_dof_on_region(TOP))
-    held = [int(d) for k, d in enumerate(dofs) if k % 3 != 2]  # qdim 3: x, y, z per node
+    value = (shift, 0.0, None if drop is None else -drop)  # x, y, z per node
+    held = [(int(d), value[k % 3]) for k, d in enumerate(dofs) if value[k % 3] is not None]
     B = gf.Spmat("empty", len(held), mfu.nbdof())
-    for row, dof in enumerate(held):
+    for row, (dof, _) in enumerate(held):
         B[row, dof] = 1.0
     md.add_variable("clamp", len(held))
-    md.add_constraint_with_multipliers("u", "clamp", B, np.zeros(len(held)))
+    md.add_constraint_with_multipliers("u", "clamp", B, np.array([v for _, v in held]))
 
 
 def contact_nodes(mfu, mim):
@@ -301,12 +314,14 @@ def compare(m, H, P, Q, mu):
     return out
 
 
-def node_table(N, T, xyz, weights, status, m):
-    """Per contact node: GetFEM point id, coordinates, tributary area, N, T, status."""
+def node_table(N, T, xyz, weights, status, m, u):
+    """Per contact node: GetFEM point id, coordinates, tributary area, N, T, displacement (3 x n),
+    status."""
     ids = np.atleast_1d(m.pid_from_coords(xyz, 1e-10)).astype(int)
     return [{"id": int(ids[i]), "x": float(xyz[0, i]), "y": float(xyz[1, i]), "z": float(xyz[2, i]),
              "area": float(weights[i]), "normal_force": float(N[i]),
              "tangential_force": [float(T[0, i]), float(T[1, i]), float(T[2, i])],
+             "u": [float(u[0, i]), float(u[1, i]), float(u[2, i])],
              "status": str(status[i])} for i in range(len(N))]
 
 
@@ -324,7 +339,8 @@ def measure(md, mfu, mesh, nodes, args, H, Q):
     m["rigid_reactions"] = ([] if args.clamp_top else
                             [float(v) for v in np.atleast_1d(md.variable("rigid"))])
     m["hertz"] = compare(m, H, args.P, Q, args.mu)
-    m["nodes"] = node_table(N, T, xyz, weights, status, mesh)
+    m["nodes"] = node_table(N, T, xyz, weights, status, mesh,
+                            np.stack([u[xdofs + k] for k in range(3)]))
     return m
 
 
@@ -341,7 +357,7 @@ def main():
     add_loads(md, mim, pressure)
     if args.clamp_top:
         rows = []
-        clamp_top(md, mfu)
+        clamp_top(md, mfu, args.top_shift, args.top_drop)
         holds = ["clamp"]
     else:
         rows = ["twist", "tilt_x", "tilt_y"] + (["mean_x", "mean_y"] if args.mu == 0 else [])
@@ -366,9 +382,10 @@ def main():
                         f"nu = {args.nu:g}, pressure {pressure:.10g} on the top face, total P = {args.P:g}, "
                         f"nodal contact brick with z >= 0 version {args.version}, r = E, mu = {args.mu:g}, "
                         f"max_res {args.eps:g}, lsolver auto, start u_z = -a^2/(4R), "
-                        + ("top face's nodes held in x and y" if args.clamp_top
+                        + (f"top face's nodes held at u_x = {args.top_shift:g}, u_y = 0"
+                           + ("" if args.top_drop is None else f", u_z = {-args.top_drop:g}") if args.clamp_top
                            else f"top-face constraints {rows}")),
-        "pressure": pressure, "clamp_top": args.clamp_top,
+        "pressure": pressure, "clamp_top": args.clamp_top, "top_shift": args.top_shift, "top_drop": args.top_drop,
         "R": args.R, "E": args.E, "nu": args.nu, "P": args.P, "mu": args.mu, "Q": args.tangential,
         "mesh": mesh_text, "dofs": int(mfu.nbdof()), "points": int(mesh.nbpts()),
         "tetrahedra": int(mesh.nbcvs()), "contact_candidates": len(nodes[0]),

@@ -242,6 +242,41 @@ TEST(Mumps, OrdersWithAmdBelowTwoHundredThousandUnknowns) {
   EXPECT_NE(solver.ordering(), "");
 }
 
+// Rows denser than a 2D P1 mesh's (a 3D P1 row has about 45 entries) take MUMPS's automatic
+// choice at any size: AMD's fill on a 3D mesh made the factorization of the 158k-unknown half ball
+// 5x slower (mumps_solver.cpp). Here a 3D-like matrix of 1536 unknowns: the 27-point stencil of an
+// 8 x 8 x 8 grid (diagonally dominant) times a 3 x 3 SPD block, 81 entries per inner row.
+TEST(Mumps, OrdersDenseRowsWithNestedDissectionAtAnySize) {
+  const int m = 8, n = m * m * m;
+  const Eigen::Matrix3d B = (Eigen::Matrix3d() << 2, 1, 0, 1, 2, 1, 0, 1, 2).finished();
+  std::vector<Eigen::Triplet<double>> t;
+  const auto at = [m](int i, int j, int k) { return (i * m + j) * m + k; };
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k)
+        for (int di = -1; di <= 1; ++di)
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int dk = -1; dk <= 1; ++dk) {
+              const int I = i + di, J = j + dj, K = k + dk;
+              if (I < 0 || J < 0 || K < 0 || I >= m || J >= m || K >= m) continue;
+              const double v = (di == 0 && dj == 0 && dk == 0) ? 27.0 : -1.0;
+              for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b)
+                  if (B(a, b) != 0)
+                    t.emplace_back(3 * at(i, j, k) + a, 3 * at(I, J, K) + b, v * B(a, b));
+            }
+  Eigen::SparseMatrix<double> A(3 * n, 3 * n);
+  A.setFromTriplets(t.begin(), t.end());
+  ASSERT_GT(double(A.nonZeros()) / double(A.rows()), 30.0);
+  MumpsSolver solver(MatrixKind::spd);
+  solver.analyze(A);
+  EXPECT_NE(solver.ordering(), "amd");
+  EXPECT_NE(solver.ordering(), "");
+  const Eigen::VectorXd x = test::manufactured(3 * n);
+  solver.factorize(A);
+  EXPECT_LE((solver.solve(Eigen::VectorXd(A * x)) - x).norm(), 1e-10 * x.norm());
+}
+
 // An uncompressed matrix (room left in its columns) refills MUMPS's values from its compressed
 // copy: the same solution as the compressed matrix, before and after a change of values.
 TEST(Mumps, UncompressedMatrixSolvesAsItsCompressedCopy) {

@@ -1,0 +1,113 @@
+#!/usr/bin/env bash
+# Requirement (issue 26, "Against GetFEM 3D", with friction): on the same tetrahedral mesh of the
+# half ball (R = 8, E = 150, nu = 0.3, 3672 dofs), with the same holds and the same Coulomb law
+# (mu = 0.3), our 3D frictional contact solve (pdas and alm) and GetFEM 5.4's nodal
+# contact brick with friction give the same discrete solution: every contact node's normal and
+# tangential nodal forces to 1e-6 of the largest normal force, the same statuses (free, stick,
+# slip; nodes within 1e-8 of the stick/slip threshold exempt), both stopped at 1e-10 (ours:
+# relative increment and residual; GetFEM: max_res relative to its source terms).
+# The holds: the flat top clamped and moved by (0.02, 0, -0.07) (our DIRICHLET ref=2 ux=0.02 uy=0
+# uz=-0.07; postproc/getfem_hertz3d.py --clamp-top --top-shift 0.02 --top-drop 0.07): the top
+# dragged sideways and down, so that the contact (78 nodes) sticks at its centre (27) and slips at
+# its rim (51); a shift alone would roll the ball about its contact. The pressure p on the top
+# (on held dofs: it goes into the reactions) is on both sides. Ours starts from rest, GetFEM
+# from its rigid shift u_z = -a^2 / (4 R) (the discrete solution does not depend on it).
+# Conventions (datafiles/scene3d/GETFEM.md): GetFEM's multipliers are nodal forces, ours too
+# (contact.csv's multiplier and tangential_force_1..3); GetFEM's lambda_t is the force of the
+# plane on the body, ours the force of the body on the plane (along the slip): compared with
+# opposite signs. GetFEM's status (its solution has none): slip where the slip |u_t| / its largest
+# exceeds the cone's margin (mu N - |T|) / max N, stick otherwise; the threshold is where both
+# vanish, so a node with their sum below 1e-8 is exempt.
+# Tresca: GetFEM 5.4's Python nodal and basic contact bricks take a friction coefficient, no
+# threshold (its C++ Tresca_version is not in the interface): Coulomb only.
+# Skips without GetFEM (python3-getfem) or gmsh.
+set -euo pipefail
+source "$(dirname "$0")/lib/common.sh"
+require_command gmsh "the half ball is meshed by gmsh"
+/usr/bin/python3 -c 'import getfem' 2>/dev/null || skip "/usr/bin/python3 cannot import getfem"
+require_stages mesh material contact assemble solve post
+
+mesh=$work/half_ball.msh
+gmsh "$root/meshes/half_ball.geo" -3 -format msh22 -setnumber R 8 -setnumber h 0.08 \
+  -setnumber grading 0.2 -o "$mesh" >"$work/gmsh.log" 2>&1 || die "gmsh failed: $(tail -3 "$work/gmsh.log")"
+p=0.0696302876
+mu=0.3
+
+/usr/bin/python3 "$root/postproc/getfem_hertz3d.py" --msh "$mesh" --clamp-top --top-shift 0.02 \
+  --top-drop 0.07 --pressure $p --mu $mu --eps 1e-10 --repeat 1 --json "$work/getfem.json" \
+  >"$work/getfem.log" 2>&1 || die "postproc/getfem_hertz3d.py failed: $(tail -3 "$work/getfem.log")"
+
+for method in pdas alm; do
+  cat >"$work/$method.dat" <<DECK
+# The half ball of postproc/getfem_hertz3d.py (R = 8, E = 150, nu = 0.3, GPa-m), its top clamped
+# and moved by (0.02, 0, -0.07), on the plane x3 = 0 with Coulomb friction mu = $mu.
+TITLE half ball against GetFEM, Coulomb
+MESH file=$mesh
+MATERIAL law=hooke E=150 nu=0.3
+DIRICHLET ref=2 ux=0.02 uy=0 uz=-0.07
+TRACTION ref=2 f=0,0,-$p
+CONTACT ref=3 obstacle=plane point=0,0,0 normal=0,0,1 law=signorini exclude=2
+FRICTION ref=3 law=coulomb mu=$mu
+SOLVER method=$method eps=1e-10
+OUTPUT vtk=no
+DECK
+  "$root/drivers/chain.sh" "$work/$method.dat" -o "$work/$method" >"$work/$method.log" 2>&1 ||
+    { tail -20 "$work/$method.log"; die "drivers/chain.sh ($method) failed"; }
+
+  checks=$((checks + 1))
+  "$python" - "$work/$method/contact.csv" "$work/getfem.json" $mu "$method" <<'PY' || fail "ours ($method) against GetFEM"
+import csv, json, math, sys
+ours = list(csv.DictReader(open(sys.argv[1])))
+g = json.load(open(sys.argv[2]))
+mu, method = float(sys.argv[3]), sys.argv[4]
+if not g["converged"]:
+    sys.exit("GetFEM did not converge")
+key = lambda x, y, z: (round(x, 9), round(y, 9), round(z, 9))
+theirs = {key(n["x"], n["y"], n["z"]): n for n in g["steps"][0]["nodes"]}
+largest = max(n["normal_force"] for n in theirs.values())
+in_contact = [n for n in theirs.values() if n["normal_force"] > 1e-9 * largest]
+slip_scale = max(math.hypot(*n["u"][:2]) for n in in_contact)
+problems, worst_n, worst_t, matched, differ, exempt, counts = [], 0.0, 0.0, 0, 0, 0, {}
+for r in ours:
+    if r["converged"] != "1":
+        problems.append("ours did not converge")
+        break
+    n = theirs.get(key(float(r["x1"]), float(r["x2"]), float(r["x3"])))
+    if n is None:
+        problems.append(f"node {r['node']} ({r['x1']}, {r['x2']}, {r['x3']}) not in GetFEM's table")
+        continue
+    matched += 1
+    N, T = n["normal_force"], n["tangential_force"]
+    worst_n = max(worst_n, abs(float(r["multiplier"]) - N))
+    worst_t = max(worst_t, math.dist([float(r[f"tangential_force_{k}"]) for k in (1, 2, 3)], [-t for t in T]))
+    contact = N > 1e-9 * largest
+    margin = (mu * N - math.hypot(*T)) / largest
+    slip = math.hypot(*n["u"][:2]) / slip_scale
+    status = "-" if not contact else ("S+" if slip > margin else "S=")
+    near = abs(N - 1e-9 * largest) < 1e-8 * largest or (contact and margin + slip < 1e-8)
+    counts[status] = counts.get(status, 0) + 1
+    mine = r["friction_status"] if r["status"] == "contact" else "-"
+    if mine != status:
+        if near:
+            exempt += 1
+        else:
+            differ += 1
+            problems.append(f"node {r['node']}: ours {mine}, GetFEM {status} (margin {margin:.3g}, slip {slip:.3g})")
+rim = sum(1 for k in theirs if abs(k[2] - 8) < 1e-9)  # on the top: exclude=2
+if matched < len(theirs) - rim:
+    problems.append(f"{matched} of GetFEM's {len(theirs) - rim} nodes matched")
+if counts.get("S=", 0) == 0 or counts.get("S+", 0) == 0:
+    problems.append(f"the case needs both stick and slip: {counts}")
+for name, worst in (("normal", worst_n), ("tangential", worst_t)):
+    if worst > 1e-6 * largest:
+        problems.append(f"{name} nodal forces differ by {worst:.3g} ({worst / largest:.2g} of the largest)")
+for p in problems:
+    print(p)
+print(f"{method} against GetFEM (mu = {mu:g}): {matched} nodes (free {counts.get('-', 0)}, stick "
+      f"{counts.get('S=', 0)}, slip {counts.get('S+', 0)}), normal forces within {worst_n / largest:.2g}, "
+      f"tangential within {worst_t / largest:.2g} of the largest ({largest:.4g}), {differ} statuses "
+      f"differ, {exempt} exempt")
+sys.exit(1 if problems else 0)
+PY
+done
+finish "the frictional 3D solve is GetFEM's on the same mesh"
