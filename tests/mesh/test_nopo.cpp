@@ -308,10 +308,30 @@ TEST(Nopo, DamagedFilesAreRejectedWithAMessage) {
   testing::spit(path, wrong_ne);
   EXPECT_NE(error_of(path).find("NOP5"), std::string::npos);
 
+  std::string huge_ne = bytes; // NE = 2^60: refused before a vector is reserved for it
+  const std::uint64_t huge = std::uint64_t{1} << 60;
+  std::memcpy(huge_ne.data() + 424 + 4 * 8, &huge, 8);
+  testing::spit(path, huge_ne);
+  EXPECT_NE(error_of(path).find("NE = 1152921504606846976 elements cannot fit in NOP5"),
+            std::string::npos);
+
   std::string wrong_type = bytes; // NOP0 word 29 'NOPO' -> 'XOPO'
   wrong_type[368] = 'X';
   testing::spit(path, wrong_type);
   EXPECT_NE(error_of(path).find("'NOPO'"), std::string::npos);
+}
+
+// A NOPO not stamped by sig-mesh (FreeFem's, MODULEF's, one edited by hand) has its geometry
+// checked on every read: only our own, unchanged since check_mesh passed it in write_nopo, is not.
+TEST(Nopo, AnUnstampedFileWithADegenerateTriangleIsRefused) {
+  const ScratchFolder dir;
+  std::string bytes = slurp(shared_nopo("square3.nopo"));
+  const auto path = dir / "moved.nopo";
+  // square3.nopo: NOP4's 32 four-byte reals after its count word at 656; node 1 put on node 2.
+  std::memcpy(bytes.data() + 664, bytes.data() + 672, 8);
+  testing::spit(path, bytes);
+  const std::string error = error_of(path);
+  EXPECT_NE(error.find("degenerate"), std::string::npos) << error;
 }
 
 // A count word near 2^61 times the word size wraps to the record's true size: the fuzzer found

@@ -56,5 +56,44 @@ TEST(Vtk3d, TetrahedraWithTheirStressTensor) {
   EXPECT_NEAR(grid->GetCellData()->GetArray("von_mises")->GetComponent(0, 0), 2 * mu * 0.01, 1e-12);
 }
 
+// A contact node's tangential traction and slip in 3D are vectors of the tangent plane: written
+// as 3-component point fields (per unit area, global axes) beside their magnitudes.
+TEST(Vtk3d, ContactNodesCarryTheirTangentialTractionAndSlipAsVectors) {
+  const Mesh mesh = read_gmsh(std::filesystem::path(SIG_SOURCE_DIR) / "tests" / "fuzz" / "corpus" /
+                              "gmsh" / "box_v41_ascii.msh");
+  MaterialTable materials;
+  SubdomainMaterial steel;
+  steel.subdomain = 1;
+  steel.hooke.E = 200;
+  steel.hooke.nu = 0.25;
+  materials.entries.push_back(steel);
+  ContactRow row;
+  row.dim = 3;
+  row.node = 2;
+  row.weight = 0.5;
+  row.tangential_force = {0.3, -0.4, 0.0};
+  row.tangential_multiplier = 0.5;
+  row.tangential_pressure = 1.0;
+  row.slip_vector = {1e-3, 2e-3, 0.0};
+  const std::vector<double> u(3 * mesh.num_nodes(), 0.0);
+  const SolutionFields fields = solution_fields_3d(mesh, u, materials, {row});
+  const testing::ScratchFolder scratch;
+  const auto path = scratch.path() / "box_0000.vtu";
+  write_vtu(path, mesh, fields.point, fields.cell, {{"title", "a cube"}});
+
+  const auto grid = test::read_vtu(path);
+  vtkDataArray* traction = grid->GetPointData()->GetArray("tangential_traction");
+  vtkDataArray* slip = grid->GetPointData()->GetArray("slip");
+  ASSERT_NE(traction, nullptr);
+  ASSERT_NE(slip, nullptr);
+  ASSERT_EQ(traction->GetNumberOfComponents(), 3);
+  ASSERT_EQ(slip->GetNumberOfComponents(), 3);
+  EXPECT_DOUBLE_EQ(traction->GetComponent(1, 0), 0.6);
+  EXPECT_DOUBLE_EQ(traction->GetComponent(1, 1), -0.8);
+  EXPECT_DOUBLE_EQ(slip->GetComponent(1, 1), 2e-3);
+  EXPECT_EQ(traction->GetComponent(0, 0), 0.0); // not a contact node
+  EXPECT_DOUBLE_EQ(grid->GetPointData()->GetArray("tangential_pressure")->GetComponent(1, 0), 1.0);
+}
+
 } // namespace
 } // namespace sig

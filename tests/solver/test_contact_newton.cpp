@@ -8,6 +8,7 @@
 // everywhere and a zero one slips everywhere, compliance-unilateral is compliance for a deep wall
 // and Signorini for g = 0.
 #include "core/error.hpp"
+#include "frictional_problem.hpp"
 #include "solver/condensed_contact.hpp"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,10 @@
 
 namespace sig {
 namespace {
+
+using test::coulomb;
+using test::Frictional;
+using test::tresca;
 
 // --- A frictionless bar, the LCP reference ----------------------------------------------------
 
@@ -197,34 +202,9 @@ TEST(ContactMethods, UnknownMethodIsAnError) {
 /// m contact nodes with (w_t, w_n) each, a dense SPD S coupling all of them, a load pressing
 /// them onto the obstacle and pushing them along +t (so that some stick and some slip), gaps
 /// from 0 (touching) to out of reach.
-struct Frictional {
-  CondensedProblem problem;
-  ContactSetting setting;
-};
-
 Frictional frictional_problem(const ContactLaw& law, int m = 9) {
-  Frictional fr;
-  CondensedProblem& p = fr.problem;
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  const int n = 2 * m;
-  Eigen::MatrixXd A(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      A(i, j) = uniform(random);
-  p.S = 0.2 * A * A.transpose() + 2.0 * Eigen::MatrixXd::Identity(n, n);
-  p.f.resize(n);
-  p.gap.resize(m);
-  for (int q = 0; q < m; ++q) {
-    p.tangential_dof.push_back(2 * q);
-    p.normal_dof.push_back(2 * q + 1);
-    p.f[2 * q] = 0.6 + 0.5 * uniform(random);
-    p.f[2 * q + 1] = 1.5 + 0.5 * uniform(random);
-    p.gap[q] = q % 4 == 3 ? 5.0 : 0.05 * (q % 4);
-  }
-  fr.setting.weight = Eigen::VectorXd::LinSpaced(m, 0.6, 1.4);
-  fr.setting.law.assign(m, law);
-  return fr;
+  return test::random_frictional_problem(
+      2, m, 7, law, [](int c, double u) { return c == 0 ? 0.6 + 0.5 * u : 1.5 + 0.5 * u; });
 }
 
 /// The local problem of node q given the others' forces: find mu = (T, N) with q = c - W mu
@@ -291,20 +271,6 @@ Eigen::MatrixXd gauss_seidel_reference(const Frictional& fr) {
   for (int q = 0; q < m; ++q)
     forces.row(q) = mu.segment<2>(2 * q).transpose();
   return forces;
-}
-
-ContactLaw coulomb(double mu) {
-  ContactLaw law;
-  law.friction = FrictionLaw::coulomb;
-  law.mu = mu;
-  return law;
-}
-
-ContactLaw tresca(double threshold) {
-  ContactLaw law;
-  law.friction = FrictionLaw::tresca;
-  law.threshold = threshold;
-  return law;
 }
 
 class FrictionMethods : public ::testing::TestWithParam<const char*> {};

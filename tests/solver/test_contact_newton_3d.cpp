@@ -8,6 +8,7 @@
 //  - a converged 3D solve obeys the cone at every node: N >= 0 on the wall, |T| <= s, T = s e
 //    along the slip where the node slips, no slip where it sticks, and the equilibrium.
 #include "contact/contact_kernel.hpp"
+#include "frictional_problem.hpp"
 #include "solver/condensed_contact.hpp"
 
 #include <gtest/gtest.h>
@@ -20,19 +21,9 @@
 namespace sig {
 namespace {
 
-ContactLaw coulomb(double mu) {
-  ContactLaw law;
-  law.friction = FrictionLaw::coulomb;
-  law.mu = mu;
-  return law;
-}
-
-ContactLaw tresca(double threshold) {
-  ContactLaw law;
-  law.friction = FrictionLaw::tresca;
-  law.threshold = threshold;
-  return law;
-}
+using test::coulomb;
+using test::Frictional;
+using test::tresca;
 
 ContactSolverParameters parameters_for(const std::string& method) {
   ContactSolverParameters parameters;
@@ -48,39 +39,13 @@ ContactSolverParameters parameters_for(const std::string& method) {
   return parameters;
 }
 
-struct Frictional {
-  CondensedProblem problem;
-  ContactSetting setting;
-};
-
 /// m contact nodes with (w_t1, w_t2, w_n) each (d unknowns), a dense SPD S coupling all of them,
 /// a load pressing them onto the obstacle and pushing them along an oblique direction of the
 /// tangent plane (so that some stick and some slip), gaps from 0 (touching) to out of reach.
 Frictional frictional_problem_3d(const ContactLaw& law, int m = 9, double push = 0.5) {
-  Frictional fr;
-  CondensedProblem& p = fr.problem;
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  const int n = 3 * m;
-  Eigen::MatrixXd A(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      A(i, j) = uniform(random);
-  p.S = 0.2 * A * A.transpose() + 2.0 * Eigen::MatrixXd::Identity(n, n);
-  p.f.resize(n);
-  p.gap.resize(m);
-  for (int q = 0; q < m; ++q) {
-    p.tangential_dof.push_back(3 * q);
-    p.tangential_dof.push_back(3 * q + 1);
-    p.normal_dof.push_back(3 * q + 2);
-    p.f[3 * q] = push * (1 + 0.8 * uniform(random));
-    p.f[3 * q + 1] = push * (0.6 + 0.8 * uniform(random));
-    p.f[3 * q + 2] = 1.5 + 0.5 * uniform(random);
-    p.gap[q] = q % 4 == 3 ? 5.0 : 0.05 * (q % 4);
-  }
-  fr.setting.weight = Eigen::VectorXd::LinSpaced(m, 0.6, 1.4);
-  fr.setting.law.assign(m, law);
-  return fr;
+  return test::random_frictional_problem(3, m, 11, law, [push](int c, double u) {
+    return c == 0 ? push * (1 + 0.8 * u) : c == 1 ? push * (0.6 + 0.8 * u) : 1.5 + 0.5 * u;
+  });
 }
 
 /// One generalized Newton step on X = (w, lambda, t) (nodal-force multipliers, t two per node)

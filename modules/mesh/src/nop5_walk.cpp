@@ -153,6 +153,11 @@ Mesh walk_nop5(const std::vector<std::int64_t>& nop5, const std::array<std::int6
                std::vector<double> coordinates, const std::string& file) {
   const int np = static_cast<int>(nop2[word::NP]);
   const int ndim = static_cast<int>(nop2[word::NDIM]);
+  // An element takes at least 7 words of NOP5 (4 of header, 3 vertices): a larger NE is damage,
+  // refused before anything is reserved for it.
+  SIG_VERIFY(nop2[word::NE] <= static_cast<std::int64_t>(nop5.size() / 7),
+             file << ": NOP2: NE = " << nop2[word::NE] << " elements cannot fit in NOP5's "
+                  << nop5.size() << " words (at least 7 per element)");
   MeshBuilder build(std::move(coordinates), np, ndim, nop2[word::NE]);
   std::size_t k = 0;
   std::int64_t triangles = 0, quadrilaterals = 0, tetrahedra = 0, edge_refs_dropped = 0;

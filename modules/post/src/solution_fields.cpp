@@ -24,6 +24,21 @@ void add_contact_fields(SolutionFields& f, std::size_t n, const std::vector<Cont
   }
   for (VtkField* field : {&pressure, &status, &normal, &friction, &tangential})
     f.point.push_back(std::move(*field));
+  if (contact.front().dim != 3) return;
+  // 3D: the tangential traction and the slip turn in the tangent plane; their vectors in global
+  // axes (the scalars above are their magnitudes) for ParaView's glyphs. The traction is the
+  // body's on the obstacle, as contact.csv's tangential_force_1..3, per unit area.
+  VtkField traction{"tangential_traction", 3, std::vector<double>(3 * n, 0.0)};
+  VtkField slip{"slip", 3, std::vector<double>(3 * n, 0.0)};
+  for (const auto& row : contact) {
+    const std::size_t i = row.node - 1;
+    for (std::size_t c = 0; c < 3; ++c) {
+      traction.values[3 * i + c] = row.tangential_force[c] / row.weight;
+      slip.values[3 * i + c] = row.slip_vector[c];
+    }
+  }
+  f.point.push_back(std::move(traction));
+  f.point.push_back(std::move(slip));
 }
 
 SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,

@@ -336,11 +336,13 @@ void Driver<d>::tangential_conditions_3d(int p, const Kernel& k, const Tan& q_t,
   } else {
     const Block A = rows.template middleCols<d - 1>(Col::t);
     const Block I_A = Block::Identity() - A;
-    // |z| = s makes I - A singular: only on a held slip branch where the node sits on the
-    // disc's edge; the step then treats the direction as fixed (M = I), as in 2D.
-    const Block M = std::abs(I_A.determinant()) > 1e-12 ? Block(I_A.inverse()) : Block::Identity();
+    // det(I - A) = 1 - s / |z|: singular with z on the disc's edge (a held slip branch, or a
+    // node that reaches the edge exactly); the step then treats the direction as fixed, as in
+    // 2D: T = s e, M = I and no stiffness in the slip.
+    const bool fixed_direction = std::abs(I_A.determinant()) <= 1e-12;
+    const Block M = fixed_direction ? Block::Identity() : Block(I_A.inverse());
     const Tan x_t = t / w; // the multiplier as a pressure, as the kernel's
-    stiffness = w * M * B;
+    stiffness = fixed_direction ? Block::Zero() : Block(w * M * B);
     force = w * (Block::Identity() - M) * x_t;
     if (k.bound_slope != 0 && c.normal.imposed) {
       coupling = k.slip * k.bound_slope;

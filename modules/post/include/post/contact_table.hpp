@@ -31,7 +31,7 @@ struct ContactRow {
   double tangential_multiplier = 0; ///< nodal tangential force T
   double tangential_pressure = 0;   ///< T / weight
   double slip = 0;                  ///< u_t = t . u (3D: |u_t|, u_t = u - (n . u) n)
-  /// 3D: u_t and the tangential force T t1 in global axes (the solve's T lies along t1)
+  /// 3D: u_t and the tangential force T1 t1 + T2 t2 in global axes
   std::array<double, 3> slip_vector{}, tangential_force{};
 };
 

@@ -29,7 +29,8 @@ SolutionFields solution_fields_3d(const Mesh& mesh, const std::vector<double>& u
                                   const std::vector<ContactRow>& contact = {});
 
 /// The contact fields at the n nodes (contact_pressure, contact_status, normal_status,
-/// friction_status, tangential_pressure; 0 off Gamma3), none when `contact` is empty.
+/// friction_status, tangential_pressure; in 3D also the vectors tangential_traction and slip;
+/// 0 off Gamma3), none when `contact` is empty.
 void add_contact_fields(SolutionFields& f, std::size_t n, const std::vector<ContactRow>& contact);
 
 /// The stored energy sum over the tetrahedra of |T| eps.D.eps / 2 of a 3D state.

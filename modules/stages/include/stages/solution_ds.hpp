@@ -15,7 +15,8 @@ namespace sig {
 
 class Ds;
 
-/// The contact state per element: multiplier (normal nodal force), tangential_multiplier,
+/// The contact state per element: multiplier (normal nodal force), tangential_multiplier (m x 2
+/// in 3D with friction: the force along the node's two tangents),
 /// normal_status and friction_status (codes of contact/contact_status.hpp) and status (1 where
 /// the normal status is not free, 0 elsewhere: the frictionless code, kept for old readers).
 void put_contact_state(Ds& ds, const Eigen::VectorXd& normal, const Eigen::VectorXd& tangential,
