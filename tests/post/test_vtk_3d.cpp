@@ -19,15 +19,26 @@
 namespace sig {
 namespace {
 
-TEST(Vtk3d, TetrahedraWithTheirStressTensor) {
-  const Mesh mesh = read_gmsh(std::filesystem::path(SIG_SOURCE_DIR) / "tests" / "fuzz" / "corpus" /
-                              "gmsh" / "box_v41_ascii.msh");
+/// The unit cube of the gmsh fuzz corpus, tetrahedra of sub-domain 1.
+Mesh box() {
+  return read_gmsh(std::filesystem::path(SIG_SOURCE_DIR) / "tests" / "fuzz" / "corpus" / "gmsh" /
+                   "box_v41_ascii.msh");
+}
+
+/// Hooke's law E = 200, nu = 0.25 on sub-domain 1.
+MaterialTable steel() {
   MaterialTable materials;
   SubdomainMaterial steel;
   steel.subdomain = 1;
   steel.hooke.E = 200;
   steel.hooke.nu = 0.25;
   materials.entries.push_back(steel);
+  return materials;
+}
+
+TEST(Vtk3d, TetrahedraWithTheirStressTensor) {
+  const Mesh mesh = box();
+  const MaterialTable materials = steel();
   // u = (0, 0, -0.01 x3): a uniaxial strain e33 = -0.01, the stress of Hooke's 3D law.
   std::vector<double> u(3 * mesh.num_nodes(), 0.0);
   for (int i = 0; i < mesh.num_nodes(); ++i)
@@ -59,14 +70,8 @@ TEST(Vtk3d, TetrahedraWithTheirStressTensor) {
 // A contact node's tangential traction and slip in 3D are vectors of the tangent plane: written
 // as 3-component point fields (per unit area, global axes) beside their magnitudes.
 TEST(Vtk3d, ContactNodesCarryTheirTangentialTractionAndSlipAsVectors) {
-  const Mesh mesh = read_gmsh(std::filesystem::path(SIG_SOURCE_DIR) / "tests" / "fuzz" / "corpus" /
-                              "gmsh" / "box_v41_ascii.msh");
-  MaterialTable materials;
-  SubdomainMaterial steel;
-  steel.subdomain = 1;
-  steel.hooke.E = 200;
-  steel.hooke.nu = 0.25;
-  materials.entries.push_back(steel);
+  const Mesh mesh = box();
+  const MaterialTable materials = steel();
   ContactRow row;
   row.dim = 3;
   row.node = 2;
