@@ -56,27 +56,16 @@ DECK
 
   checks=$((checks + 1))
   "$python" - "$work/$method/contact.csv" "$work/getfem.json" $mu "$method" <<'PY' || fail "ours ($method) against GetFEM"
-import csv, json, math, sys
-ours = list(csv.DictReader(open(sys.argv[1])))
-g = json.load(open(sys.argv[2]))
+import csv, math, sys
+from pipeline_checks import getfem_nodes_against
 mu, method = float(sys.argv[3]), sys.argv[4]
-if not g["converged"]:
-    sys.exit("GetFEM did not converge")
-key = lambda x, y, z: (round(x, 9), round(y, 9), round(z, 9))
-theirs = {key(n["x"], n["y"], n["z"]): n for n in g["steps"][0]["nodes"]}
-largest = max(n["normal_force"] for n in theirs.values())
+pairs, problems, theirs, largest = getfem_nodes_against(csv.DictReader(open(sys.argv[1])),
+                                                        sys.argv[2])
 in_contact = [n for n in theirs.values() if n["normal_force"] > 1e-9 * largest]
 slip_scale = max(math.hypot(*n["u"][:2]) for n in in_contact)
-problems, worst_n, worst_t, matched, differ, exempt, counts = [], 0.0, 0.0, 0, 0, 0, {}
-for r in ours:
-    if r["converged"] != "1":
-        problems.append("ours did not converge")
-        break
-    n = theirs.get(key(float(r["x1"]), float(r["x2"]), float(r["x3"])))
-    if n is None:
-        problems.append(f"node {r['node']} ({r['x1']}, {r['x2']}, {r['x3']}) not in GetFEM's table")
-        continue
-    matched += 1
+worst_n, worst_t, differ, exempt, counts = 0.0, 0.0, 0, 0, {}
+matched = len(pairs)
+for r, n in pairs:
     N, T = n["normal_force"], n["tangential_force"]
     worst_n = max(worst_n, abs(float(r["multiplier"]) - N))
     worst_t = max(worst_t, math.dist([float(r[f"tangential_force_{k}"]) for k in (1, 2, 3)], [-t for t in T]))

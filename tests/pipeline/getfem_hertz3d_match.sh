@@ -39,25 +39,13 @@ DECK
 
 checks=$((checks + 1))
 "$python" - "$work/ours/contact.csv" "$work/getfem.json" <<'PY' || fail "ours against GetFEM"
-import csv, json, sys
-ours = list(csv.DictReader(open(sys.argv[1])))
-g = json.load(open(sys.argv[2]))
-if not g["converged"]:
-    sys.exit("GetFEM did not converge")
-key = lambda x, y, z: (round(x, 9), round(y, 9), round(z, 9))
-theirs = {key(n["x"], n["y"], n["z"]): n for n in g["steps"][0]["nodes"]} if "nodes" in g["steps"][0] \
-    else {key(n["x"], n["y"], n["z"]): n for n in g["nodes"]}
-largest = max(n["normal_force"] for n in theirs.values())
-problems, worst, matched, statuses = [], 0.0, 0, 0
-for r in ours:
-    if r["converged"] != "1":
-        problems.append("ours did not converge")
-        break
-    n = theirs.get(key(float(r["x1"]), float(r["x2"]), float(r["x3"])))
-    if n is None:
-        problems.append(f"node {r['node']} ({r['x1']}, {r['x2']}, {r['x3']}) not in GetFEM's table")
-        continue
-    matched += 1
+import csv, sys
+from pipeline_checks import getfem_nodes_against
+pairs, problems, theirs, largest = getfem_nodes_against(csv.DictReader(open(sys.argv[1])),
+                                                        sys.argv[2])
+worst, statuses = 0.0, 0
+matched = len(pairs)
+for r, n in pairs:
     N = float(r["multiplier"])
     worst = max(worst, abs(N - n["normal_force"]))
     threshold = 1e-9 * largest

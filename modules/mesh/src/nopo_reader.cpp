@@ -39,15 +39,8 @@ public:
                      body.size() / int_bytes_ == static_cast<std::size_t>(count),
                  where(name) << ": " << body.size() << " bytes for " << count << " words of "
                              << int_bytes_ << " bytes");
-      if (!codec_.big_endian && int_bytes_ == 8 && std::endian::native == std::endian::little) {
-        // our case.nopo: the words as they lie
-        const std::size_t done = values.size();
-        values.resize(done + static_cast<std::size_t>(count));
-        std::memcpy(values.data() + done, body.data(), body.size());
-      } else {
-        for (std::int64_t k = 0; k < count; ++k)
-          values.push_back(codec_.get_int(body.data() + k * int_bytes_, int_bytes_));
-      }
+      append_words(values, body, count, int_bytes_,
+                   [&](const char* w) { return codec_.get_int(w, int_bytes_); });
       if (keep_raw) raw_.append(body);
     }
     return values;
@@ -63,14 +56,8 @@ public:
                  where(name) << ": " << size << " bytes for " << count
                              << " reals (neither float nor double)");
       real_bytes = static_cast<int>(size / count);
-      if (!codec_.big_endian && real_bytes == 8 && std::endian::native == std::endian::little) {
-        const std::size_t done = values.size();
-        values.resize(done + static_cast<std::size_t>(count));
-        std::memcpy(values.data() + done, body.data(), body.size());
-      } else {
-        for (std::int64_t k = 0; k < count; ++k)
-          values.push_back(codec_.get_real(body.data() + k * real_bytes, real_bytes));
-      }
+      append_words(values, body, count, real_bytes,
+                   [&](const char* w) { return codec_.get_real(w, real_bytes); });
     }
     return values;
   }
@@ -94,6 +81,22 @@ public:
   }
 
 private:
+  /// The `count` words of `bytes` bytes each in `body` appended to `values`, decoded one by one,
+  /// or copied as they lie when they are already the host's: our case.nopo's 8-byte
+  /// little-endian words on a little-endian host.
+  template <class T, class Decode>
+  void append_words(std::vector<T>& values, std::string_view body, std::int64_t count, int bytes,
+                    Decode decode) const {
+    if (!codec_.big_endian && bytes == sizeof(T) && std::endian::native == std::endian::little) {
+      const std::size_t done = values.size();
+      values.resize(done + static_cast<std::size_t>(count));
+      std::memcpy(values.data() + done, body.data(), body.size());
+      return;
+    }
+    for (std::int64_t k = 0; k < count; ++k)
+      values.push_back(decode(body.data() + k * bytes));
+  }
+
   std::pair<std::int64_t, std::string_view> next_record(const std::string& name,
                                                         std::int64_t wanted) {
     SIG_VERIFY(next_ < records_.payloads.size(),

@@ -16,6 +16,7 @@
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "core/stage.hpp"
 #include "core/stage_cards.hpp"
 #include "material/mili.hpp"
@@ -25,7 +26,6 @@
 #include "post/vtk_writer.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -69,10 +69,9 @@ int main(int argc, char** argv) {
     // 3. The indicators and the global estimate.
     //    Timed (steady clock, the reading of the DS files left out, as sig-solve's phases are):
     //    the adaptive loop's cost is counted stage by stage (drivers/adapt.sh).
-    const auto start = std::chrono::steady_clock::now();
+    const sig::Stopwatch clock;
     const sig::ErrorIndicators e = sig::recovery_indicators(mesh, u);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = clock.seconds();
     sig::Ds est("EST", datafile.title(), "sig-estimate");
     est.put("indicator", e.eta);
     est.put_scalar("estimate", e.estimate);

@@ -13,6 +13,7 @@
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "core/stage.hpp"
 #include "core/stage_cards.hpp"
 #include "mesh/bisection.hpp"
@@ -20,7 +21,6 @@
 #include "mesh/nopo.hpp"
 #include "post/dorfler.hpp"
 
-#include <chrono>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -95,11 +95,10 @@ int main(int argc, char** argv) {
 
     // 3. Mark, refine (timed, the files' reading and writing left out: the adaptive loop's
     //    cost is counted stage by stage), write.
-    const auto start = std::chrono::steady_clock::now();
+    const sig::Stopwatch clock;
     const std::vector<int> marked = sig::dorfler_marking(eta, theta);
     const sig::Bisection refined = sig::bisect(mesh, marked, arcs);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = clock.seconds();
     const std::filesystem::path out =
         mesh_file.empty() ? stage.outdir / "refined.nopo" : std::filesystem::path(mesh_file);
     sig::write_nopo(out, refined.mesh, sig::NopoVariant::i8r8, stage.deck.title(), "sig-refine");
