@@ -31,7 +31,8 @@ fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
 if [ ! -f "$SIG_BUILD/CMakeCache.txt" ]; then
-  cmake -S "$SIG_ROOT" -B "$SIG_BUILD" -DCMAKE_BUILD_TYPE=Release
+  # The unit tests are built and run in test.sh's sanitizer build (build-asan/), not here.
+  cmake -S "$SIG_ROOT" -B "$SIG_BUILD" -DCMAKE_BUILD_TYPE=Release -DSIG_UNIT_TESTS=OFF
 fi
 cmake --build "$SIG_BUILD" -j "$jobs"
 

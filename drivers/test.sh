@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# drivers/test.sh: the set-up of run.sh, then the whole test suite (ctest), then the unit tests
-# again under AddressSanitizer + UBSan in build-asan/, then the readers' fuzz targets for 30 s
-# each from a fixed seed in build-fuzz/ (clang and libFuzzer; skipped when clang is absent).
+# drivers/test.sh: the set-up of run.sh, then the test suite (ctest: the pipeline, report and
+# layering tests in build/; a build/ of setup.sh has no unit tests), then the unit tests under
+# AddressSanitizer + UBSan in build-asan/, then the readers' fuzz targets for 30 s each from a
+# fixed seed in build-fuzz/, one per core (clang and libFuzzer; skipped when clang is absent).
 set -euo pipefail
 source "$(dirname "$0")/setup.sh"
 cd "$SIG_ROOT"
@@ -28,7 +29,7 @@ if command -v clang++ > /dev/null &&
       -DCMAKE_CXX_FLAGS="-O1" -DSIG_FUZZ=ON -DSIG_UNIT_TESTS_ONLY=ON
   fi
   cmake --build "$fuzz" -j "$jobs" --target fuzz_datafile fuzz_gmsh fuzz_freefem fuzz_nopo fuzz_ds
-  tests/fuzz/run.sh --build "$fuzz" --time "${SIG_FUZZ_SECONDS:-30}"
+  tests/fuzz/run.sh --build "$fuzz" --time "${SIG_FUZZ_SECONDS:-30}" --at-once "$jobs"
 else
   echo "test.sh: clang or libFuzzer (libclang-rt-14-dev) absent: fuzzing skipped"
 fi
