@@ -3,7 +3,8 @@
 friction, and Cattaneo-Mindlin's tangential step; the GetFEM side of the 3D comparisons.
 
     /usr/bin/python3 postproc/getfem_hertz3d.py [--msh FILE | --h H --grading G] [--R R] [--E E]
-        [--nu NU] [--P P | --pressure p] [--clamp-top [--top-shift DX] [--top-drop DZ]] [--mu MU] [--tangential Q] [--eps EPS]
+        [--nu NU] [--P P | --pressure p] [--clamp-top [--top-shift DX] [--top-drop DZ]] [--cylinder RC]
+        [--mu MU] [--tangential Q] [--eps EPS]
         [--version V] [--repeat K] [--json FILE] [--workdir DIR]
 
 What is solved:
@@ -123,6 +124,9 @@ def parse_args():
                         help="with --clamp-top: u_x = DX at the top face's nodes (default 0)")
     parser.add_argument("--top-drop", type=float, metavar="DZ",
                         help="with --clamp-top: also u_z = -DZ at the top face's nodes")
+    parser.add_argument("--cylinder", type=float, metavar="RC",
+                        help="the obstacle is the rigid cylinder of radius RC and axis x through (0, 0, -RC), "
+                             "touching z = 0 along the x axis, instead of the plane (frictionless only)")
     parser.add_argument("--mu", type=float, default=0.0, help="Coulomb coefficient (default 0: frictionless)")
     parser.add_argument("--tangential", type=float, metavar="Q", help="second step: tangential load Q < mu P")
     parser.add_argument("--eps", type=float, default=1e-8, help="GetFEM's max_res (default 1e-8)")
@@ -140,6 +144,8 @@ def parse_args():
         fail("--top-shift and --top-drop need --clamp-top")
     if args.clamp_top and args.tangential is not None:
         fail("--tangential needs the weak rigid-motion rows, not --clamp-top (the clamp would carry Q)")
+    if args.cylinder is not None and (args.cylinder <= 0 or args.mu != 0):
+        fail("--cylinder RC needs RC > 0 and no friction")
     if args.tangential is not None and not 0 < args.tangential < args.mu * args.P:
         fail(f"--tangential Q needs 0 < Q < mu P = {args.mu * args.P:g} (set --mu)")
     return args
@@ -214,13 +220,16 @@ def contact_nodes(mfu, mim):
     return xdofs, xyz, weights
 
 
-def add_contact(md, mim, nbc, E, mu, version):
+def add_contact(md, mim, nbc, E, mu, version, cylinder=None):
     """GetFEM's nodal contact brick with the plane z >= 0 on the curved face (with Coulomb friction
-    when mu > 0). Returns the names of its multipliers."""
+    when mu > 0), or, frictionless, with the cylinder of radius `cylinder` under it, of axis x
+    (its signed distance). Returns the names of its multipliers."""
     md.add_variable("lambda_n", nbc)
     md.add_initialized_data("r", [E])
     if mu == 0:
-        md.add_nodal_contact_with_rigid_obstacle_brick(mim, "u", "lambda_n", "r", CURVED, "z", version)
+        obstacle = "z" if cylinder is None else \
+            f"sqrt(y*y + (z + {cylinder!r})*(z + {cylinder!r})) - {cylinder!r}"
+        md.add_nodal_contact_with_rigid_obstacle_brick(mim, "u", "lambda_n", "r", CURVED, obstacle, version)
         return ["lambda_n"]
     md.add_variable("lambda_t", 2 * nbc)
     md.add_initialized_data("friction_coeff", [mu])
@@ -364,7 +373,7 @@ def main():
         add_rigid_constraints(md, mim, mfu, rows)
         holds = ["rigid"]
     nodes = contact_nodes(mfu, mim)
-    multipliers = add_contact(md, mim, len(nodes[0]), args.E, args.mu, args.version)
+    multipliers = add_contact(md, mim, len(nodes[0]), args.E, args.mu, args.version, args.cylinder)
     names = ["u"] + holds + multipliers
     start = {name: np.zeros_like(np.atleast_1d(md.variable(name)), dtype=float) for name in names}
     start["u"][2::3] = -H["a"] ** 2 / (4 * args.R)
@@ -380,7 +389,9 @@ def main():
         "getfem_version": getfem_version(),
         "description": (f"half ball R = {args.R:g} ({mesh_text}), P1 tetrahedra, E = {args.E:g}, "
                         f"nu = {args.nu:g}, pressure {pressure:.10g} on the top face, total P = {args.P:g}, "
-                        f"nodal contact brick with z >= 0 version {args.version}, r = E, mu = {args.mu:g}, "
+                        f"nodal contact brick with "
+                        + ("z >= 0" if args.cylinder is None else f"the cylinder of radius {args.cylinder:g} and axis x under z = 0")
+                        + f" version {args.version}, r = E, mu = {args.mu:g}, "
                         f"max_res {args.eps:g}, lsolver auto, start u_z = -a^2/(4R), "
                         + (f"top face's nodes held at u_x = {args.top_shift:g}, u_y = 0"
                            + ("" if args.top_drop is None else f", u_z = {-args.top_drop:g}") if args.clamp_top

@@ -98,5 +98,55 @@ TEST(MakeObstacle, RebuildsFromDescription) {
   EXPECT_THROW(make_obstacle({"polyline", {0, 0}, {0, 1}, 0}), Error);
 }
 
+// A cylinder of axis (1, 2, 2) / 3 through c: the distance of a point is that of its part normal
+// to the axis, whatever its position along the axis; n = grad d; the projection keeps the
+// position along the axis; the description rebuilds it.
+TEST(Cylinder, DistanceAndNormalAgainstClosedForm) {
+  const Eigen::Vector3d c(1, -2, 0.5), raw(1, 2, 2), a = raw / 3; // |raw| = 3
+  const Cylinder cylinder(c, raw, 2);
+  EXPECT_EQ(cylinder.kind(), "cylinder");
+  EXPECT_EQ(cylinder.dim(), 3);
+  const std::vector<Eigen::Vector3d> points = {{0.3, 0.7, -1},  {-2, 5, 4},   {4, -1, 0},
+                                               {100, 1e3, -20}, {1, -2, 3.5}, {2.5, 0.1, -0.3}};
+  for (const Eigen::Vector3d& x : points) {
+    const Eigen::Vector3d radial = (x - c) - (x - c).dot(a) * a;
+    const double r = radial.norm();
+    EXPECT_NEAR(cylinder.signed_distance(x), r - 2, 1e-12 * (1 + x.norm()));
+    // Sliding along the axis changes nothing.
+    EXPECT_NEAR(cylinder.signed_distance(x + 7.5 * a), cylinder.signed_distance(x),
+                1e-12 * (1 + x.norm()));
+    const Eigen::Vector3d n = cylinder.normal(x);
+    EXPECT_NEAR((n - radial / r).norm(), 0, 1e-13);
+    EXPECT_NEAR(n.dot(a), 0, 1e-14);
+    const Eigen::Vector3d q = cylinder.projection(x);
+    EXPECT_NEAR(cylinder.signed_distance(q), 0, 1e-12 * (1 + x.norm()));
+    EXPECT_NEAR((q - c).dot(a), (x - c).dot(a), 1e-12 * (1 + x.norm()));
+    const double h = 1e-6 * (1 + x.norm());
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(k);
+      EXPECT_NEAR((cylinder.signed_distance(x + e) - cylinder.signed_distance(x - e)) / (2 * h),
+                  n(k), 1e-6)
+          << "at " << x.transpose();
+    }
+    const auto copy = make_obstacle(cylinder.description());
+    EXPECT_EQ(copy->kind(), "cylinder");
+    EXPECT_DOUBLE_EQ(copy->signed_distance(x), cylinder.signed_distance(x));
+  }
+  // Inside, on the surface, outside along the normal (0, 1, -1) / sqrt 2 to the axis.
+  const Eigen::Vector3d m = Eigen::Vector3d(0, 1, -1) / std::sqrt(2.0);
+  EXPECT_NEAR(cylinder.signed_distance(c + 0.5 * m), -1.5, 1e-14);
+  EXPECT_NEAR(cylinder.signed_distance(c + 2 * m + 4 * a), 0, 1e-14);
+  EXPECT_NEAR(cylinder.signed_distance(c + 5 * m), 3, 1e-14);
+}
+
+TEST(Cylinder, InvalidDataIsAnError) {
+  EXPECT_THROW(Cylinder({0, 0, 0}, {1, 0, 0}, 0), Error);
+  EXPECT_THROW(Cylinder({0, 0, 0}, {0, 0, 0}, 1), Error);
+  EXPECT_THROW(Cylinder({0, 0}, {1, 0}, 1), Error); // 3D only
+  EXPECT_THROW(Cylinder({0, 0, NAN}, {1, 0, 0}, 1), Error);
+  const Cylinder cylinder({0, 0, 0}, {1, 0, 0}, 1);
+  EXPECT_THROW((void)cylinder.normal({5, 0, 0}), Error); // undefined on the axis
+}
+
 } // namespace
 } // namespace sig

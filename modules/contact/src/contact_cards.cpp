@@ -4,11 +4,13 @@
 #include "core/error.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <memory>
 #include <set>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace sig {
 
@@ -45,25 +47,35 @@ void check_reference(const Card& card, const Mesh& mesh, int ref) {
 std::unique_ptr<Obstacle> obstacle_from_card(const Card& card, int d) {
   const std::string kind = card.choice("obstacle", {"plane", "disc", "sphere", "cylinder"});
   const std::string round = d == 3 ? "sphere" : "disc";
-  if (kind == "cylinder")
-    card.fail("obstacle",
-              "obstacle=cylinder is not implemented yet (issue 26): plane and " + round + " are");
-  if (kind != "plane" && kind != round)
+  if (kind == "cylinder" && d != 3)
+    card.fail("obstacle", "obstacle=cylinder is 3D, the mesh is 2D: its section is obstacle=disc");
+  if (kind != "plane" && kind != round && kind != "cylinder")
     card.fail("obstacle", "obstacle=" + kind + " is " + (d == 3 ? "2D" : "3D") + ", the mesh is " +
                               std::to_string(d) + "D: use obstacle=" + round);
-  // The fields of the other obstacle would be ignored: the deck says something it does not get.
-  const std::string other = kind == round ? "plane" : round;
-  const std::array<const char*, 2> foreign = kind == round
-                                                 ? std::array<const char*, 2>{"point", "normal"}
-                                                 : std::array<const char*, 2>{"centre", "radius"};
-  for (const char* field : foreign)
-    if (card.has(field))
-      card.fail(field, "is a field of obstacle=" + other + ", not of obstacle=" + kind +
-                           " (remove it, or change the obstacle)");
+  // The fields of another obstacle would be ignored: the deck says something it does not get.
+  // In this order, so that a field of two obstacles is named as the simpler one's.
+  const std::vector<std::pair<std::string, std::vector<std::string>>> fields = {
+      {"plane", {"point", "normal"}},
+      {round, {"centre", "radius"}},
+      {"cylinder", {"centre", "axis", "radius"}}};
+  for (const auto& [other, names] : fields)
+    for (const std::string& field : names)
+      if (card.has(field) && std::ranges::none_of(fields, [&](const auto& owner) {
+            return owner.first == kind && std::ranges::count(owner.second, field) > 0;
+          }))
+        card.fail(field, "is a field of obstacle=" + other + ", not of obstacle=" + kind +
+                             " (remove it, or change the obstacle)");
   if (kind == round) {
     const Point centre = vector_field(card, "centre", d);
     const double radius = card.real("radius"); // > 0: core/ranges.hpp
     return std::make_unique<Disc>(centre, radius);
+  }
+  if (kind == "cylinder") {
+    const Point centre = vector_field(card, "centre", d);
+    const Point axis = vector_field(card, "axis", d);
+    if (axis.norm() == 0)
+      card.fail("axis", "zero-length axis; give its direction, e.g. axis=1,0,0");
+    return std::make_unique<Cylinder>(centre, axis, card.real("radius"));
   }
   const Point point = vector_field(card, "point", d);
   const Point normal = vector_field(card, "normal", d);

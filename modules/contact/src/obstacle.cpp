@@ -47,6 +47,37 @@ ObstacleDescription Disc::description() const {
   return {kind(), centre_, Point(Point::Zero(centre_.size())), radius_};
 }
 
+Cylinder::Cylinder(const Point& centre, const Point& axis, double radius)
+    : centre_(centre), radius_(radius) {
+  SIG_VERIFY(centre.size() == 3 && axis.size() == 3,
+             "cylinder obstacle: a centre of " << centre.size() << " and an axis of " << axis.size()
+                                               << " components; a cylinder is 3D (3 each)");
+  SIG_VERIFY(std::isfinite(radius) && radius > 0,
+             "cylinder obstacle: radius " << radius << " must be > 0");
+  SIG_VERIFY(centre.allFinite(), "cylinder obstacle: the centre is not finite");
+  const double length = axis.norm();
+  SIG_VERIFY(std::isfinite(length) && length > 0,
+             "cylinder obstacle: the axis " << coordinates(axis) << " has zero length");
+  axis_ = axis / length;
+}
+
+Point Cylinder::radial(const Point& x) const {
+  const Point r = x - centre_;
+  return r - r.dot(axis_) * axis_;
+}
+
+Point Cylinder::normal(const Point& x) const {
+  const Point r = radial(x);
+  const double length = r.norm();
+  SIG_VERIFY(length > 0,
+             "cylinder obstacle: the normal is undefined on the axis, at " << coordinates(x));
+  return r / length;
+}
+
+ObstacleDescription Cylinder::description() const {
+  return {"cylinder", centre_, axis_, radius_};
+}
+
 std::unique_ptr<Obstacle> make_obstacle(const ObstacleDescription& description) {
   if (description.kind == "plane")
     return std::make_unique<HalfPlane>(description.point, description.normal);
@@ -56,8 +87,10 @@ std::unique_ptr<Obstacle> make_obstacle(const ObstacleDescription& description) 
                     << " components");
     return std::make_unique<Disc>(description.point, description.radius);
   }
-  SIG_VERIFY(false,
-             "obstacle kind '" << description.kind << "' is unknown; known: plane, disc, sphere");
+  if (description.kind == "cylinder")
+    return std::make_unique<Cylinder>(description.point, description.normal, description.radius);
+  SIG_VERIFY(false, "obstacle kind '" << description.kind
+                                      << "' is unknown; known: plane, disc, sphere, cylinder");
   return nullptr; // not reached
 }
 

@@ -144,11 +144,14 @@ const std::vector<CardSpec>& card_schema() {
        "initial gap from the mesh)",
        {
            {"ref", "boundary reference of the contact zone"},
-           {"obstacle", "plane | disc (2D) | sphere (3D, a rigid ball)"},
+           {"obstacle", "plane | disc (2D) | sphere (3D, a rigid ball) | cylinder (3D, a rigid "
+                        "circular cylinder, infinite along its axis: a wheel, a roller)"},
            {"point", "a point of the obstacle plane: x,y (x,y,z in 3D)"},
            {"normal", "outward unit normal of the obstacle: nx,ny (nx,ny,nz in 3D)"},
-           {"centre", "disc or sphere obstacle: centre x,y (x,y,z in 3D)"},
-           {"radius", "disc or sphere obstacle: radius"},
+           {"centre", "disc or sphere obstacle: centre x,y (x,y,z in 3D); cylinder: a point of "
+                      "its axis x,y,z"},
+           {"axis", "cylinder obstacle: direction of its axis ax,ay,az (normalized)"},
+           {"radius", "disc, sphere or cylinder obstacle: radius"},
            {"law",
             "signorini (1.22) | compliance (1.24): pressure cn [q_n]+, truncated at c3 | "
             "compliance-unilateral (1.26): compliance while q_n < g, a rigid wall at q_n = g | "

@@ -7,7 +7,8 @@
 // the deformable body lives; n(x) is the unit normal of the obstacle pointing from the obstacle
 // into the body's side. The foundation of the thesis scenes, x2 <= 0, is
 // HalfPlane({0, 0}, {0, 1}). Points have the mesh's dimension: a half plane and a disc in 2D, a
-// half space and a ball (kind "sphere", its boundary) in 3D, one class each.
+// half space, a ball (kind "sphere", its boundary) and an infinite circular cylinder (a wheel
+// under a rail, a roller) in 3D, one class each but the cylinder's, which is 3D only.
 #include "mesh/mesh.hpp"
 
 #include <Eigen/Core>
@@ -18,10 +19,10 @@ namespace sig {
 
 /// What a contact DS stores about its obstacle, enough to rebuild it (make_obstacle).
 struct ObstacleDescription {
-  std::string kind;  ///< "plane", "disc" (2D) or "sphere" (3D)
-  Point point;       ///< plane: a boundary point; disc, sphere: centre
-  Point normal;      ///< plane: outward unit normal; disc, sphere: 0
-  double radius = 0; ///< disc and sphere only
+  std::string kind; ///< "plane", "disc" (2D), "sphere" or "cylinder" (3D)
+  Point point;  ///< plane: a boundary point; disc, sphere: centre; cylinder: a point of its axis
+  Point normal; ///< plane: outward unit normal; cylinder: unit axis; disc, sphere: 0
+  double radius = 0; ///< disc, sphere and cylinder only
 };
 
 class Obstacle {
@@ -68,6 +69,26 @@ public:
 
 private:
   Point centre_;
+  double radius_;
+};
+
+/// A rigid circular cylinder {x : |(x - c) - ((x - c).a) a| <= R} of axis a through c, infinite
+/// along a (3D only); the body lives outside it. Its distance is that of the disc in the plane
+/// normal to the axis, so the normal has no component along the axis, and is undefined on it.
+class Cylinder final : public Obstacle {
+public:
+  /// `axis` is normalized; radius > 0; centre and axis of 3 components, a non-zero axis.
+  Cylinder(const Point& centre, const Point& axis, double radius);
+  double signed_distance(const Point& x) const override { return radial(x).norm() - radius_; }
+  Point normal(const Point& x) const override;
+  int dim() const override { return 3; }
+  std::string kind() const override { return "cylinder"; }
+  ObstacleDescription description() const override;
+
+private:
+  /// x - c without its component along the axis.
+  Point radial(const Point& x) const;
+  Point centre_, axis_;
   double radius_;
 };
 
