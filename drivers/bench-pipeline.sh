@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# drivers/bench-pipeline.sh [-o OUTDIR] [--n N] [--grading G] [--repeat K]: what the stages
+# drivers/bench-pipeline.sh [-o OUTDIR] [--n N] [--grading G] [--repeat K] [--compression C]: what the stages
 # around the solve cost, against the solve and against the disk (issue 27, "the pipeline at
 # scale").
 #
 # The scene-7a Hertz deck (datafiles/scene7a/hertz.dat: PDAS gamma = 1e2, OUTPUT vtk=yes) at MESH
-# N (default 2048) and grading G (default 0, the thesis's uniform mesh: 1.55M dofs at N = 2048)
-# through every stage, sig-mesh to sig-post, K times (default 3) in a fresh folder each round.
+# N (default 2048) and grading G (default 0, the thesis's uniform mesh: 1.55M dofs at N = 2048),
+# its .vtu compressed by C (OUTPUT compression=, default lz4: the choice at this size, zlib being
+# the deck's default), through every stage, sig-mesh to sig-post, K times (default 3) in a fresh folder each round.
 # Per stage: the wall time of its process and its phases, which each stage appends to
 # $SIG_PHASE_TIMES (core/phase_times.hpp): read (DS and mesh files read and checked: CRCs,
 # fingerprints, provenance), write (encoded, written, fsynced, renamed; the .vtu included),
@@ -28,6 +29,7 @@ usage: drivers/bench-pipeline.sh [-o OUTDIR] [--n N] [--grading G] [--repeat K]
   --n N          boundary segments on Gamma3 (default 2048)
   --grading G    MESH grading (default 0: the thesis's uniform mesh)
   --repeat K     rounds of the whole chain, medians reported (default 3)
+  --compression C  the .vtu's compression: lz4 (default), zlib or none (OUTPUT compression=)
   -o OUTDIR      results folder (default out/bench-pipeline)
   -h, --help     this message
 Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
@@ -39,7 +41,9 @@ out=out/bench-pipeline
 n=2048
 grading=0
 repeat=3
-parse_options --n=n --grading=grading --repeat=repeat -o=out -- "$@"
+compression=lz4
+parse_options --n=n --grading=grading --repeat=repeat --compression=compression -o=out -- "$@"
+case $compression in lz4 | zlib | none) ;; *) die "--compression must be lz4, zlib or none, got '$compression'" ;; esac
 [[ $n =~ ^[0-9]+$ ]] && [ "$n" -ge 4 ] && [ $((n % 2)) -eq 0 ] || die "--n must be an even integer >= 4, got '$n'"
 [[ $grading =~ ^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$ ]] || die "--grading must be a number >= 0, got '$grading'"
 require_positive --repeat "$repeat"
@@ -54,6 +58,8 @@ out=$(cd "$out" && pwd)
 source "$root/drivers/lib/hertz_deck.sh"
 deck=$out/hertz.dat
 hertz_deck "$template" "$deck" "$n" "$grading"
+deck_variant "$deck" "$deck.tmp" --set OUTPUT.compression="$compression"
+mv "$deck.tmp" "$deck"
 
 echo "bench-pipeline.sh: N = $n, grading $grading, $repeat rounds, results in $out"
 printf 'round\tstage\tphase\tseconds\n' >"$out/times.tsv"
@@ -94,6 +100,7 @@ done
   echo "outdir: $out"
   echo "n: $n"
   echo "grading: $grading"
+  echo "compression: $compression"
   echo "uptime: $(uptime)"
 } >"$out/command.txt"
 cp "$dir/summary.json" "$out/summary.json"
@@ -133,7 +140,8 @@ def med(f):
 
 
 summary = json.loads((out / "summary.json").read_text())
-lines = [f"# Pipeline benchmark: scene 7a Hertz, N = {info['n']}, MESH grading = {info['grading']}", "",
+lines = [f"# Pipeline benchmark: scene 7a Hertz, N = {info['n']}, MESH grading = {info['grading']}, "
+         f".vtu compression {info.get('compression', 'zlib')}", "",
          f"Produced by `{info['command']}` on {info['date']} ({info['host']}, revision "
          f"{info['revision']}); at the end: `{info['uptime'].strip()}`. {summary['dofs']} dofs, "
          f"PDAS, {summary['iterations']} iterations. Medians of {len(rounds)} rounds of the whole "

@@ -99,6 +99,11 @@ int main(int argc, char** argv) {
     const sig::Datafile& datafile = args.deck;
     const sig::Card* output = datafile.find("OUTPUT");
     const bool write_vtk = output == nullptr || output->choice("vtk", {"yes", "no"}) == "yes";
+    const std::string compressor =
+        output ? output->choice("compression", {"zlib", "lz4", "none"}, "zlib") : "zlib";
+    const sig::VtkCompression compression = compressor == "lz4"    ? sig::VtkCompression::lz4
+                                            : compressor == "none" ? sig::VtkCompression::none
+                                                                   : sig::VtkCompression::zlib;
 
     // 2. Mesh and materials. A dynamic case (TIME card) is shown as the states sig-march kept
     //    in case.hist, one .vtu each; its energies are in energy.csv already.
@@ -113,9 +118,9 @@ int main(int argc, char** argv) {
       const sig::Ds hist = sig::read_ds(args.ds_path("hist"), "HIST");
       sig::verify_history_ds(hist, mesh);
       if (write_vtk)
-        for (const auto& file :
-             sig::write_history_vtk(args.outdir, stem, mesh, materials, hist,
-                                    {{"title", datafile.title()}, {"scheme", hist.text("scheme")}}))
+        for (const auto& file : sig::write_history_vtk(
+                 args.outdir, stem, mesh, materials, hist,
+                 {{"title", datafile.title()}, {"scheme", hist.text("scheme")}}, compression))
           written.push_back(file);
       record_outputs(args, datafile, written);
       return;
@@ -140,8 +145,9 @@ int main(int argc, char** argv) {
     //    and the .pvd collection.
     if (write_vtk && sig::has_load_step_states(solution)) {
       const sig::VtkText data{{"title", datafile.title()}, {"method", solution.text("method")}};
-      for (const auto& file : sig::write_load_step_vtk(args.outdir, stem, mesh, materials, solution,
-                                                       contact_case ? &cont : nullptr, data))
+      for (const auto& file :
+           sig::write_load_step_vtk(args.outdir, stem, mesh, materials, solution,
+                                    contact_case ? &cont : nullptr, data, compression))
         written.push_back(file);
     } else if (write_vtk) {
       const sig::SolutionFields fields = mesh.dim == 3
@@ -155,7 +161,7 @@ int main(int argc, char** argv) {
            {"method", solution.text("method")},
            {"convergence",
             converged ? "converged" : "NOT converged (Nv): " + solution.text("failure")}},
-          {{"converged", converged ? 1.0 : 0.0}});
+          {{"converged", converged ? 1.0 : 0.0}}, compression);
       sig::write_pvd(args.outdir / (stem + ".pvd"), {{0.0, vtu}});
       written.push_back(args.outdir / (stem + ".pvd"));
       written.push_back(args.outdir / vtu);

@@ -53,7 +53,8 @@ std::vector<double> nodal_values(const Ds& hist, const std::string& name, std::s
 std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path& outdir,
                                                      const std::string& stem, const Mesh& mesh,
                                                      const MaterialTable& materials, const Ds& hist,
-                                                     const VtkText& field_data) {
+                                                     const VtkText& field_data,
+                                                     VtkCompression compression) {
   const std::vector<double> times = hist.reals("output_time");
   const std::vector<double> u = hist.reals("u");
   const std::vector<double> v = hist.reals("v");
@@ -90,20 +91,24 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
     contact.emplace_back("tangential_pressure", std::move(tangential));
   }
 
-  return write_vtu_series(outdir, stem, mesh, outputs, [&](std::size_t s) {
-    const std::vector<double> u_s(u.begin() + s * ndof, u.begin() + (s + 1) * ndof);
-    SolutionFields fields = solution_fields(mesh, u_s, materials, {});
-    VtkField velocity{"velocity", 3, {}};
-    for (std::size_t i = 0; i < ndof; i += 2)
-      velocity.values.insert(velocity.values.end(), {v[s * ndof + i], v[s * ndof + i + 1], 0.0});
-    fields.point.push_back(std::move(velocity));
-    for (const auto& [name, values] : contact)
-      if (!values.empty())
-        fields.point.push_back(
-            {name, 1,
-             std::vector<double>(values.begin() + s * nodes, values.begin() + (s + 1) * nodes)});
-    return VtkState{times[s], std::move(fields.point), std::move(fields.cell), field_data, {}};
-  });
+  return write_vtu_series(
+      outdir, stem, mesh, outputs,
+      [&](std::size_t s) {
+        const std::vector<double> u_s(u.begin() + s * ndof, u.begin() + (s + 1) * ndof);
+        SolutionFields fields = solution_fields(mesh, u_s, materials, {});
+        VtkField velocity{"velocity", 3, {}};
+        for (std::size_t i = 0; i < ndof; i += 2)
+          velocity.values.insert(velocity.values.end(),
+                                 {v[s * ndof + i], v[s * ndof + i + 1], 0.0});
+        fields.point.push_back(std::move(velocity));
+        for (const auto& [name, values] : contact)
+          if (!values.empty())
+            fields.point.push_back({name, 1,
+                                    std::vector<double>(values.begin() + s * nodes,
+                                                        values.begin() + (s + 1) * nodes)});
+        return VtkState{times[s], std::move(fields.point), std::move(fields.cell), field_data, {}};
+      },
+      compression);
 }
 
 } // namespace sig

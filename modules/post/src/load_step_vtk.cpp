@@ -36,11 +36,10 @@ std::vector<T> row_of(const std::vector<T>& values, std::size_t row, std::size_t
 
 } // namespace
 
-std::vector<std::filesystem::path> write_load_step_vtk(const std::filesystem::path& outdir,
-                                                       const std::string& stem, const Mesh& mesh,
-                                                       const MaterialTable& materials,
-                                                       const Ds& solution, const Ds* cont,
-                                                       const VtkText& field_data) {
+std::vector<std::filesystem::path>
+write_load_step_vtk(const std::filesystem::path& outdir, const std::string& stem, const Mesh& mesh,
+                    const MaterialTable& materials, const Ds& solution, const Ds* cont,
+                    const VtkText& field_data, VtkCompression compression) {
   const std::size_t states = load_step_count(solution, mesh);
   const std::vector<double> load = solution.reals("step_load");
   const std::vector<double> u = solution.reals("step_u");
@@ -65,26 +64,29 @@ std::vector<std::filesystem::path> write_load_step_vtk(const std::filesystem::pa
     }
   }
 
-  return write_vtu_series(outdir, stem, mesh, states, [&](std::size_t s) {
-    Ds state("B", "load step " + std::to_string(s + 1), "sig-post");
-    state.source = solution.source + " (load step " + std::to_string(s + 1) + ")";
-    state.put("u", row_of(u, s, ndof));
-    std::vector<ContactRow> contact;
-    if (cont != nullptr) {
-      state.put("multiplier", row_of(multiplier, s, m));
-      state.put("normal_status", row_of(status, s, m));
-      state.put("tangential_multiplier", std::vector<double>(m, 0.0));
-      state.put("friction_status", std::vector<std::int64_t>(m, 0));
-      contact = contact_rows(mesh, *cont, state);
-    }
-    SolutionFields fields = solution_fields(mesh, state.reals("u"), materials, contact);
-    VtkState vtk{load[s],
-                 std::move(fields.point),
-                 std::move(fields.cell),
-                 field_data,
-                 {{"load_step", static_cast<double>(s + 1)}, {"load_factor", load[s]}}};
-    return vtk;
-  });
+  return write_vtu_series(
+      outdir, stem, mesh, states,
+      [&](std::size_t s) {
+        Ds state("B", "load step " + std::to_string(s + 1), "sig-post");
+        state.source = solution.source + " (load step " + std::to_string(s + 1) + ")";
+        state.put("u", row_of(u, s, ndof));
+        std::vector<ContactRow> contact;
+        if (cont != nullptr) {
+          state.put("multiplier", row_of(multiplier, s, m));
+          state.put("normal_status", row_of(status, s, m));
+          state.put("tangential_multiplier", std::vector<double>(m, 0.0));
+          state.put("friction_status", std::vector<std::int64_t>(m, 0));
+          contact = contact_rows(mesh, *cont, state);
+        }
+        SolutionFields fields = solution_fields(mesh, state.reals("u"), materials, contact);
+        VtkState vtk{load[s],
+                     std::move(fields.point),
+                     std::move(fields.cell),
+                     field_data,
+                     {{"load_step", static_cast<double>(s + 1)}, {"load_factor", load[s]}}};
+        return vtk;
+      },
+      compression);
 }
 
 } // namespace sig

@@ -82,7 +82,8 @@ vtkNew<vtkUnstructuredGrid> make_grid(const Mesh& mesh) {
 
 void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
                const std::vector<VtkField>& point_fields, const std::vector<VtkField>& cell_fields,
-               const VtkText& field_data, const VtkNumbers& field_numbers) {
+               const VtkText& field_data, const VtkNumbers& field_numbers,
+               VtkCompression compression) {
   const PhaseTimer timer("write");
   const std::string where = path.string();
   const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
@@ -117,10 +118,20 @@ void write_vtu(const std::filesystem::path& path, const Mesh& mesh,
   writer->SetFileName(tmp.string().c_str());
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff(); // raw binary: smaller and faster than base64
-  writer->SetCompressorTypeToZLib();
-  // zlib's fastest level: a .vtu of 1.5M triangles is written several times faster than at VTK's
-  // default (5), a few per cent larger, and read by every reader of zlib-compressed VTK XML.
-  writer->SetCompressionLevel(1);
+  switch (compression) {
+  case VtkCompression::lz4:
+    writer->SetCompressorTypeToLZ4();
+    break;
+  case VtkCompression::zlib:
+    writer->SetCompressorTypeToZLib();
+    // zlib's fastest level: a .vtu of 1.5M triangles is written several times faster than at
+    // VTK's default (5), a few per cent larger.
+    writer->SetCompressionLevel(1);
+    break;
+  case VtkCompression::none:
+    writer->SetCompressorTypeToNone();
+    break;
+  }
   const int ok = writer->Write();
   if (ok != 1 || writer->GetErrorCode() != 0) {
     std::error_code ignored;
@@ -154,7 +165,8 @@ void write_pvd(const std::filesystem::path& path, const std::vector<PvdStep>& st
 
 std::vector<std::filesystem::path>
 write_vtu_series(const std::filesystem::path& outdir, const std::string& stem, const Mesh& mesh,
-                 std::size_t count, const std::function<VtkState(std::size_t)>& state) {
+                 std::size_t count, const std::function<VtkState(std::size_t)>& state,
+                 VtkCompression compression) {
   std::vector<std::filesystem::path> files{outdir / (stem + ".pvd")};
   std::vector<PvdStep> steps;
   for (std::size_t s = 0; s < count; ++s) {
@@ -164,7 +176,7 @@ write_vtu_series(const std::filesystem::path& outdir, const std::string& stem, c
     std::snprintf(suffix, sizeof suffix, "_%04zu.vtu", s);
     const std::string vtu = stem + suffix;
     write_vtu(outdir / vtu, mesh, fields.point, fields.cell, fields.field_data,
-              fields.field_numbers);
+              fields.field_numbers, compression);
     steps.push_back({fields.time, vtu});
     files.push_back(outdir / vtu);
   }

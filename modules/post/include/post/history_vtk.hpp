@@ -25,9 +25,9 @@ namespace sig {
 /// arrays contact_node and pressure, the point field contact_pressure (0 off Gamma3), and
 /// OUTDIR/<stem>.pvd. Returns the .pvd, then the .vtu files. sig::Error naming the DS when its
 /// shapes do not match the mesh, a contact node is not a mesh node, or a state holds NaN or inf.
-std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path& outdir,
-                                                     const std::string& stem, const Mesh& mesh,
-                                                     const MaterialTable& materials, const Ds& hist,
-                                                     const VtkText& field_data);
+std::vector<std::filesystem::path>
+write_history_vtk(const std::filesystem::path& outdir, const std::string& stem, const Mesh& mesh,
+                  const MaterialTable& materials, const Ds& hist, const VtkText& field_data,
+                  VtkCompression compression = VtkCompression::zlib);
 
 } // namespace sig

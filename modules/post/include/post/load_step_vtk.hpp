@@ -26,10 +26,9 @@ std::size_t load_step_count(const Ds& solution, const Mesh& mesh);
 /// the field data `field_data` + load_step + load_factor, and OUTDIR/<stem>.pvd with time = load
 /// factor. Returns the .pvd, then the .vtu files. sig::Error naming the DS when shapes do not
 /// match the mesh or the contact elements, or a state holds NaN or inf.
-std::vector<std::filesystem::path> write_load_step_vtk(const std::filesystem::path& outdir,
-                                                       const std::string& stem, const Mesh& mesh,
-                                                       const MaterialTable& materials,
-                                                       const Ds& solution, const Ds* cont,
-                                                       const VtkText& field_data);
+std::vector<std::filesystem::path>
+write_load_step_vtk(const std::filesystem::path& outdir, const std::string& stem, const Mesh& mesh,
+                    const MaterialTable& materials, const Ds& solution, const Ds* cont,
+                    const VtkText& field_data, VtkCompression compression = VtkCompression::zlib);
 
 } // namespace sig
