@@ -162,7 +162,7 @@ struct EncodedNopo {
 };
 
 EncodedNopo encode(const Mesh& mesh, NopoVariant variant, const NopoWriteOptions& options) {
-  check_mesh(mesh, "NOPO writer");
+  if (options.check == MeshCheck::run) check_mesh(mesh, "NOPO writer");
   const NopoLayout layout = nopo_layout(variant);
   const int wi = layout.int_bytes;
   const WordCodec codec{options.big_endian};
@@ -263,11 +263,12 @@ void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant
 }
 
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
-                const std::string& title, const std::string& creator) {
+                const std::string& title, const std::string& creator, MeshCheck check) {
   const PhaseTimer timer("write");
   NopoWriteOptions options;
   options.text = {title, ds_date(), creator};
   options.stamp_fingerprint = true;
+  options.check = check;
   const EncodedNopo file = encode(mesh, variant, options);
   write_file_atomically(path, file.bytes);
   // Written after the mesh: a stage killed between the two leaves a record of another mesh,

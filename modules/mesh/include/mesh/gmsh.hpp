@@ -16,8 +16,9 @@
 
 namespace sig {
 
-/// Read and check a gmsh mesh; errors are sig::InputError naming the file and the line.
-Mesh read_gmsh(const std::filesystem::path& path);
+/// Read and check a gmsh mesh (check_mesh unless `check` is skip); errors are sig::InputError
+/// naming the file and the line.
+Mesh read_gmsh(const std::filesystem::path& path, MeshCheck check = MeshCheck::run);
 /// The same from the bytes of a file called `name` (tests, fuzzing).
 Mesh parse_gmsh(const std::string& name, std::string contents);
 

@@ -116,6 +116,12 @@ double diameter(const Mesh& mesh);
 /// a node is used by no cell, an index is out of range, or a sub-domain < 1.
 void check_mesh(const Mesh& mesh, const std::string& source);
 
+/// Whether a reader or a writer runs check_mesh (a second or a third of a second per million
+/// cells). `skip` is the caller's word that the mesh is checked elsewhere: it ran check_mesh on
+/// this very mesh (sig-mesh writing mesh_from_card's), or runs it on what it makes of it (a
+/// generator, after moving gmsh's nodes).
+enum class MeshCheck { run, skip };
+
 /// The nodes of a 2D mesh as plane vectors, for the libraries that take positions and never see a
 /// mesh (the integrator's equivalent mass matrix, tests/layering).
 inline std::vector<Eigen::Vector2d> plane_positions(const Mesh& mesh) {

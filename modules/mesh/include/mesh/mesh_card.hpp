@@ -22,6 +22,8 @@ Mesh read_mesh_file(const std::filesystem::path& path);
 
 /// The mesh a MESH card describes; `folder` is where relative file names start (the datafile's
 /// folder). Card errors name the file, the line and the field.
+/// The mesh is one check_mesh accepts: its reader or generator ran it (or it is our own NOPO,
+/// whose fingerprint says it is as written).
 Mesh mesh_from_card(const Card& card, const std::filesystem::path& folder);
 
 /// The circles a MESH card's generator puts its curved boundary on (mesh/boundary_arcs.hpp):

@@ -76,6 +76,7 @@ struct NopoWriteOptions {
   std::optional<std::int64_t> ndsr; ///< NOP2 word 2; default: the largest reference
   /// Write the fingerprint after the first 8 characters of text.creator (see above).
   bool stamp_fingerprint = false;
+  MeshCheck check = MeshCheck::run; ///< mesh/mesh.hpp: skip only for a mesh checked already
 };
 
 /// The bytes of the NOPO file of `mesh`.
@@ -86,7 +87,8 @@ std::string encode_nopo(const Mesh& mesh, NopoVariant variant, const NopoWriteOp
 /// (the cards of the stage and what its inputs record) goes beside it to PATH.prov
 /// (core/provenance.hpp).
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
-                const std::string& title, const std::string& creator);
+                const std::string& title, const std::string& creator,
+                MeshCheck check = MeshCheck::run);
 void write_nopo(const std::filesystem::path& path, const Mesh& mesh, NopoVariant variant,
                 const NopoWriteOptions& options);
 
