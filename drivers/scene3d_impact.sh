@@ -12,7 +12,9 @@
 # and TIME mass= set), its own sig-contact and sig-march (energy.csv, march.log, wall.txt).
 # Methods (scene 8a's, drivers/scene8a.sh): signorini (consistent mass), compliance and
 # specific-penalty (r = 1e12 Pa/m), emm (Signorini + EMM), two-step (persistency on the midpoint
-# velocity), two-step-increment, ipm, ipm-emm (g = 5e-4 m). Then postproc/scene3d_impact_report.py
+# velocity), two-step-increment, ipm, ipm-emm (g = 5e-4 m). OUTDIR/2d/<method>: scene 8a's 2D ball
+# (datafiles/scene8a/ball.dat) with each strategy at the same k, T and gap, the losses the 3D ones
+# are compared with. Then postproc/scene3d_impact_report.py
 # OUTDIR writes OUTDIR/report.md, OUTDIR/runs.csv and OUTDIR/energy.png, speed_energy.png.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3), SIG_GMSH.
@@ -57,6 +59,9 @@ declare -A fields=(
   [ipm-emm]="strategy=ipm r=1e12 g=5e-4|emm"
 )
 
+# The plane of the template (only its strategy fields change per method).
+point=$(deck_value "$template" CONTACT point) || die "no CONTACT point= in $template"
+
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 failed=()
@@ -74,7 +79,7 @@ for mesh in "${meshes[@]}"; do
     mkdir -p "$dir"
     link_ds ../base "$dir" nopo mili tae
     f=${fields[$method]}
-    contact="CONTACT ref=3 obstacle=plane point=0,0,-0.005 normal=0,0,1 ${f%|*}"
+    contact="CONTACT ref=3 obstacle=plane point=$point normal=0,0,1 ${f%|*}"
     deck_variant "$base/ball_impact.dat" "$dir/ball_impact.dat" --replace-card CONTACT "$contact" \
       --set TIME.mass="${f#*|}"
     { run_stage contact "$dir/ball_impact.dat" "$dir" &&
@@ -83,6 +88,28 @@ for mesh in "${meshes[@]}"; do
   done
   echo "scene3d_impact.sh: mesh $k (h = $h, grading = $grading) done ($((SECONDS - t0)) s)"
 done
+# Scene 8a's 2D ball (datafiles/scene8a/ball.dat, its 128-node circle) with the same strategies,
+# k, T and gap below its lowest point (x2 = 15): the losses the 3D ones are compared with.
+deck2d=$root/datafiles/scene8a/ball.dat
+k3=$(deck_value "$template" TIME k)
+T3=$(deck_value "$template" TIME T)
+y2d=$("$python" -c "print(repr(15 + float('${point##*,}')))")
+base=$out/2d/base
+mkdir -p "$base"
+deck_variant "$deck2d" "$base/ball.dat" --set MESH.file="$root/datafiles/scene8a/ball.msh" \
+  --set TIME.k="$k3" --set TIME.T="$T3" --set TIME.output_every=50 --set OUTPUT.vtk=no
+build_base "$base/ball.dat" "$base" "scene 8a's 2D ball" mesh material assemble
+for method in "${methods[@]}"; do
+  dir=$out/2d/$method
+  mkdir -p "$dir"
+  link_ds ../base "$dir" nopo mili tae
+  f=${fields[$method]}
+  deck_variant "$base/ball.dat" "$dir/ball.dat" --set TIME.mass="${f#*|}" --replace-card CONTACT \
+    "CONTACT ref=3 obstacle=plane point=0,$y2d normal=0,1 ${f%|*}"
+  { run_stage contact "$dir/ball.dat" "$dir" && run_timed march "$dir/ball.dat" "$dir"; } ||
+    failed+=("$dir")
+done
+progress_step "2d (scene 8a's ball, ${#methods[@]} strategies)"
 echo "scene3d_impact.sh: all runs done in $((SECONDS - start)) s"
 record_seconds $start
 

@@ -109,8 +109,7 @@ TEST(InitialCards, ThreeDimensionalTranslationAndSpin) {
                               "gmsh" / "box_v41_ascii.msh");
   ASSERT_EQ(mesh.dim, 3);
   const Datafile d =
-      Datafile::parse("INITIAL u=0.5,0,-1 v=1,-2,3 omega=0.1,0.2,-0.3 centre=0.5,0.5,0
-", "i.dat");
+      Datafile::parse("INITIAL u=0.5,0,-1 v=1,-2,3 omega=0.1,0.2,-0.3 centre=0.5,0.5,0\n", "i.dat");
   const InitialFields f = initial_fields(d, mesh);
   ASSERT_EQ(f.v.size(), 3 * mesh.num_nodes());
   const Eigen::Vector3d omega(0.1, 0.2, -0.3), centre(0.5, 0.5, 0.0);
