@@ -4,7 +4,7 @@
 # every contact strategy of scene 8a, on a ladder of half-ball meshes graded towards the pole, then
 # its report beside Hertz's impact time.
 #
-#   full:    meshes (h, grading) = (0.25, 0.3) (0.14, 0.2) (0.1, 0.15)
+#   full:    meshes (h, grading) = (0.25, 0.3) (0.14, 0.2) (0.1, 0.15) (0.07, 0.1)
 #   --quick: mesh (0.25, 0.3) only
 #
 # Per mesh the bulk stages sig-mesh, sig-material, sig-assemble run once into OUTDIR/m<k>/base;
@@ -44,7 +44,7 @@ command -v "${SIG_GMSH:-gmsh}" >/dev/null || die "gmsh is needed to mesh the hal
 if [ $quick -eq 1 ]; then
   meshes=("0.25 0.3")
 else
-  meshes=("0.25 0.3" "0.14 0.2" "0.1 0.15")
+  meshes=("0.25 0.3" "0.14 0.2" "0.1 0.15" "0.07 0.1")
 fi
 methods=(signorini compliance specific-penalty emm two-step two-step-increment ipm ipm-emm)
 # method -> "CONTACT fields|mass"
@@ -95,6 +95,7 @@ k3=$(deck_value "$template" TIME k)
 T3=$(deck_value "$template" TIME T)
 y2d=$("$python" -c "print(repr(15 + float('${point##*,}')))")
 base=$out/2d/base
+rm -rf "$out/2d"
 mkdir -p "$base"
 deck_variant "$deck2d" "$base/ball.dat" --set MESH.file="$root/datafiles/scene8a/ball.msh" \
   --set TIME.k="$k3" --set TIME.T="$T3" --set TIME.output_every=50 --set OUTPUT.vtk=no
