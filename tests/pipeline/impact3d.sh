@@ -1,22 +1,24 @@
 #!/usr/bin/env bash
 # Requirement (issue 28, "Ball impact in 3D"): sig-march marches a 3D body, its contact
-# frictionless, with scene 8a's strategies, on a coarse half ball of datafiles/scene3d/ball_impact.dat
-# (h = H at the pole, see below); checked on energy.csv and case.hist:
+# frictionless, with scene 8a's strategies, on the coarse half ball (h, grading) = (0.25, 0.3) of
+# datafiles/scene3d/ball_impact.dat (1338 dofs); checked on energy.csv and case.hist:
 #  - free flight (no CONTACT card), thrown with a translation and a spin (INITIAL v= omega=
 #    centre=, three components each): every node's velocity stays its initial rigid field and its
-#    displacement T times it to 1e-10 (the linear and angular momentum exact), the energy E0 to
-#    1e-12 relative;
+#    displacement T times it to 1e-10 (the linear and angular momentum exact; measured 1.7e-13),
+#    the energy E0 to 1e-12 relative;
 #  - the impact (the pole 5.25 mm above the plane at 10 m/s, k = 1e-4, T = 0.02): every strategy
-#    marches to T and the ball leaves the plane; the specific penalty keeps E + interface energy
-#    to 1e-6 of E0 (its identity (3.53) holds to the Newton tolerance), two-step with persistency
-#    on the increment to 1e-6 (its (b) forces do no work); IPM and IPM + EMM lose energy, less than
-#    0.5 %, and never penetrate beyond g = 5e-4 m (1 + 1e-8); Signorini's penetration is 0 to
-#    1e-9 m (its wall at g = 0);
-#  - the contact time (k x the steps with a node in contact) within TOL of Hertz's
-#    2.87 (m^2 / (R E*^2 v))^(1/5) for every strategy but the penalty ones: on this coarse mesh
-#    few nodes carry the contact (a = 0.70 m against h = H), and the contact radius jumps node by
-#    node, so the measured time sits within a few % of Hertz's; the full driver
-#    (drivers/scene3d_impact.sh) approaches it on finer meshes;
+#    marches to T, the ball hits the plane and leaves it; the specific penalty keeps E + interface
+#    energy to 1e-10 of E0 (its identity (3.53); a linear body's balance is exact to round-off,
+#    measured 7e-14), two-step with persistency on the increment too (its (b) forces do no work,
+#    6e-14); IPM and IPM + EMM lose less than 0.05 % (measured 0.005 %, 0.006 %) and never
+#    penetrate beyond g = 5e-4 m (1 + 1e-8); Signorini's penetration is 0 to 1e-9 m (wall at 0);
+#  - the contact time (k x the steps with a node in contact) within 15 % of Hertz's
+#    2.87 (m^2 / (R E*^2 v))^(1/5) for Signorini, two-step (increment), IPM and IPM + EMM
+#    (measured -10.8, -11.5, -10.2, -10.2 %): on this coarse mesh the P1 tetrahedra are stiffer
+#    than the ball and shorten the contact; the full driver's ladder converges to Hertz's (-6.9,
+#    -5.7, -4.5 % for Signorini at h = 0.14, 0.1, 0.07; datafiles/scene3d/README.md).
+#  - a candidate zone too small for the contact (SOLVER candidate_gap=0.006, the pole's cap) stops
+#    the march when a watched node goes through the plane, naming it.
 # What a 3D march refuses (friction, the marches in velocity): tests/bad_inputs/mesh3d_march_*.dat.
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
@@ -35,19 +37,15 @@ for stage in mesh material assemble; do
     { cat "$work/$stage.log"; die "sig-$stage on the coarse half ball"; }
 done
 
-# run NAME CONTACT_LINE MASS [TIME_LINE]: sig-contact and sig-march in $work/NAME.
+# run NAME CONTACT_LINE MASS [SED]: sig-contact and sig-march in $work/NAME on the coarse deck
+# with that CONTACT card and mass (and the sed expression SED).
 run() {
   local dir=$work/$1
   mkdir -p "$dir"
   for ds in nopo mili tae; do ln -s "$base/case.$ds" "$dir/case.$ds"; done
-  sed -E -e "s|^CONTACT .*|$2|" -e "s|mass=emm|mass=$3|" "$base/ball.dat" >"$dir/ball.dat"
-  if [ -n "${4:-}" ]; then
-    sed -i -E -e "s|^TIME .*|$4|" "$dir/ball.dat"
-  fi
-  if grep -q '^CONTACT' "$dir/ball.dat"; then
-    "$bin/sig-contact" "$dir/ball.dat" -o "$dir" >"$dir/contact.log" 2>&1 ||
-      { cat "$dir/contact.log"; die "sig-contact for $1"; }
-  fi
+  sed -E -e "s|^CONTACT .*|$2|" -e "s|mass=emm|mass=$3|" -e "${4:-}" "$base/ball.dat" >"$dir/ball.dat"
+  "$bin/sig-contact" "$dir/ball.dat" -o "$dir" >"$dir/contact.log" 2>&1 ||
+    { cat "$dir/contact.log"; die "sig-contact for $1"; }
   "$bin/sig-march" "$dir/ball.dat" -o "$dir" >"$dir/march.log" 2>&1 ||
     { cat "$dir/march.log"; die "sig-march for $1"; }
 }
@@ -59,11 +57,20 @@ run two-step-increment "$plane strategy=two-step persistency=increment" consiste
 run ipm "$plane strategy=ipm r=1e12 g=5e-4" consistent
 run ipm-emm "$plane strategy=ipm r=1e12 g=5e-4" emm
 # Free flight: no contact card, a throw with spin about the centre (0, 0, 5), 20 steps.
-run free "INITIAL v=1,-2,-10 omega=0.3,-0.2,0.5 centre=0,0,5" consistent \
-  "TIME scheme=midpoint T=2e-3 k=1e-4 output_every=20"
-sed -i -E -e '/^INITIAL v=0,0,-10/d' -e '/^SOLVER/d' "$work/free/ball.dat"
+mkdir -p "$work/free"
+for ds in nopo mili tae; do ln -s "$base/case.$ds" "$work/free/case.$ds"; done
+sed -E -e '/^(CONTACT|SOLVER) /d' \
+  -e 's|^INITIAL .*|INITIAL v=1,-2,-10 omega=0.3,-0.2,0.5 centre=0,0,5|' \
+  -e 's|^TIME .*|TIME scheme=midpoint T=2e-3 k=1e-4 output_every=20|' "$base/ball.dat" >"$work/free/ball.dat"
 "$bin/sig-march" "$work/free/ball.dat" -o "$work/free" >"$work/free/march.log" 2>&1 ||
   { cat "$work/free/march.log"; die "sig-march for the free flight"; }
+# A candidate zone (SOLVER candidate_gap=) too small for the contact: the march stops at the step
+# a watched node goes through the plane, naming it, and keeps the steps done.
+run narrow "$plane strategy=signorini" consistent 's|^SOLVER .*|SOLVER candidate_gap=0.006|'
+checks=$((checks + 1))
+grep -q "outside the candidate zone" "$work/narrow/march.log" &&
+  grep -q "STOPPED" "$work/narrow/march.log" ||
+  fail "a watched node through the plane stops the march: $(tail -2 "$work/narrow/march.log")"
 "$bin/sig-dump" --json --values "$work/free/case.hist" >"$work/free/hist.json"
 "$bin/sig-dump" --json --values "$base/case.nopo" >"$work/nopo.json"
 
@@ -131,7 +138,7 @@ for method in ("specific-penalty", "two-step-increment"):
           f"{method}: E + interface energy kept to 1e-10 of E0 ({runs[method]['excursion']:.2e})")
 for method in ("ipm", "ipm-emm"):
     r = runs[method]
-    check(-5e-3 <= r["change"] <= 1e-9, f"{method}: loses less than 0.5 % ({100 * r['change']:+.4f} %)")
+    check(-5e-4 <= r["change"] <= 1e-9, f"{method}: loses less than 0.05 % ({100 * r['change']:+.4f} %)")
     check(r["penetration"] <= 5e-4 * (1 + 1e-8), f"{method}: penetration <= g ({r['penetration']:.3e})")
 check(runs["signorini"]["penetration"] <= 1e-9,
       f"signorini: no penetration ({runs['signorini']['penetration']:.2e})")

@@ -19,9 +19,9 @@ std::string watched_entry(const ContactBoundary& boundary, const Eigen::VectorXd
   Eigen::Index worst = 0;
   if (q.maxCoeff(&worst) <= 0.0) return {};
   std::ostringstream why;
-  why << "watched contact node " << worst + 1 << " of " << q.size()
-      << " outside the candidate zone (initial gap " << boundary.watched_gap[worst]
-      << ") penetrates the obstacle by " << q[worst]
+  why << "contact node " << boundary.watched_nodes[static_cast<std::size_t>(worst)] + 1
+      << ", one of the " << q.size() << " outside the candidate zone (initial gap "
+      << boundary.watched_gap[worst] << ") penetrates the obstacle by " << q[worst]
       << ": raise SOLVER candidate_gap= so that the zone holds every node the contact reaches";
   return why.str();
 }
@@ -44,6 +44,7 @@ ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBo
                                                 << boundary.tangential.cols() << " for "
                                                 << boundary.size() << " contact nodes");
   SIG_VERIFY(boundary.watched.rows() == boundary.watched_gap.size() &&
+                 std::ssize(boundary.watched_nodes) == boundary.watched.rows() &&
                  (boundary.watched.rows() == 0 || boundary.watched.cols() == boundary.B.cols()),
              "march: " << boundary.watched.rows() << " x " << boundary.watched.cols()
                        << " watched rows for " << boundary.watched_gap.size() << " gaps");

@@ -78,7 +78,10 @@ int main(int argc, char** argv) {
                  "FRICTION law=nonmonotone. A step whose Newton "
                  "fails stops the "
                  "march: the files hold the steps done, a warning is printed and the stage exits "
-                 "0. A progress line shows the step, time steps per second and the time left.",
+                 "0. A progress line shows the step, time steps per second and the time left. "
+                 "On a 3D mesh: the linear schemes (midpoint, Newmark; consistent, lumped or EMM "
+                 "mass) with every strategy, frictionless (issue 28); SOLVER candidate_gap= "
+                 "condenses only the contact nodes near the obstacle.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
                 "OUTDIR/case.mili (sig-material: the laws, hyperelastic or not)",

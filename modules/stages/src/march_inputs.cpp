@@ -138,6 +138,7 @@ ContactBoundary contact_boundary(const MarchContactZone& zone, const Mesh& mesh,
   const ContactBoundary watched = contact_boundary(zone.watched, mesh, reduced);
   b.watched = watched.B;
   b.watched_gap = watched.geometric_gap;
+  b.watched_nodes = watched.nodes;
   return b;
 }
 

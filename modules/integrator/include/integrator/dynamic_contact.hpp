@@ -47,6 +47,7 @@ struct ContactBoundary {
   /// brings one beyond the obstacle surface (watched u - watched_gap > 0) fails, naming it.
   Eigen::SparseMatrix<double> watched;
   Eigen::VectorXd watched_gap;
+  std::vector<int> watched_nodes; ///< their 0-based mesh nodes (messages)
 
   int size() const { return static_cast<int>(nodes.size()); }
   /// [u_n - d]_+ per node for the normal displacements x.
