@@ -17,12 +17,13 @@
 #    (measured -10.8, -11.5, -10.2, -10.2 %): on this coarse mesh the P1 tetrahedra are stiffer
 #    than the ball and shorten the contact; the full driver's ladder converges to Hertz's (-6.9,
 #    -5.7, -4.5 % for Signorini at h = 0.14, 0.1, 0.07; datafiles/scene3d/README.md).
+#  - sig-post writes the 5 kept states of a 3D march as .vtu (velocity with 3 components);
 #  - a candidate zone too small for the contact (SOLVER candidate_gap=0.006, the pole's cap) stops
 #    the march when a watched node goes through the plane, naming it.
 # What a 3D march refuses (friction, the marches in velocity): tests/bad_inputs/mesh3d_march_*.dat.
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
-require_stages mesh material contact assemble march dump
+require_stages mesh material contact assemble march post dump
 require_command gmsh "the half ball is meshed by gmsh"
 
 H=0.25
@@ -71,6 +72,16 @@ checks=$((checks + 1))
 grep -q "outside the candidate zone" "$work/narrow/march.log" &&
   grep -q "STOPPED" "$work/narrow/march.log" ||
   fail "a watched node through the plane stops the march: $(tail -2 "$work/narrow/march.log")"
+# sig-post shows a 3D march's kept states: one .vtu a state, listed in the .pvd.
+sed -i -e 's|^OUTPUT .*|OUTPUT vtk=yes|' "$work/ipm-emm/ball.dat"
+"$bin/sig-post" "$work/ipm-emm/ball.dat" -o "$work/ipm-emm" >"$work/ipm-emm/post.log" 2>&1 ||
+  { cat "$work/ipm-emm/post.log"; die "sig-post of the 3D march"; }
+checks=$((checks + 1))
+states=$(grep -c '<DataSet' "$work/ipm-emm/ball.pvd" || true)
+vtus=$(find "$work/ipm-emm" -name 'ball_*.vtu' | wc -l)
+[ "$states" -eq 5 ] && [ "$vtus" -eq 5 ] && grep -q 'Name="velocity" NumberOfComponents="3"' \
+  "$work/ipm-emm/ball_0004.vtu" ||
+  fail "sig-post: 5 kept states of the 3D march as .vtu ($states in the .pvd, $vtus files)"
 "$bin/sig-dump" --json --values "$work/free/case.hist" >"$work/free/hist.json"
 "$bin/sig-dump" --json --values "$base/case.nopo" >"$work/nopo.json"
 

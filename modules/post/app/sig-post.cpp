@@ -104,10 +104,6 @@ int main(int argc, char** argv) {
     //    in case.hist, one .vtu each; its energies are in energy.csv already.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
-    // A 3D march (issue 28) is read from its energy.csv for now: its states are not shown.
-    if (const sig::Card* time_card = datafile.find("TIME"); time_card && mesh.dim == 3)
-      time_card->fail("", "sig-post shows a 3D march's states only from issue 28's next slice: "
-                          "its energies and contact are in OUTDIR/energy.csv (issue 28)");
     const std::string stem = output ? output->file_name("name", datafile.stem()) : datafile.stem();
     std::vector<std::filesystem::path> written;
     if (datafile.find("TIME") != nullptr) {
@@ -145,9 +141,7 @@ int main(int argc, char** argv) {
                                                        contact_case ? &cont : nullptr, data))
         written.push_back(file);
     } else if (write_vtk) {
-      const sig::SolutionFields fields = mesh.dim == 3
-                                             ? sig::solution_fields_3d(mesh, u, materials, contact)
-                                             : sig::solution_fields(mesh, u, materials, contact);
+      const sig::SolutionFields fields = sig::solution_fields(mesh, u, materials, contact);
       const std::string vtu = stem + "_0000.vtu";
       const bool converged = solution.integer("converged") != 0;
       sig::write_vtu(

@@ -14,7 +14,7 @@
 //
 // The mesh is 2D or 3D: a 3D body marches the linear schemes (midpoint, Newmark; mass
 // consistent, lumped or emm) with every strategy, frictionless; the hyperelastic march, friction
-// in time and the marches in velocity refuse a 3D mesh (issue 28).
+// in time and the marches in velocity refuse a 3D mesh on their card (issue 28).
 //
 // Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0),
 // with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
