@@ -63,26 +63,11 @@ area = 0.5 * np.linalg.norm(np.cross(x[top[:, 1]] - x[top[:, 0]], x[top[:, 2]] -
 print(repr($P / area))"
 }
 
-{
-  provenance
-  echo "meshes: $(printf '%s;' "${meshes[@]}" | sed 's/;$//')"
-  echo "methods: ${methods[*]}"
-  echo "P: $P"
-} >"$out/command.txt"
-cp "$template" "$out/hertz_ball.template.dat"
-
-rm -rf "$out"/m[0-9]*
-progress_begin $((${#meshes[@]} * (1 + ${#methods[@]})))
+ladder_begin hertz_ball "P: $P"
 start=$SECONDS
 k=0
 for mesh in "${meshes[@]}"; do
-  k=$((k + 1))
-  read -r h grading <<<"$mesh"
-  t0=$SECONDS
-  base=$out/m$k/base
-  mkdir -p "$base"
-  deck_variant "$template" "$base/hertz_ball.dat" --set MESH.h="$h" --set MESH.grading="$grading" \
-    --set OUTPUT.vtk=no
+  ladder_mesh "$mesh" hertz_ball --set OUTPUT.vtk=no
   build_base "$base/hertz_ball.dat" "$base" "the mesh of h = $h, grading = $grading" mesh
   pressure=$(top_pressure "$base/case.nopo") || die "cannot measure the top face of $base/case.nopo"
   deck_variant "$base/hertz_ball.dat" "$base/hertz_ball.dat" --set PRESSURE.p="$pressure"

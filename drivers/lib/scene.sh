@@ -134,6 +134,38 @@ bench_provenance() {
   echo "revision: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
 }
 
+# ladder_begin NAME [LINE...]: the start of a driver that runs $methods on a ladder of $meshes
+# (scene3d_hertz.sh, scene3d_impact.sh): $out/command.txt (provenance, the meshes, the methods,
+# each LINE), $template copied to $out/NAME.template.dat, the old m<k> folders removed, and the
+# progress of one base and the methods per mesh begun.
+ladder_begin() {
+  local name=$1 line
+  shift
+  {
+    provenance
+    echo "meshes: $(printf '%s;' "${meshes[@]}" | sed 's/;$//')"
+    echo "methods: ${methods[*]}"
+    for line; do echo "$line"; done
+  } >"$out/command.txt"
+  cp "$template" "$out/$name.template.dat"
+  rm -rf "$out"/m[0-9]*
+  progress_begin $((${#meshes[@]} * (1 + ${#methods[@]})))
+}
+
+# ladder_mesh "H GRADING" NAME [EDIT...]: the next mesh of a ladder (after ladder_begin and k=0):
+# k incremented, h, grading, t0 ($SECONDS) and base ($out/m<k>/base, made) set, and
+# $base/NAME.dat written from $template with MESH h= grading= and the deck_variant EDITs.
+ladder_mesh() {
+  local name=$2
+  k=$((k + 1))
+  read -r h grading <<<"$1"
+  shift 2
+  t0=$SECONDS
+  base=$out/m$k/base
+  mkdir -p "$base"
+  deck_variant "$template" "$base/$name.dat" --set MESH.h="$h" --set MESH.grading="$grading" "$@"
+}
+
 # Progress of a long driver: `progress_begin N` before its N runs (a run: any unit of work of
 # roughly even cost, e.g. sig-solve + sig-post of one variant), `progress_step WHAT` after each.
 # Prints "[k/N] WHAT: 1m02s elapsed, about 3m10s left", the rest estimated from the mean time

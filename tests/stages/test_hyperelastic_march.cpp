@@ -66,7 +66,7 @@ struct Ring {
     for (int i = 0; i < mesh.num_nodes(); ++i)
       if (std::abs((mesh.nodes[i] - centre).norm() - 10.0) < 1e-9) gamma3.push_back(i);
     ASSERT_EQ(gamma3.size(), 32u); // the outer circle's nodes
-    mass = equivalent_mass_matrix(mass, plane_positions(mesh), gamma3);
+    mass = equivalent_mass_matrix(mass, node_positions(mesh), gamma3);
   }
 
   FiniteStrainProblem problem(double k, AlgorithmicStress stress) const {

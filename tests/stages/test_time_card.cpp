@@ -3,11 +3,14 @@
 // their uniform fields on the nodes of their sub-domains only.
 #include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "mesh/gmsh.hpp"
 #include "stages/time_card.hpp"
 #include "test_bodies.hpp"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 namespace sig {
@@ -97,6 +100,33 @@ TEST(InitialCards, UniformFieldsOnTheirSubDomains) {
   EXPECT_THROW(initial_fields(Datafile::parse("INITIAL v=1,2 region=5\n", "i.dat"), mesh),
                InputError);
   EXPECT_EQ(initial_fields(Datafile::parse("TITLE none\n", "i.dat"), mesh).v.norm(), 0.0);
+}
+
+// On a 3D mesh (issue 28) every vector has three components, and the spin is the vector omega:
+// v + omega x (X - centre) at every node; two components are refused on the card's line.
+TEST(InitialCards, ThreeDimensionalTranslationAndSpin) {
+  const Mesh mesh = read_gmsh(std::filesystem::path(SIG_SOURCE_DIR) / "tests" / "fuzz" / "corpus" /
+                              "gmsh" / "box_v41_ascii.msh");
+  ASSERT_EQ(mesh.dim, 3);
+  const Datafile d =
+      Datafile::parse("INITIAL u=0.5,0,-1 v=1,-2,3 omega=0.1,0.2,-0.3 centre=0.5,0.5,0\n", "i.dat");
+  const InitialFields f = initial_fields(d, mesh);
+  ASSERT_EQ(f.v.size(), 3 * mesh.num_nodes());
+  const Eigen::Vector3d omega(0.1, 0.2, -0.3), centre(0.5, 0.5, 0.0);
+  for (int i = 0; i < mesh.num_nodes(); ++i) {
+    const Eigen::Vector3d x = mesh.nodes[static_cast<std::size_t>(i)];
+    EXPECT_EQ(f.u.segment<3>(3 * i), Eigen::Vector3d(0.5, 0.0, -1.0));
+    EXPECT_LT((f.v.segment<3>(3 * i) - Eigen::Vector3d(1, -2, 3) - omega.cross(x - centre)).norm(),
+              1e-15)
+        << "node " << i;
+  }
+  try {
+    initial_fields(Datafile::parse("TITLE t\nINITIAL v=1,2\n", "i.dat"), mesh);
+    ADD_FAILURE() << "a 2D velocity on a 3D mesh accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("i.dat:2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("three components"), std::string::npos) << e.what();
+  }
 }
 
 } // namespace

@@ -137,6 +137,28 @@ double ContactElements::bound(int i) const {
   return law[i].has_wall() ? gap[i] + law[i].depth : std::numeric_limits<double>::infinity();
 }
 
+ContactElements ContactElements::subset(const std::vector<int>& zone) const {
+  ContactElements part = *this;
+  part.node.clear();
+  part.lagrange_node.clear();
+  part.normal.clear();
+  part.tangent.clear();
+  part.law.clear();
+  part.gap.resize(static_cast<Eigen::Index>(zone.size()));
+  part.weight.resize(static_cast<Eigen::Index>(zone.size()));
+  for (std::size_t k = 0; k < zone.size(); ++k) {
+    const int i = zone[k];
+    part.node.push_back(node[i]);
+    part.lagrange_node.push_back(lagrange_node[i]);
+    part.normal.push_back(normal[i]);
+    part.tangent.push_back(tangent[i]);
+    part.law.push_back(law[i]);
+    part.gap[static_cast<Eigen::Index>(k)] = gap[i];
+    part.weight[static_cast<Eigen::Index>(k)] = weight[i];
+  }
+  return part;
+}
+
 std::vector<ContactFrame> ContactElements::frames() const {
   std::vector<ContactFrame> R;
   R.reserve(normal.size());

@@ -236,7 +236,9 @@ const std::vector<CardSpec>& card_schema() {
             "static small-strain solve: condense only the contact nodes whose initial gap is at "
             "most this length, > 0 (a 3D contact boundary has thousands of nodes, most far from "
             "the obstacle); a node outside that comes to touch widens the zone and the solve "
-            "starts again, so the solution is the one without it; default every contact node"},
+            "starts again, so the solution is the one without it; linear march (sig-march): "
+            "only those nodes condensed, the others watched, a step that brings one of them "
+            "through the obstacle stopping the march; default every contact node"},
        }},
       {"CONVEXIFICATION",
        false,
@@ -300,11 +302,12 @@ const std::vector<CardSpec>& card_schema() {
        "(a card sets only the fields it gives, a later card wins on shared nodes; Dirichlet dofs "
        "keep their imposed values)",
        {
-           {"u", "initial displacement: ux,uy (default 0,0)"},
-           {"v", "initial velocity: vx,vy (default 0,0)"},
-           {"omega", "initial angular velocity (rad/s, counter-clockwise): adds omega e3 x "
-                     "(X - centre) to the velocity (needs centre=)"},
-           {"centre", "centre of the initial rotation: x,y"},
+           {"u", "initial displacement: ux,uy (3D: ux,uy,uz; default 0)"},
+           {"v", "initial velocity: vx,vy (3D: vx,vy,vz; default 0)"},
+           {"omega", "initial angular velocity (rad/s): 2D the rate counter-clockwise, adding "
+                     "omega e3 x (X - centre) to the velocity; 3D the vector wx,wy,wz, adding "
+                     "omega x (X - centre) (needs centre=)"},
+           {"centre", "centre of the initial rotation: x,y (3D: x,y,z)"},
            {"region", "sub-domain numbers (1-based); default every sub-domain"},
        }},
       {"COMPARE",

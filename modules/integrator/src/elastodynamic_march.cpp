@@ -9,6 +9,25 @@
 
 namespace sig {
 
+namespace {
+
+/// Empty, or why the displacement u brings a watched node (one outside the candidate zone)
+/// beyond the obstacle surface.
+std::string watched_entry(const ContactBoundary& boundary, const Eigen::VectorXd& u) {
+  if (boundary.watched.rows() == 0) return {};
+  const Eigen::VectorXd q = boundary.watched * u - boundary.watched_gap;
+  Eigen::Index worst = 0;
+  if (q.maxCoeff(&worst) <= 0.0) return {};
+  std::ostringstream why;
+  why << "contact node " << boundary.watched_nodes[static_cast<std::size_t>(worst)] + 1
+      << ", one of the " << q.size() << " outside the candidate zone (initial gap "
+      << boundary.watched_gap[worst] << ") penetrates the obstacle by " << q[worst]
+      << ": raise SOLVER candidate_gap= so that the zone holds every node the contact reaches";
+  return why.str();
+}
+
+} // namespace
+
 ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, DynamicState initial)
     : scheme_(scheme), state_(std::move(initial)) {}
 
@@ -24,6 +43,11 @@ ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBo
              "march: a tangential operator of " << boundary.tangential.rows() << " x "
                                                 << boundary.tangential.cols() << " for "
                                                 << boundary.size() << " contact nodes");
+  SIG_VERIFY(boundary.watched.rows() == boundary.watched_gap.size() &&
+                 std::ssize(boundary.watched_nodes) == boundary.watched.rows() &&
+                 (boundary.watched.rows() == 0 || boundary.watched.cols() == boundary.B.cols()),
+             "march: " << boundary.watched.rows() << " x " << boundary.watched.cols()
+                       << " watched rows for " << boundary.watched_gap.size() << " gaps");
   condensed_ = condense_contact(scheme, boundary);
   const int p = boundary.size();
   normal_dof_.resize(p);
@@ -96,6 +120,11 @@ StepRecord ElastodynamicSteps::step(int) {
       const Eigen::VectorXd correction = condensed_.Z * lambda;
       next.u -= 2.0 * correction;
       next.v -= (4.0 / k) * correction;
+    }
+    if (const std::string entered = watched_entry(boundary, next.u); !entered.empty()) {
+      r.converged = false;
+      r.failure = entered;
+      return r;
     }
     const Eigen::VectorXd x_next = condensed_.G * next.u;
     const Eigen::VectorXd q_next = x_next.head(p) - boundary.geometric_gap;

@@ -11,34 +11,39 @@
 namespace sig {
 namespace {
 
-/// m, the scalar mass of M = m (x) I_2; sig::Error if M is not of that form.
-Eigen::SparseMatrix<double> scalar_mass(const Eigen::SparseMatrix<double>& M) {
-  const Eigen::Index n = M.rows() / 2;
+/// m, the scalar mass of M = m (x) I_d (d dofs per node, interleaved); sig::Error if M is not of
+/// that form.
+Eigen::SparseMatrix<double> scalar_mass(const Eigen::SparseMatrix<double>& M, int d) {
+  const Eigen::Index n = M.rows() / d;
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index j = 0; j < M.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(M, j); it; ++it) {
-      if (it.value() == 0.0) continue; // the P1 pattern stores the x-y couplings as zeros
-      SIG_VERIFY(it.row() % 2 == j % 2 &&
-                     M.coeff(it.row() + 1 - 2 * (it.row() % 2), j + 1 - 2 * (j % 2)) == it.value(),
-                 "EMM: the mass is not the same in both directions (entry (" << it.row() + 1 << ", "
-                                                                             << j + 1 << "))");
-      if (j % 2 == 0) entries.emplace_back(it.row() / 2, j / 2, it.value());
+      if (it.value() == 0.0) continue; // the P1 pattern stores the couplings of components as 0
+      bool same = it.row() % d == j % d;
+      // Each entry of the first component against its copies in the others.
+      for (int c = 1; same && j % d == 0 && c < d; ++c)
+        same = M.coeff(it.row() + c, j + c) == it.value();
+      SIG_VERIFY(same, "EMM: the mass is not the same in every direction (entry ("
+                           << it.row() + 1 << ", " << j + 1 << "))");
+      if (j % d == 0) entries.emplace_back(it.row() / d, j / d, it.value());
     }
   Eigen::SparseMatrix<double> m(n, n);
   m.setFromTriplets(entries.begin(), entries.end());
   return m;
 }
 
-/// me = m0 + sum beta_ab Pi Sym_P(phi_a phi_b^T) Pi for the first `fields` affine fields (3: 1,
-/// x1, x2 and every product; 1: the mass alone is never asked), beta from the moments'
-/// conditions (header); empty if me is not positive definite off Gamma3.
+/// me = m0 + sum beta_ab Pi Sym_P(phi_a phi_b^T) Pi over the affine fields phi (the columns: 1,
+/// x1 .. xd) and every product (second_moments), or over the products with the constant field
+/// only (the mass and the centre), beta from the moments' conditions (header); empty if me is not
+/// positive definite off Gamma3.
 Eigen::SparseMatrix<double> project(const Eigen::SparseMatrix<double>& m,
                                     const std::vector<char>& removed, const Eigen::MatrixXd& phi,
                                     bool second_moments) {
   const Eigen::Index n = m.rows();
   std::vector<std::array<int, 2>> pairs; // (a, b), a <= b: the conditions and the unknowns
-  for (int a = 0; a < 3; ++a)
-    for (int b = a; b < 3; ++b)
+  const auto fields = static_cast<int>(phi.cols());
+  for (int a = 0; a < fields; ++a)
+    for (int b = a; b < fields; ++b)
       if (second_moments || a == 0) pairs.push_back({a, b});
   const auto np = static_cast<Eigen::Index>(pairs.size());
   Eigen::SparseMatrix<double> m0 = m;
@@ -94,11 +99,14 @@ Eigen::SparseMatrix<double> project(const Eigen::SparseMatrix<double>& m,
 } // namespace
 
 Eigen::SparseMatrix<double> equivalent_mass_matrix(const Eigen::SparseMatrix<double>& M,
-                                                   const std::vector<Eigen::Vector2d>& positions,
+                                                   const Eigen::MatrixXd& positions,
                                                    const std::vector<int>& contact_nodes) {
-  const int nodes = static_cast<int>(positions.size());
-  SIG_VERIFY(M.rows() == 2 * nodes && M.cols() == M.rows(),
-             "EMM: a " << M.rows() << " x " << M.cols() << " mass for " << nodes << " nodes");
+  const auto nodes = static_cast<int>(positions.rows());
+  const auto d = static_cast<int>(positions.cols());
+  SIG_VERIFY(d == 2 || d == 3, "EMM: positions of " << d << " coordinates");
+  SIG_VERIFY(M.rows() == d * nodes && M.cols() == M.rows(),
+             "EMM: a " << M.rows() << " x " << M.cols() << " mass for " << nodes << " nodes in "
+                       << d << "D");
   SIG_VERIFY(!contact_nodes.empty(), "EMM: no contact node (the EMM would be M)");
   std::vector<char> removed(static_cast<std::size_t>(nodes), 0);
   for (int i : contact_nodes) {
@@ -108,13 +116,15 @@ Eigen::SparseMatrix<double> equivalent_mass_matrix(const Eigen::SparseMatrix<dou
                "EMM: contact node " << i + 1 << " is given twice");
     removed[static_cast<std::size_t>(i)] = 1;
   }
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-  for (const Eigen::Vector2d& x : positions)
-    centre += x / nodes;
-  Eigen::MatrixXd phi(nodes, 3);
+  Eigen::RowVectorXd centre = Eigen::RowVectorXd::Zero(d);
   for (int i = 0; i < nodes; ++i)
-    phi.row(i) << 1.0, positions[i].x() - centre.x(), positions[i].y() - centre.y();
-  const Eigen::SparseMatrix<double> m = scalar_mass(M);
+    centre += positions.row(i) / nodes;
+  Eigen::MatrixXd phi(nodes, d + 1);
+  for (int i = 0; i < nodes; ++i) {
+    phi(i, 0) = 1.0;
+    phi.row(i).tail(d) = positions.row(i) - centre;
+  }
+  const Eigen::SparseMatrix<double> m = scalar_mass(M, d);
   Eigen::SparseMatrix<double> me = project(m, removed, phi, true);
   if (me.nonZeros() == 0) {
     log_warning("EMM: keeping the moments of inertia too makes the mass indefinite; only the "
@@ -125,13 +135,13 @@ Eigen::SparseMatrix<double> equivalent_mass_matrix(const Eigen::SparseMatrix<dou
                                       << " contact nodes removed, no positive definite mass of "
                                          "the pattern keeps the total mass and the centre");
   }
-  // Me = me (x) I_2, on M's interleaved dofs.
+  // Me = me (x) I_d, on M's interleaved dofs.
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index j = 0; j < me.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(me, j); it; ++it)
       if (it.value() != 0.0)
-        for (int c = 0; c < 2; ++c)
-          entries.emplace_back(2 * it.row() + c, 2 * j + c, it.value());
+        for (int c = 0; c < d; ++c)
+          entries.emplace_back(d * it.row() + c, d * j + c, it.value());
   Eigen::SparseMatrix<double> Me(M.rows(), M.cols());
   Me.setFromTriplets(entries.begin(), entries.end());
   return Me;

@@ -109,9 +109,6 @@ int main(int argc, char** argv) {
     //    in case.hist, one .vtu each; its energies are in energy.csv already.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
     const sig::MaterialTable materials = sig::read_mili(args.ds_path("mili"));
-    // A 3D case is a static one for now (issue 26): the stages before refused the rest.
-    if (datafile.find("TIME") != nullptr)
-      sig::require_2d(mesh, "sig-post", "time stepping (TIME card)");
     const std::string stem = output ? output->file_name("name", datafile.stem()) : datafile.stem();
     std::vector<std::filesystem::path> written;
     if (datafile.find("TIME") != nullptr) {
@@ -150,9 +147,7 @@ int main(int argc, char** argv) {
                                     contact_case ? &cont : nullptr, data, compression))
         written.push_back(file);
     } else if (write_vtk) {
-      const sig::SolutionFields fields = mesh.dim == 3
-                                             ? sig::solution_fields_3d(mesh, u, materials, contact)
-                                             : sig::solution_fields(mesh, u, materials, contact);
+      const sig::SolutionFields fields = sig::solution_fields(mesh, u, materials, contact);
       const std::string vtu = stem + "_0000.vtu";
       const bool converged = solution.integer("converged") != 0;
       sig::write_vtu(

@@ -58,7 +58,8 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
   const std::vector<double> times = hist.reals("output_time");
   const std::vector<double> u = hist.reals("u");
   const std::vector<double> v = hist.reals("v");
-  const auto ndof = static_cast<std::size_t>(2 * mesh.num_nodes());
+  const auto d = static_cast<std::size_t>(mesh.dim);
+  const auto ndof = d * static_cast<std::size_t>(mesh.num_nodes());
   const std::size_t outputs = times.size();
   for (const char* name : {"u", "v"}) {
     const std::vector<std::int64_t>& shape = hist.shape(name);
@@ -97,9 +98,9 @@ std::vector<std::filesystem::path> write_history_vtk(const std::filesystem::path
         const std::vector<double> u_s(u.begin() + s * ndof, u.begin() + (s + 1) * ndof);
         SolutionFields fields = solution_fields(mesh, u_s, materials, {});
         VtkField velocity{"velocity", 3, {}};
-        for (std::size_t i = 0; i < ndof; i += 2)
-          velocity.values.insert(velocity.values.end(),
-                                 {v[s * ndof + i], v[s * ndof + i + 1], 0.0});
+        velocity.values.assign(3 * (ndof / d), 0.0); // d components, z = 0 in 2D
+        for (std::size_t i = 0; i < ndof; ++i)
+          velocity.values[3 * (i / d) + i % d] = v[s * ndof + i];
         fields.point.push_back(std::move(velocity));
         for (const auto& [name, values] : contact)
           if (!values.empty())

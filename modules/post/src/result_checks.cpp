@@ -119,8 +119,8 @@ void verify_history_ds(const Ds& hist, const Mesh& mesh) {
                   "output_every", 1);
   integer_in(hist, "converged", 0, 1);
   const std::int64_t ndof = hist.integer("ndof");
-  SIG_VERIFY(ndof == 2 * static_cast<std::int64_t>(mesh.num_nodes()),
-             file << ": array 'ndof': " << ndof << ", the mesh has " << 2 * mesh.num_nodes()
+  SIG_VERIFY(ndof == mesh.dim * static_cast<std::int64_t>(mesh.num_nodes()),
+             file << ": array 'ndof': " << ndof << ", the mesh has " << mesh.dim * mesh.num_nodes()
                   << " dofs");
 
   // Per step: one length, that of the steps done (all of them unless the march stopped).

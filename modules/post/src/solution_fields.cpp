@@ -44,6 +44,7 @@ void add_contact_fields(SolutionFields& f, std::size_t n, const std::vector<Cont
 SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,
                                const MaterialTable& materials,
                                const std::vector<ContactRow>& contact) {
+  if (mesh.dim == 3) return solution_fields_3d(mesh, u, materials, contact);
   const std::size_t n = mesh.nodes.size();
   SIG_VERIFY(u.size() == 2 * n,
              "displacement holds " << u.size() << " values for " << n << " nodes");

@@ -4,12 +4,17 @@
 // (stages/quasistatic_stage.hpp).
 //
 //   TIME scheme=midpoint|newmark T= k= [output_every=1] [mass=consistent|lumped|emm]
-//   INITIAL [u=ux,uy] [v=vx,vy] [region=...]
+//   INITIAL [u=ux,uy] [v=vx,vy] [region=...]          (3D: three components)
 //   CONTACT ... [strategy=signorini|compliance|specific-penalty|two-step|ipm] [r=] [gap=]
 //   FRICTION ref= law=coulomb mu= | tresca threshold= | mu1 mu= | mu2 mu=   (of the slip over
 //            each step; law=nonmonotone is the backward-Euler march's)
 //   SOLVER linear=cholmod|umfpack|mumps maxit=   (K + (4 / k^2) M factorized once; maxit: the
-//          strategy's Newton iterations per phase, default 50)
+//          strategy's Newton iterations per phase, default 50) [candidate_gap=]  (linear body:
+//          only the contact nodes of initial gap at most this condensed, the others watched)
+//
+// The mesh is 2D or 3D: a 3D body marches the linear schemes (midpoint, Newmark; mass
+// consistent, lumped or emm) with every strategy, frictionless; the hyperelastic march, friction
+// in time and the marches in velocity refuse a 3D mesh on their card (issue 28).
 //
 // Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0),
 // with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
@@ -73,7 +78,10 @@ int main(int argc, char** argv) {
                  "FRICTION law=nonmonotone. A step whose Newton "
                  "fails stops the "
                  "march: the files hold the steps done, a warning is printed and the stage exits "
-                 "0. A progress line shows the step, time steps per second and the time left.",
+                 "0. A progress line shows the step, time steps per second and the time left. "
+                 "On a 3D mesh: the linear schemes (midpoint, Newmark; consistent, lumped or EMM "
+                 "mass) with every strategy, frictionless (issue 28); SOLVER candidate_gap= "
+                 "condenses only the contact nodes near the obstacle.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
                 "OUTDIR/case.mili (sig-material: the laws, hyperelastic or not)",
@@ -161,7 +169,12 @@ int main(int argc, char** argv) {
 
     // 2. Mesh and assembled system; a dynamic case needs a mass.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
-    sig::require_2d(mesh, "sig-march", "time stepping (TIME card)");
+    // 3D: linear elastodynamics with frictionless contact (issue 28's first slice).
+    if (hyperelastic)
+      sig::refuse_in_3d(mesh, *datafile.all("MATERIAL").front(), "law",
+                        "the hyperelastic march (large deformation in time)");
+    if (const sig::Card* friction = sig::friction_card_with_law(datafile))
+      sig::refuse_in_3d(mesh, *friction, "law", "friction in a march (its slips in two tangents)");
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
     if (system.M.nonZeros() == 0)
       throw sig::InputError(datafile.path, 0, "rho",
@@ -178,8 +191,12 @@ int main(int argc, char** argv) {
     initial.v = reduced.restrict(initial_full.v);
 
     // 4. The contact elements of case.cont and the mass (EMM included).
-    std::optional<sig::ContactElements> elements;
-    if (contact != nullptr) elements = sig::read_cont(args.ds_path("cont"), mesh);
+    // SOLVER candidate_gap=: only the nodes near the obstacle condensed, the others watched.
+    std::optional<sig::MarchContactZone> zone;
+    if (contact != nullptr)
+      zone = sig::march_contact_zone(sig::read_cont(args.ds_path("cont"), mesh), system,
+                                     solver_card, hyperelastic);
+    const sig::ContactElements* elements = zone ? &zone->condensed : nullptr;
     const Eigen::SparseMatrix<double> mass =
         sig::mass_matrix(system, time.mass, mesh, elements ? elements->node : std::vector<int>{});
     std::unique_ptr<sig::ContactStrategy> strategy;
@@ -207,7 +224,7 @@ int main(int argc, char** argv) {
       problem.dirichlet_dofs = system.dirichlet_dofs;
       problem.dirichlet_values = system.dirichlet_values;
       problem.load = system.f;
-      problem.contact = elements ? &*elements : nullptr;
+      problem.contact = elements;
       problem.obstacle = obstacle.get();
       problem.mass = &mass;
       problem.time_step = time.k;
@@ -228,7 +245,7 @@ int main(int argc, char** argv) {
       auto scheme = sig::make_time_scheme(time.scheme, sig::reduced_elastodynamics(reduced, mass),
                                           time.k, backend);
       std::optional<sig::ContactBoundary> boundary;
-      if (elements) boundary = sig::contact_boundary(*elements, mesh, reduced);
+      if (zone) boundary = sig::contact_boundary(*zone, mesh, reduced);
       std::optional<sig::ElastodynamicSteps> steps;
       if (boundary)
         steps.emplace(*scheme, *boundary, *strategy, initial);
@@ -239,7 +256,7 @@ int main(int argc, char** argv) {
     const double seconds = clock.seconds();
 
     // 6. Write case.hist and energy.csv (both atomic) and report the energy drift.
-    sig::HistoryInfo info = sig::history_info(time, backend, elements ? &*elements : nullptr);
+    sig::HistoryInfo info = sig::history_info(time, backend, elements);
     info.mass = sig::to_string(time.mass);
     if (hyperelastic) info.stress = sig::to_string(time.stress);
     info.seconds = seconds;

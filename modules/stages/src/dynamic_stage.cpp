@@ -77,7 +77,8 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
 
   // 2. Mesh, laws, the assembled system (K, M, V, loads in time), the initial state.
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
-  require_2d(mesh, "sig-march", "time stepping (TIME card)");
+  refuse_in_3d(mesh, datafile.require("TIME"), "scheme",
+               "the backward-Euler march in velocity (scheme=backward-euler)");
   for (const SubdomainMaterial& m : read_mili(args.ds_path("mili")).entries)
     if (m.hyperelastic)
       datafile.all("MATERIAL")

@@ -3,9 +3,13 @@
 #include "assembly/dirichlet.hpp"
 #include "assembly/system.hpp"
 #include "contact/contact_elements.hpp"
+#include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "integrator/emm.hpp"
 #include "mesh/mesh.hpp"
+#include "stages/static_solve.hpp"
+
+#include <cmath>
 
 #include <memory>
 #include <utility>
@@ -41,8 +45,7 @@ Eigen::SparseMatrix<double> mass_matrix(const LinearSystem& system, MassChoice c
     // Without contact nodes the EMM would be the consistent mass under another name.
     SIG_VERIFY(!contact_nodes.empty(), "mass=emm needs the contact nodes (a CONTACT card)");
     // The integrator sees positions, not the mesh (tests/layering).
-    require_2d(mesh, "sig-march", "TIME mass=emm");
-    return equivalent_mass_matrix(system.M, plane_positions(mesh), contact_nodes);
+    return equivalent_mass_matrix(system.M, node_positions(mesh), contact_nodes);
   }
   return system.M;
 }
@@ -79,13 +82,16 @@ ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& me
     SIG_VERIFY(elements.node[i] >= 0 && elements.node[i] < mesh.num_nodes(),
                "contact element " << i + 1 << ": node " << elements.node[i] + 1
                                   << " is not a node of the mesh");
+  // Row i: u_n,i = -n_i . u_i and the tangential displacement t_i . u_i (t1_i in 3D, the first
+  // column of the node's contact frame), on the node's d free dofs.
+  const int d = mesh.dim;
   std::vector<Eigen::Triplet<double>> normal, tangential;
   for (int i = 0; i < p; ++i) {
-    const std::array<int, 2> dofs = reduced.contact_node_dofs(elements.node[i]);
-    const Eigen::Vector2d t = contact_tangent(elements.normal[i]);
-    for (int component = 0; component < 2; ++component) {
-      normal.emplace_back(i, dofs[component], -elements.normal[i][component]);
-      tangential.emplace_back(i, dofs[component], t[component]);
+    const int first = reduced.contact_node_first_dof(elements.node[i], d);
+    const Eigen::VectorXd t = elements.frame(i).col(0);
+    for (int component = 0; component < d; ++component) {
+      normal.emplace_back(i, first + component, -elements.normal[i][component]);
+      tangential.emplace_back(i, first + component, t[component]);
     }
   }
   b.B.resize(p, reduced.num_free());
@@ -93,6 +99,52 @@ ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& me
   b.tangential.resize(p, reduced.num_free());
   b.tangential.setFromTriplets(tangential.begin(), tangential.end());
   return b;
+}
+
+MarchContactZone march_contact_zone(ContactElements elements, const LinearSystem& system,
+                                    const Card* solver, bool hyperelastic) {
+  MarchContactZone zone;
+  if (solver == nullptr || !solver->has("candidate_gap")) {
+    zone.condensed = std::move(elements);
+    zone.watched = zone.condensed.subset({});
+    return zone;
+  }
+  const double bound = solver->real("candidate_gap"); // > 0: core/ranges.hpp
+  if (hyperelastic)
+    solver->fail("candidate_gap", "the hyperelastic march takes every contact node into its "
+                                  "Newton matrix; candidate_gap= serves the linear march only");
+  if (const std::string problem = candidate_zone_problem(elements); !problem.empty())
+    solver->fail("candidate_gap", "condenses only the nodes near the obstacle, but " + problem);
+  const std::vector<int> inside = candidates(system, elements, bound);
+  if (inside.empty())
+    solver->fail("candidate_gap", "no contact node has an initial gap at most " +
+                                      solver->text("candidate_gap") + " (the least is " +
+                                      std::to_string(elements.gap.minCoeff()) + ")");
+  std::vector<int> outside;
+  for (int i = 0, k = 0; i < elements.size(); ++i) {
+    if (k < std::ssize(inside) && inside[static_cast<std::size_t>(k)] == i)
+      ++k;
+    else
+      outside.push_back(i);
+  }
+  zone.condensed = elements.subset(inside);
+  zone.watched = elements.subset(outside);
+  return zone;
+}
+
+ContactBoundary contact_boundary(const MarchContactZone& zone, const Mesh& mesh,
+                                 const ReducedSystem& reduced) {
+  ContactBoundary b = contact_boundary(zone.condensed, mesh, reduced);
+  const ContactBoundary watched = contact_boundary(zone.watched, mesh, reduced);
+  b.watched = watched.B;
+  b.watched_gap = watched.geometric_gap;
+  b.watched_nodes = watched.nodes;
+  return b;
+}
+
+void refuse_in_3d(const Mesh& mesh, const Card& card, const std::string& field,
+                  const std::string& what) {
+  if (mesh.dim == 3) card.fail(field, what + " is 2D only for now (issue 28): the mesh is 3D");
 }
 
 VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced) {

@@ -61,7 +61,8 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
 
   // 2. Mesh, laws, assembled system (elastic K, viscous V, memory terms, loads in time).
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
-  require_2d(mesh, "sig-march", "time stepping (TIME card)");
+  refuse_in_3d(mesh, datafile.require("TIME"), "scheme",
+               "the quasistatic march in velocity (scheme=quasistatic)");
   for (const SubdomainMaterial& m : read_mili(args.ds_path("mili")).entries)
     if (m.hyperelastic)
       datafile.all("MATERIAL")

@@ -102,45 +102,6 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 
 namespace {
 
-/// The elements `zone` (indices, sorted) of `contact`.
-ContactElements elements_of(const ContactElements& contact, const std::vector<int>& zone) {
-  ContactElements part = contact;
-  part.node.clear();
-  part.lagrange_node.clear();
-  part.normal.clear();
-  part.tangent.clear();
-  part.law.clear();
-  part.gap.resize(static_cast<Eigen::Index>(zone.size()));
-  part.weight.resize(static_cast<Eigen::Index>(zone.size()));
-  for (std::size_t k = 0; k < zone.size(); ++k) {
-    const int i = zone[k];
-    part.node.push_back(contact.node[i]);
-    part.lagrange_node.push_back(contact.lagrange_node[i]);
-    part.normal.push_back(contact.normal[i]);
-    part.tangent.push_back(contact.tangent[i]);
-    part.law.push_back(contact.law[i]);
-    part.gap[static_cast<Eigen::Index>(k)] = contact.gap[i];
-    part.weight[static_cast<Eigen::Index>(k)] = contact.weight[i];
-  }
-  return part;
-}
-
-/// The contact nodes a solve condenses: those of initial gap at most `bound`, and those with a
-/// Dirichlet condition (held in their frames by the contact solve).
-std::vector<int> candidates(const LinearSystem& system, const ContactElements& contact,
-                            double bound) {
-  std::vector<int> zone;
-  const int d = contact.dim;
-  for (int i = 0; i < contact.size(); ++i) {
-    bool held = false;
-    for (int c = 0; c < d; ++c)
-      held = held || std::binary_search(system.dirichlet_dofs.begin(), system.dirichlet_dofs.end(),
-                                        d * contact.node[i] + c);
-    if (held || contact.gap[i] <= bound) zone.push_back(i);
-  }
-  return zone;
-}
-
 /// The solution on the elements `zone` of `contact` spread over all of them: the others are
 /// free, without force.
 void spread(StaticSolution& s, const std::vector<int>& zone, int m) {
@@ -199,6 +160,20 @@ StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
 
 } // namespace
 
+std::vector<int> candidates(const LinearSystem& system, const ContactElements& contact,
+                            double bound) {
+  std::vector<int> zone;
+  const int d = contact.dim;
+  for (int i = 0; i < contact.size(); ++i) {
+    bool held = false;
+    for (int c = 0; c < d; ++c)
+      held = held || std::binary_search(system.dirichlet_dofs.begin(), system.dirichlet_dofs.end(),
+                                        d * contact.node[i] + c);
+    if (held || contact.gap[i] <= bound) zone.push_back(i);
+  }
+  return zone;
+}
+
 std::string candidate_zone_problem(const ContactElements& contact) {
   for (const ContactLaw& law : contact.law) {
     if (law.normal == NormalLaw::compliance_bilateral)
@@ -254,7 +229,7 @@ StaticSolution solve_static_contact(const LinearSystem& system, ContactElements 
                                         " contact nodes (initial gap <= " + text(bound) + ")";
     StaticSolution s;
     try {
-      s = solve_whole(system, elements_of(contact, zone), parameters, backend, start, loop);
+      s = solve_whole(system, contact.subset(zone), parameters, backend, start, loop);
     } catch (const Error& e) {
       if (whole) throw;
       log_info("contact zone: the solve on " + candidates_text + " failed (" + e.what() +

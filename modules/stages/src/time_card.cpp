@@ -42,11 +42,13 @@ TimeParameters time_parameters(const Card& time, bool has_contact) {
 void warn_unused_solver_fields(const Card* solver) {
   if (solver == nullptr) return;
   for (const auto& [name, value] : solver->fields)
-    if (name != "linear" && name != "maxit" && name != "gamma" && name != "eps")
-      log_warning(
-          solver->file + ":" + std::to_string(solver->line) + ": SOLVER " + name + "=" + value +
-          " is not used by sig-march (a TIME deck uses linear=, maxit=, gamma= and eps=): " +
-          "ignored");
+    if (name != "linear" && name != "maxit" && name != "gamma" && name != "eps" &&
+        name != "candidate_gap")
+      log_warning(solver->file + ":" + std::to_string(solver->line) + ": SOLVER " + name + "=" +
+                  value +
+                  " is not used by sig-march (a TIME deck uses linear=, maxit=, gamma=, eps= and "
+                  "candidate_gap=): " +
+                  "ignored");
 }
 
 } // namespace sig

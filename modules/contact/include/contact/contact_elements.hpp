@@ -65,6 +65,8 @@ struct ContactElements {
   ContactFrame frame(int i) const { return contact_frame(normal[i]); }
   /// The frames of every element.
   std::vector<ContactFrame> frames() const;
+  /// The elements `zone` (indices, sorted), the rest (mesh, obstacle, thickness) the same.
+  ContactElements subset(const std::vector<int>& zone) const;
 };
 
 /// Contact elements on the nodes of the facets (edges in 2D, faces in 3D) with reference `ref`.

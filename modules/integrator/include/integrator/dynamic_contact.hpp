@@ -32,7 +32,8 @@ struct ContactBoundary {
   std::vector<int> nodes;        ///< 0-based mesh nodes, in CONT element order
   Eigen::SparseMatrix<double> B; ///< p x free dofs: (B u)_i = u_n,i
   /// p x free dofs: (tangential u)_i = t_i . u_i, the tangential displacement along
-  /// t_i = (n2, -n1) (contact/contact_law.hpp)
+  /// t_i = (n2, -n1) in 2D, t1_i of the node's contact frame in 3D (contact/contact_law.hpp;
+  /// friction, which needs both tangents in 3D, is 2D only for now, issue 28)
   Eigen::SparseMatrix<double> tangential;
   /// d_i = distance of node i to the obstacle in the reference configuration (the CONT gap):
   /// the penetration q_n = u_n - d and every law are measured from it.
@@ -40,6 +41,13 @@ struct ContactBoundary {
   /// The CONT laws (their wall depth g) and weights (tributary length x thickness: pressure =
   /// force / weight).
   ContactSetting setting;
+
+  /// The contact nodes left out of the condensation (a candidate zone, SOLVER candidate_gap=),
+  /// watched only: their u_n rows (free dofs) and gaps d. They carry no force; a step that
+  /// brings one beyond the obstacle surface (watched u - watched_gap > 0) fails, naming it.
+  Eigen::SparseMatrix<double> watched;
+  Eigen::VectorXd watched_gap;
+  std::vector<int> watched_nodes; ///< their 0-based mesh nodes (messages)
 
   int size() const { return static_cast<int>(nodes.size()); }
   /// [u_n - d]_+ per node for the normal displacements x.

@@ -123,10 +123,19 @@ void check_mesh(const Mesh& mesh, const std::string& source);
 enum class MeshCheck { run, skip };
 
 /// The nodes of a 2D mesh as plane vectors, for the libraries that take positions and never see a
-/// mesh (the integrator's equivalent mass matrix, tests/layering).
+/// mesh (tests/layering).
 inline std::vector<Eigen::Vector2d> plane_positions(const Mesh& mesh) {
   assert(mesh.dim == 2);
   return {mesh.nodes.begin(), mesh.nodes.end()};
+}
+
+/// The nodes of a mesh of either dimension as the rows of a num_nodes x dim matrix, for the
+/// libraries that take positions and never see a mesh (the integrator's equivalent mass matrix).
+inline Eigen::MatrixXd node_positions(const Mesh& mesh) {
+  Eigen::MatrixXd x(mesh.num_nodes(), mesh.dim);
+  for (int i = 0; i < mesh.num_nodes(); ++i)
+    x.row(i) = mesh.nodes[static_cast<std::size_t>(i)].transpose();
+  return x;
 }
 
 /// "(x, y)" or "(x, y, z)", in the stream's default precision: a point or vector in messages.

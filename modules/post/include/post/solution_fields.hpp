@@ -16,7 +16,7 @@ struct SolutionFields {
 };
 
 /// The fields of one state; contact fields only when `contact` is not empty, 0 off Gamma3
-/// (status 1 = contact, 0 = free or not on Gamma3).
+/// (status 1 = contact, 0 = free or not on Gamma3). A 3D mesh's are solution_fields_3d's.
 SolutionFields solution_fields(const Mesh& mesh, const std::vector<double>& u,
                                const MaterialTable& materials,
                                const std::vector<ContactRow>& contact);

@@ -8,13 +8,16 @@
 #include "integrator/linear_contact_march.hpp"
 #include "integrator/viscoelastic_problem.hpp"
 
+#include "contact/contact_elements.hpp"
+
 #include <Eigen/SparseCore>
 
+#include <string>
 #include <vector>
 
 namespace sig {
 
-struct ContactElements;
+class Card;
 struct LinearSystem;
 struct Mesh;
 struct ReducedSystem;
@@ -45,6 +48,26 @@ ViscoelasticProblem viscoelastic_problem(const LinearSystem& system, const Reduc
 /// not a node of the mesh.
 ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& mesh,
                                  const ReducedSystem& reduced);
+
+/// The CONT elements of a linear march split by SOLVER candidate_gap= (stages/static_solve.hpp's
+/// candidates): `condensed` those of initial gap at most it, `watched` the others (no force,
+/// ContactBoundary::watched); without the field (solver null or without it) every element is
+/// condensed. InputError on the SOLVER card's line for candidate_gap= in a hyperelastic march,
+/// for laws that act apart from the obstacle (candidate_zone_problem), or a zone without nodes.
+struct MarchContactZone {
+  ContactElements condensed;
+  ContactElements watched;
+};
+MarchContactZone march_contact_zone(ContactElements elements, const LinearSystem& system,
+                                    const Card* solver, bool hyperelastic);
+
+/// contact_boundary of the zone's condensed elements, with its watched ones' normal rows and gaps.
+ContactBoundary contact_boundary(const MarchContactZone& zone, const Mesh& mesh,
+                                 const ReducedSystem& reduced);
+
+/// InputError on `card`'s line and `field` when `mesh` is 3D: `what` is 2D only for now (issue 28).
+void refuse_in_3d(const Mesh& mesh, const Card& card, const std::string& field,
+                  const std::string& what);
 
 /// The contact elements of a CONT on the free dofs of `reduced`; sig::Error naming the node if
 /// one of them has a Dirichlet component.

@@ -63,6 +63,12 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
 std::string candidate_zone_problem(const ContactElements& contact);
 
 /// `start` (empty: 0) is the first iterate of the displacement, d dofs per node: a warm start.
+/// The contact elements (indices, increasing) a solve condenses under SOLVER candidate_gap=
+/// `bound`: those of initial gap at most `bound`, and those with a Dirichlet condition (held in
+/// their frames by the contact solve).
+std::vector<int> candidates(const LinearSystem& system, const ContactElements& contact,
+                            double bound);
+
 /// With a finite parameters.candidate_gap only the contact nodes of small initial gap are
 /// condensed, the zone widening until no node outside it comes to touch (the history then holds
 /// every round's iterations); sig::Error if candidate_zone_problem says it cannot serve.
