@@ -531,9 +531,11 @@ double Driver<d>::searched_length(const Test& test, const ContactPoint& now, con
   // The fallback if no length passes: the largest admissible length below the ceiling (an
   // active-set change may raise the residual for a step), else the least residual.
   ContactPoint candidate;
+  // From the longest length the bulk trusts its linearization over (header), halving.
+  const double longest = std::min(1.0, bulk_.trusted_length());
   std::vector<double> lengths;
   for (int h = 0; h <= kMaxHalvings; ++h)
-    lengths.push_back(std::ldexp(1.0, -h));
+    lengths.push_back(longest * std::ldexp(1.0, -h));
   double fallback = std::numeric_limits<double>::infinity(), taken = 0;
   for (const double alpha : lengths) {
     if (!trial(alpha, now, step, candidate)) continue;
