@@ -3,8 +3,8 @@
 # arc x2 >= 19.5), from the deck's small-strain start and from rest, converges with pdas
 # (gamma = 1e3) and alm (r = 1e3) in at most 1.3 times the Newton iterations of GetFEM 5.4's nodal
 # Alart-Curnier brick on the same mesh (postproc/getfem_ring.py: 15 here, from rest), and the
-# vertical reaction on AB agrees with GetFEM's to 1e-6 relative. Before the finite-strain bulk
-# bounded its steps' stretch change (stages/finite_strain_bulk.cpp, kStretchTrust), pdas took 25
+# vertical reaction on AB agrees with GetFEM's to 1e-6 relative. Before a contact solve's first
+# step was bounded by its stretch change (stages/finite_strain_bulk.cpp, kStretchTrust), pdas took 25
 # iterations from rest here: its first full step put 117 nodes through the wall where 23 end in
 # contact, and the patches' outer edges then came back one node per iteration
 # (modules/solver/NEWTON.md). Without python3-getfem only the GetFEM comparison is skipped: the

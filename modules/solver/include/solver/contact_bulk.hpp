@@ -109,8 +109,9 @@ public:
   /// linear bulk has no near-singular tangent to damp and ignores it.
   virtual void damp(double /*factor*/) {}
   /// The longest fraction of the last solve's increment that the bulk trusts its linearization
-  /// over (a relaxed step's search starts there instead of at the full step): infinite for a
-  /// bulk linear in u; FiniteStrainBulk bounds the change of every element's stretches.
+  /// over (the search of a contact solve's first step starts there instead of at the full
+  /// step): infinite for a bulk linear in u; FiniteStrainBulk bounds the change of every
+  /// element's stretches.
   virtual double trusted_length() const { return std::numeric_limits<double>::infinity(); }
   /// A bulk whose residual is not linear in u: its steps need a line search.
   virtual bool nonlinear() const = 0;
