@@ -2,7 +2,7 @@
 """The hyperelastic ring of scene 7b solved by GetFEM 5.4, the peer of drivers/bench-ring.sh.
 
     /usr/bin/python3 postproc/getfem_ring.py [--deck DATAFILE] [--n N] [--eps EPS]
-                                            [--repeat K] [--json FILE]
+                                            [--repeat K] [--lsearch NAME] [--json FILE]
 
 Same problem as datafiles/scene7b/ring.dat (../shared/SCENES.md "Scene 7b", ../shared/PEERS.md),
 radii, N, AB and Gamma3 bounds, c1, c2, a, the imposed displacement and LOADSTEPS read from the
@@ -22,7 +22,9 @@ mirror-symmetric, the mirrored diagonals), P1 triangles:
     Alart-Curnier), r = the small-strain Young modulus, as GetFEM advises.
 Newton stops at max_res = eps x 1e-2, GetFEM's absolute residual: 1e-2 is the force scale of the
 ring (the final vertical reaction is 0.02-0.03), so eps plays the role of our relative eps.
-Linear solver 'auto' (sequential MUMPS here). The vertical reaction on AB is the sum over the AB
+Linear solver 'auto' (sequential MUMPS here). --lsearch NAME passes GetFEM's line search
+(default: its Newton_with_step_control; simplest, basic, systematic: its classical Newton with
+that search): GetFEM's own count depends on it (modules/solver/NEWTON.md, the ring's counts). The vertical reaction on AB is the sum over the AB
 y-dofs of the internal force, assembled in GWFL from the same law, and is checked against the
 sum of the contact forces (global equilibrium). K timed solves of all the load steps, each from
 u = 0 (only md.solve is timed). Prints a summary; --json writes it.
@@ -112,6 +114,9 @@ def main():
     parser.add_argument("--n", type=int, help="nodes around (default: the deck's MESH N=)")
     parser.add_argument("--repeat", type=int, default=3, help="timed solves (default 3)")
     parser.add_argument("--eps", type=float, help="relative residual (default: the deck's eps)")
+    parser.add_argument("--lsearch", default="default",
+                        choices=["default", "simplest", "basic", "systematic"],
+                        help="GetFEM's Newton line search (default: its step control)")
     parser.add_argument("--json", type=Path, help="write the summary here")
     args = parse_timed_args(parser, fail)
     d = read_deck(args.deck)
@@ -166,7 +171,8 @@ def main():
             s = k / d["steps"]
             md.set_variable("DirichletData", [s * d["ux"], s * d["uy"]])
             t0 = time.perf_counter()
-            result = np.atleast_1d(md.solve("max_res", eps * 1e-2, "max_iter", 200, "lsolver", "auto"))
+            result = np.atleast_1d(md.solve("max_res", eps * 1e-2, "max_iter", 200, "lsolver", "auto",
+                                             "lsearch", args.lsearch))
             seconds += time.perf_counter() - t0
             per_step.append(int(result[0]))
             if len(result) > 1 and not result[1]:
@@ -192,11 +198,12 @@ def main():
         "description": (f"sig-mesh's ring N = {d['N']} ({layers} layers) rebuilt node for node, P1, "
                         f"'Ciarlet Geymonat' params [{lam:g}; {mu:g}; {c1:g}] (plane strain), "
                         f"{d['steps']} load steps, nodal contact brick version 2, r = E = {young:.4g}, "
-                        f"max_res {eps * 1e-2:g}, lsolver auto"),
+                        f"max_res {eps * 1e-2:g}, lsolver auto, lsearch {args.lsearch}"),
         "n": d["N"],
         "dofs": int(mfu.nbdof()),
         "contact_nodes": nbc,
         "ab_nodes": len(ab_nodes),
+        "lsearch": args.lsearch,
         "converged": bool(converged),
         "newton_per_step": per_step,
         "newton_iterations": int(sum(per_step)),

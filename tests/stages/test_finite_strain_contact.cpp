@@ -11,10 +11,12 @@
 #include "stages/small_strain_start.hpp"
 #include "stages/static_solve.hpp"
 
+#include <Eigen/SVD>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 namespace {
@@ -343,6 +345,40 @@ TEST(FiniteStrainContact, LineSearchRescuesAStepThatFoldsTheMesh) {
   for (std::size_t k = 0; k < problem.dirichlet_dofs.size(); ++k)
     EXPECT_NEAR(step.u[problem.dirichlet_dofs[k]],
                 problem.dirichlet_values[static_cast<Eigen::Index>(k)], 1e-12);
+}
+
+TEST(FiniteStrainContact, StepIsTrustedWhileNoStretchChangesByMoreThanAHalf) {
+  // From rest the Newton step of the block whose right side moves by (-1.2, 0.8) is the linear
+  // elastic solution du; the bulk trusts it up to alpha = (1/2) / max_e ||grad du||_2 (P1: one
+  // gradient per triangle, the largest singular value computed here by an SVD). The contact
+  // driver starts the first step's search there (the ring:
+  // tests/pipeline/ring_getfem_iterations.sh).
+  const sig::Mesh mesh = sig::rectangle(1.0, 0.5, 8, 4);
+  const sig::MaterialTable table = hyperelastic_material(mesh);
+  const FiniteStrainProblem problem = clamped_block(mesh, table, {-1.2, 0.8});
+  sig::LinearSystem linear;
+  linear.K = sig::assemble_stiffness(mesh, table, sig::SparsityPattern(mesh));
+  linear.f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  linear.M_lumped = linear.f;
+  linear.dirichlet_dofs = problem.dirichlet_dofs;
+  linear.dirichlet_values = problem.dirichlet_values;
+  const Eigen::VectorXd du = sig::solve_linear_elasticity(linear, "umfpack").u;
+  double largest = 0;
+  for (const sig::Simplex& cell : mesh.cells) {
+    Eigen::Matrix2d x, d;
+    for (int j = 0; j < 2; ++j) {
+      x.col(j) = mesh.nodes[cell[j + 1]] - mesh.nodes[cell[0]];
+      d.col(j) = du.segment<2>(2 * cell[j + 1]) - du.segment<2>(2 * cell[0]);
+    }
+    largest =
+        std::max(largest, Eigen::JacobiSVD<Eigen::Matrix2d>(d * x.inverse()).singularValues()[0]);
+  }
+  ASSERT_GT(largest, 0.5) << "the full step must be beyond the trusted change";
+
+  sig::FiniteStrainBulk bulk(problem, "umfpack", 1e-8);
+  EXPECT_EQ(bulk.trusted_length(), std::numeric_limits<double>::infinity()) << "before a solve";
+  bulk.solve({}, Eigen::VectorXd());
+  EXPECT_NEAR(bulk.trusted_length(), 0.5 / largest, 1e-10 / largest);
 }
 
 TEST(FiniteStrainContact, CurvedObstacleKeepsNewtonsRate) {

@@ -531,8 +531,15 @@ double Driver<d>::searched_length(const Test& test, const ContactPoint& now, con
   // The fallback if no length passes: the largest admissible length below the ceiling (an
   // active-set change may raise the residual for a step), else the least residual.
   ContactPoint candidate;
+  // The first step of a contact solve, whose branches are the start's (a cold active set), from
+  // the longest length the bulk trusts its linearization over (header), halving; if none of
+  // those passes, the longer halvings of the full step beyond it, as every other step.
+  const bool cold = result_.history.empty() && m_ > 0;
+  const double longest = cold ? std::min(1.0, bulk_.trusted_length()) : 1.0;
   std::vector<double> lengths;
   for (int h = 0; h <= kMaxHalvings; ++h)
+    lengths.push_back(longest * std::ldexp(1.0, -h));
+  for (int h = 0; longest < 1 && std::ldexp(1.0, -h) > longest; ++h)
     lengths.push_back(std::ldexp(1.0, -h));
   double fallback = std::numeric_limits<double>::infinity(), taken = 0;
   for (const double alpha : lengths) {

@@ -14,6 +14,41 @@ namespace sig {
 
 namespace {
 
+/// The largest spectral norm of an element's linearized stretch change alpha grad_x du that a
+/// static step is trusted with (trusted_length): the update maps each element by
+/// I + alpha grad_x du, which keeps it one to one while that norm is below 1 (the sharp bound:
+/// det > 0); at 1/2 every principal stretch stays within a factor [1/2, 3/2] of the present one
+/// and the area within [1/4, 9/4], where the tangent of the law at the present state still
+/// describes the element. [choice] 1/2, the bound with that reading, not a fit. The contact
+/// driver starts only the first step of a contact solve there (its cold active set): bounding
+/// every step stalled a clamped block (the gradient of a linear step is singular at a clamped
+/// corner, trusted lengths 0.07 down to 0.002, then cycling). Measured on every relaxed step on
+/// the seven off-scene rings of drivers/ring-meshes.sh (pdas, both starts, 14 pairs within 1.3x
+/// of GetFEM): 1/2 13, 0.35 and 0.7 14, 1/4 13, 1 (the sharp bound) 9, no bound 6; the first
+/// step only, 1/2: 13 (modules/solver/NEWTON.md).
+constexpr double kStretchTrust = 0.5;
+
+/// max over the triangles of ||grad_x du||_2, the gradient of the increment du with respect to
+/// the present positions X + u (P1: one per triangle).
+double largest_stretch_change(const Mesh& mesh, const Eigen::VectorXd& u,
+                              const Eigen::VectorXd& du) {
+  double largest = 0;
+  for (const Simplex& cell : mesh.cells) {
+    Eigen::Matrix2d x, d;
+    for (int j = 0; j < 2; ++j) {
+      const int a = 2 * cell[j + 1], b = 2 * cell[0];
+      x.col(j) = mesh.nodes[cell[j + 1]] - mesh.nodes[cell[0]] + u.segment<2>(a) - u.segment<2>(b);
+      d.col(j) = du.segment<2>(a) - du.segment<2>(b);
+    }
+    const Eigen::Matrix2d g = d * x.inverse();
+    // sigma_max^2 of a 2 x 2 matrix: (|g|_F^2 + sqrt(|g|_F^4 - 4 det^2)) / 2.
+    const double f2 = g.squaredNorm(), det = g.determinant();
+    largest = std::max(largest,
+                       std::sqrt(0.5 * (f2 + std::sqrt(std::max(0.0, f2 * f2 - 4 * det * det)))));
+  }
+  return largest;
+}
+
 /// Relative step of the central differences of the obstacle normal (error O(h^2) ~ 1e-12,
 /// round-off ~ 1e-16 / h ~ 1e-10 of the curvature).
 constexpr double kNormalDifferenceStep = 1e-6;
@@ -363,6 +398,12 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
     step_.segment<2>(a) = nodal_frame(now_.normal[p]) * dw.segment<2>(a);
   }
   base_ = now_.u;
+  // A static step is trusted while no element's stretches change by more than kStretchTrust (a
+  // time step starts from its predictor, within a step of its solution: left as it was).
+  if (!dynamic()) {
+    const double change = largest_stretch_change(*problem_.mesh, now_.u, step_);
+    trusted_length_ = change > 0 ? kStretchTrust / change : std::numeric_limits<double>::infinity();
+  }
   return s;
 }
 

@@ -25,6 +25,7 @@
 // then flat, the components of node p at (d - 1) p + k; in 2D that is one value per node.
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 namespace sig {
@@ -107,6 +108,11 @@ public:
   /// the bulk's rest stiffness diagonal added to its tangent on the free dofs, 0 for none. A
   /// linear bulk has no near-singular tangent to damp and ignores it.
   virtual void damp(double /*factor*/) {}
+  /// The longest fraction of the last solve's increment that the bulk trusts its linearization
+  /// over (the search of a contact solve's first step starts there instead of at the full
+  /// step): infinite for a bulk linear in u; FiniteStrainBulk bounds the change of every
+  /// element's stretches.
+  virtual double trusted_length() const { return std::numeric_limits<double>::infinity(); }
   /// A bulk whose residual is not linear in u: its steps need a line search.
   virtual bool nonlinear() const = 0;
   /// The bulk's own targets are met (a load step's imposed displacements reached).

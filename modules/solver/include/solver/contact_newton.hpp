@@ -22,7 +22,10 @@
 // node right, and the residual does not depend on the method's parameter (r, gamma, c only steer
 // the steps; a merit scaled by them refused at gamma >= 1e4 the full steps whose penetrations the
 // next test puts right). The same ||R|| relative to the bulk's force scale is test (iv)'s.
-//  - Step length: halving from the full step (alpha = 1, 1/2, ... 2^-12), the first length whose
+//  - Step length: halving from the full step (alpha = 1, 1/2, ... 2^-12; the first step of a
+//    solve with contact nodes, whose branches are the start's, from the longest length the
+//    bulk trusts its linearization over, ContactBulk::trusted_length, NEWTON.md item 7), the
+//    first length whose
 //    residual of the system the step linearized (its branches held) passes Armijo's test against
 //    the present iterate's, and whose residual itself stays below a trust ceiling, kRelaxation
 //    times the largest merit of the last kMeritWindow iterates (the nonmonotone reference of
