@@ -319,6 +319,19 @@ TEST(FiniteStrainContact, NewtonConvergesQuadraticallyWithoutContact) {
   EXPECT_GE(quadratic_steps(s.steps.back().history), 1);
 }
 
+// The Newton step from rest of a problem without contact: the linear elastic solution with its
+// Dirichlet values (the tangent at rest is the linearized law).
+Eigen::VectorXd first_step_from_rest(const sig::Mesh& mesh, const sig::MaterialTable& table,
+                                     const FiniteStrainProblem& problem) {
+  sig::LinearSystem linear;
+  linear.K = sig::assemble_stiffness(mesh, table, sig::SparsityPattern(mesh));
+  linear.f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  linear.M_lumped = linear.f;
+  linear.dirichlet_dofs = problem.dirichlet_dofs;
+  linear.dirichlet_values = problem.dirichlet_values;
+  return sig::solve_linear_elasticity(linear, "umfpack").u;
+}
+
 TEST(FiniteStrainContact, LineSearchRescuesAStepThatFoldsTheMesh) {
   // The right side moved by (-1.2, 0.8) in one load step: the first Newton step (the imposed
   // displacement with the tangent at rest) folds triangles, so the line search shortens it.
@@ -326,13 +339,7 @@ TEST(FiniteStrainContact, LineSearchRescuesAStepThatFoldsTheMesh) {
   const sig::MaterialTable table = hyperelastic_material(mesh);
   const FiniteStrainProblem problem = clamped_block(mesh, table, {-1.2, 0.8});
   // That first step is the linear elastic solution (tangent at rest = the linearized law).
-  sig::LinearSystem linear;
-  linear.K = sig::assemble_stiffness(mesh, table, sig::SparsityPattern(mesh));
-  linear.f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
-  linear.M_lumped = linear.f;
-  linear.dirichlet_dofs = problem.dirichlet_dofs;
-  linear.dirichlet_values = problem.dirichlet_values;
-  const Eigen::VectorXd full_step = sig::solve_linear_elasticity(linear, "umfpack").u;
+  const Eigen::VectorXd full_step = first_step_from_rest(mesh, table, problem);
   ASSERT_FALSE(std::isfinite(sig::hyperelastic_energy(mesh, table, full_step)));
 
   const sig::FiniteStrainSolution s =
@@ -356,13 +363,7 @@ TEST(FiniteStrainContact, StepIsTrustedWhileNoStretchChangesByMoreThanAHalf) {
   const sig::Mesh mesh = sig::rectangle(1.0, 0.5, 8, 4);
   const sig::MaterialTable table = hyperelastic_material(mesh);
   const FiniteStrainProblem problem = clamped_block(mesh, table, {-1.2, 0.8});
-  sig::LinearSystem linear;
-  linear.K = sig::assemble_stiffness(mesh, table, sig::SparsityPattern(mesh));
-  linear.f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
-  linear.M_lumped = linear.f;
-  linear.dirichlet_dofs = problem.dirichlet_dofs;
-  linear.dirichlet_values = problem.dirichlet_values;
-  const Eigen::VectorXd du = sig::solve_linear_elasticity(linear, "umfpack").u;
+  const Eigen::VectorXd du = first_step_from_rest(mesh, table, problem);
   double largest = 0;
   for (const sig::Simplex& cell : mesh.cells) {
     Eigen::Matrix2d x, d;
