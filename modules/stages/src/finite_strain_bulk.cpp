@@ -8,6 +8,8 @@
 #include "solver/nodal_frames.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <utility>
 
 namespace sig {
@@ -398,13 +400,16 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
     step_.segment<2>(a) = nodal_frame(now_.normal[p]) * dw.segment<2>(a);
   }
   base_ = now_.u;
+  return s;
+}
+
+double FiniteStrainBulk::trusted_length() const {
   // A static step is trusted while no element's stretches change by more than kStretchTrust (a
   // time step starts from its predictor, within a step of its solution: left as it was).
-  if (!dynamic()) {
-    const double change = largest_stretch_change(*problem_.mesh, now_.u, step_);
-    trusted_length_ = change > 0 ? kStretchTrust / change : std::numeric_limits<double>::infinity();
-  }
-  return s;
+  // Computed when asked (the driver asks on a solve's first step only), not at every solve.
+  if (dynamic()) return std::numeric_limits<double>::infinity();
+  const double change = largest_stretch_change(*problem_.mesh, base_, step_);
+  return change > 0 ? kStretchTrust / change : std::numeric_limits<double>::infinity();
 }
 
 void FiniteStrainBulk::swap_states() {

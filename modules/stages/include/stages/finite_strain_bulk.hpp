@@ -26,7 +26,6 @@
 #include "solver/linear_solver.hpp"
 #include "solver/newton_matrix.hpp"
 
-#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -96,7 +95,7 @@ public:
   double displacement_norm() const override { return now_.u.norm(); }
   double displacement_step() const override { return (now_.u - base_).norm(); }
   bool nonlinear() const override { return true; }
-  double trusted_length() const override { return trusted_length_; }
+  double trusted_length() const override;
   void damp(double factor) override { damping_ = factor; }
   bool settled() const override;
 
@@ -145,8 +144,6 @@ private:
   /// residual (a force) and of a contact node's complementarity (contact_stiffness)
   Eigen::VectorXd rest_diagonal_;
   double damping_ = 0; ///< Levenberg-Marquardt's mu (contact_bulk.hpp damp)
-  /// The last static solve's trusted fraction of its increment (kStretchTrust, .cpp)
-  double trusted_length_ = std::numeric_limits<double>::infinity();
 
   bool dynamic() const { return problem_.mass != nullptr; }
 
