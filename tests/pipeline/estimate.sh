@@ -9,7 +9,8 @@
 #    the contact zone keep the solution out of H^2);
 #  - case.est holds one indicator per triangle whose squares sum to the estimate's square,
 #    sig-dump prints it, the .vtu holds the cell field error_indicator;
-#  - a stale case.b (TRACTION changed), a missing one, a march (TIME card) and a
+#  - a stale case.b (TRACTION changed), a missing one, a march (TIME card) without its case.hist
+#    (a march is estimated from its kept states: tests/pipeline/adapt.sh) and a
 #    large-deformation law (case.mili of law=svk) are refused.
 set -euo pipefail
 source tests/pipeline/lib/common.sh
@@ -64,7 +65,7 @@ grep -q 'Name="error_indicator"' "$work/b8/b8_estimate.vtu" ||
   fail "b8_estimate.vtu has no cell field error_indicator"
 grep -q "^sig-estimate: eta = " "$work/estimate8.log" || fail "sig-estimate does not print eta"
 
-# Bad input: a stale case.b, a missing one, a march.
+# Bad input: a stale case.b, a missing one, a march without its case.hist.
 cp -r "$work/b8" "$work/stale"
 sed -e 's/f=0.2,-1/f=0.2,-1.5/' "$work/b8.dat" >"$work/stale.dat"
 refused "stale case.b" estimate "$work/stale.dat" "$work/stale" "case.b is stale" "TRACTION" \
@@ -73,7 +74,8 @@ rm "$work/stale/case.b"
 refused "missing case.b" estimate "$work/b8.dat" "$work/stale" "case.b"
 cp "$work/b8.dat" "$work/march.dat"
 echo "TIME scheme=midpoint T=1 k=0.1" >>"$work/march.dat"
-refused "a march" estimate "$work/march.dat" "$work/b8" "static solutions"
+refused "a march without case.hist" estimate "$work/march.dat" "$work/b8" "case.hist" \
+  "DS file not found"
 sed -e 's/^MATERIAL .*/MATERIAL law=svk E=100 nu=0.3 plane=strain/' "$work/b8.dat" >"$work/svk.dat"
 "$bin/sig-mesh" "$work/svk.dat" -o "$work/svk" >/dev/null && "$bin/sig-material" "$work/svk.dat" -o "$work/svk" >/dev/null ||
   die "sig-mesh or sig-material failed on an svk deck"

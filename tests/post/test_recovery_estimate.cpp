@@ -15,6 +15,7 @@
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -131,6 +132,35 @@ TEST(RecoveryEstimate, EffectivityAndRateOnASmoothSolution) {
     previous_error = error;
     previous_estimate = estimate;
   }
+}
+
+TEST(RecoveryEstimate, AMarchIsMarkedOnEachTrianglesWorstTime) {
+  // Two kept states whose errors sit in different halves of the strip: u_a is the manufactured
+  // field on x < 1 and a rigid motion beyond, u_b the reverse at twice the amplitude. Each
+  // triangle's indicator is the larger of its two, the estimate per state each state's own.
+  const Mesh mesh = rectangle(2.0, 1.0, 8, 4);
+  Eigen::VectorXd u_a = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
+  Eigen::VectorXd u_b = u_a;
+  for (int i = 0; i < mesh.num_nodes(); ++i) {
+    const Eigen::Vector2d& x = mesh.nodes[i];
+    (x.x() <= 1 ? u_a : u_b).segment<2>(2 * i) = (x.x() <= 1 ? 1.0 : 2.0) * exact_u(x);
+  }
+  const ErrorIndicators a = recovery_indicators(mesh, u_a), b = recovery_indicators(mesh, u_b);
+  const MarchIndicators march =
+      worst_time_indicators(mesh, {u_a, Eigen::VectorXd::Zero(u_a.size()), u_b});
+  ASSERT_EQ(march.estimates.size(), 3u);
+  EXPECT_EQ(march.estimates[0], a.estimate);
+  EXPECT_EQ(march.estimates[1], 0.0);
+  EXPECT_EQ(march.estimates[2], b.estimate);
+  int from_a = 0, from_b = 0;
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    EXPECT_EQ(march.eta[t], std::max(a.eta[t], b.eta[t])) << "triangle " << t;
+    from_a += a.eta[t] > b.eta[t];
+    from_b += b.eta[t] > a.eta[t];
+  }
+  // Both states decide somewhere: neither time is the worst everywhere.
+  EXPECT_GT(from_a, 0);
+  EXPECT_GT(from_b, 0);
 }
 
 } // namespace

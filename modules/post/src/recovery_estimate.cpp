@@ -5,6 +5,7 @@
 #include "assembly/strain.hpp"
 #include "core/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -69,6 +70,20 @@ ErrorIndicators recovery_indicators(const Mesh& mesh, const Eigen::VectorXd& u) 
     sum += square;
   }
   out.estimate = std::sqrt(sum);
+  return out;
+}
+
+MarchIndicators worst_time_indicators(const Mesh& mesh,
+                                      const std::vector<Eigen::VectorXd>& states) {
+  SIG_VERIFY(!states.empty(), "worst_time_indicators: the march kept no state");
+  MarchIndicators out;
+  out.eta.assign(mesh.cells.size(), 0.0);
+  for (const Eigen::VectorXd& u : states) {
+    const ErrorIndicators e = recovery_indicators(mesh, u);
+    out.estimates.push_back(e.estimate);
+    for (std::size_t t = 0; t < e.eta.size(); ++t)
+      out.eta[t] = std::max(out.eta[t], e.eta[t]);
+  }
   return out;
 }
 

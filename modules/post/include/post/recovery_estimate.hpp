@@ -43,4 +43,15 @@ struct ErrorIndicators {
 /// eta_T and eta of the formula above for the displacement u (2 values per node).
 ErrorIndicators recovery_indicators(const Mesh& mesh, const Eigen::VectorXd& u);
 
+/// A march's indicators for one mesh adapted to the whole march (drivers/adapt.sh): eta of each
+/// kept state, and per triangle the largest of its eta_T over the kept states, so that a
+/// triangle is marked when its error is large at any kept time (the worst time of each place).
+struct MarchIndicators {
+  std::vector<double> eta;       ///< max over the states of eta_T(t_n), per triangle
+  std::vector<double> estimates; ///< eta(t_n), per kept state
+};
+
+/// The indicators of `states` (displacements of 2 values per node, one per kept time level).
+MarchIndicators worst_time_indicators(const Mesh& mesh, const std::vector<Eigen::VectorXd>& states);
+
 } // namespace sig
