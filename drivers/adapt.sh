@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # drivers/adapt.sh DATAFILE [-o OUTDIR] [--steps K] [--dofs N] [--theta T] [--reference DIR]:
-# the adaptive loop on a static deck (issue 29), solve -> estimate -> mark -> refine:
+# the adaptive loop on a static deck or a march (issue 29), solve -> estimate -> mark -> refine:
 #   step 0 runs the deck's chain (drivers/chain.sh) into OUTDIR/step0, then sig-estimate;
 #   step k > 0 runs OUTDIR/step<k>.dat, the deck with its MESH card replaced by
 #   `MESH file=step<k-1>/refined.nopo`, the mesh sig-refine made from step k-1's indicators
@@ -15,6 +15,16 @@
 # is not refined), wall_s, the wall clock of the step's chain and sig-estimate processes, and
 # refine_wall_s, sig-refine's (sig-error's measure left out of both). The solve's own time is
 # the step's summary.json `times`.
+# A march (TIME card) gets one mesh adapted to the whole march: sig-estimate estimates every kept
+# state (step 0, every output_every-th step, the last), a triangle's indicator is its largest
+# eta_T over them (the worst time of each place), the estimate and the error are those of the
+# last kept time (sig-error's `error`). Why not re-meshing with a transfer of the state: the
+# marches' singularities sit where the geometry puts them (scene 5's clamped corners, at every
+# time), a march in velocity factorizes its step matrix once for all its steps, and a transfer
+# of u, w and the memory between meshes would add its own error at every re-meshing (not
+# implemented: this loop adapts one mesh). The time step is the deck's TIME card on every step:
+# the loop adapts the space mesh only (tie k to the finest h in the deck if the time error
+# matters). The reference of --reference is then a march that keeps the last time too.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -41,12 +51,18 @@ while [ $# -gt 0 ]; do
 done
 [[ $steps =~ ^[1-9][0-9]*$ ]] || { echo "adapt.sh: --steps $steps is not a count >= 1" >&2; exit 2; }
 [[ $dofs =~ ^[0-9]+$ ]] || { echo "adapt.sh: --dofs $dofs is not a count" >&2; exit 2; }
+# A march (TIME card) leaves case.hist, a static solve case.b: the reference must be the same.
+solution=case.b
+if grep -qi '^[[:space:]]*TIME[[:space:]]' "$deck"; then
+  solution=case.hist
+fi
 if [ -n "$reference" ] && [ ! -f "$reference/case.nopo" ]; then
   echo "adapt.sh: --reference $reference holds no case.nopo (run its chain first)" >&2
   exit 2
 fi
-if grep -qi '^[[:space:]]*TIME[[:space:]]' "$deck"; then
-  echo "adapt.sh: $deck has a TIME card: the loop adapts static decks only" >&2
+if [ -n "$reference" ] && [ ! -f "$reference/$solution" ]; then
+  echo "adapt.sh: --reference $reference holds no $solution: $deck is a" \
+    "$([ $solution = case.hist ] && echo march || echo static deck), its reference must be one" >&2
   exit 2
 fi
 mkdir -p "$outdir"

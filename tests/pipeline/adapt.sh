@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Requirement (issue 29): drivers/adapt.sh runs solve -> estimate -> mark -> refine on a static
-# deck, a folder per step with the chain's output and adapt.csv (step, dofs, estimate, error,
+# deck or a march, a folder per step with the chain's output and adapt.csv (step, dofs, estimate, error,
 # effectivity). On the frictional block (datafiles/first/block.dat at nx = 8, Coulomb friction
 # on Gamma3) for 3 steps against the deck at nx = 128 (finer everywhere than every adapted mesh:
 # two refinements of nx = 8 make cells of 1/16 at the finest, the reference has 1/64):
@@ -10,7 +10,8 @@
 #  - sig-refine refuses a theta outside (0, 1] and a stale case.est.
 # On the Hertz half disc of scene 7a (N = 32, 2 steps): the refined arc's nodes lie on the
 # circle of radius R (the generator's, not the chords'), the estimate falls, Gamma3 and the
-# Dirichlet node survive. A march (TIME card) is refused.
+# Dirichlet node survive. On a small march (scene 5's strip), one mesh for the whole march:
+# refined where the indicator, the largest over the kept states, is.
 set -euo pipefail
 source tests/pipeline/lib/common.sh
 require_stages mesh material contact assemble solve post estimate refine error dump
@@ -98,11 +99,66 @@ grep -qF -- "--theta 2: expected a number in (0, 1]" <<<"$message" || fail "--th
 sed -e 's/f=0.2,-1/f=0.2,-1.5/' "$work/block.dat" >"$work/stale.dat"
 refused "a stale case.est" refine "$work/stale.dat" "$work/block/step0" "is stale" "TRACTION"
 
-cp "$work/block.dat" "$work/march.dat"
-echo "TIME scheme=midpoint T=1 k=0.1" >>"$work/march.dat"
+# A march (scene 5's strip at 8 x 2, k = 1/8, the states of t = 0, 0.25 ... 1 kept): one mesh for
+# the whole march, 2 steps. case.est holds eta of each kept state and the last one as the
+# estimate; step 1 cuts step 0's triangle of the largest indicator (the largest over the kept
+# states), and the triangles it cuts carry larger indicators than those it keeps; a static
+# solve's folder as the march's reference is refused.
+sed -e 's/nx=64 ny=12/nx=8 ny=2/' -e 's/k=0.015625 output_every=1/k=0.125 output_every=2/' \
+  -e 's/^OUTPUT .*/OUTPUT name=strip vtk=no/' datafiles/scene5/strip.dat >"$work/march.dat"
+SIG_BIN=$bin drivers/adapt.sh "$work/march.dat" -o "$work/march" --steps 2 >"$work/march.log" 2>&1 ||
+  { tail -30 "$work/march.log"; die "adapt.sh failed on the march"; }
+cat "$work/march.log"
+checks=$((checks + 2))
+SIG_BIN=$bin PYTHONPATH=postproc "$python" - "$work/march" <<'PY' || fail "the march's loop (above)"
+import csv, sys
+import numpy as np
+from sigreport import Mesh, read_ds
+work = sys.argv[1]
+bad = []
+rows = list(csv.DictReader(open(f"{work}/adapt.csv")))
+if len(rows) != 2 or not int(rows[1]["dofs"]) > int(rows[0]["dofs"]):
+    bad.append(f"adapt.csv: {rows}")
+est = read_ds(f"{work}/step0/case.est", arrays=["indicator", "times", "estimates", "estimate",
+                                                  "estimate_max"])
+times, estimates = list(est.array("times")), list(est.array("estimates"))
+if times != [0, 0.25, 0.5, 0.75, 1] or est.scalar("estimate") != estimates[-1] or \
+        est.scalar("estimate_max") != max(estimates) or not estimates[-1] > estimates[1] > 0:
+    bad.append(f"case.est: times {times}, estimates {estimates}, estimate {est.scalar('estimate')}")
+eta = est.array("indicator")
+coarse, fine = Mesh.read(f"{work}/step0/case.nopo"), Mesh.read(f"{work}/step1/case.nopo")
+
+
+def areas(mesh):
+    p = mesh.xy[mesh.tri]
+    d1, d2 = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    return 0.5 * np.abs(d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0])
+
+
+# A coarse triangle is cut when the fine triangles whose centroids lie in it are smaller.
+fine_centroids, fine_areas = fine.xy[fine.tri].mean(axis=1), areas(fine)
+cut = []
+for t, (tri, area) in enumerate(zip(coarse.xy[coarse.tri], areas(coarse))):
+    a, b, c = tri
+    m = np.array([b - a, c - a]).T
+    lam = np.linalg.solve(m, (fine_centroids - a).T).T
+    inside = (lam >= -1e-12).all(axis=1) & (lam.sum(axis=1) <= 1 + 1e-12)
+    cut.append(bool(fine_areas[inside].max() < area * (1 - 1e-9)))
+cut = np.array(cut)
+print(f"step 1 cuts {cut.sum()} of {len(cut)} triangles; mean indicator cut "
+      f"{eta[cut].mean():.3e}, kept {eta[~cut].mean():.3e}")
+if not cut[int(np.argmax(eta))]:
+    bad.append("the triangle of the largest indicator is not cut")
+if not (cut.any() and (~cut).any() and eta[cut].mean() > 2 * eta[~cut].mean()):
+    bad.append("the cut triangles do not carry the larger indicators")
+for b in bad:
+    print("FAIL:", b)
+sys.exit(1 if bad else 0)
+PY
 checks=$((checks + 1))
 status=0
-SIG_BIN=$bin drivers/adapt.sh "$work/march.dat" -o "$work/march" >"$work/march.log" 2>&1 || status=$?
-[ "$status" -ne 0 ] && grep -q "static decks only" "$work/march.log" ||
-  fail "a march: exit $status, $(cat "$work/march.log")"
-finish "the block's and the half disc's adaptive loops, the budget, a march refused: $checks checks"
+SIG_BIN=$bin drivers/adapt.sh "$work/march.dat" -o "$work/march_ref" --reference "$work/reference" \
+  >"$work/march_ref.log" 2>&1 || status=$?
+[ "$status" -eq 2 ] && grep -q "holds no case.hist" "$work/march_ref.log" ||
+  fail "a static reference for a march: exit $status, $(cat "$work/march_ref.log")"
+finish "the block's, the half disc's and a march's adaptive loops, the budget: $checks checks"
