@@ -50,6 +50,7 @@
 # phases: run it on a quiet machine for times worth quoting.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/adapted.sh"
 
 usage() {
   cat <<EOF
@@ -248,50 +249,13 @@ deck_variant "$square" "$adapted/square.dat" --set MESH.nx=8 --set OUTPUT.vtk=no
 "$root/drivers/adapt.sh" "$adapted/square.dat" -o "$adapted" --steps "$adapt_steps" --theta 0.5 \
   >"$adapted/adapt.log" 2>&1 || { tail -20 "$adapted/adapt.log" >&2; die "adapt.sh failed"; }
 progress_step "fig47/adapted ($adapt_steps steps)"
-# logged LOG COMMAND...: COMMAND's output appended to LOG, shown and fatal when it fails.
-logged() {
-  local log=$1
-  shift
-  "$@" >>"$log" 2>&1 || { cat "$log" >&2; die "$(basename "$1") failed (log: $log)"; }
-}
-from_dir=$adapted/step$((adapt_steps - 1))
-from_deck=$adapted/step$((adapt_steps - 1)).dat
-[ "$adapt_steps" -gt 1 ] || from_deck=$adapted/square.dat
-for level in 1 2; do
-  name=overkill$level
-  logged "$adapted/$name.log" "$bin/sig-refine" "$from_deck" -o "$from_dir" --theta 1 \
-    --shape "$adapted/square.dat" --mesh "$adapted/$name.nopo"
-  awk -v mesh="MESH file=$name.nopo" 'toupper($1) == "MESH" { print mesh; next } { print }' \
-    "$adapted/square.dat" >"$adapted/$name.dat"
-  mkdir -p "$adapted/$name"
-  logged "$adapted/$name.log" "$root/drivers/chain.sh" "$adapted/$name.dat" -o "$adapted/$name"
-  logged "$adapted/$name.log" "$bin/sig-estimate" "$adapted/$name.dat" -o "$adapted/$name"
-  from_dir=$adapted/$name from_deck=$adapted/$name.dat
-  progress_step "fig47/adapted/$name"
-done
+overkill_references "$adapted" "$adapt_steps" "$adapted/square.dat" "$adapted/square.dat"
 # The finest uniform mesh judged, by the same chain as the adaptive steps, for its wall clock.
 finest=${squares[-1]}
-mkdir -p "$adapted/uniform"
-t0=${EPOCHREALTIME/./}
-logged "$adapted/uniform.log" "$root/drivers/chain.sh" "$out/fig47/base_n$finest/square.dat" \
-  -o "$adapted/uniform"
-us=$((${EPOCHREALTIME/./} - t0))
-printf '%d.%06d\n' $((us / 1000000)) $((us % 1000000)) >"$adapted/uniform/chain_wall.txt"
+timed_chain "$out/fig47/base_n$finest/square.dat" "$adapted/uniform"
 progress_step "fig47/adapted/uniform (n = $finest by chain.sh)"
-for ((k = 0; k < adapt_steps; k++)); do
-  [ ! -d "$adapted/step$k" ] || error_json "fig47/adapted/step$k" fig47/adapted/overkill2
-done
-error_json fig47/adapted/overkill1 fig47/adapted/overkill2
-run_stage estimate "$out/fig47/n$square_reference/square.dat" "$out/fig47/n$square_reference" ||
-  failed+=("$out/fig47/n$square_reference (sig-estimate)")
-for n in "${squares[@]}"; do
-  "$bin/sig-error" --json "$out/fig47/n$n" "$adapted/overkill2" \
-    >"$out/fig47/n$n/error_overkill.json" ||
-    {
-      failed+=("$out/fig47/n$n (sig-error against the overkill)")
-      rm -f "$out/fig47/n$n/error_overkill.json"
-    }
-done
+adapted_errors fig47/adapted "$adapt_steps" fig47/n "fig47/n$square_reference" square.dat \
+  "${squares[@]}"
 
 # The stability map of the loop: alpha x (a - b) x mesh; Nv or cycling runs again relaxed.
 for m in "${map_meshes[@]}"; do

@@ -34,6 +34,9 @@ from sigreport import (Checks, Deck, MapCell, MapPanel, Mesh, Point, ReportError
                        pyplot, read_command, read_csv_columns, read_ds, read_summary, run_cell,
                        save_figure, solve_seconds, speed_accuracy_chart, stability_map, within,
                        write_report)
+from sigreport.adapted import (ADAPT_SLOPE, ADAPT_SLOPE_TOL, EFFECTIVITY_RANGE, TIME_FRACTION,
+                               add_reach_checks, adapted_figure, corrected, est_value, loop_cost,
+                               read_adapt_csv)
 
 MESH_NAMES = {"C": "C: N = 256, graded arcs, grading 0.1", "M": "M: N = 512, graded arcs, grading 0.1",
               "G": "G: N = 512, uniform arcs, grading 0.03 (the deck)",
@@ -567,49 +570,17 @@ def section_fig47(scene):
 
 # --- Fig 4.7 adapted (issue 29) -----------------------------------------------------------------
 
-ADAPT_SLOPE, ADAPT_SLOPE_TOL = 0.5, 0.075
-EFFECTIVITY_RANGE = (0.3, 3.0)
-DOFS_FRACTION, TIME_FRACTION = 0.2, 0.5
-
-
-def est_value(folder):
-    """sig-estimate's eta of a run folder (case.est), or None."""
-    path = Path(folder) / "case.est"
-    if not path.is_file():
-        return None
-    return float(read_ds(path, arrays=["estimate"]).array("estimate")[0])
-
-
-def corrected(error, reference_estimate):
-    """The error of a mesh against the exact solution from its error against a reference and the
-    reference's own estimated error, added in quadrature: a heuristic. For a linear problem in its
-    energy norm on nested spaces Galerkin orthogonality makes it exact,
-    ||u - u_h||^2 = ||u_ref - u_h||^2 + ||u - u_ref||^2; the square's compliance wall and friction
-    and the L2 norm of the strain make it an estimate (the report keeps the raw errors beside)."""
-    return math.hypot(error, reference_estimate)
-
-
 def adapted_steps(scene):
     """The adaptive loop's steps: [{step, dofs, estimate, error, effectivity, solve_s,
     estimate_s, refine_s, wall_s, refine_wall_s}], the errors against the overkill reference."""
-    import csv
-    folder = scene.out / "fig47" / "adapted"
-    path = folder / "adapt.csv"
-    if not path.is_file():
-        raise ReportError(f"{path}: missing (drivers/scene4.sh's adaptive loop did not run)")
-    steps = []
-    with path.open() as f:
-        for row in csv.DictReader(f):
-            k = int(row["step"])
-            run = scene.run(f"fig47/adapted/step{k}")
-            rel, error = run.error()
-            if error is None:
-                raise ReportError(f"{run.dir}/error.json: missing (sig-error against overkill2)")
-            steps.append({"step": k, "dofs": int(row["dofs"]), "estimate": float(row["estimate"]),
-                          "error": error, "effectivity": float(row["estimate"]) / error,
-                          "solve_s": run.seconds, "estimate_s": float(row["estimate_s"]),
-                          "refine_s": float(row["refine_s"]), "wall_s": float(row["wall_s"]),
-                          "refine_wall_s": float(row["refine_wall_s"]), "run": run})
+    steps = read_adapt_csv(scene.out / "fig47" / "adapted")
+    for s in steps:
+        run = scene.run(f"fig47/adapted/step{s['step']}")
+        rel, error = run.error()
+        if error is None:
+            raise ReportError(f"{run.dir}/error.json: missing (sig-error against overkill2)")
+        s.update({"error": error, "effectivity": s["estimate"] / error, "solve_s": run.seconds,
+                  "run": run})
     return steps
 
 
@@ -638,41 +609,6 @@ def timed_uniform(scene, finest):
     if not wall.is_file():
         raise ReportError(f"{wall}: missing (drivers/scene4.sh times the chain)")
     return run.seconds, float(wall.read_text())
-
-
-def loop_cost(steps, last):
-    """The adaptive loop's cost up to step `last` (its estimate included, its refinement not):
-    the stages' own times (solve + estimate + refine) and the wall clocks."""
-    own = sum(s["solve_s"] + s["estimate_s"] for s in steps[:last + 1]) + \
-        sum(s["refine_s"] for s in steps[:last])
-    wall = sum(s["wall_s"] for s in steps[:last + 1]) + \
-        sum(s["refine_wall_s"] for s in steps[:last])
-    return own, wall
-
-
-def adapted_figure(path, steps, ladder, eta_overkill, eta_uniform, ref, slope):
-    """Error against dofs: the adapted meshes against the overkill reference, the uniform ones
-    against n = ref, each also with its reference's estimated error added in quadrature."""
-    fig, ax = pyplot().subplots(figsize=(6.4, 4.8))
-    ad = [s["dofs"] for s in steps]
-    un = [u["dofs"] for u in ladder]
-    ax.loglog(ad, [s["error"] for s in steps], "o-", color="C0",
-              label=f"adapted, against the overkill (slope {slope:.2f})")
-    ax.loglog(ad, [corrected(s["error"], eta_overkill) for s in steps], "o:", color="C0",
-              alpha=0.5, ms=3, label="adapted, + the overkill's own estimate")
-    ax.loglog(un, [u["error"] for u in ladder], "s-", color="C3",
-              label=f"uniform, against n = {ref}")
-    ax.loglog(un, [corrected(u["error"], eta_uniform) for u in ladder], "s:", color="C3",
-              alpha=0.5, ms=3, label=f"uniform, + n = {ref}'s own estimate")
-    x0, y0 = ad[-1], steps[-1]["error"]
-    ax.loglog([ad[0], x0], [y0 * (ad[0] / x0) ** -0.5, y0], "k--", lw=0.8, label="dofs^(-1/2)")
-    ax.set_xlabel("dofs (-)")
-    ax.set_ylabel("||u_ref - u_h||_V (m)")
-    ax.set_title("Fig 4.7, Gamma1 clamped: uniform and adapted meshes", fontsize=9)
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    return save_figure(fig, path).name
 
 
 def section_fig47_adapted(scene, uniform_rate):
@@ -712,9 +648,9 @@ def section_fig47_adapted(scene, uniform_rate):
     urows = [[f"1/{u['n']}", u["dofs"], fmt(u["error"], 3),
               fmt(corrected(u["error"], eta_uniform), 3), fmt(u["overkill"], 3),
               fmt(u["solve_s"], 3)] for u in ladder]
-    png = scene.chart("fig4_7_adapted", adapted_figure(scene.out / "fig4_7_adapted.png", steps,
-                                                       ladder, eta_overkill, eta_uniform, ref,
-                                                       slope))
+    png = scene.chart("fig4_7_adapted", adapted_figure(
+        scene.out / "fig4_7_adapted.png", steps, ladder, eta_overkill, eta_uniform,
+        f"n = {ref}", slope, "Fig 4.7, Gamma1 clamped: uniform and adapted meshes"))
     effectivities = [s["effectivity"] for s in steps]
     checks = scene.checks
     checks.add(f"Fig 4.7 adapted, Gamma1 clamped: slope against dofs {ADAPT_SLOPE} +- "
@@ -752,20 +688,8 @@ def section_fig47_adapted(scene, uniform_rate):
                        "uniform_solve_s": uniform_solve, "uniform_wall_s": uniform_wall,
                        "ladder_solve_s": finest["solve_s"],
                        "time_ratio": own_ratio, "wall_ratio": wall_ratio})
-        checks.add(f"Fig 4.7 adapted: {finest_name}'s error reached with at most a fifth of its "
-                   "dofs", ratio <= DOFS_FRACTION,
-                   ours=f"step {reached['step']}, {reached['dofs']} dofs: {ratio:.3f}",
-                   target="<= 0.2")
-        checks.add(f"Fig 4.7 adapted: the whole loop to that error (solve + estimate + refine, "
-                   f"the stages' own times) in at most half n = {finest['n']}'s solve time",
-                   own_ratio <= TIME_FRACTION,
-                   ours=f"{own:.3f} s / {uniform_solve:.3f} s = {own_ratio:.2f}",
-                   target="<= 0.5")
-        checks.add(f"Fig 4.7 adapted: the whole loop to that error in at most half n = "
-                   f"{finest['n']}'s time, wall clocks of every stage (mesh ... post, estimate, "
-                   "refine) against its chain's", wall_ratio <= TIME_FRACTION,
-                   ours=f"{wall:.2f} s / {uniform_wall:.2f} s = {wall_ratio:.2f}",
-                   target="<= 0.5")
+        add_reach_checks(checks, "Fig 4.7", finest_name, f"n = {finest['n']}", reached,
+                         (ratio, own, uniform_solve, wall, uniform_wall))
         loop = steps[:reached["step"] + 1]
         parts = (sum(s["solve_s"] for s in loop), sum(s["estimate_s"] for s in loop),
                  sum(s["refine_s"] for s in loop[:-1]))
