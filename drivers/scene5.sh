@@ -27,6 +27,16 @@
 #                        corner) against its own reference; for the march, the elastic strip and
 #                        the rollers also the error on [1, 4] x [0, 1], away from the corners
 #                        (error_interior.json)
+#   fig512/adapted       the printed data adapted (issue 29, full run only): drivers/adapt.sh
+#                        from the 8 x 2 union-jack mesh (Dörfler theta 0.5, 10 steps), one mesh
+#                        for the whole march (indicators: the largest over t = 0.25 ... 1), the
+#                        scene's k = 1/64 on every step; each step<k>/ against overkill2/, the
+#                        last adapted mesh refined uniformly twice and marched with k = 1/256
+#                        (finer everywhere, in space and time, than every adapted run); the
+#                        uniform reference n256 gets its own estimate (case.est), every uniform
+#                        run its error against overkill2 (error_overkill.json); uniform/: the
+#                        finest uniform mesh judged (n128) again by drivers/chain.sh, timed as
+#                        the adaptive steps are (chain_wall.txt)
 #   speed/<method>_<value>/n<N>  alm r = 100, projection c = 1 and c = 0.01 on the nested meshes
 #                        against the same reference (pdas gamma = 100: fig512)
 #   map/k<K>_c<c>_g<g>   the stability map: k x cn x g -> Newton iterations per step, Nv
@@ -34,12 +44,13 @@
 # sig-march's: run it on a quiet machine for times worth quoting.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/adapted.sh"
 
 usage() {
   cat <<EOF
 usage: drivers/scene5.sh [--quick] [-o OUTDIR]
-  --quick     fewer variants per figure, Fig 5.12 up to h = 1/32 against 1/64, a smaller map
-              (under a minute)
+  --quick     fewer variants per figure, Fig 5.12 up to h = 1/32 against 1/64 and not
+              adapted, a smaller map (under a minute)
   -o OUTDIR   results folder (default out/scene5)
   -h, --help  this message
 Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
@@ -51,7 +62,7 @@ template=$root/datafiles/scene5/strip.dat
 rescaled=$root/datafiles/scene5/strip_rescaled.dat
 parse_quick_out out/scene5 "$@"
 
-require_stages mesh material contact assemble march post error
+require_stages mesh material contact assemble march post error estimate refine dump
 require_decks "$template" "$rescaled"
 require_charts
 
@@ -66,6 +77,7 @@ if [ $quick -eq 1 ]; then
   map_k=(16 64)
   map_c=(1 10 100)
   map_g=(0.01 0.1)
+  adapt_steps=0
 else
   g_series=(0.001 0.01 0.05 0.1)
   c_series=(0.01 5 8 12 15 20)
@@ -77,6 +89,7 @@ else
   map_k=(16 64 256)
   map_c=(0.01 1 10 100)
   map_g=(0.001 0.01 0.1)
+  adapt_steps=10
 fi
 
 mkdir -p "$out"
@@ -134,6 +147,7 @@ runs=$((1 + ${#nested[@]} + 1))                                        # bases
 runs=$((runs + 2 * (1 + 2 + ${#g_series[@]} + ${#c_series[@]} + ${#mu_series[@]}))) # figs 5.2-5.10
 runs=$((runs + 2 * (1 + ${#rhos[@]}) + 3 * (${#nested[@]} + 1) + 3))   # figs 5.11, 5.12
 runs=$((runs + 3 * ${#speed_meshes[@]} + ${#map_k[@]} * ${#map_c[@]} * ${#map_g[@]}))
+[ "$adapt_steps" -eq 0 ] || runs=$((runs + 4))                        # fig512/adapted
 progress_begin $runs
 
 {
@@ -149,6 +163,7 @@ progress_begin $runs
   echo "map_k: ${map_k[*]}"
   echo "map_c: ${map_c[*]}"
   echo "map_g: ${map_g[*]}"
+  echo "adapt_steps: $adapt_steps"
 } >"$out/command.txt"
 cp "$template" "$out/strip.template.dat"
 cp "$rescaled" "$out/strip_rescaled.template.dat"
@@ -250,6 +265,35 @@ for n in "${nested[@]}"; do
   error_json "fig512/rollers/n$n" "fig512/rollers/n$reference"
   window_error_json "fig512/rollers/n$n" "fig512/rollers/n$reference" "$interior"
 done
+
+# Fig 5.12 adapted (issue 29, full run only): the printed data from the 8 x 2 union-jack mesh,
+# solve -> estimate -> mark -> refine (drivers/adapt.sh, Dörfler theta 0.5): one mesh for the whole
+# march, marked on each triangle's largest indicator over the kept times t = 0.25 ... 1, the
+# scene's k = 1/64 on every step (the time error at h = 1/64 is 1.3e-4 against E_hk = 9.4e-3).
+# Against the overkill reference: the last adapted mesh refined uniformly twice, marched with
+# k = 1/256, finer everywhere in space and time than every adapted run. The uniform reference
+# gets its own estimate, every uniform run its error against the overkill beside its own.
+if [ "$adapt_steps" -gt 0 ]; then
+  adapted=$out/fig512/adapted
+  mkdir -p "$adapted"
+  deck_variant "$template" "$adapted/strip.dat" --set MESH.nx=8 --set MESH.ny=2 \
+    --set TIME.output_every=16 --set OUTPUT.vtk=no
+  deck_variant "$adapted/strip.dat" "$adapted/overkill.template.dat" \
+    --set "TIME.k=$("$python" -c "print(1 / 256)")" --set TIME.output_every=64
+  "$root/drivers/adapt.sh" "$adapted/strip.dat" -o "$adapted" --steps "$adapt_steps" \
+    --theta 0.5 >"$adapted/adapt.log" 2>&1 ||
+    { tail -20 "$adapted/adapt.log" >&2; die "adapt.sh failed"; }
+  progress_step "fig512/adapted ($adapt_steps steps)"
+  overkill_references "$adapted" "$adapt_steps" "$adapted/strip.dat" \
+    "$adapted/overkill.template.dat"
+  # The finest uniform mesh judged, by the same chain as the adaptive steps, for its wall clock.
+  finest=${nested[-1]}
+  deck_variant "$out/mesh_n$finest/base/strip.dat" "$adapted/uniform.dat" --set OUTPUT.vtk=no
+  timed_chain "$adapted/uniform.dat" "$adapted/uniform"
+  progress_step "fig512/adapted/uniform (n$finest by chain.sh)"
+  adapted_errors fig512/adapted "$adapt_steps" fig512/n "fig512/n$reference" strip.dat \
+    "${nested[@]}"
+fi
 
 # Speed against accuracy: the other contact methods on the nested meshes (pdas: fig512).
 for n in "${speed_meshes[@]}"; do

@@ -13,6 +13,7 @@ sig-error) and writes OUTDIR/report.md, its charts (PNG) and OUTDIR/scene.json:
 """
 import csv
 import functools
+import json
 import math
 import sys
 from pathlib import Path
@@ -20,8 +21,11 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from sigreport import (Checks, MapCell, MapPanel, March, Point, ReportError, Series,  # noqa: E402
                        Table, find_pvd, fmt, load_thesis, loglog_slope, main_guard,
-                       ours_thesis, pyplot, read_command, read_error, save_figure,
-                       speed_accuracy_chart, stability_map, within, write_report)
+                       markdown_table, ours_thesis, pyplot, read_command, read_ds, read_error,
+                       save_figure, speed_accuracy_chart, stability_map, within, write_report)
+from sigreport.adapted import (ADAPT_SLOPE, ADAPT_SLOPE_TOL, EFFECTIVITY_RANGE,  # noqa: E402
+                               add_reach_checks, adapted_figure, corrected, est_value, loop_cost,
+                               read_adapt_csv)
 
 LOADS = {"P": "printed f2 = (0, -10 t)", "R": "rescaled f2 = (0, -t)"}
 HIST_ARRAYS = ["converged", "failure", "k", "T", "steps", "time_march", "time_factorize",
@@ -42,7 +46,7 @@ CHECK_54 = [63, 52, 38, 36]
 CHECK_55 = {"0.001": 2, "0.01": 16, "0.05": 36, "0.1": 63}
 CHECK_57 = {"0.01": 36, "5": 36, "8": 36, "12": 36, "15": 38, "20": 50}
 ERROR_VARIANTS = [
-    ("the printed deck, whole strip (the check above)", "fig512/n", "error.json"),
+    ("the printed deck, whole strip (the slope above)", "fig512/n", "error.json"),
     ("the printed deck, on [1, 4] x [0, 1] only", "fig512/n", "error_interior.json"),
     ("the clamped elastic strip alone, whole strip", "fig512/elastic/n", "error.json"),
     ("the clamped elastic strip alone, on [1, 4] x [0, 1]", "fig512/elastic/n",
@@ -448,7 +452,7 @@ def variants_section(scene, variants):
         "meet the loaded top and the foundation, as the clamped elastic strip's does. The "
         "thesis's Theorem 5.6 ((5.88), l.9731) assumes u' in H^2, which those corners deny, and "
         "Fig 5.12 plots the error on the whole strip, so the printed setup's slope stays "
-        "below 1 (the check above, FAIL). The rollers variant reaches slope 1 on the whole "
+        "below 1 (shown, not checked: the adapted meshes below are). The rollers variant reaches slope 1 on the whole "
         f"strip but proves little: under the uniform load with rollers every node ends on the "
         f"bound{bound}, where a uniform compression meets every condition and P1 reproduces "
         "it, so its error is that of the two bottom corner nodes left off the foundation "
@@ -484,10 +488,8 @@ def section_fig512(scene):
     s512 = loglog_slope(hs, errors)
     elastic = scene.error_series("fig512/elastic/n")
     s_elastic = loglog_slope(*elastic)
-    scene.checks.add("Fig 5.12: slope of the error against h = k", within(s512, 1, abs=0.15),
-                     ours=fmt(s512, 3), target=1, tolerance="+-0.15",
-                     detail=f"slope {fmt(s512, 3)} over every h; the clamped elastic strip alone "
-                            f"on the same meshes: {fmt(s_elastic, 3)}")
+    # The uniform slope is the corners' (shown, not checked): the adapted series is checked
+    # (section_fig512_adapted), as issue 29 asks.
     variants = [(label, *series) for label, folder, name in ERROR_VARIANTS
                 if len((series := scene.error_series(folder, name))[0]) >= 2]
     scene.charts["fig512"] = fig512_figure(scene.out / "fig512.png", hs, errors, maxima, elastic,
@@ -505,6 +507,157 @@ def section_fig512(scene):
             t512.markdown() + "\n", fig512_slope_text(scene, hs, errors, s512, s_elastic)] + \
         (variants_section(scene, variants) if len(variants) > 1 else []) + \
         ["![Fig 5.12](fig512.png)\n"]
+
+
+def march_seconds(folder):
+    """sig-march's setup and march of a run folder (case.hist), whatever its deck."""
+    ds = read_ds(Path(folder) / "case.hist", arrays=["time_factorize", "time_march"])
+    return ds.scalar("time_factorize") + ds.scalar("time_march")
+
+
+def section_fig512_adapted(scene):
+    """Fig 5.12 on adapted meshes beside the uniform ladder (issue 29): errors at t = 1 against
+    the overkill reference, the slope against dofs, the effectivities, the dofs and the time to
+    the finest uniform mesh's error. Writes OUT/fig512_adapted.json."""
+    adapted = scene.out / "fig512" / "adapted"
+    if int(scene.info.get("adapt_steps", "0")) == 0:
+        return ["### Fig 5.12 adapted (issue 29)\n", "Not run (--quick): the full run adapts.\n"]
+    steps = read_adapt_csv(adapted)
+    for s in steps:
+        e = read_error(adapted / f"step{s['step']}")
+        if e is None:
+            raise ReportError(f"{adapted}/step{s['step']}/error.json: missing (sig-error against "
+                              "overkill2)")
+        s.update({"error": e["error"], "effectivity": s["estimate"] / e["error"],
+                  "solve_s": march_seconds(adapted / f"step{s['step']}")})
+    ref = scene.reference
+    ladder = []
+    for n in scene.nested:
+        r = scene.run(f"fig512/n{n}")
+        ladder.append({"n": int(n), "dofs": int(r.ds.scalar("ndof")), "error": r.error()["error"],
+                       "overkill": (read_error(r.dir, "error_overkill.json") or {}).get("error"),
+                       "solve_s": r.seconds()})
+    eta_overkill, eta_uniform = est_value(adapted / "overkill2"), est_value(
+        scene.out / f"fig512/n{ref}")
+    if eta_overkill is None or eta_uniform is None:
+        raise ReportError(f"{adapted}/overkill2 or fig512/n{ref}: no case.est (sig-estimate)")
+    overkill_dofs = int(read_ds(adapted / "overkill2" / "case.hist", arrays=["ndof"])
+                        .scalar("ndof"))
+    o1_error = read_error(adapted / "overkill1")["error"]
+    fit = steps[max(1, round(len(steps) / 3)):]
+    slope = -loglog_slope([s["dofs"] for s in fit], [s["error"] for s in fit])
+    uniform_slope = -loglog_slope([u["dofs"] for u in ladder], [u["error"] for u in ladder])
+    finest = ladder[-1]
+    target = corrected(finest["error"], eta_uniform)
+    reached = next((s for s in steps if corrected(s["error"], eta_overkill) <= target), None)
+    raw_reached = next((s for s in steps if s["error"] <= finest["error"]), None)
+
+    rows = [[s["step"], s["dofs"], fmt(s["estimate"], 3), fmt(s["error"], 3),
+             fmt(corrected(s["error"], eta_overkill), 3), f"{s['effectivity']:.2f}",
+             f"{math.log(steps[i - 1]['error'] / s['error']) / math.log(s['dofs'] / steps[i - 1]['dofs']):.2f}"
+             if i else "", fmt(s["solve_s"], 3), fmt(s["estimate_s"], 3), fmt(s["refine_s"], 3),
+             f"{s['wall_s'] + s['refine_wall_s']:.2f}"] for i, s in enumerate(steps)]
+    urows = [[f"1/{u['n']}", u["dofs"], fmt(u["error"], 3),
+              fmt(corrected(u["error"], eta_uniform), 3), fmt(u["overkill"], 3),
+              fmt(u["solve_s"], 3)] for u in ladder]
+    scene.charts["fig512_adapted"] = adapted_figure(
+        scene.out / "fig512_adapted.png", steps, ladder, eta_overkill, eta_uniform,
+        f"h = k = 1/{ref}", slope, "Fig 5.12, the printed data at t = 1: uniform and adapted meshes")
+    effectivities = [s["effectivity"] for s in steps]
+    checks = scene.checks
+    checks.add(f"Fig 5.12 adapted: slope against dofs {ADAPT_SLOPE} +- {ADAPT_SLOPE_TOL} (steps "
+               f"{fit[0]['step']}-{fit[-1]['step']})",
+               within(slope, ADAPT_SLOPE, abs=ADAPT_SLOPE_TOL), ours=f"{slope:.3f}",
+               target=ADAPT_SLOPE, tolerance=f"+-{ADAPT_SLOPE_TOL}",
+               detail=f"uniform: {uniform_slope:.3f} against dofs (shown, not checked)")
+    checks.add("Fig 5.12 adapted: effectivity (estimate / error at t = 1) in [0.3, 3] on every "
+               "mesh", all(EFFECTIVITY_RANGE[0] <= e <= EFFECTIVITY_RANGE[1]
+                           for e in effectivities),
+               ours=f"{min(effectivities):.2f} ... {max(effectivities):.2f}", target="[0.3, 3]")
+    finest_name = f"h = k = 1/{finest['n']} ({finest['dofs']} dofs)"
+    result = {"adapted_slope": slope, "fit_steps": [fit[0]["step"], fit[-1]["step"]],
+              "uniform_dofs_slope": uniform_slope, "effectivity": effectivities,
+              "overkill_dofs": overkill_dofs, "overkill_estimate": eta_overkill,
+              "overkill1_error": o1_error, "uniform_reference_estimate": eta_uniform,
+              "finest_uniform": finest["n"], "finest_uniform_dofs": finest["dofs"],
+              "finest_uniform_error": finest["error"], "target_error": target, "steps": steps}
+    if reached is None:
+        checks.add(f"Fig 5.12 adapted: {finest_name}'s error reached with at most a fifth of its "
+                   "dofs", False, ours=f"not reached in {len(steps)} steps (last: "
+                   f"{fmt(corrected(steps[-1]['error'], eta_overkill), 3)} at {steps[-1]['dofs']} "
+                   f"dofs against {fmt(target, 3)})", target="<= 0.2")
+        time_text = "The loop did not reach that error: no time to compare."
+    else:
+        uniform = adapted / "uniform"
+        uniform_solve, uniform_wall = march_seconds(uniform), float(
+            (uniform / "chain_wall.txt").read_text())
+        own, wall = loop_cost(steps, steps.index(reached))
+        ratio, own_ratio, wall_ratio = (reached["dofs"] / finest["dofs"], own / uniform_solve,
+                                        wall / uniform_wall)
+        result.update({"reached_step": reached["step"], "reached_dofs": reached["dofs"],
+                       "dofs_ratio": ratio, "loop_seconds": own, "loop_wall": wall,
+                       "uniform_solve_s": uniform_solve, "uniform_wall_s": uniform_wall,
+                       "time_ratio": own_ratio, "wall_ratio": wall_ratio})
+        add_reach_checks(checks, "Fig 5.12", finest_name, f"1/{finest['n']}", reached,
+                         (ratio, own, uniform_solve, wall, uniform_wall), solve="march")
+        time_text = (
+            f"*Time.* The loop up to step {reached['step']} costs {own:.3f} s by the stages' own "
+            f"timers (sig-march's setup and march, sig-estimate's indicators, sig-refine's "
+            f"marking and bisection) against {uniform_solve:.3f} s for the march of h = k = "
+            f"1/{finest['n']} (run again by drivers/chain.sh beside the loop, "
+            f"fig512/adapted/uniform; {finest['n']} steps of k = 1/{finest['n']} where the "
+            f"adapted meshes march the scene's 64): {own_ratio:.2f} of it; in wall clocks (every "
+            f"process of the loop: chain.sh's stages, sig-estimate, sig-refine) {wall:.2f} s "
+            f"against {uniform_wall:.2f} s: {wall_ratio:.2f}. Each step starts some nine processes "
+            f"(chain.sh's stages and sig-dump queries, sig-estimate) that read and write DS files, a "
+            f"fixed cost of about {min(s['wall_s'] for s in steps):.2f} s even on the smallest "
+            "mesh, which the loop pays at every step and the uniform mesh once. The times are "
+            "this run's on a shared machine.")
+    result["steps"] = [dict(s) for s in steps]
+    result["checks"] = [c.as_json() for c in checks if c.name.startswith("Fig 5.12 adapted")]
+    (scene.out / "fig512_adapted.json").write_text(json.dumps(result, indent=1) + "\n")
+    reach_text = (
+        f"*Dofs.* The finest uniform mesh judged is h = k = 1/{finest['n']}: its error against "
+        f"1/{ref} is {fmt(finest['error'], 3)}, 1/{ref}'s own estimated error "
+        f"{fmt(eta_uniform, 3)}, so its error against the exact solution is about "
+        f"{fmt(target, 3)}; the adapted errors carry the overkill's own {fmt(eta_overkill, 3)} "
+        "the same way. "
+        + (f"The adapted meshes reach it at step {reached['step']} with {reached['dofs']} dofs, "
+           f"{reached['dofs'] / finest['dofs']:.3f} of {finest['dofs']}. " if reached else
+           f"The adapted meshes do not reach it in {len(steps)} steps. ")
+        + (f"Uncorrected (each against its own reference), step {raw_reached['step']} "
+           f"({raw_reached['dofs']} dofs, {raw_reached['dofs'] / finest['dofs']:.3f}) reaches "
+           f"{fmt(finest['error'], 3)}. " if raw_reached else "")
+        + "The uniform errors against the overkill (last column but one) are shown, not used: "
+          "the overkill is coarser than the finest uniform meshes away from the corners.")
+    return [
+        "### Fig 5.12 adapted: uniform and adapted meshes against the dofs (issue 29)\n",
+        f"The printed data adapted from the 8 x 2 union-jack mesh by `drivers/adapt.sh --theta "
+        f"0.5` ({len(steps)} steps: march, sig-estimate's Zienkiewicz-Zhu indicators, Dörfler's "
+        "marking, sig-refine's conforming bisection). *One mesh for the whole march*: each "
+        "triangle is marked on its largest indicator over the kept times t = 0.25, 0.5, 0.75, 1 "
+        "(the clamped corners, the error's seat, are where they are at every time; the march "
+        "factorizes its step matrix once; no state is transferred between meshes). *Time step*: "
+        "the scene's k = 1/64 on every adapted mesh (the time error at h = 1/64 is two orders "
+        "below the space error, above). *Errors* at t = 1, each series against a reference finer "
+        "everywhere than every mesh it judges: the adapted meshes against the overkill, the last "
+        f"adapted mesh refined uniformly twice ({overkill_dofs} dofs, nested over every adapted "
+        f"mesh) marched with k = 1/256; the uniform ones against h = k = 1/{ref}, as above. Their "
+        f"own estimated errors: overkill {fmt(eta_overkill, 3)}, 1/{ref} {fmt(eta_uniform, 3)}; "
+        f"the once-refined overkill differs from it by {fmt(o1_error, 3)}. \"+ reference\" adds "
+        "the reference's estimate in quadrature. The estimate is eta at t = 1.\n",
+        "![Fig 5.12 adapted](fig512_adapted.png)\n",
+        markdown_table(["step", "dofs", "estimate", "error vs overkill", "+ overkill's",
+                        "effectivity", "local slope", "march s", "estimate s", "refine s",
+                        "wall s"], rows) + "\n",
+        "Uniform meshes (h = k):\n",
+        markdown_table(["h = k", "dofs", f"error vs 1/{ref}", f"+ 1/{ref}'s", "vs overkill",
+                        "march s"], urows) + "\n",
+        f"*Rates.* Adapted: slope {slope:.3f} against dofs over steps {fit[0]['step']}-"
+        f"{fit[-1]['step']} (the first steps refine a mesh too coarse to be asymptotic); "
+        f"uniform: {uniform_slope:.3f} against dofs over every h (half the rate in h: the "
+        f"corners). Effectivity {min(effectivities):.2f} ... {max(effectivities):.2f}.\n",
+        reach_text + "\n", time_text + "\n"]
 
 
 def section_speed(scene):
@@ -598,7 +751,11 @@ def status_checks(scene):
 
 def section_checks(scene):
     out, checks, base = scene.out, scene.checks, scene.run("fig52/P")
-    names = sorted(p.parent.relative_to(out).as_posix() for p in out.glob("**/case.hist"))
+    # The adapted runs read mesh files (no generator for Run's contact abscissae); sig-estimate
+    # refuses a march that did not converge, so each of them converged.
+    names = sorted(name for p in out.glob("**/case.hist")
+                   if not (name := p.parent.relative_to(out).as_posix()).startswith(
+                       "fig512/adapted/"))
     all_runs = [scene.run(n) for n in names]
     # The speed and map runs try methods and parameters where a failure is a result (Nv).
     figure_runs = [r for r in all_runs
@@ -634,11 +791,12 @@ def main():
     key_lines, key = section_key(scene)
     report = section_head(scene) + key_lines + section_measures(scene) + section_series(scene) + \
         section_profiles(scene) + section_fig511(scene) + section_fig512(scene) + \
-        section_speed(scene) + section_stability(scene) + section_checks(scene)
+        section_fig512_adapted(scene) + section_speed(scene) + section_stability(scene) + section_checks(scene)
     pvd = find_pvd(scene.out)
     report += section_paraview(pvd)
     charts = {k: scene.charts[k] for k in ("speed_accuracy", "stability", "fig511", "fig512")}
-    charts.update({k: v for k, v in scene.charts.items() if k.endswith("_profiles")})
+    charts.update({k: v for k, v in scene.charts.items()
+                   if k.endswith("_profiles") or k == "fig512_adapted"})
     print(write_report(scene.out, "\n".join(report), "5", "Scene 5: quasistatic Kelvin-Voigt "
                        "strip, damped foundation, velocity bound, Coulomb in velocity", scene.info,
                        scene.checks, key_table=key, charts=charts, pvd=pvd))
