@@ -1,6 +1,7 @@
-# Sourced by the scene drivers (after scene.sh) for their adapted convergence studies (issue 29):
-# the overkill reference of an adaptive loop and the finest uniform mesh's chain timed as the
-# loop's steps are. They use $out, $bin, $root, die and progress_step of scene.sh.
+# Sourced by the scene drivers (after scene.sh) for their adapted convergence studies (issue 29,
+# scenes 4 and 5): the overkill references of an adaptive loop, the finest uniform mesh's chain
+# timed as the loop's steps are, and the errors against the overkill. They use $out, $bin, $root,
+# die, progress_step, run_stage and error_json of scene.sh, and the caller's array `failed`.
 
 # logged LOG COMMAND...: COMMAND's output appended to LOG, shown and fatal when it fails.
 logged() {
@@ -12,9 +13,10 @@ logged() {
 # overkill_references ADAPTED STEPS SHAPE TEMPLATE: ADAPTED/overkill1 and overkill2, the last
 # mesh of drivers/adapt.sh's loop in ADAPTED (STEPS steps) refined uniformly once and twice
 # (sig-refine --theta 1; new nodes on the arcs of SHAPE's MESH card), each solved or marched by
-# drivers/chain.sh on TEMPLATE with its MESH card replaced (TEMPLATE may refine what the mesh does
-# not, a march's time step) and estimated by sig-estimate. The adapted meshes nest, each refining
-# the one before: overkill2 is finer everywhere than every one of them.
+# drivers/chain.sh on TEMPLATE with its MESH card replaced (TEMPLATE may also refine what the mesh
+# does not: scene 5's overkill marches with a finer time step) and estimated by sig-estimate.
+# The adapted meshes nest, each refining the one before: overkill2 is finer everywhere than
+# every one of them.
 overkill_references() {
   local adapted=$1 steps=$2 shape=$3 template=$4 level name
   local from_dir=$adapted/step$((steps - 1)) from_deck=$adapted/step$((steps - 1)).dat

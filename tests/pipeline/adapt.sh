@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Requirement (issue 29): drivers/adapt.sh runs solve -> estimate -> mark -> refine on a static
-# deck or a march, a folder per step with the chain's output and adapt.csv (step, dofs, estimate, error,
-# effectivity). On the frictional block (datafiles/first/block.dat at nx = 8, Coulomb friction
-# on Gamma3) for 3 steps against the deck at nx = 128 (finer everywhere than every adapted mesh:
-# two refinements of nx = 8 make cells of 1/16 at the finest, the reference has 1/64):
+# deck or a march, a folder per step with the chain's output and adapt.csv (step, dofs,
+# estimate, error, effectivity). On the frictional block (datafiles/first/block.dat at nx = 8,
+# Coulomb friction on Gamma3) for 3 steps against the deck at nx = 128 (finer everywhere than
+# every adapted mesh: two refinements of nx = 8 make cells of 1/16 at the finest, the reference
+# has 1/64):
 #  - the dofs grow, the estimate and the error fall at every step, effectivity in [0.3, 3];
 #  - every step's mesh keeps the references 1-4 and the bounding box of the first;
 #  - --dofs stops the loop at the first step past the budget;
@@ -106,7 +107,8 @@ refused "a stale case.est" refine "$work/stale.dat" "$work/block/step0" "is stal
 # solve's folder as the march's reference is refused.
 sed -e 's/nx=64 ny=12/nx=8 ny=2/' -e 's/k=0.015625 output_every=1/k=0.125 output_every=2/' \
   -e 's/^OUTPUT .*/OUTPUT name=strip vtk=no/' datafiles/scene5/strip.dat >"$work/march.dat"
-SIG_BIN=$bin drivers/adapt.sh "$work/march.dat" -o "$work/march" --steps 2 >"$work/march.log" 2>&1 ||
+SIG_BIN=$bin drivers/adapt.sh "$work/march.dat" -o "$work/march" --steps 2 \
+  >"$work/march.log" 2>&1 ||
   { tail -30 "$work/march.log"; die "adapt.sh failed on the march"; }
 cat "$work/march.log"
 checks=$((checks + 2))
