@@ -135,9 +135,10 @@ TEST(RecoveryEstimate, EffectivityAndRateOnASmoothSolution) {
 }
 
 TEST(RecoveryEstimate, AMarchIsMarkedOnEachTrianglesWorstTime) {
-  // Two kept states whose errors sit in different halves of the strip: u_a is the manufactured
-  // field on x < 1 and a rigid motion beyond, u_b the reverse at twice the amplitude. Each
-  // triangle's indicator is the larger of its two, the estimate per state each state's own.
+  // Kept states whose errors sit in different halves of the strip: u_a is the manufactured
+  // field on x <= 1 and zero beyond, u_b the reverse at twice the amplitude, with the rest state
+  // (a march's t = 0) between them. Each triangle's indicator is the largest of its three, the
+  // estimate per state each state's own.
   const Mesh mesh = rectangle(2.0, 1.0, 8, 4);
   Eigen::VectorXd u_a = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
   Eigen::VectorXd u_b = u_a;
