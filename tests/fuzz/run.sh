@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # tests/fuzz/run.sh [--build DIR] [--time SECONDS] [--jobs N] [--at-once K] [TARGET...]: run the
-# readers' libFuzzer targets (tests/fuzz/README.md) from their committed seed corpus, each for
+# readers' libFuzzer targets (tests/fuzz/README.md; DIR default build-asan, drivers/test.sh's
+# clang build with -DSIG_FUZZ=ON) from their committed seed corpus, each for
 # SECONDS (default 30) with a fixed seed, under ASan + UBSan, with at most 1 GB per allocation and
 # 2 GB in all; K targets side by side (default 1), each with N fuzzing processes. Every input a target found new is kept in a scratch corpus (out/fuzz/<target>/corpus),
 # never in tests/; an input that fails is saved as out/fuzz/<target>/crash-*, replayed to show
@@ -9,7 +10,7 @@
 # longer run is e.g. `tests/fuzz/run.sh --time 3600 --jobs 2`.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-build=$root/build-fuzz
+build=$root/build-asan
 seconds=30
 jobs=1
 at_once=1
