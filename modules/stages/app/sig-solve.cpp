@@ -101,8 +101,8 @@ int main(int argc, char** argv) {
     std::optional<sig::ContactElements> contact;
     if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     if (mesh.dim == 3) {
-      // A 3D deck is small strain for now (issue 26): sig-material refused its hyperelastic laws,
-      // sig-contact the friction laws other than Tresca and Coulomb.
+      // A 3D deck is small strain for now (issue 26): its hyperelastic laws are refused below,
+      // sig-contact refused the friction laws other than Tresca and Coulomb.
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail("u", "an initial displacement in 3D is not "
                                                    "implemented yet (issue 26)");
@@ -130,6 +130,12 @@ int main(int argc, char** argv) {
     if (has_contact || sig::has_hyperelastic_law(table))
       sig::verify_total_iterations(datafile, sig::ContactSolverParameters::solve_max_iterations);
     if (sig::has_hyperelastic_law(table)) {
+      // The 3D hyperelastic laws march in time (sig-march) for now.
+      if (mesh.dim == 3) {
+        const sig::Card& material = *datafile.all("MATERIAL").front();
+        material.fail("law", "a static large-deformation solve in 3D is not implemented yet "
+                             "(issue 28): the mesh is 3D");
+      }
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail(
             "u", "the large-deformation solve starts from the reference configuration");

@@ -1,11 +1,14 @@
 // The hyperelastic bulk of the large-deformation contact solve (finite_strain_bulk.hpp).
 #include "stages/finite_strain_bulk.hpp"
 
+#include "assembly/p1_simplex.hpp"
 #include "assembly/rigid_motion.hpp"
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/nodal_frames.hpp"
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -30,23 +33,31 @@ namespace {
 /// step only, 1/2: 13 (modules/solver/NEWTON.md).
 constexpr double kStretchTrust = 0.5;
 
-/// max over the triangles of ||grad_x du||_2, the gradient of the increment du with respect to
-/// the present positions X + u (P1: one per triangle).
+/// max over the cells of ||grad_x du||_2, the gradient of the increment du with respect to
+/// the present positions X + u (P1: one per cell).
+template <int d>
 double largest_stretch_change(const Mesh& mesh, const Eigen::VectorXd& u,
                               const Eigen::VectorXd& du) {
+  using Matrix = Eigen::Matrix<double, d, d>;
   double largest = 0;
   for (const Simplex& cell : mesh.cells) {
-    Eigen::Matrix2d x, d;
-    for (int j = 0; j < 2; ++j) {
-      const int a = 2 * cell[j + 1], b = 2 * cell[0];
-      x.col(j) = mesh.nodes[cell[j + 1]] - mesh.nodes[cell[0]] + u.segment<2>(a) - u.segment<2>(b);
-      d.col(j) = du.segment<2>(a) - du.segment<2>(b);
+    Matrix x, e;
+    for (int j = 0; j < d; ++j) {
+      const int a = d * cell[j + 1], b = d * cell[0];
+      x.col(j) = mesh.nodes[cell[j + 1]] - mesh.nodes[cell[0]] + u.segment<d>(a) - u.segment<d>(b);
+      e.col(j) = du.segment<d>(a) - du.segment<d>(b);
     }
-    const Eigen::Matrix2d g = d * x.inverse();
-    // sigma_max^2 of a 2 x 2 matrix: (|g|_F^2 + sqrt(|g|_F^4 - 4 det^2)) / 2.
-    const double f2 = g.squaredNorm(), det = g.determinant();
-    largest = std::max(largest,
-                       std::sqrt(0.5 * (f2 + std::sqrt(std::max(0.0, f2 * f2 - 4 * det * det)))));
+    const Matrix g = e * x.inverse();
+    if constexpr (d == 2) {
+      // sigma_max^2 of a 2 x 2 matrix: (|g|_F^2 + sqrt(|g|_F^4 - 4 det^2)) / 2.
+      const double f2 = g.squaredNorm(), det = g.determinant();
+      largest = std::max(largest,
+                         std::sqrt(0.5 * (f2 + std::sqrt(std::max(0.0, f2 * f2 - 4 * det * det)))));
+    } else {
+      // sigma_max^2 the largest eigenvalue of g^T g.
+      const Eigen::SelfAdjointEigenSolver<Matrix> eigen(g.transpose() * g, Eigen::EigenvaluesOnly);
+      largest = std::max(largest, std::sqrt(std::max(0.0, eigen.eigenvalues()[d - 1])));
+    }
   }
   return largest;
 }
@@ -64,23 +75,27 @@ std::string singular_step_cause(const FiniteStrainProblem& problem,
                                 const std::vector<Eigen::Vector2d>& normals,
                                 const std::string& library) {
   const Mesh& mesh = *problem.mesh;
-  std::vector<int> contact_of_node(mesh.num_nodes(), -1);
-  for (int p = 0; problem.contact && p < problem.contact->size(); ++p)
-    contact_of_node[problem.contact->node[p]] = p;
-  std::vector<Hold> holds;
-  for (const auto& [dof, value] : imposed) {
-    Hold hold;
-    hold.node = dof / 2;
-    const Eigen::Vector2d axis = dof % 2 == 0 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d::UnitY();
-    const int p = contact_of_node[hold.node];
-    hold.along = p < 0 ? axis : Eigen::Vector2d(nodal_frame(normals[p]) * axis);
-    holds.push_back(hold);
-  }
   const std::string held =
       " (" + std::to_string(imposed.size()) + " dofs held at this iterate; " + library + ")";
-  if (problem.mass == nullptr)
+  // A static 2D solve: a part of the body its holds leave free (3D bodies march only, issue 28;
+  // a march's mass holds every part).
+  if (problem.mass == nullptr && mesh.dim == 2) {
+    std::vector<int> contact_of_node(mesh.num_nodes(), -1);
+    for (int p = 0; problem.contact && p < problem.contact->size(); ++p)
+      contact_of_node[problem.contact->node[p]] = p;
+    std::vector<Hold> holds;
+    for (const auto& [dof, value] : imposed) {
+      Hold hold;
+      hold.node = dof / 2;
+      const Eigen::Vector2d axis =
+          dof % 2 == 0 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d::UnitY();
+      const int p = contact_of_node[hold.node];
+      hold.along = p < 0 ? axis : Eigen::Vector2d(nodal_frame(normals[p]) * axis);
+      holds.push_back(hold);
+    }
     if (const std::vector<FreePart> free = free_parts(mesh, holds); !free.empty())
       return describe(free.front()) + held;
+  }
   bool svk = false;
   for (const SubdomainMaterial& m : problem.materials->entries)
     svk = svk || (m.hyperelastic && m.hyperelastic->name() == "svk");
@@ -99,9 +114,12 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
                                    double eps)
     : problem_(problem), eps_(eps), pattern_(*problem.mesh) {
   SIG_VERIFY(problem.mesh && problem.materials, "finite-strain contact needs a mesh and materials");
-  const int ndof = 2 * problem.mesh->num_nodes();
+  const int d = problem.mesh->dim;
+  const int ndof = d * problem.mesh->num_nodes();
   contacts_ = problem.contact ? problem.contact->size() : 0;
   SIG_VERIFY(contacts_ == 0 || problem.obstacle, "contact elements without an obstacle");
+  SIG_VERIFY(contacts_ == 0 || d == 2,
+             "contact of a hyperelastic body in 3D is not implemented yet (issue 28)");
   SIG_VERIFY(problem.load.size() == 0 || problem.load.size() == ndof,
              "load has " << problem.load.size() << " values for " << ndof << " dofs");
   SIG_VERIFY(static_cast<Eigen::Index>(problem.dirichlet_dofs.size()) ==
@@ -118,8 +136,8 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
   std::vector<int> contact_nodes(contacts_);
   for (int p = 0; p < contacts_; ++p) {
     contact_nodes[p] = node(p);
-    for (int a = 0; a < 2; ++a)
-      SIG_VERIFY(!dirichlet_[2 * node(p) + a],
+    for (int a = 0; a < d; ++a)
+      SIG_VERIFY(!dirichlet_[d * node(p) + a],
                  "contact node " << node(p) + 1 << " has a Dirichlet condition");
   }
   friction_ = contacts_ > 0 && any_friction(problem.contact->law);
@@ -408,7 +426,10 @@ double FiniteStrainBulk::trusted_length() const {
   // time step starts from its predictor, within a step of its solution: left as it was).
   // Computed when asked (the driver asks on a solve's first step only), not at every solve.
   if (dynamic()) return std::numeric_limits<double>::infinity();
-  const double change = largest_stretch_change(*problem_.mesh, base_, step_);
+  const Mesh& mesh = *problem_.mesh;
+  const double change = with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) {
+    return largest_stretch_change<d>(mesh, base_, step_);
+  });
   return change > 0 ? kStretchTrust / change : std::numeric_limits<double>::infinity();
 }
 

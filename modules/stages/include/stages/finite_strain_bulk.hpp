@@ -40,7 +40,8 @@ struct MaterialTable;
 struct FiniteStrainProblem {
   const Mesh* mesh = nullptr;
   const MaterialTable* materials = nullptr; ///< every sub-domain hyperelastic
-  std::vector<int> dirichlet_dofs;          ///< sorted, unique, dof = 2 node + component
+  /// sorted, unique, dof = d node + component, d the mesh's dimension
+  std::vector<int> dirichlet_dofs;
   Eigen::VectorXd dirichlet_values;         ///< imposed displacement at the final step
   Eigen::VectorXd load;                     ///< external nodal force at the final step (or empty)
   const ContactElements* contact = nullptr; ///< may be null or empty: no contact
