@@ -72,8 +72,7 @@ constexpr double kNormalDifferenceStep = 1e-6;
 /// tangent of the deformed body, which law=svk loses in strong compression.
 std::string singular_step_cause(const FiniteStrainProblem& problem,
                                 const std::vector<std::pair<int, double>>& imposed,
-                                const std::vector<Eigen::Vector2d>& normals,
-                                const std::string& library) {
+                                const std::vector<Point>& normals, const std::string& library) {
   const Mesh& mesh = *problem.mesh;
   const std::string held =
       " (" + std::to_string(imposed.size()) + " dofs held at this iterate; " + library + ")";
@@ -90,7 +89,7 @@ std::string singular_step_cause(const FiniteStrainProblem& problem,
       const Eigen::Vector2d axis =
           dof % 2 == 0 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d::UnitY();
       const int p = contact_of_node[hold.node];
-      hold.along = p < 0 ? axis : Eigen::Vector2d(nodal_frame(normals[p]) * axis);
+      hold.along = p < 0 ? axis : Eigen::Vector2d(nodal_frame(Eigen::Vector2d(normals[p])) * axis);
       holds.push_back(hold);
     }
     if (const std::vector<FreePart> free = free_parts(mesh, holds); !free.empty())
@@ -112,14 +111,12 @@ std::string singular_step_cause(const FiniteStrainProblem& problem,
 
 FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std::string& backend,
                                    double eps)
-    : problem_(problem), eps_(eps), pattern_(*problem.mesh) {
+    : problem_(problem), d_(problem.mesh->dim), eps_(eps), pattern_(*problem.mesh) {
   SIG_VERIFY(problem.mesh && problem.materials, "finite-strain contact needs a mesh and materials");
-  const int d = problem.mesh->dim;
+  const int d = d_;
   const int ndof = d * problem.mesh->num_nodes();
   contacts_ = problem.contact ? problem.contact->size() : 0;
   SIG_VERIFY(contacts_ == 0 || problem.obstacle, "contact elements without an obstacle");
-  SIG_VERIFY(contacts_ == 0 || d == 2,
-             "contact of a hyperelastic body in 3D is not implemented yet (issue 28)");
   SIG_VERIFY(problem.load.size() == 0 || problem.load.size() == ndof,
              "load has " << problem.load.size() << " values for " << ndof << " dofs");
   SIG_VERIFY(static_cast<Eigen::Index>(problem.dirichlet_dofs.size()) ==
@@ -141,6 +138,8 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
                  "contact node " << node(p) + 1 << " has a Dirichlet condition");
   }
   friction_ = contacts_ > 0 && any_friction(problem.contact->law);
+  SIG_VERIFY(!friction_ || d == 2,
+             "friction of a hyperelastic body in 3D is not implemented yet (issue 28)");
   if (dynamic()) {
     SIG_VERIFY(problem.time_step > 0, "time step k = " << problem.time_step << " must be > 0");
     mass_ = pattern_.zero_matrix();
@@ -167,7 +166,7 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
       !friction_ && !(dynamic() && problem.stress == AlgorithmicStress::gonzalez);
   solver_ = make_linear_solver(backend, symmetric ? backend_traits(backend).symmetric_kind()
                                                   : MatrixKind::general);
-  J_ = std::make_unique<NewtonMatrix>(pattern_.zero_matrix(), dirichlet_, contact_nodes);
+  J_ = std::make_unique<NewtonMatrix>(pattern_.zero_matrix(), dirichlet_, contact_nodes, d);
   now_.u = Eigen::VectorXd::Zero(ndof);
   slip_origin_ = now_.u;
   if (dynamic()) start_time_step(now_.u, now_.u); // at rest: the predictor is u = 0
@@ -275,11 +274,14 @@ bool FiniteStrainBulk::evaluate(State& s, bool with_tangent) {
   s.slip.resize(contacts_);
   s.normal.resize(contacts_);
   for (int p = 0; p < contacts_; ++p) {
-    const Eigen::Vector2d x = problem_.mesh->nodes[node(p)] + s.u.segment<2>(2 * node(p));
+    const int a = d_ * node(p);
+    const Point x = problem_.mesh->nodes[node(p)] + s.u.segment(a, d_);
     s.penetration[p] = -problem_.obstacle->signed_distance(x);
     s.normal[p] = problem_.obstacle->normal(x);
-    s.slip[p] = contact_tangent(s.normal[p])
-                    .dot(s.u.segment<2>(2 * node(p)) - slip_origin_.segment<2>(2 * node(p)));
+    // The slip along the 2D contact tangent (friction is 2D only: a 3D body's is 0, unused).
+    s.slip[p] = d_ == 2 ? contact_tangent(Eigen::Vector2d(s.normal[p]))
+                              .dot(s.u.segment<2>(a) - slip_origin_.segment<2>(a))
+                        : 0.0;
   }
   return true;
 }
@@ -288,8 +290,9 @@ double FiniteStrainBulk::equilibrium_residual(const Eigen::VectorXd& N,
                                               const Eigen::VectorXd& T) const {
   Eigen::VectorXd r = now_.bulk.internal_force - load();
   for (int p = 0; p < contacts_; ++p) {
-    r.segment<2>(2 * node(p)) -= N[p] * now_.normal[p];
-    if (friction_) r.segment<2>(2 * node(p)) += T[p] * contact_tangent(now_.normal[p]);
+    r.segment(d_ * node(p), d_) -= N[p] * now_.normal[p];
+    if (friction_) // 2D
+      r.segment<2>(2 * node(p)) += T[p] * contact_tangent(Eigen::Vector2d(now_.normal[p]));
   }
   // A Dirichlet dof's row is its mismatch with the load step's target, times its stiffness: the
   // force that would move it there (a step shorter than 1 leaves part of it).
@@ -304,9 +307,11 @@ double FiniteStrainBulk::equilibrium_residual(const Eigen::VectorXd& N,
 Eigen::VectorXd FiniteStrainBulk::contact_stiffness() const {
   Eigen::VectorXd k(contacts_);
   for (int p = 0; p < contacts_; ++p) {
-    const Eigen::Vector2d n = problem_.obstacle->normal(problem_.mesh->nodes[node(p)]);
-    const int a = 2 * node(p);
-    k[p] = n[0] * n[0] * rest_diagonal_[a] + n[1] * n[1] * rest_diagonal_[a + 1];
+    const Point n = problem_.obstacle->normal(problem_.mesh->nodes[node(p)]);
+    const int a = d_ * node(p);
+    k[p] = n[0] * n[0] * rest_diagonal_[a];
+    for (int i = 1; i < d_; ++i)
+      k[p] += n[i] * n[i] * rest_diagonal_[a + i];
   }
   return k;
 }
@@ -315,12 +320,20 @@ double FiniteStrainBulk::force_scale() const {
   return std::max({load().norm(), now_.bulk.internal_force.norm(), now_.inertia, 1e-300});
 }
 
-Eigen::Matrix2d FiniteStrainBulk::curvature_block(int p, double force) const {
-  const Eigen::Vector2d x = problem_.mesh->nodes[node(p)] + now_.u.segment<2>(2 * node(p));
+std::vector<ContactFrame> FiniteStrainBulk::frames(const State& s) const {
+  std::vector<ContactFrame> out;
+  out.reserve(s.normal.size());
+  for (const Point& n : s.normal)
+    out.push_back(contact_frame(n));
+  return out;
+}
+
+Eigen::MatrixXd FiniteStrainBulk::curvature_block(int p, double force) const {
+  const Point x = problem_.mesh->nodes[node(p)] + now_.u.segment(d_ * node(p), d_);
   const double h = kNormalDifferenceStep * (1.0 + x.norm());
-  Eigen::Matrix2d block;
-  for (int j = 0; j < 2; ++j) {
-    const Eigen::Vector2d e = h * Eigen::Vector2d::Unit(j);
+  Eigen::MatrixXd block(d_, d_);
+  for (int j = 0; j < d_; ++j) {
+    const Point e = h * Eigen::VectorXd::Unit(d_, j);
     block.col(j) =
         -force * (problem_.obstacle->normal(x + e) - problem_.obstacle->normal(x - e)) / (2 * h);
   }
@@ -337,12 +350,13 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   now_.has_tangent = false;
   for (int p = 0; p < contacts_; ++p)
     if (normal_force[p] != 0.0) J_->add_node_block(p, curvature_block(p, normal_force[p]));
-  J_->rotate(now_.normal);
+  const std::vector<ContactFrame> frame = frames(now_);
+  J_->rotate(frame);
   // r0 = Q^T (f_int - s f_ext), plus the contact force laws of the free normal components.
   Eigen::VectorXd r0 = now_.bulk.internal_force - load();
   for (int p = 0; p < contacts_; ++p) {
-    const Eigen::Vector2d r = r0.segment<2>(2 * node(p));
-    r0.segment<2>(2 * node(p)) = nodal_frame(now_.normal[p]).transpose() * r;
+    const Eigen::VectorXd r = r0.segment(d_ * node(p), d_);
+    r0.segment(d_ * node(p), d_) = frame[p].transpose() * r;
   }
 
   // Imposed increments: the Dirichlet dofs towards their targets (never contact nodes) and the
@@ -354,7 +368,7 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
         dof, load_factor_ * problem_.dirichlet_values[static_cast<Eigen::Index>(k)] - now_.u[dof]);
   }
   for (int p = 0; p < contacts_; ++p) {
-    const int normal_dof = 2 * node(p) + 1;
+    const int normal_dof = d_ * node(p) + d_ - 1;
     const DofCondition& c = conditions[p].normal;
     if (c.imposed) {
       imposed.emplace_back(normal_dof, c.value);
@@ -398,7 +412,7 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   s.normal_force.resize(contacts_);
   s.tangential_force = Eigen::VectorXd::Zero(contacts_);
   for (int p = 0; p < contacts_; ++p) {
-    const int normal_dof = 2 * node(p) + 1;
+    const int normal_dof = d_ * node(p) + d_ - 1;
     const DofCondition& c = conditions[p].normal;
     s.normal_increment[p] = dw[normal_dof];
     s.normal_force[p] = c.imposed ? -(r0[normal_dof] + J_->normal_row_times(p, dw))
@@ -414,8 +428,8 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   // du = Q dw.
   step_ = dw;
   for (int p = 0; p < contacts_; ++p) {
-    const int a = 2 * node(p);
-    step_.segment<2>(a) = nodal_frame(now_.normal[p]) * dw.segment<2>(a);
+    const int a = d_ * node(p);
+    step_.segment(a, d_) = frame[p] * dw.segment(a, d_);
   }
   base_ = now_.u;
   return s;
