@@ -17,7 +17,7 @@
 #    (3.53) with Gonzalez's; measured 1e-14), and the ball penetrates (the contact is active);
 #  - IPM + EMM (g = 5 mm) never penetrates beyond g (1 + 1e-8), Signorini beyond 1e-9 m, and both
 #    keep E - contact work (the wall's and the foundation's) to 1e-10 of E0.
-# The 1000-step run and its numbers: datafiles/scene3d/README.md. About 6 s.
+# The 1000-step run and its numbers: datafiles/scene3d/README.md. About 4 s (loaded machine).
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 require_stages mesh material assemble march dump

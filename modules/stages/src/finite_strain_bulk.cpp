@@ -355,7 +355,7 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   // r0 = Q^T (f_int - s f_ext), plus the contact force laws of the free normal components.
   Eigen::VectorXd r0 = now_.bulk.internal_force - load();
   for (int p = 0; p < contacts_; ++p) {
-    const Eigen::VectorXd r = r0.segment(d_ * node(p), d_);
+    const Point r = r0.segment(d_ * node(p), d_);
     r0.segment(d_ * node(p), d_) = frame[p].transpose() * r;
   }
 
