@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# drivers/scene3d_spin.sh [--quick] [--k K] [-o OUTDIR]: Gonzalez in 3D (issue 28): the free spinning
-# hyperelastic ball of datafiles/scene3d/spinning_ball.dat marched with Gonzalez's algorithmic
-# stress and with the plain midpoint stress, then postproc/scene3d_spin_report.py: the energy and
-# the angular momentum of every kept state against the first (OUTDIR/report.md,
+# drivers/scene3d_spin.sh [--quick] [--k K] [-o OUTDIR]: Gonzalez in 3D (issue 28): the free
+# spinning hyperelastic ball of datafiles/scene3d/spinning_ball.dat marched with Gonzalez's
+# algorithmic stress and with the plain midpoint stress, then postproc/scene3d_spin_report.py:
+# the energy and the angular momentum of every kept state against the first (OUTDIR/report.md,
 # OUTDIR/summary.json).
 #
 #   full:    the deck's 1000 steps of k = 1e-3 s

@@ -83,7 +83,8 @@ def main():
              "|---|---|---|---|---|---|---|---|"]
     for stress, r in runs.items():
         lines.append(f"| {stress} | {r['steps']} | {r['energy_drift']:.3e} | "
-                     f"{r['energy_end']:.3e} | {r['momentum_drift']:.3e} | {r['elastic_fraction']:.3g} | "
+                     f"{r['energy_end']:.3e} | {r['momentum_drift']:.3e} | "
+                     f"{r['elastic_fraction']:.3g} | "
                      f"{r['newton_mean']:.2f}, {r['newton_max']} | {r['wall_seconds']} |")
         print(f"{stress}: {r['steps']} steps, E0 = {r['E0']:.12g}, max |E - E0|/E0 = "
               f"{r['energy_drift']:.3e}, max |L - L0|/|L0| = {r['momentum_drift']:.3e}, max strain "
