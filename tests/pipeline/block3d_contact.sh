@@ -88,8 +88,8 @@ fi
 # mu s (s^2 - 1) = -p (P33 = s S33, S33 = mu (s^2 - 1)) for the stretch s = 0.886, u3 = (s - 1)
 # x3 at every node, and every base node's nominal pressure p (PDAS, Newton eps = 1e-12; measured
 # 3e-15 and 1e-15).
-sed -e 's/^MATERIAL.*/MATERIAL law=svk E=210e9 nu=0/' -e 's/PRESSURE ref=2 p=1e6/PRESSURE ref=2 p=2e10/' \
-  -e 's/^SOLVER method=pdas$/SOLVER method=pdas eps=1e-12/' -e 's/^OUTPUT.*/OUTPUT vtk=no/' \
+sed -e 's/^MATERIAL.*/MATERIAL law=svk E=210e9 nu=0/' \
+  -e 's/PRESSURE ref=2 p=1e6/PRESSURE ref=2 p=2e10/' -e 's/^SOLVER method=pdas$/SOLVER method=pdas eps=1e-12/' -e 's/^OUTPUT.*/OUTPUT vtk=no/' \
   "$deck" >"$work/svk.dat"
 echo "LOADSTEPS n=2" >>"$work/svk.dat"
 checks=$((checks + 1))
