@@ -8,7 +8,8 @@
 # area, the base on the plane, the top lowered by p lz / E; contact.csv has x3 and u3, the .vtu
 # the contact pressure and status. The same
 # deck with every method; a deck with a 2D obstacle, with a friction law not done in 3D
-# (nonmonotone) or with a sphere in 2D words is refused naming the field.
+# (nonmonotone) or with a sphere in 2D words is refused naming the field. And the same block in
+# large deformation (Saint Venant-Kirchhoff, lambda = 0), uniaxial again (issue 28).
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 require_command gmsh "the box generator meshes through gmsh"
@@ -79,6 +80,52 @@ else
     'Name="contact_status"' 'Name="stress" NumberOfComponents="6"'; do
     grep -aqF -- "$field" <<<"$header" || fail "the .vtu lacks $field"
   done
+fi
+
+# In large deformation (issue 28): the same block of Saint Venant-Kirchhoff with nu = 0 (lambda =
+# 0) under a nominal pressure p = 2e10 Pa (a tenth of E) in two load steps. With lambda = 0 the
+# uniaxial stretch keeps S11 = S22 = 0 exactly, so the exact solution is uniaxial again:
+# mu s (s^2 - 1) = -p (P33 = s S33, S33 = mu (s^2 - 1)) for the stretch s = 0.886, u3 = (s - 1)
+# x3 at every node, and every base node's nominal pressure p (PDAS, Newton eps = 1e-12; measured
+# 3e-15 and 1e-15).
+sed -e 's/^MATERIAL.*/MATERIAL law=svk E=210e9 nu=0/' \
+  -e 's/PRESSURE ref=2 p=1e6/PRESSURE ref=2 p=2e10/' -e 's/^SOLVER method=pdas$/SOLVER method=pdas eps=1e-12/' -e 's/^OUTPUT.*/OUTPUT vtk=no/' \
+  "$deck" >"$work/svk.dat"
+echo "LOADSTEPS n=2" >>"$work/svk.dat"
+checks=$((checks + 1))
+if ! "$root/drivers/chain.sh" "$work/svk.dat" -o "$work/svk" >"$work/svk.log" 2>&1; then
+  tail -20 "$work/svk.log"
+  fail "drivers/chain.sh (svk, large deformation) failed"
+else
+  "$python" - "$work/svk" "$bin" <<'PY' || fail "the large-deformation block (svk)"
+import csv, json, subprocess, sys
+out, bindir = sys.argv[1], sys.argv[2]
+rows = list(csv.DictReader(open(f"{out}/contact.csv")))
+p, mu = 2e10, 105e9
+s = 0.9
+for _ in range(50):
+    s -= (mu * s * (s * s - 1) + p) / (mu * (3 * s * s - 1))
+def dump(path, *extra):
+    return json.loads(subprocess.run([f"{bindir}/sig-dump", "--json", *extra, path],
+                                     capture_output=True, text=True, check=True).stdout)
+x = dump(f"{out}/case.nopo", "--values")["coordinates"]
+u = [a for a in dump(f"{out}/case.b", "--values=u")["arrays"] if a["name"] == "u"][0]["values"]
+n = len(x) // 3
+problems = []
+if any(r["converged"] != "1" or r["status"] != "contact" for r in rows):
+    problems.append("a base node not converged or not in contact")
+pressure = max(abs(float(r["pressure"]) / p - 1) for r in rows)
+stretch = max(abs(u[3 * i + 2] - (s - 1) * x[3 * i + 2]) for i in range(n)) / (1 - s)
+side = max(max(abs(u[3 * i]), abs(u[3 * i + 1])) for i in range(n)) / (1 - s)
+for value, what in ((pressure, "nominal pressure"), (stretch, "u3 = (s - 1) x3"),
+                    (side, "no sideways motion")):
+    if value > 1e-10:
+        problems.append(f"{what}: off by {value:.3g}")
+for q in problems:
+    print(q)
+print(f"block3d (svk, s = {s:.6f}): pressure off by {pressure:.2g}, u3 by {stretch:.2g}")
+sys.exit(1 if problems else 0)
+PY
 fi
 
 # Decks in the wrong dimension's words, refused naming the field.

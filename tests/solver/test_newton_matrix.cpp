@@ -5,7 +5,10 @@
 // column would show) and, through MUMPS's LDL^T which reads one triangle only, on a symmetric
 // one (a held row left coupled would show).
 #include "assembly/pattern.hpp"
+#include "contact/contact_law.hpp"
+#include "core/error.hpp"
 #include "mesh/generators.hpp"
+#include "mesh/gmsh.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/newton_matrix.hpp"
 #include "solver/nodal_frames.hpp"
@@ -14,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <random>
 
 namespace {
@@ -70,6 +74,43 @@ TEST(NewtonMatrix, RotationInPlaceIsQTransposeAQ) {
   const Eigen::MatrixXd Q = c.frames();
   const Eigen::MatrixXd expected = Q.transpose() * A * Q;
   EXPECT_LE((Eigen::MatrixXd(J.matrix()) - expected).norm(), 1e-13 * expected.norm());
+}
+
+// In 3D: the frames of contact_frame (two tangents and -n) on the three dofs of each contact
+// node of gmsh's unit cube (its base), and a 3 x 3 node block.
+TEST(NewtonMatrix, RotationInPlaceIsQTransposeAQIn3d) {
+  const sig::Mesh mesh = sig::read_gmsh(std::filesystem::path(SIG_SOURCE_DIR) / "tests" / "fuzz" /
+                                        "corpus" / "gmsh" / "box_v41_ascii.msh");
+  const sig::SparsityPattern pattern(mesh);
+  const std::vector<int> nodes = mesh.nodes_with_ref(1);
+  const int n = pattern.num_dofs();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::SparseMatrix<double> K = pattern.zero_matrix();
+  for (int j = 0; j < n; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
+      it.valueRef() = it.row() == j ? 40.0 + uniform(random) : uniform(random);
+  std::vector<sig::ContactFrame> frames;
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(n, n);
+  for (std::size_t p = 0; p < nodes.size(); ++p) {
+    const Eigen::Vector3d normal =
+        Eigen::Vector3d(uniform(random), uniform(random), 1.0 + uniform(random)).normalized();
+    frames.push_back(sig::contact_frame(normal));
+    Q.block<3, 3>(3 * nodes[p], 3 * nodes[p]) = frames.back();
+  }
+  sig::NewtonMatrix J(pattern.zero_matrix(), std::vector<char>(n, 0), nodes, 3);
+  Eigen::SparseMatrix<double> tangent = K;
+  J.take_tangent(tangent);
+  Eigen::Matrix3d block;
+  block << 3.0, -1.0, 0.5, 2.0, 1.0, -0.3, 0.2, 0.7, 4.0;
+  J.add_node_block(1, block);
+  J.rotate(frames);
+
+  Eigen::MatrixXd A(K);
+  A.block<3, 3>(3 * nodes[1], 3 * nodes[1]) += block;
+  const Eigen::MatrixXd expected = Q.transpose() * A * Q;
+  EXPECT_LE((Eigen::MatrixXd(J.matrix()) - expected).norm(), 1e-13 * expected.norm());
+  EXPECT_THROW(J.add_node_block(0, Eigen::Matrix2d::Identity()), sig::Error);
 }
 
 void check_decoupled_solve(bool symmetric) {

@@ -1,6 +1,6 @@
 #include "assembly/nonlinear.hpp"
 
-#include "assembly/p1.hpp"
+#include "assembly/p1_simplex.hpp"
 #include "core/error.hpp"
 #include "material/algorithmic_stress.hpp"
 #include "material/hyperelastic.hpp"
@@ -24,45 +24,51 @@ const HyperelasticLaw& law_of(const SubdomainMaterial& material) {
   return *material.hyperelastic;
 }
 
-// The kinematics of one triangle: F = I + u_e g^T, with g(J, a) = dlambda_a/dX_J the P1
-// gradients.
-struct Kinematics {
-  double volume; // thickness * reference area
-  Matrix23 g;
-  Eigen::Matrix2d F;
+// The kinematics of one cell (a triangle in 2D, a tetrahedron in 3D): F = I + u_e g^T, with
+// g(J, a) = dlambda_a/dX_J the P1 gradients.
+template <int d> struct Kinematics {
+  double volume; // thickness * reference area in 2D, the reference volume in 3D
+  SimplexVertices<d> g;
+  Tensor<d> F;
 };
 
-Kinematics kinematics(const Mesh& mesh, int t, double thickness, const Eigen::VectorXd& u) {
-  const Matrix23 x = triangle_vertices(mesh, t);
-  Kinematics k;
-  k.g = p1_gradients(x);
+template <int d>
+Kinematics<d> kinematics(const Mesh& mesh, int t, const SubdomainMaterial& material,
+                         const Eigen::VectorXd& u) {
+  const SimplexVertices<d> x = simplex_vertices<d>(mesh, t);
+  Kinematics<d> k;
+  k.g = p1_simplex_gradients<d>(x);
   // Displacements relative to the first vertex's: the gradients sum to zero, so this changes
   // nothing but rounding, and a body far from its reference position (a ring thrown 100 m) keeps
   // F exact for a translation instead of carrying |u| eps / h of noise into the stress.
-  Matrix23 ue;
-  const Eigen::Vector2d u0 = u.segment<2>(2 * mesh.cells[t][0]);
-  for (int a = 0; a < 3; ++a)
-    ue.col(a) = u.segment<2>(2 * mesh.cells[t][a]) - u0;
-  k.volume = thickness * p1_area(x);
-  k.F = Eigen::Matrix2d::Identity() + ue * k.g.transpose();
+  SimplexVertices<d> ue;
+  const Eigen::Matrix<double, d, 1> u0 = u.segment<d>(d * mesh.cells[t][0]);
+  for (int a = 0; a <= d; ++a)
+    ue.col(a) = u.segment<d>(d * mesh.cells[t][a]) - u0;
+  // A 3D body has no thickness (mili.cpp refuses the field there).
+  k.volume = (d == 2 ? material.thickness : 1.0) * p1_measure<d>(x);
+  k.F = Tensor<d>::Identity() + ue * k.g.transpose();
   return k;
 }
 
-} // namespace
+void verify_size(const Mesh& mesh, const Eigen::VectorXd& u) {
+  SIG_VERIFY(u.size() == mesh.dim * mesh.num_nodes(),
+             "displacement has " << u.size() << " values for " << mesh.num_nodes() << " nodes in "
+                                 << mesh.dim << "D");
+}
 
-double hyperelastic_energy(const Mesh& mesh, const MaterialTable& table, const Eigen::VectorXd& u) {
-  SIG_VERIFY(u.size() == 2 * mesh.num_nodes(),
-             "displacement has " << u.size() << " values for " << mesh.num_nodes() << " nodes");
+template <int d>
+double energy_in(const Mesh& mesh, const MaterialTable& table, const Eigen::VectorXd& u) {
   double energy = 0.0;
   for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     const HyperelasticLaw& law = law_of(material);
-    const Kinematics k = kinematics(mesh, t, material.thickness, u);
+    const Kinematics<d> k = kinematics<d>(mesh, t, material, u);
     if (!(k.F.determinant() > 0.0)) return std::numeric_limits<double>::infinity();
     // A law with no admissible state at F (plane-stress Saint Venant-Kirchhoff stretched past
-    // its limit) is, for a line search, the same as an inverted triangle.
+    // its limit) is, for a line search, the same as an inverted cell.
     try {
-      energy += k.volume * law.energy(k.F);
+      energy += k.volume * piola_response(law, k.F, false).energy;
     } catch (const Error&) {
       return std::numeric_limits<double>::infinity();
     }
@@ -70,46 +76,47 @@ double hyperelastic_energy(const Mesh& mesh, const MaterialTable& table, const E
   return energy;
 }
 
-namespace {
-
-/// What a triangle's law gives at its F: energy, first Piola stress, and dP/dF when asked.
-using TriangleResponse = std::function<StepResponse(int t, const HyperelasticLaw& law,
-                                                    const Eigen::Matrix2d& F, bool with_tangent)>;
+/// What a cell's law gives at its F: energy, first Piola stress, and dP/dF when asked.
+template <int d>
+using CellResponse = std::function<StepResponse<d>(int t, const HyperelasticLaw& law,
+                                                   const Tensor<d>& F, bool with_tangent)>;
 
 /// The loop of every assembly here: energy and force always, the tangent into K when K is given.
-void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
-                             const SparsityPattern* pattern, const Eigen::VectorXd& u,
-                             HyperelasticState& state, Eigen::SparseMatrix<double>* K,
-                             const TriangleResponse& response) {
-  state.internal_force.setZero(2 * mesh.num_nodes());
+template <int d>
+void assemble_over_cells(const Mesh& mesh, const MaterialTable& table,
+                         const SparsityPattern* pattern, const Eigen::VectorXd& u,
+                         HyperelasticState& state, Eigen::SparseMatrix<double>* K,
+                         const CellResponse<d>& response) {
+  state.internal_force.setZero(d * mesh.num_nodes());
   state.energy = 0.0;
   for (int t = 0; t < mesh.num_cells(); ++t) {
     const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
     const HyperelasticLaw& law = law_of(material);
-    const Kinematics kin = kinematics(mesh, t, material.thickness, u);
+    const Kinematics<d> kin = kinematics<d>(mesh, t, material, u);
     SIG_VERIFY(kin.F.determinant() > 0.0,
-               "triangle " << t + 1 << " is inverted: det F = " << kin.F.determinant());
-    StepResponse r;
+               mesh.cell_name() << " " << t + 1 << " is inverted: det F = " << kin.F.determinant());
+    StepResponse<d> r;
     try {
       r = response(t, law, kin.F, K != nullptr);
     } catch (const Error& e) {
-      throw Error("triangle " + std::to_string(t + 1) + ": " + e.what());
+      throw Error(std::string(mesh.cell_name()) + " " + std::to_string(t + 1) + ": " + e.what());
     }
-    // Virtual work, with dF = du_e g^T: f_e(2 a + i) = |T| t (P g)(i, a) and
-    // K_e(2 a + i, 2 b + k) = |T| t (g^T A_ik g)(a, b), A_ik the 2x2 block dP_i./dF_k. of A.
-    const Matrix23 f = kin.volume * (r.stress * kin.g);
+    // Virtual work, with dF = du_e g^T: f_e(d a + i) = |T| t (P g)(i, a) and
+    // K_e(d a + i, d b + k) = |T| t (g^T A_ik g)(a, b), A_ik the d x d block dP_i./dF_k. of A.
+    const SimplexVertices<d> f = kin.volume * (r.stress * kin.g);
     state.energy += kin.volume * r.energy;
-    for (int a = 0; a < 3; ++a)
-      state.internal_force.segment<2>(2 * mesh.cells[t][a]) += f.col(a);
+    for (int a = 0; a <= d; ++a)
+      state.internal_force.segment<d>(d * mesh.cells[t][a]) += f.col(a);
     if (K) {
-      Matrix6d Ke;
-      for (int i = 0; i < 2; ++i)
-        for (int k = 0; k < 2; ++k) {
-          const Eigen::Matrix3d block =
-              kin.volume * (kin.g.transpose() * r.tangent.block<2, 2>(2 * i, 2 * k) * kin.g);
-          for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-              Ke(2 * a + i, 2 * b + k) = block(a, b);
+      SimplexMatrix<d> Ke;
+      for (int i = 0; i < d; ++i)
+        for (int k = 0; k < d; ++k) {
+          const Eigen::Matrix<double, d + 1, d + 1> block =
+              kin.volume *
+              (kin.g.transpose() * r.tangent.template block<d, d>(d * i, d * k) * kin.g);
+          for (int a = 0; a <= d; ++a)
+            for (int b = 0; b <= d; ++b)
+              Ke(d * a + i, d * b + k) = block(a, b);
         }
       pattern->add(*K, t, Ke);
     }
@@ -117,9 +124,10 @@ void assemble_over_triangles(const Mesh& mesh, const MaterialTable& table,
 }
 
 /// The hyperelastic law's own response: P = dW/dF and its tangent.
-StepResponse law_response(int, const HyperelasticLaw& law, const Eigen::Matrix2d& F, bool) {
-  const HyperelasticResponse r = law.response(F);
-  return {r.stress, r.tangent, r.energy};
+template <int d>
+StepResponse<d> law_response(int, const HyperelasticLaw& law, const Tensor<d>& F,
+                             bool with_tangent) {
+  return piola_response(law, F, with_tangent);
 }
 
 /// The tangent's layout: reused in place when it already has the pattern's.
@@ -131,42 +139,89 @@ void reset_tangent(const SparsityPattern& pattern, Eigen::SparseMatrix<double>& 
     K = pattern.zero_matrix();
 }
 
+template <int d>
+void assemble_in(const Mesh& mesh, const MaterialTable& table, const SparsityPattern* pattern,
+                 const Eigen::VectorXd& u, HyperelasticState& state) {
+  if (pattern) reset_tangent(*pattern, state.tangent);
+  assemble_over_cells<d>(mesh, table, pattern, u, state, pattern ? &state.tangent : nullptr,
+                         law_response<d>);
+}
+
+template <int d>
+PreviousStrain previous_strain_in(const Mesh& mesh, const MaterialTable& table,
+                                  const Eigen::VectorXd& u_prev) {
+  PreviousStrain previous;
+  previous.F.resize(static_cast<std::size_t>(d * d * mesh.num_cells()));
+  previous.energy.resize(mesh.num_cells());
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
+    const Kinematics<d> k = kinematics<d>(mesh, t, material, u_prev);
+    SIG_VERIFY(k.F.determinant() > 0.0,
+               mesh.cell_name() << " " << t + 1 << " is inverted: det F = " << k.F.determinant());
+    previous.F_of<d>(t) = k.F;
+    previous.energy[t] = step_energy(law_of(material), k.F);
+  }
+  return previous;
+}
+
+template <int d>
+void assemble_step_in(const Mesh& mesh, const MaterialTable& table, const SparsityPattern& pattern,
+                      const PreviousStrain& previous, AlgorithmicStress stress,
+                      const Eigen::VectorXd& u, HyperelasticState& state, bool with_tangent,
+                      PreviousStrain* strain) {
+  if (strain) {
+    strain->F.resize(previous.F.size());
+    strain->energy.resize(previous.energy.size());
+  }
+  const CellResponse<d> response = [&](int t, const HyperelasticLaw& law, const Tensor<d>& F,
+                                       bool tangent) {
+    StepResponse<d> r =
+        step_response(law, stress, Tensor<d>(previous.F_of<d>(t)), previous.energy[t], F, tangent);
+    if (strain) {
+      strain->F_of<d>(t) = F;
+      strain->energy[t] = r.energy;
+    }
+    return r;
+  };
+  if (with_tangent) reset_tangent(pattern, state.tangent);
+  assemble_over_cells<d>(mesh, table, &pattern, u, state, with_tangent ? &state.tangent : nullptr,
+                         response);
+}
+
 } // namespace
+
+double hyperelastic_energy(const Mesh& mesh, const MaterialTable& table, const Eigen::VectorXd& u) {
+  verify_size(mesh, u);
+  return with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) {
+    return energy_in<d>(mesh, table, u);
+  });
+}
 
 void assemble_hyperelastic(const Mesh& mesh, const MaterialTable& table,
                            const SparsityPattern& pattern, const Eigen::VectorXd& u,
                            HyperelasticState& state) {
-  SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == 2 * mesh.num_nodes(),
+  SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == mesh.dim * mesh.num_nodes(),
              "displacement has " << u.size() << " values, pattern " << pattern.num_dofs()
                                  << " dofs, mesh " << mesh.num_nodes() << " nodes");
-  reset_tangent(pattern, state.tangent);
-  assemble_over_triangles(mesh, table, &pattern, u, state, &state.tangent, law_response);
+  with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) {
+    return assemble_in<d>(mesh, table, &pattern, u, state);
+  });
 }
 
 void assemble_hyperelastic_force(const Mesh& mesh, const MaterialTable& table,
                                  const Eigen::VectorXd& u, HyperelasticState& state) {
-  SIG_VERIFY(u.size() == 2 * mesh.num_nodes(),
-             "displacement has " << u.size() << " values for " << mesh.num_nodes() << " nodes");
-  assemble_over_triangles(mesh, table, nullptr, u, state, nullptr, law_response);
+  verify_size(mesh, u);
+  with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) {
+    return assemble_in<d>(mesh, table, nullptr, u, state);
+  });
 }
 
 PreviousStrain previous_strain(const Mesh& mesh, const MaterialTable& table,
                                const Eigen::VectorXd& u_prev) {
-  SIG_VERIFY(u_prev.size() == 2 * mesh.num_nodes(), "displacement has "
-                                                        << u_prev.size() << " values for "
-                                                        << mesh.num_nodes() << " nodes");
-  PreviousStrain previous;
-  previous.F.resize(mesh.num_cells());
-  previous.energy.resize(mesh.num_cells());
-  for (int t = 0; t < mesh.num_cells(); ++t) {
-    const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
-    const Kinematics k = kinematics(mesh, t, material.thickness, u_prev);
-    SIG_VERIFY(k.F.determinant() > 0.0,
-               "triangle " << t + 1 << " is inverted: det F = " << k.F.determinant());
-    previous.F[t] = k.F;
-    previous.energy[t] = step_energy(law_of(material), k.F);
-  }
-  return previous;
+  verify_size(mesh, u_prev);
+  return with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) {
+    return previous_strain_in<d>(mesh, table, u_prev);
+  });
 }
 
 void assemble_hyperelastic_step(const Mesh& mesh, const MaterialTable& table,
@@ -174,27 +229,15 @@ void assemble_hyperelastic_step(const Mesh& mesh, const MaterialTable& table,
                                 AlgorithmicStress stress, const Eigen::VectorXd& u,
                                 HyperelasticState& state, bool with_tangent,
                                 PreviousStrain* strain) {
-  SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == 2 * mesh.num_nodes() &&
-                 static_cast<int>(previous.F.size()) == mesh.num_cells(),
+  SIG_VERIFY(u.size() == pattern.num_dofs() && pattern.num_dofs() == mesh.dim * mesh.num_nodes() &&
+                 static_cast<int>(previous.energy.size()) == mesh.num_cells(),
              "time step: displacement has " << u.size() << " values, pattern " << pattern.num_dofs()
-                                            << " dofs, the step start " << previous.F.size()
-                                            << " triangles");
-  if (strain) {
-    strain->F.resize(previous.F.size());
-    strain->energy.resize(previous.energy.size());
-  }
-  const TriangleResponse response = [&](int t, const HyperelasticLaw& law, const Eigen::Matrix2d& F,
-                                        bool tangent) {
-    StepResponse r = step_response(law, stress, previous.F[t], previous.energy[t], F, tangent);
-    if (strain) {
-      strain->F[t] = F;
-      strain->energy[t] = r.energy;
-    }
-    return r;
-  };
-  if (with_tangent) reset_tangent(pattern, state.tangent);
-  assemble_over_triangles(mesh, table, &pattern, u, state, with_tangent ? &state.tangent : nullptr,
-                          response);
+                                            << " dofs, the step start " << previous.energy.size()
+                                            << " cells");
+  with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) {
+    return assemble_step_in<d>(mesh, table, pattern, previous, stress, u, state, with_tangent,
+                               strain);
+  });
 }
 
 } // namespace sig

@@ -9,8 +9,9 @@
 namespace sig {
 
 NewtonMatrix::NewtonMatrix(Eigen::SparseMatrix<double> pattern, const std::vector<char>& dirichlet,
-                           const std::vector<int>& contact_nodes)
-    : full_(std::move(pattern)), nodes_(contact_nodes) {
+                           const std::vector<int>& contact_nodes, int d)
+    : full_(std::move(pattern)), d_(d), nodes_(contact_nodes) {
+  SIG_VERIFY(d == 2 || d == 3, "Newton matrix: " << d << " dofs a node");
   SIG_VERIFY(full_.isCompressed() && full_.rows() == full_.cols(),
              "the Newton pattern is not a compressed square matrix");
   full_.coeffs().setZero();
@@ -46,8 +47,8 @@ NewtonMatrix::NewtonMatrix(Eigen::SparseMatrix<double> pattern, const std::vecto
 
   std::vector<int> first_dofs(nodes_.size());
   for (std::size_t p = 0; p < nodes_.size(); ++p)
-    first_dofs[p] = 2 * nodes_[p];
-  frames_ = std::make_unique<FrameRotation>(full_, std::move(first_dofs));
+    first_dofs[p] = d * nodes_[p];
+  frames_ = std::make_unique<FrameRotation>(full_, std::move(first_dofs), d);
 }
 
 void NewtonMatrix::take_tangent(Eigen::SparseMatrix<double>& K) {
@@ -58,15 +59,22 @@ void NewtonMatrix::take_tangent(Eigen::SparseMatrix<double>& K) {
   full_.swap(K);
 }
 
-void NewtonMatrix::add_node_block(int p, const Eigen::Matrix2d& block) {
-  const int a = 2 * nodes_[p];
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i)
+void NewtonMatrix::add_node_block(int p, const Eigen::Ref<const Eigen::MatrixXd>& block) {
+  SIG_VERIFY(block.rows() == d_ && block.cols() == d_, "node block of " << block.rows() << " x "
+                                                                        << block.cols() << " for "
+                                                                        << d_ << " dofs a node");
+  const int a = d_ * nodes_[p];
+  for (int j = 0; j < d_; ++j)
+    for (int i = 0; i < d_; ++i)
       if (block(i, j) != 0.0) value(a + i, a + j) += block(i, j);
 }
 
 void NewtonMatrix::rotate(const std::vector<Eigen::Vector2d>& normals) {
   frames_->rotate(full_, normals);
+}
+
+void NewtonMatrix::rotate(const std::vector<ContactFrame>& frames) {
+  frames_->rotate(full_, frames);
 }
 
 Eigen::VectorXd NewtonMatrix::solve(const Eigen::VectorXd& r0,

@@ -13,8 +13,9 @@
 //          only the contact nodes of initial gap at most this condensed, the others watched)
 //
 // The mesh is 2D or 3D: a 3D body marches the linear schemes (midpoint, Newmark; mass
-// consistent, lumped or emm) with every strategy, frictionless; the hyperelastic march, friction
-// in time and the marches in velocity refuse a 3D mesh on their card (issue 28).
+// consistent, lumped or emm) and the hyperelastic march (Gonzalez's or the midpoint stress) with
+// every strategy, frictionless; friction in time and the marches in velocity refuse a 3D mesh on
+// their card (issue 28).
 //
 // Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0),
 // with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
@@ -80,8 +81,8 @@ int main(int argc, char** argv) {
                  "march: the files hold the steps done, a warning is printed and the stage exits "
                  "0. A progress line shows the step, time steps per second and the time left. "
                  "On a 3D mesh: the linear schemes (midpoint, Newmark; consistent, lumped or EMM "
-                 "mass) with every strategy, frictionless (issue 28); SOLVER candidate_gap= "
-                 "condenses only the contact nodes near the obstacle.",
+                 "mass) and the hyperelastic march with every strategy, frictionless (issue 28); "
+                 "SOLVER candidate_gap= condenses only the contact nodes near the obstacle.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
                 "OUTDIR/case.mili (sig-material: the laws, hyperelastic or not)",
@@ -169,10 +170,7 @@ int main(int argc, char** argv) {
 
     // 2. Mesh and assembled system; a dynamic case needs a mass.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
-    // 3D: linear elastodynamics with frictionless contact (issue 28's first slice).
-    if (hyperelastic)
-      sig::refuse_in_3d(mesh, *datafile.all("MATERIAL").front(), "law",
-                        "the hyperelastic march (large deformation in time)");
+    // 3D: linear elastodynamics and the hyperelastic march, with frictionless contact (issue 28).
     if (const sig::Card* friction = sig::friction_card_with_law(datafile))
       sig::refuse_in_3d(mesh, *friction, "law", "friction in a march (its slips in two tangents)");
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));

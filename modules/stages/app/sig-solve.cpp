@@ -101,8 +101,8 @@ int main(int argc, char** argv) {
     std::optional<sig::ContactElements> contact;
     if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     if (mesh.dim == 3) {
-      // A 3D deck is small strain for now (issue 26): sig-material refused its hyperelastic laws,
-      // sig-contact the friction laws other than Tresca and Coulomb.
+      // A 3D deck: sig-contact refused the friction laws other than Tresca and Coulomb (issue 26);
+      // a hyperelastic one is solved frictionless (the finite-strain bulk in d = 3, issue 28).
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail("u", "an initial displacement in 3D is not "
                                                    "implemented yet (issue 26)");
@@ -160,9 +160,12 @@ int main(int argc, char** argv) {
       std::cout << "), start " << s.start.name();
       if (s.start.fraction > 0 && s.start.fraction < 1) std::cout << " x " << s.start.fraction;
       if (s.start.fraction > 0) std::cout << " (" << s.start.iterations << " iterations)";
-      std::cout << ", reaction " << result.reaction_x << "," << result.reaction_y << " moment "
-                << result.reaction_moment << ", solve " << result.seconds << " s -> "
-                << args.ds_path("b").string() << "\n";
+      std::cout << ", reaction " << result.reaction_x << "," << result.reaction_y;
+      if (mesh.dim == 3)
+        std::cout << "," << result.reaction_z;
+      else
+        std::cout << " moment " << result.reaction_moment;
+      std::cout << ", solve " << result.seconds << " s -> " << args.ds_path("b").string() << "\n";
       for (std::size_t k = 0; k < s.steps.size(); ++k)
         if (!s.steps[k].converged)
           std::cout << "sig-solve: Nv, load step " << k + 1 << ": " << s.steps[k].failure << "\n";

@@ -1,11 +1,14 @@
 // The hyperelastic bulk of the large-deformation contact solve (finite_strain_bulk.hpp).
 #include "stages/finite_strain_bulk.hpp"
 
+#include "assembly/p1_simplex.hpp"
 #include "assembly/rigid_motion.hpp"
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/nodal_frames.hpp"
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -30,23 +33,31 @@ namespace {
 /// step only, 1/2: 13 (modules/solver/NEWTON.md).
 constexpr double kStretchTrust = 0.5;
 
-/// max over the triangles of ||grad_x du||_2, the gradient of the increment du with respect to
-/// the present positions X + u (P1: one per triangle).
+/// max over the cells of ||grad_x du||_2, the gradient of the increment du with respect to
+/// the present positions X + u (P1: one per cell).
+template <int d>
 double largest_stretch_change(const Mesh& mesh, const Eigen::VectorXd& u,
                               const Eigen::VectorXd& du) {
+  using Matrix = Eigen::Matrix<double, d, d>;
   double largest = 0;
   for (const Simplex& cell : mesh.cells) {
-    Eigen::Matrix2d x, d;
-    for (int j = 0; j < 2; ++j) {
-      const int a = 2 * cell[j + 1], b = 2 * cell[0];
-      x.col(j) = mesh.nodes[cell[j + 1]] - mesh.nodes[cell[0]] + u.segment<2>(a) - u.segment<2>(b);
-      d.col(j) = du.segment<2>(a) - du.segment<2>(b);
+    Matrix x, e;
+    for (int j = 0; j < d; ++j) {
+      const int a = d * cell[j + 1], b = d * cell[0];
+      x.col(j) = mesh.nodes[cell[j + 1]] - mesh.nodes[cell[0]] + u.segment<d>(a) - u.segment<d>(b);
+      e.col(j) = du.segment<d>(a) - du.segment<d>(b);
     }
-    const Eigen::Matrix2d g = d * x.inverse();
-    // sigma_max^2 of a 2 x 2 matrix: (|g|_F^2 + sqrt(|g|_F^4 - 4 det^2)) / 2.
-    const double f2 = g.squaredNorm(), det = g.determinant();
-    largest = std::max(largest,
-                       std::sqrt(0.5 * (f2 + std::sqrt(std::max(0.0, f2 * f2 - 4 * det * det)))));
+    const Matrix g = e * x.inverse();
+    if constexpr (d == 2) {
+      // sigma_max^2 of a 2 x 2 matrix: (|g|_F^2 + sqrt(|g|_F^4 - 4 det^2)) / 2.
+      const double f2 = g.squaredNorm(), det = g.determinant();
+      largest = std::max(largest,
+                         std::sqrt(0.5 * (f2 + std::sqrt(std::max(0.0, f2 * f2 - 4 * det * det)))));
+    } else {
+      // sigma_max^2 the largest eigenvalue of g^T g.
+      const Eigen::SelfAdjointEigenSolver<Matrix> eigen(g.transpose() * g, Eigen::EigenvaluesOnly);
+      largest = std::max(largest, std::sqrt(std::max(0.0, eigen.eigenvalues()[d - 1])));
+    }
   }
   return largest;
 }
@@ -61,26 +72,29 @@ constexpr double kNormalDifferenceStep = 1e-6;
 /// tangent of the deformed body, which law=svk loses in strong compression.
 std::string singular_step_cause(const FiniteStrainProblem& problem,
                                 const std::vector<std::pair<int, double>>& imposed,
-                                const std::vector<Eigen::Vector2d>& normals,
-                                const std::string& library) {
+                                const std::vector<Point>& normals, const std::string& library) {
   const Mesh& mesh = *problem.mesh;
-  std::vector<int> contact_of_node(mesh.num_nodes(), -1);
-  for (int p = 0; problem.contact && p < problem.contact->size(); ++p)
-    contact_of_node[problem.contact->node[p]] = p;
-  std::vector<Hold> holds;
-  for (const auto& [dof, value] : imposed) {
-    Hold hold;
-    hold.node = dof / 2;
-    const Eigen::Vector2d axis = dof % 2 == 0 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d::UnitY();
-    const int p = contact_of_node[hold.node];
-    hold.along = p < 0 ? axis : Eigen::Vector2d(nodal_frame(normals[p]) * axis);
-    holds.push_back(hold);
-  }
   const std::string held =
       " (" + std::to_string(imposed.size()) + " dofs held at this iterate; " + library + ")";
-  if (problem.mass == nullptr)
+  // A static 2D solve: a part of the body its holds leave free (3D bodies march only, issue 28;
+  // a march's mass holds every part).
+  if (problem.mass == nullptr && mesh.dim == 2) {
+    std::vector<int> contact_of_node(mesh.num_nodes(), -1);
+    for (int p = 0; problem.contact && p < problem.contact->size(); ++p)
+      contact_of_node[problem.contact->node[p]] = p;
+    std::vector<Hold> holds;
+    for (const auto& [dof, value] : imposed) {
+      Hold hold;
+      hold.node = dof / 2;
+      const Eigen::Vector2d axis =
+          dof % 2 == 0 ? Eigen::Vector2d::UnitX() : Eigen::Vector2d::UnitY();
+      const int p = contact_of_node[hold.node];
+      hold.along = p < 0 ? axis : Eigen::Vector2d(nodal_frame(Eigen::Vector2d(normals[p])) * axis);
+      holds.push_back(hold);
+    }
     if (const std::vector<FreePart> free = free_parts(mesh, holds); !free.empty())
       return describe(free.front()) + held;
+  }
   bool svk = false;
   for (const SubdomainMaterial& m : problem.materials->entries)
     svk = svk || (m.hyperelastic && m.hyperelastic->name() == "svk");
@@ -97,9 +111,10 @@ std::string singular_step_cause(const FiniteStrainProblem& problem,
 
 FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std::string& backend,
                                    double eps)
-    : problem_(problem), eps_(eps), pattern_(*problem.mesh) {
+    : problem_(problem), d_(problem.mesh->dim), eps_(eps), pattern_(*problem.mesh) {
   SIG_VERIFY(problem.mesh && problem.materials, "finite-strain contact needs a mesh and materials");
-  const int ndof = 2 * problem.mesh->num_nodes();
+  const int d = d_;
+  const int ndof = d * problem.mesh->num_nodes();
   contacts_ = problem.contact ? problem.contact->size() : 0;
   SIG_VERIFY(contacts_ == 0 || problem.obstacle, "contact elements without an obstacle");
   SIG_VERIFY(problem.load.size() == 0 || problem.load.size() == ndof,
@@ -118,11 +133,13 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
   std::vector<int> contact_nodes(contacts_);
   for (int p = 0; p < contacts_; ++p) {
     contact_nodes[p] = node(p);
-    for (int a = 0; a < 2; ++a)
-      SIG_VERIFY(!dirichlet_[2 * node(p) + a],
+    for (int a = 0; a < d; ++a)
+      SIG_VERIFY(!dirichlet_[d * node(p) + a],
                  "contact node " << node(p) + 1 << " has a Dirichlet condition");
   }
   friction_ = contacts_ > 0 && any_friction(problem.contact->law);
+  SIG_VERIFY(!friction_ || d == 2,
+             "friction of a hyperelastic body in 3D is not implemented yet (issue 28)");
   if (dynamic()) {
     SIG_VERIFY(problem.time_step > 0, "time step k = " << problem.time_step << " must be > 0");
     mass_ = pattern_.zero_matrix();
@@ -149,7 +166,7 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
       !friction_ && !(dynamic() && problem.stress == AlgorithmicStress::gonzalez);
   solver_ = make_linear_solver(backend, symmetric ? backend_traits(backend).symmetric_kind()
                                                   : MatrixKind::general);
-  J_ = std::make_unique<NewtonMatrix>(pattern_.zero_matrix(), dirichlet_, contact_nodes);
+  J_ = std::make_unique<NewtonMatrix>(pattern_.zero_matrix(), dirichlet_, contact_nodes, d);
   now_.u = Eigen::VectorXd::Zero(ndof);
   slip_origin_ = now_.u;
   if (dynamic()) start_time_step(now_.u, now_.u); // at rest: the predictor is u = 0
@@ -257,11 +274,14 @@ bool FiniteStrainBulk::evaluate(State& s, bool with_tangent) {
   s.slip.resize(contacts_);
   s.normal.resize(contacts_);
   for (int p = 0; p < contacts_; ++p) {
-    const Eigen::Vector2d x = problem_.mesh->nodes[node(p)] + s.u.segment<2>(2 * node(p));
+    const int a = d_ * node(p);
+    const Point x = problem_.mesh->nodes[node(p)] + s.u.segment(a, d_);
     s.penetration[p] = -problem_.obstacle->signed_distance(x);
     s.normal[p] = problem_.obstacle->normal(x);
-    s.slip[p] = contact_tangent(s.normal[p])
-                    .dot(s.u.segment<2>(2 * node(p)) - slip_origin_.segment<2>(2 * node(p)));
+    // The slip along the 2D contact tangent (friction is 2D only: a 3D body's is 0, unused).
+    s.slip[p] = d_ == 2 ? contact_tangent(Eigen::Vector2d(s.normal[p]))
+                              .dot(s.u.segment<2>(a) - slip_origin_.segment<2>(a))
+                        : 0.0;
   }
   return true;
 }
@@ -270,8 +290,9 @@ double FiniteStrainBulk::equilibrium_residual(const Eigen::VectorXd& N,
                                               const Eigen::VectorXd& T) const {
   Eigen::VectorXd r = now_.bulk.internal_force - load();
   for (int p = 0; p < contacts_; ++p) {
-    r.segment<2>(2 * node(p)) -= N[p] * now_.normal[p];
-    if (friction_) r.segment<2>(2 * node(p)) += T[p] * contact_tangent(now_.normal[p]);
+    r.segment(d_ * node(p), d_) -= N[p] * now_.normal[p];
+    if (friction_) // 2D
+      r.segment<2>(2 * node(p)) += T[p] * contact_tangent(Eigen::Vector2d(now_.normal[p]));
   }
   // A Dirichlet dof's row is its mismatch with the load step's target, times its stiffness: the
   // force that would move it there (a step shorter than 1 leaves part of it).
@@ -286,9 +307,11 @@ double FiniteStrainBulk::equilibrium_residual(const Eigen::VectorXd& N,
 Eigen::VectorXd FiniteStrainBulk::contact_stiffness() const {
   Eigen::VectorXd k(contacts_);
   for (int p = 0; p < contacts_; ++p) {
-    const Eigen::Vector2d n = problem_.obstacle->normal(problem_.mesh->nodes[node(p)]);
-    const int a = 2 * node(p);
-    k[p] = n[0] * n[0] * rest_diagonal_[a] + n[1] * n[1] * rest_diagonal_[a + 1];
+    const Point n = problem_.obstacle->normal(problem_.mesh->nodes[node(p)]);
+    const int a = d_ * node(p);
+    k[p] = n[0] * n[0] * rest_diagonal_[a];
+    for (int i = 1; i < d_; ++i)
+      k[p] += n[i] * n[i] * rest_diagonal_[a + i];
   }
   return k;
 }
@@ -297,12 +320,20 @@ double FiniteStrainBulk::force_scale() const {
   return std::max({load().norm(), now_.bulk.internal_force.norm(), now_.inertia, 1e-300});
 }
 
-Eigen::Matrix2d FiniteStrainBulk::curvature_block(int p, double force) const {
-  const Eigen::Vector2d x = problem_.mesh->nodes[node(p)] + now_.u.segment<2>(2 * node(p));
+std::vector<ContactFrame> FiniteStrainBulk::frames(const State& s) const {
+  std::vector<ContactFrame> out;
+  out.reserve(s.normal.size());
+  for (const Point& n : s.normal)
+    out.push_back(contact_frame(n));
+  return out;
+}
+
+Eigen::MatrixXd FiniteStrainBulk::curvature_block(int p, double force) const {
+  const Point x = problem_.mesh->nodes[node(p)] + now_.u.segment(d_ * node(p), d_);
   const double h = kNormalDifferenceStep * (1.0 + x.norm());
-  Eigen::Matrix2d block;
-  for (int j = 0; j < 2; ++j) {
-    const Eigen::Vector2d e = h * Eigen::Vector2d::Unit(j);
+  Eigen::MatrixXd block(d_, d_);
+  for (int j = 0; j < d_; ++j) {
+    const Point e = h * Eigen::VectorXd::Unit(d_, j);
     block.col(j) =
         -force * (problem_.obstacle->normal(x + e) - problem_.obstacle->normal(x - e)) / (2 * h);
   }
@@ -319,12 +350,13 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   now_.has_tangent = false;
   for (int p = 0; p < contacts_; ++p)
     if (normal_force[p] != 0.0) J_->add_node_block(p, curvature_block(p, normal_force[p]));
-  J_->rotate(now_.normal);
+  const std::vector<ContactFrame> frame = frames(now_);
+  J_->rotate(frame);
   // r0 = Q^T (f_int - s f_ext), plus the contact force laws of the free normal components.
   Eigen::VectorXd r0 = now_.bulk.internal_force - load();
   for (int p = 0; p < contacts_; ++p) {
-    const Eigen::Vector2d r = r0.segment<2>(2 * node(p));
-    r0.segment<2>(2 * node(p)) = nodal_frame(now_.normal[p]).transpose() * r;
+    const Point r = r0.segment(d_ * node(p), d_);
+    r0.segment(d_ * node(p), d_) = frame[p].transpose() * r;
   }
 
   // Imposed increments: the Dirichlet dofs towards their targets (never contact nodes) and the
@@ -336,7 +368,7 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
         dof, load_factor_ * problem_.dirichlet_values[static_cast<Eigen::Index>(k)] - now_.u[dof]);
   }
   for (int p = 0; p < contacts_; ++p) {
-    const int normal_dof = 2 * node(p) + 1;
+    const int normal_dof = d_ * node(p) + d_ - 1;
     const DofCondition& c = conditions[p].normal;
     if (c.imposed) {
       imposed.emplace_back(normal_dof, c.value);
@@ -380,7 +412,7 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   s.normal_force.resize(contacts_);
   s.tangential_force = Eigen::VectorXd::Zero(contacts_);
   for (int p = 0; p < contacts_; ++p) {
-    const int normal_dof = 2 * node(p) + 1;
+    const int normal_dof = d_ * node(p) + d_ - 1;
     const DofCondition& c = conditions[p].normal;
     s.normal_increment[p] = dw[normal_dof];
     s.normal_force[p] = c.imposed ? -(r0[normal_dof] + J_->normal_row_times(p, dw))
@@ -396,8 +428,8 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   // du = Q dw.
   step_ = dw;
   for (int p = 0; p < contacts_; ++p) {
-    const int a = 2 * node(p);
-    step_.segment<2>(a) = nodal_frame(now_.normal[p]) * dw.segment<2>(a);
+    const int a = d_ * node(p);
+    step_.segment(a, d_) = frame[p] * dw.segment(a, d_);
   }
   base_ = now_.u;
   return s;
@@ -408,7 +440,10 @@ double FiniteStrainBulk::trusted_length() const {
   // time step starts from its predictor, within a step of its solution: left as it was).
   // Computed when asked (the driver asks on a solve's first step only), not at every solve.
   if (dynamic()) return std::numeric_limits<double>::infinity();
-  const double change = largest_stretch_change(*problem_.mesh, base_, step_);
+  const Mesh& mesh = *problem_.mesh;
+  const double change = with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) {
+    return largest_stretch_change<d>(mesh, base_, step_);
+  });
   return change > 0 ? kStretchTrust / change : std::numeric_limits<double>::infinity();
 }
 

@@ -18,11 +18,17 @@ void contact_state(const FiniteStrainProblem& problem, const Eigen::VectorXd& u,
   const int m = problem.contact ? problem.contact->size() : 0;
   q.resize(m);
   v_n.resize(m);
+  const int d = problem.mesh->dim;
   for (int p = 0; p < m; ++p) {
     const int node = problem.contact->node[p];
-    const Eigen::Vector2d x = problem.mesh->nodes[node] + u.segment<2>(2 * node);
+    const Point x = problem.mesh->nodes[node] + u.segment(d * node, d);
+    const Point n = problem.obstacle->normal(x);
     q[p] = -problem.obstacle->signed_distance(x);
-    v_n[p] = -problem.obstacle->normal(x).dot(v.segment<2>(2 * node));
+    // -n . v by components (Eigen's dot of a Point trips GCC's -Warray-bounds: it cannot see
+    // that a Point holds at most 3).
+    v_n[p] = 0.0;
+    for (int i = 0; i < d; ++i)
+      v_n[p] -= n[i] * v[d * node + i];
   }
 }
 

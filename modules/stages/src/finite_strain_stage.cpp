@@ -42,6 +42,7 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
   problem.obstacle = obstacle.get();
 
   FiniteStrainStageResult result;
+  result.dim = mesh.dim;
   if (contact != nullptr) result.contact_weight = contact->weight;
   const auto start = std::chrono::steady_clock::now();
   result.solution = solve_finite_strain_contact(problem, options);
@@ -61,10 +62,13 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
       admissible = false;
     }
     if (admissible) {
+      const int d = mesh.dim;
+      double* component[3] = {&result.reaction_x, &result.reaction_y, &result.reaction_z};
       for (int dof : system.dirichlet_dofs) {
         double r = state.internal_force[dof];
         if (system.f.size() > 0) r -= last.load_factor * system.f[dof];
-        (dof % 2 == 0 ? result.reaction_x : result.reaction_y) += r;
+        *component[dof % d] += r;
+        if (d == 3) continue; // the moment about e3 is a 2D body's
         const int node = dof / 2;
         const Eigen::Vector2d x = mesh.nodes[node] + last.u.segment<2>(2 * node);
         result.reaction_moment += dof % 2 == 0 ? -x.y() * r : x.x() * r;
@@ -184,7 +188,10 @@ void write_finite_strain_solution(const std::filesystem::path& path,
   put_load_step_states(ds, result);
   ds.put_scalar("reaction_x", result.reaction_x);
   ds.put_scalar("reaction_y", result.reaction_y);
-  ds.put_scalar("reaction_moment", result.reaction_moment);
+  if (result.dim == 3)
+    ds.put_scalar("reaction_z", result.reaction_z);
+  else
+    ds.put_scalar("reaction_moment", result.reaction_moment);
   ds.put_scalar("time_solve", result.seconds);
   write_ds(path, ds);
 }

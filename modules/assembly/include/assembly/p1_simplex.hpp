@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 
 #include <array>
+#include <type_traits>
 #include <utility>
 
 namespace sig {
@@ -31,6 +32,14 @@ template <int d> constexpr std::array<std::pair<int, int>, voigt_size(d) - d> vo
     return {{{0, 1}}};
   else
     return {{{1, 2}, {0, 2}, {0, 1}}};
+}
+
+/// f(std::integral_constant<int, d>{}) for the dimension d = 2 or 3 known at run time (a mesh's):
+/// how a routine templated on d is entered from code that holds the mesh, e.g.
+/// with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) { return f<d>(mesh); }).
+template <typename F> decltype(auto) with_dimension(int dim, F&& f) {
+  if (dim == 3) return f(std::integral_constant<int, 3>{});
+  return f(std::integral_constant<int, 2>{});
 }
 
 /// Vertex coordinates of cell c of a mesh of dimension d, one column per vertex.

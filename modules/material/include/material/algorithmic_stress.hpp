@@ -26,7 +26,9 @@
 //     D = CC_m / 4 + (2 / |dC|^2) dC (x) [(S(C_n) - S(C_m)) / 2 - CC_m : dC / 8]
 //         + 2 beta [Isym / |dC|^2 - 2 dC (x) dC / |dC|^4],      CC = 2 dS/dC,
 // beta the bracket of Sigma (ALGORITHMS.md 4.2), so the step's Newton matrix needs an LU solver.
-// Works in plane strain and plane stress alike, on the 2D law of HyperelasticLaw::in_plane.
+// In 2D it works in plane strain and plane stress alike, on the 2D law of
+// HyperelasticLaw::in_plane; in 3D on the law's C itself (HyperelasticLaw::at). One formula for
+// both, templated on the dimension d.
 #include "material/hyperelastic.hpp"
 
 #include <Eigen/Core>
@@ -41,22 +43,40 @@ std::string to_string(AlgorithmicStress stress);
 /// sig::Error listing the names for anything else.
 AlgorithmicStress algorithmic_stress_named(const std::string& name);
 
-/// The stress of a step and what goes with it.
-struct StepResponse {
-  Eigen::Matrix2d stress = Eigen::Matrix2d::Zero();  ///< Pi of the step
-  Eigen::Matrix4d tangent = Eigen::Matrix4d::Zero(); ///< dPi / dF_n, Voigt order (2 i + J)
-  double energy = 0.0;                               ///< W(F_n), per unit reference volume
+/// A d x d tensor (d = 2 or 3, the mesh's dimension) and a map between two of them in the
+/// row-major Voigt order of the header (index d i + J).
+template <int d> using Tensor = Eigen::Matrix<double, d, d>;
+template <int d> using TensorMap = Eigen::Matrix<double, d * d, d * d>;
+
+/// The stress of a step and what goes with it, in R^d.
+template <int d> struct StepResponse {
+  Tensor<d> stress = Tensor<d>::Zero();        ///< Pi of the step
+  TensorMap<d> tangent = TensorMap<d>::Zero(); ///< dPi / dF_n, Voigt order (d i + J)
+  double energy = 0.0;                         ///< W(F_n), per unit reference volume
 };
 
-/// W(F) as the step stress computes it (from the in-plane C): the energy a step starts from.
+/// W(F) as the step stress computes it (from C = F^T F; in 2D the in-plane C of the plane
+/// mode, in 3D the law itself): the energy a step starts from.
 double step_energy(const HyperelasticLaw& law, const Eigen::Matrix2d& F);
+double step_energy(const HyperelasticLaw& law, const Eigen::Matrix3d& F);
 
 /// Pi of the step from F_prev, whose energy is `energy_prev` = step_energy(F_prev) (computed once
-/// per step), to F, and its tangent when `with_tangent`; the energy is step_energy(F). Throws
-/// sig::Error as HyperelasticLaw::response outside the law's domain (det F <= 0 at F or at the
-/// midpoint).
-StepResponse step_response(const HyperelasticLaw& law, AlgorithmicStress kind,
-                           const Eigen::Matrix2d& F_prev, double energy_prev,
-                           const Eigen::Matrix2d& F, bool with_tangent = true);
+/// per step), to F, and its tangent when `with_tangent`; the energy is step_energy(F). One
+/// formula for d = 2 and 3 (in 3D the thesis's (3.41) on the whole C). Throws sig::Error as
+/// HyperelasticLaw::response outside the law's domain (det F <= 0 at F or at the midpoint).
+StepResponse<2> step_response(const HyperelasticLaw& law, AlgorithmicStress kind,
+                              const Eigen::Matrix2d& F_prev, double energy_prev,
+                              const Eigen::Matrix2d& F, bool with_tangent = true);
+StepResponse<3> step_response(const HyperelasticLaw& law, AlgorithmicStress kind,
+                              const Eigen::Matrix3d& F_prev, double energy_prev,
+                              const Eigen::Matrix3d& F, bool with_tangent = true);
+
+/// The law's own response at F: W(F), P = dW/dF and dP/dF (when `with_tangent`; in 2D always),
+/// in the same form as a step's (a static solve's stress). 2D: HyperelasticLaw::response (plane
+/// strain or stress); 3D: the law at C = F^T F, P = F S. Throws as HyperelasticLaw::response.
+StepResponse<2> piola_response(const HyperelasticLaw& law, const Eigen::Matrix2d& F,
+                               bool with_tangent = true);
+StepResponse<3> piola_response(const HyperelasticLaw& law, const Eigen::Matrix3d& F,
+                               bool with_tangent = true);
 
 } // namespace sig

@@ -3,14 +3,15 @@
 // (solver/contact_bulk.hpp): the residual f_int(u) - s f_ext and the tangent of the assembly
 // module (assembly/nonlinear.hpp), with u = s u_D on the Dirichlet dofs at load factor s.
 //
-// Contact kinematics at the CURRENT position x_p = X_p + u_p of each contact node: the
-// penetration q_n = -d(x_p) beyond the obstacle surface, and the frame (t_p, -n_p) of the
-// obstacle's normal n_p = n(x_p) (the foundation's normal, thesis Remark 1.1). The Jacobian is
+// The body is 2D or 3D (the mesh's dimension d, d dofs a node). Contact kinematics at the
+// CURRENT position x_p = X_p + u_p of each contact node: the penetration q_n = -d(x_p) beyond the
+// obstacle surface, and the frame contact_frame(n_p) (the tangents and -n_p) of the obstacle's
+// normal n_p = n(x_p) (the foundation's normal, thesis Remark 1.1). The Jacobian is
 // consistent for any obstacle whose d is the true distance (grad d = n): the constraint rows use
 // n, and the contact force N_p n(x_p) adds -N_p dn/dx (the obstacle's curvature, zero for a
 // plane) to the tangent; dn/dx is a central difference of Obstacle::normal, since the obstacle
-// interface offers n only. Friction is not modelled in large deformation yet: the bulk has no
-// tangential unknowns.
+// interface offers n only. Friction (the march's, along the contact tangent) is 2D only: a 3D
+// body's contact is frictionless (issue 28).
 //
 // Cost: the Newton matrix keeps ONE sparsity pattern for the whole solve (newton_matrix.hpp), so
 // the linear solver's symbolic analysis is done once and a step costs one numeric factorization
@@ -40,7 +41,8 @@ struct MaterialTable;
 struct FiniteStrainProblem {
   const Mesh* mesh = nullptr;
   const MaterialTable* materials = nullptr; ///< every sub-domain hyperelastic
-  std::vector<int> dirichlet_dofs;          ///< sorted, unique, dof = 2 node + component
+  /// sorted, unique, dof = d node + component, d the mesh's dimension
+  std::vector<int> dirichlet_dofs;
   Eigen::VectorXd dirichlet_values;         ///< imposed displacement at the final step
   Eigen::VectorXd load;                     ///< external nodal force at the final step (or empty)
   const ContactElements* contact = nullptr; ///< may be null or empty: no contact
@@ -109,12 +111,12 @@ private:
   struct State {
     Eigen::VectorXd u;
     HyperelasticState bulk;
-    Eigen::VectorXd penetration;         ///< q_n per contact node
-    Eigen::VectorXd slip;                ///< q_t per contact node (friction)
-    std::vector<Eigen::Vector2d> normal; ///< obstacle normal at the current position
-    double inertia = 0;                  ///< ||(2 / k^2) M (u - u_prev)||: dynamics' force scale
-    PreviousStrain strain;               ///< dynamics: F and W per triangle at u
-    bool has_tangent = false;            ///< bulk.tangent belongs to u
+    Eigen::VectorXd penetration; ///< q_n per contact node
+    Eigen::VectorXd slip;        ///< q_t per contact node (friction)
+    std::vector<Point> normal;   ///< obstacle normal at the current position
+    double inertia = 0;          ///< ||(2 / k^2) M (u - u_prev)||: dynamics' force scale
+    PreviousStrain strain;       ///< dynamics: F and W per triangle at u
+    bool has_tangent = false;    ///< bulk.tangent belongs to u
   };
 
   /// now_ <-> kept_ without copying the tangents: Eigen 3.4's SparseMatrix has no move, so a
@@ -123,6 +125,7 @@ private:
   void swap_states();
 
   const FiniteStrainProblem& problem_;
+  int d_; ///< the mesh's dimension: dofs a node
   int contacts_ = 0;
   bool friction_ = false;
   double eps_;
@@ -156,7 +159,9 @@ private:
   /// -N dn/dx at contact node p: the obstacle's curvature (0 for a plane). The friction force's
   /// T dt/dx is left out: the driver hands the normal forces only, and every frictional scene
   /// has a plane obstacle.
-  Eigen::Matrix2d curvature_block(int p, double force) const;
+  Eigen::MatrixXd curvature_block(int p, double force) const;
+  /// The nodal frames (nodal_frames.hpp) of the normals of `s`.
+  std::vector<ContactFrame> frames(const State& s) const;
 };
 
 } // namespace sig

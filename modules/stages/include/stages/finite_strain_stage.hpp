@@ -22,11 +22,13 @@ struct LinearSystem;
 struct FiniteStrainStageResult {
   FiniteStrainSolution solution;
   /// Force that the supports exert on the body at the end of the last attempted step, summed
-  /// over the Dirichlet dofs: sum of (f_int(u) - s f_ext) over the x (resp. y) rows.
+  /// over the Dirichlet dofs: sum of (f_int(u) - s f_ext) over the x (resp. y, z) rows.
   double reaction_x = 0;
   double reaction_y = 0;
-  /// Their moment about the origin, at the current positions: sum x1 f2 - x2 f1.
+  double reaction_z = 0; ///< a 3D body's
+  /// Their moment about the origin, at the current positions: sum x1 f2 - x2 f1 (2D).
   double reaction_moment = 0;
+  int dim = 2;        ///< the mesh's dimension
   double seconds = 0; ///< wall time of the solve
   /// Tributary length of each contact element (empty without contact): turns the nodal
   /// contact forces of every load step into pressures.
