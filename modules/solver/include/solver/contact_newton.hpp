@@ -31,7 +31,9 @@
 //    times the largest merit of the last kMeritWindow iterates (the nonmonotone reference of
 //    Grippo, Lampariello and Lucidi: an active-set change may raise the residual for a step, not
 //    without bound); if no length passes, the largest admissible one below the ceiling, else the
-//    one of least residual. A trial outside the bulk's domain (an inverted element) or with a
+//    one of least residual. From an iterate within the stopping test's tolerance, a trial within
+//    it passes, relaxed or monotone: there the merit's comparisons are round-off (NEWTON.md item
+//    8). A trial outside the bulk's domain (an inverted element) or with a
 //    residual that is not finite is never taken; with full steps only (search=no) it is a
 //    divergence.
 //  - Unheld steps: where the active, stick and slip sets hold no rigid motion of the body (a body
