@@ -115,11 +115,11 @@ private:
   double floor_ = kFloor;
 };
 
-TEST(ContactNewtonSearch, AResidualTheStoppingTestCountsAsZeroTakesTheFullStep) {
-  // Below the stopping test's tolerance the merit's comparisons are round-off: before, the
-  // search took 1/64 of the step at each iteration, the multiplier crept towards its reaction,
-  // the relative increment stayed near 1e-6 > eps and the repeated branch set was named a
-  // cycle. The full step is within the tolerance: taken, and the next step is nothing.
+TEST(ContactNewtonSearch, AResidualAtRoundOffTakesTheFullStep) {
+  // Merits at round-off cannot be ranked: before, the search took 1/64 of the step at each
+  // iteration, the multiplier crept towards its reaction, the relative increment stayed near
+  // 1e-6 > eps and the repeated branch set was named a cycle. The full step's residual is at
+  // round-off too: taken, and the next step is nothing.
   for (const char* method : {"pdas", "alm"}) {
     RoundOffBulk bulk;
     ContactSolverParameters p;
