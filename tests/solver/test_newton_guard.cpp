@@ -164,6 +164,8 @@ TEST(NewtonGuard, EveryAcceptedStepLowersItsMerit) {
   // the system it linearized, or, monotone, the residual itself) but the escapes from a kink,
   // kEscapes + 1 in a row at most before the next restriction of the steps, which has as many
   // (two restrictions); a few of the 4000 take monotone steps, so the test sees both merits.
+  // A step from an iterate at round-off (below kMeritPrecision and eps) is taken as it stands
+  // (NEWTON.md item 8): it may raise the merit.
   std::mt19937 generator(11);
   int monotone_steps = 0, searched_steps = 0;
   for (int trial = 0; trial < 4000; ++trial) {
@@ -181,6 +183,7 @@ TEST(NewtonGuard, EveryAcceptedStepLowersItsMerit) {
       const IterationRecord& h = r.history[k];
       escapes = h.kind == 4 ? escapes + 1 : 0;
       EXPECT_LE(escapes, 2 * (kEscapes + 1)) << "trial " << trial;
+      if (k > 0 && r.history[k - 1].residual <= kMeritPrecision) continue;
       if (h.kind == 0 || h.kind == 2 || h.kind == 3) {
         ++searched_steps;
         EXPECT_LT(h.merit_ratio, 1.0) << "trial " << trial << " iteration " << k + 1;

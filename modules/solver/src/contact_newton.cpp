@@ -139,6 +139,12 @@ private:
   int drift_at_ = 0;     ///< its iteration
 
   double weight(int p) const { return s_.weight[p]; }
+  /// A residual at round-off, below the merit's precision and the stopping test's tolerance:
+  /// merits there cannot be ranked (header), and a trial there from an iterate there passes
+  /// every search.
+  bool at_round_off(const ContactPoint& c) const {
+    return c.residual <= std::min(options_.eps, kMeritPrecision) * bulk_.force_scale();
+  }
   /// The kernel of node p at (q_n, q_t) with multipliers (lambda, t) as nodal forces (penalty:
   /// none), augmented by r (r_t on the slip if given), on the branch `on` if given.
   Kernel kernel(int p, double q_n, const Tan& q_t, double lambda, const Tan& t, double r,
@@ -545,7 +551,8 @@ double Driver<d>::searched_length(const Test& test, const ContactPoint& now, con
   for (const double alpha : lengths) {
     if (!trial(alpha, now, step, candidate)) continue;
     const bool trusted = one_change_ || !method_.has_multipliers() || candidate.residual <= ceiling;
-    const bool passes = trusted && sufficient_decrease(merit(candidate), current, current, alpha);
+    const bool passes = (at_round_off(now) && at_round_off(candidate)) ||
+                        (trusted && sufficient_decrease(merit(candidate), current, current, alpha));
     const double rank = held && trusted ? -alpha : candidate.residual; // lower is better
     if (passes || rank < fallback) {
       fallback = rank;
@@ -581,17 +588,21 @@ double Driver<d>::monotone_length(const ContactPoint& now, const Step& step, Con
       if (kink > std::ldexp(1.0, -kMaxHalvings) && kink < 1) lengths.push_back(kink);
   // Where no length lowers it (the step is no descent at a kink of the residual) the least one
   // is taken all the same, kEscapes times in a row at most: the next test sees other branches.
+  // From an iterate at round-off, the first length at round-off is taken as it stands (header).
   double least = std::numeric_limits<double>::infinity(), taken = 0;
+  bool rounded = false;
   for (const double alpha : lengths) {
     if (!trial(alpha, now, step, candidate)) continue;
-    if (candidate.residual < least) {
+    rounded = at_round_off(now) && at_round_off(candidate);
+    if (candidate.residual < least || rounded) {
       least = candidate.residual;
       taken = alpha;
       std::swap(next, candidate);
       bulk_.keep();
     }
+    if (rounded) break;
   }
-  escapes_ = least < now.residual ? 0 : escapes_ + 1;
+  escapes_ = least < now.residual || rounded ? 0 : escapes_ + 1;
   ratio_ = least / std::max(now.residual, 1e-300);
   if (escapes_ > 0) kind_ = 4;
   // Stuck at a kink: the next restriction, if one is left.

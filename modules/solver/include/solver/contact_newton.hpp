@@ -31,9 +31,11 @@
 //    times the largest merit of the last kMeritWindow iterates (the nonmonotone reference of
 //    Grippo, Lampariello and Lucidi: an active-set change may raise the residual for a step, not
 //    without bound); if no length passes, the largest admissible one below the ceiling, else the
-//    one of least residual. A trial outside the bulk's domain (an inverted element) or with a
-//    residual that is not finite is never taken; with full steps only (search=no) it is a
-//    divergence.
+//    one of least residual. From an iterate at round-off (a residual below kMeritPrecision of
+//    the force scale and eps), a trial at round-off passes, relaxed or monotone: merits there
+//    cannot be ranked (NEWTON.md item 8). A trial outside the bulk's domain (an inverted
+//    element) or with a residual that is not finite is never taken; with full steps only
+//    (search=no) it is a divergence.
 //  - Unheld steps: where the active, stick and slip sets hold no rigid motion of the body (a body
 //    held by contact and friction alone, from rest, or with every node slipping one way), the
 //    step exists only through the bulk's proximal term (condensed_bulk.hpp) and its rigid part is

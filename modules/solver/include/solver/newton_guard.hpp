@@ -129,5 +129,11 @@ inline constexpr int kCycleWindow = 30;
 inline constexpr int kEscapes = 3;
 /// Iterations without a new least residual after which the steps must be monotone.
 inline constexpr int kProgressWindow = 10;
+/// The relative precision of the merit: its rows are sums of nodal forces of the order of the
+/// force scale, up to about 1e4 terms a row (a condensed operator is dense over the contact
+/// nodes), each rounded to the unit round-off 1.1e-16 (a sum of n terms is exact to n u, Higham,
+/// "Accuracy and stability of numerical algorithms", 2002, 4.2). Merits below it of the force
+/// scale cannot be ranked.
+inline constexpr double kMeritPrecision = 1e-12;
 
 } // namespace sig
