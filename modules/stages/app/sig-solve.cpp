@@ -56,10 +56,10 @@ int main(int argc, char** argv) {
       .writes = {"OUTDIR/case.b (displacement, multipliers, statuses, iteration history, phase "
                  "times; per load step in large deformation)"},
       .cards = sig::stage_cards("solve").cards};
-  // Started by mpirun: MPI first, so that every rank's failure below can end the job.
-  const bool distributed = sig::mpi::launched();
-  const int rank = distributed ? sig::mpi::rank() : 0;
+  const bool distributed = sig::mpi::launched(); // a rank of an mpirun job
   const int code = sig::run_stage("solve", [&] {
+    // MPI first, so that a failure below can end the job's other ranks.
+    const int rank = distributed ? sig::mpi::rank() : 0;
     // 1. Arguments and the SOLVER card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile& datafile = args.deck;
