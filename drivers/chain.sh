@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# drivers/chain.sh DATAFILE [-o OUTDIR] [--time-limit SECONDS] [--all]: run a datafile's chain
+# drivers/chain.sh DATAFILE [-o OUTDIR] [--time-limit SECONDS] [--all] [--np P]: run a datafile's chain
 # of stages, MODULEF style (-o and --time-limit go to every stage):
 # sig-mesh -> sig-material -> sig-contact (if the deck has a CONTACT card) -> sig-assemble ->
 # sig-solve -> sig-post, or sig-march -> sig-post for a dynamic deck (TIME card). Each stage
@@ -11,12 +11,17 @@
 # it is skipped ("up to date"). The stages' files record what they were made from
 # (core/provenance.hpp) and `sig-dump --stale` compares that with the deck (core/stale.hpp): no
 # hashing here. --all runs every stage.
+#
+# --np P runs sig-solve as P ranks under mpirun (a small-strain contact deck with linear=mumps:
+# each rank holds its part of K, README "Distributed solve"); the other stages run as one
+# process. As root it sets OpenMPI's allow-run-as-root variables; --oversubscribe lets P exceed
+# the cores (one BLAS thread per rank, lib/environment.sh).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${SIG_BIN:-$root/build/bin}
 if [ $# -lt 1 ]; then
-  echo "usage: drivers/chain.sh DATAFILE [-o OUTDIR] [--time-limit SECONDS] [--all]" >&2
+  echo "usage: drivers/chain.sh DATAFILE [-o OUTDIR] [--time-limit SECONDS] [--all] [--np P]" >&2
   exit 2
 fi
 deck=$1
@@ -25,16 +30,34 @@ shift
 [ -x "$bin/sig-mesh" ] || { echo "chain.sh: no executables in $bin (run drivers/run.sh)" >&2; exit 2; }
 options=()
 all=0
+np=0
 name=$(basename "$deck")
 outdir=out/${name%.*}
 while [ $# -gt 0 ]; do
   case $1 in
     --all) all=1 ;;
+    --np)
+      [[ ${2:-} =~ ^[1-9][0-9]*$ ]] || { echo "chain.sh: --np needs a number of ranks >= 1" >&2; exit 2; }
+      np=$2
+      shift
+      ;;
     -o) [ $# -ge 2 ] && outdir=$2; options+=("$1" "${2:-}"); shift ;;
     *) options+=("$1") ;;
   esac
   shift
 done
+
+# stage NAME: one stage of the chain, sig-solve under mpirun with --np.
+stage() {
+  if [ "$1" = solve ] && [ "$np" -gt 0 ]; then
+    if [ "$(id -u)" -eq 0 ]; then
+      export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    fi
+    mpirun --oversubscribe -np "$np" "$bin/sig-solve" "$deck" "${options[@]}"
+  else
+    "$bin/sig-$1" "$deck" "${options[@]}"
+  fi
+}
 
 # A deck sig-dump cannot read is the stages' to refuse, in their words: every stage runs, sig-mesh
 # first; then the stages' own parser says which stages the deck calls for (sig-dump --chain: a
@@ -43,7 +66,7 @@ done
 if [ "$all" -eq 1 ] || ! stale=$("$bin/sig-dump" --stale "$deck" "$outdir" 2>/dev/null); then
   "$bin/sig-mesh" "$deck" "${options[@]}"
   for stage in $("$bin/sig-dump" --chain "$deck"); do
-    [ "$stage" = mesh ] || "$bin/sig-$stage" "$deck" "${options[@]}"
+    [ "$stage" = mesh ] || stage "$stage"
   done
   exit 0
 fi
@@ -54,5 +77,5 @@ for stage in $("$bin/sig-dump" --chain "$deck"); do
     continue
   fi
   echo "chain.sh: running sig-$stage: ${why#"$stage: "}"
-  "$bin/sig-$stage" "$deck" "${options[@]}"
+  stage "$stage"
 done

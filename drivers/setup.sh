@@ -12,7 +12,9 @@ export SIG_ROOT SIG_BUILD SIG_BIN
 # Build and run dependencies; FreeFem++, ParaView (with xvfb), GetFEM, meshio and Chromium (the
 # scene index in a browser) serve tests and comparisons that skip when absent, but we install
 # them so a fresh machine runs everything.
-packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libmumps-seq-dev libmetis-dev
+# MUMPS is Debian's MPI build (libmumps-dev, OpenMPI; mpi-default-bin gives mpirun).
+packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libmumps-dev mpi-default-bin
+  mpi-default-dev libmetis-dev
   libopenblas-dev libvtk9-dev libgtest-dev gmsh python3 python3-numpy python3-matplotlib
   python3-pytest freefem++ paraview xvfb python3-getfem python3-meshio chromium
   clang libclang-rt-14-dev) # clang + libFuzzer: the readers' fuzz targets (tests/fuzz/run.sh)

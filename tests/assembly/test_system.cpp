@@ -4,6 +4,7 @@
 #include "assembly/system.hpp"
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
+#include "core/ds_stream.hpp"
 #include "core/error.hpp"
 #include "input_error.hpp"
 #include "material/mili.hpp"
@@ -243,6 +244,41 @@ TEST(Tae, ViscoelasticRoundTrip) {
   EXPECT_EQ(back.f, s.f);
   EXPECT_EQ(back.load_at(0.5), s.load_at(0.5));
   EXPECT_GT(s.time_loads.rate.norm(), 0);
+}
+
+// Two ranks' rows (mpirun sig-solve): read streaming, in pieces (K_col and K_val of this mesh
+// exceed one), each rank's K and f hold its rows, on a symmetric pattern, and sum to the whole.
+TEST(Tae, RowsOfTwoRanksSumToTheWhole) {
+  const Mesh mesh = test::square_mesh(80, 80);
+  const LinearSystem s = assemble(mesh, "MATERIAL E=2 nu=0.3\nTRACTION ref=2 f=1,-1\n"
+                                        "DIRICHLET ref=4 ux=0 uy=0.125\n");
+  ASSERT_GT(s.K.nonZeros() * sizeof(double), kDsPieceBytes);
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.tae";
+  write_tae(path, s, "rows");
+  const int n = s.num_dofs();
+  std::vector<char> first(static_cast<std::size_t>(n)), second(first.size());
+  for (int dof = 0; dof < n; ++dof) // whole nodes, as rows_of_rank gives them
+    first[static_cast<std::size_t>(dof)] = dof / 2 % 3 == 0;
+  for (std::size_t k = 0; k < first.size(); ++k)
+    second[k] = !first[k];
+  const LinearSystem a = read_tae_rows(path, first), b = read_tae_rows(path, second);
+  EXPECT_TRUE(a.rank_rows && b.rank_rows);
+  EXPECT_EQ((a.K + b.K - s.K).norm(), 0.0);
+  EXPECT_EQ(a.f + b.f, s.f);
+  for (const auto& [part, owned] : {std::pair{&a, &first}, std::pair{&b, &second}}) {
+    EXPECT_EQ(part->dirichlet_dofs, s.dirichlet_dofs);
+    EXPECT_EQ(part->dirichlet_values, s.dirichlet_values);
+    for (int j = 0; j < n; ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(part->K, j); it; ++it)
+        EXPECT_TRUE((*owned)[static_cast<std::size_t>(it.row())] || it.value() == 0.0);
+    Eigen::SparseMatrix<double> pattern = part->K; // the stored places, explicit zeros too
+    pattern.coeffs().setOnes();
+    EXPECT_EQ((pattern - Eigen::SparseMatrix<double>(pattern.transpose())).norm(), 0.0);
+    EXPECT_LT(pattern.nonZeros(), s.K.nonZeros()); // not the whole matrix
+  }
+  // A partition of another mesh is refused with the file named.
+  EXPECT_THROW(read_tae_rows(path, std::vector<char>(first.size() - 2, 1)), Error);
 }
 
 TEST(Tae, NoMassWithoutDensity) {

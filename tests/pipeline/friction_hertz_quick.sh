@@ -59,6 +59,48 @@ if fail:
     sys.exit(1)
 PY
 
+# Same answers under mpirun (issue 27): the pdas run's sig-solve again as 1 and 2 ranks
+# (oversubscribed; each rank holds the rows of its METIS part of K, MUMPS factorizes them
+# together); displacements, multipliers and statuses agree with the one-process run to 1e-8
+# relative, and case.b records the ranks and the ordering.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+for np in 1 2; do
+  dir=$work/np$np
+  mkdir -p "$dir"
+  cp -L "$work"/N256/pdas_1e2/hertz.dat "$work"/N256/pdas_1e2/case.* "$work"/N256/base/case.*.prov \
+    "$dir"/
+  rm -f "$dir/case.b" "$dir/case.post"
+  mpirun --oversubscribe -np "$np" "$bin/sig-solve" "$dir/hertz.dat" -o "$dir" > "$dir/solve.log" 2>&1 ||
+    { cat "$dir/solve.log"; echo "FAIL: mpirun -np $np sig-solve"; exit 1; }
+  grep -q "ordering amd, $np rank" "$dir/solve.log" || { cat "$dir/solve.log"; exit 1; }
+done
+/usr/bin/python3 - "$bin" "$work" <<'PY'
+import json, subprocess, sys
+bin, work = sys.argv[1:]
+def arrays(d):
+    out = subprocess.run([f"{bin}/sig-dump", "--json", "--values", f"{work}/{d}/case.b"],
+                         capture_output=True, text=True, check=True).stdout
+    return {a["name"]: a.get("values") for a in json.loads(out)["arrays"]}
+one = arrays("N256/pdas_1e2")
+fail = []
+for np in (1, 2):
+    b = arrays(f"np{np}")
+    if b["ranks"] != [np] or b["ordering"] != "amd":
+        fail.append(f"np {np}: ranks {b['ranks']}, ordering {b['ordering']}")
+    for key in ("u", "multiplier", "tangential_multiplier"):
+        scale = max(abs(x) for x in one[key])
+        worst = max(abs(x - y) for x, y in zip(one[key], b[key]))
+        if len(b[key]) != len(one[key]) or worst > 1e-8 * scale:
+            fail.append(f"np {np}: {key} differs by {worst / scale:.2e} of its maximum")
+        print(f"friction_hertz_quick: np = {np}: {key} within {worst / scale:.1e} of one process")
+    for key in ("normal_status", "friction_status", "iterations"):
+        if b[key] != one[key]:
+            fail.append(f"np {np}: {key} differs from one process")
+if fail:
+    print("\n".join("FAIL: " + f for f in fail))
+    sys.exit(1)
+PY
+
 # Without friction the same body has no sideways support: no equilibrium exists, and sig-solve
 # says so before it factorizes (non-zero exit, nothing written), naming the free motion, on a
 # coarse mesh and on a finer one (where the factorization alone would lose the singular pivot in

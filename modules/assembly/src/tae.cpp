@@ -3,6 +3,7 @@
 #include "assembly/system.hpp"
 
 #include "core/ds.hpp"
+#include "core/ds_stream.hpp"
 #include "core/error.hpp"
 
 #include <algorithm>
@@ -60,13 +61,22 @@ std::string dof_name(Eigen::Index dof) {
 // one triangle of it, so an edited entry off the diagonal would be used on one side only, or not
 // at all, without a word. Round-off in the element matrices stays far below 1e-10 of the
 // diagonal.
-void verify_symmetric(const std::filesystem::path& path, const RowMatrix& A, const char* name) {
+// `owned`, when given, marks the rows A holds (a rank's, read_tae_rows): only the entries whose
+// row and column are both held are compared.
+void verify_symmetric(const std::filesystem::path& path, const RowMatrix& A, const char* name,
+                      const std::vector<char>* owned = nullptr) {
   const RowMatrix At = A.transpose();
   const Eigen::VectorXd diagonal = A.diagonal().cwiseAbs();
+  const auto held = [&](Eigen::Index k) { return owned == nullptr || (*owned)[k] != 0; };
   for (Eigen::Index i = 0; i < A.outerSize(); ++i) {
     for (RowMatrix::InnerIterator a(A, i), t(At, i); a || t;) {
       // Walk row i of A and of its transpose together; a missing entry is a zero.
       const Eigen::Index j = !t || (a && a.col() < t.col()) ? a.col() : t.col();
+      if (!held(i) || !held(j)) {
+        if (a && a.col() == j) ++a;
+        if (t && t.col() == j) ++t;
+        continue;
+      }
       const double aij = a && a.col() == j ? a.value() : 0;
       const double aji = t && t.col() == j ? t.value() : 0;
       const double scale = std::sqrt(diagonal[i] * diagonal[j]);
@@ -88,7 +98,8 @@ void verify_symmetric(const std::filesystem::path& path, const RowMatrix& A, con
 Eigen::SparseMatrix<double> from_csr(const std::filesystem::path& path, std::int64_t n,
                                      const std::vector<std::int64_t>& rowptr,
                                      const std::vector<std::int64_t>& col,
-                                     const std::vector<double>& val, const char* name) {
+                                     const std::vector<double>& val, const char* name,
+                                     const std::vector<char>* owned = nullptr) {
   SIG_VERIFY(static_cast<std::int64_t>(rowptr.size()) == n + 1 && rowptr.front() == 1 &&
                  static_cast<std::int64_t>(col.size()) == rowptr.back() - 1,
              path.string() << ": arrays K_rowptr/K_col do not describe a " << n << " x " << n
@@ -113,7 +124,7 @@ Eigen::SparseMatrix<double> from_csr(const std::filesystem::path& path, std::int
     A.innerIndexPtr()[k] = static_cast<int>(col[k] - 1);
     A.valuePtr()[k] = val[k];
   }
-  verify_symmetric(path, A, name);
+  verify_symmetric(path, A, name, owned);
   return Eigen::SparseMatrix<double>(A);
 }
 
@@ -181,6 +192,22 @@ TimeLoads get_time_loads(const std::filesystem::path& path, const Ds& ds, std::i
     loads.moving.push_back(std::move(load));
   }
   return loads;
+}
+
+/// The Dirichlet conditions of a TAE, checked.
+void read_dirichlet(const std::filesystem::path& path, const Ds& ds, std::int64_t n,
+                    LinearSystem& system) {
+  const auto dofs = ds.ints("dirichlet_dof");
+  const auto values = ds.reals("dirichlet_value");
+  SIG_VERIFY(dofs.size() == values.size(),
+             path.string() << ": arrays 'dirichlet_dof' and 'dirichlet_value' differ in length");
+  for (std::size_t k = 0; k < dofs.size(); ++k) {
+    SIG_VERIFY(dofs[k] >= 1 && dofs[k] <= n && (k == 0 || dofs[k] > dofs[k - 1]),
+               path.string() << ": array 'dirichlet_dof' entry " << k + 1
+                             << " out of range or not increasing");
+    system.dirichlet_dofs.push_back(static_cast<int>(dofs[k] - 1));
+  }
+  system.dirichlet_values = Eigen::Map<const Eigen::VectorXd>(values.data(), values.size());
 }
 
 } // namespace
@@ -260,19 +287,107 @@ LinearSystem read_tae(const std::filesystem::path& path) {
              path.string() << ": arrays 'M_lumped' and 'f' must have ndof = " << n << " values");
   system.M_lumped = Eigen::Map<const Eigen::VectorXd>(lumped.data(), n);
   system.f = Eigen::Map<const Eigen::VectorXd>(f.data(), n);
-  const auto dofs = ds.ints("dirichlet_dof");
-  const auto values = ds.reals("dirichlet_value");
-  SIG_VERIFY(dofs.size() == values.size(),
-             path.string() << ": arrays 'dirichlet_dof' and 'dirichlet_value' differ in length");
-  for (std::size_t k = 0; k < dofs.size(); ++k) {
-    SIG_VERIFY(dofs[k] >= 1 && dofs[k] <= n && (k == 0 || dofs[k] > dofs[k - 1]),
-               path.string() << ": array 'dirichlet_dof' entry " << k + 1
-                             << " out of range or not increasing");
-    system.dirichlet_dofs.push_back(static_cast<int>(dofs[k] - 1));
-  }
-  system.dirichlet_values = Eigen::Map<const Eigen::VectorXd>(values.data(), values.size());
+  read_dirichlet(path, ds, n, system);
   if (ds.has("time_assemble")) system.assemble_seconds = ds.scalar("time_assemble");
   system.time_loads = get_time_loads(path, ds, n);
+  return system;
+}
+
+namespace {
+
+/// The entries of K_col or K_val, in file order, kept when their row is owned.
+template <class T> class RowEntries {
+public:
+  RowEntries(const std::vector<std::int64_t>& rowptr, const std::vector<char>& owned)
+      : rowptr_(rowptr), owned_(owned) {}
+  void take(const char* piece, std::size_t size) {
+    const auto n = static_cast<std::int64_t>(rowptr_.size()) - 1;
+    for (std::size_t b = 0; b < size; b += sizeof(T), ++entry_) {
+      while (row_ < n && entry_ >= rowptr_[row_ + 1] - 1)
+        ++row_;
+      if (row_ < n && owned_[static_cast<std::size_t>(row_)] != 0) {
+        T value;
+        std::memcpy(&value, piece + b, sizeof value);
+        kept_.push_back(value);
+      }
+    }
+  }
+  std::int64_t entries() const { return entry_; }
+  std::vector<T>& kept() { return kept_; }
+
+private:
+  const std::vector<std::int64_t>& rowptr_;
+  const std::vector<char>& owned_;
+  std::int64_t entry_ = 0, row_ = 0;
+  std::vector<T> kept_;
+};
+
+} // namespace
+
+LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<char>& owned) {
+  std::vector<std::int64_t> rowptr; // whole (ndof + 1 indices): the structure, not the values
+  RowEntries<std::int64_t> col(rowptr, owned);
+  RowEntries<double> val(rowptr, owned);
+  const auto take = [&](const DsArray& array, const char* piece, std::size_t size) {
+    if (array.name == "K_rowptr") {
+      SIG_VERIFY(array.type == DsType::Int64, path.string() << ": array 'K_rowptr' is not Int64");
+      const std::size_t at = rowptr.size();
+      rowptr.resize(at + size / sizeof(std::int64_t));
+      std::memcpy(rowptr.data() + at, piece, size);
+      return;
+    }
+    // K_rowptr precedes them (write_tae): the rows of their entries are known as they come.
+    SIG_VERIFY(rowptr.size() == owned.size() + 1,
+               path.string() << ": array 'K_rowptr' (" << rowptr.size() << " values) must come "
+                             << "before '" << array.name
+                             << "' and hold ndof + 1 = " << owned.size() + 1 << " values");
+    if (array.name == "K_col") {
+      SIG_VERIFY(array.type == DsType::Int64, path.string() << ": array 'K_col' is not Int64");
+      col.take(piece, size);
+    } else {
+      SIG_VERIFY(array.type == DsType::Float64, path.string() << ": array 'K_val' is not Float64");
+      val.take(piece, size);
+    }
+  };
+  const auto streamed = [](const std::string& name) {
+    return name == "K_rowptr" || name == "K_col" || name == "K_val";
+  };
+  const auto wanted = [](const std::string& name) {
+    return name == "ndof" || name == "f" || name == "dirichlet_dof" || name == "dirichlet_value";
+  };
+  const Ds ds = read_ds_streamed(path, "TAE", wanted, streamed, take);
+  const std::int64_t n = ds.integer("ndof");
+  SIG_VERIFY(n == static_cast<std::int64_t>(owned.size()),
+             path.string() << ": ndof = " << n << ", the partition has " << owned.size()
+                           << " rows (a TAE of another mesh?)");
+  SIG_VERIFY(static_cast<std::int64_t>(rowptr.size()) == n + 1 && rowptr.front() == 1 &&
+                 col.entries() == rowptr.back() - 1 && val.entries() == col.entries(),
+             path.string() << ": arrays K_rowptr/K_col/K_val do not describe a " << n << " x " << n
+                           << " matrix");
+  // This rank's rows in the file's CSR form, the others empty; from_csr checks them.
+  std::vector<std::int64_t> local_rowptr(static_cast<std::size_t>(n) + 1, 1);
+  for (std::int64_t i = 0; i < n; ++i) {
+    SIG_VERIFY(rowptr[i + 1] >= rowptr[i], path.string()
+                                               << ": array 'K_rowptr' decreases at row " << i + 1);
+    const std::int64_t count = owned[static_cast<std::size_t>(i)] ? rowptr[i + 1] - rowptr[i] : 0;
+    local_rowptr[i + 1] = local_rowptr[i] + count;
+  }
+  LinearSystem system;
+  system.rank_rows = true;
+  system.K = from_csr(path, n, local_rowptr, col.kept(), val.kept(), "K_val", &owned);
+  // The pattern made symmetric with explicit zeros at the transposed places of the rows held:
+  // the frames of the contact nodes turn K in place on a symmetric pattern
+  // (solver/nodal_frames.hpp), and a row not held stays zero through them.
+  const Eigen::SparseMatrix<double> transposed = system.K.transpose();
+  system.K = system.K + 0.0 * transposed;
+  const auto f = ds.reals("f");
+  SIG_VERIFY(static_cast<std::int64_t>(f.size()) == n,
+             path.string() << ": array 'f' must have ndof = " << n << " values");
+  system.f = Eigen::VectorXd::Zero(n);
+  for (std::int64_t i = 0; i < n; ++i)
+    if (owned[static_cast<std::size_t>(i)]) system.f[i] = f[static_cast<std::size_t>(i)];
+  system.M_lumped = Eigen::VectorXd::Zero(n);
+  read_dirichlet(path, ds, n, system);
   return system;
 }
 

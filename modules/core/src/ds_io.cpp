@@ -1,5 +1,6 @@
 #include "atomic_file.hpp"
 #include "core/ds.hpp"
+#include "core/ds_stream.hpp"
 #include "core/error.hpp"
 #include "core/finite.hpp"
 #include "core/input_file.hpp"
@@ -215,10 +216,18 @@ DsHeader read_header(DsReader& in) {
   return header;
 }
 
-/// The next array, or std::nullopt when `wanted` does not select it (its payload skipped);
-/// `array_name` is its name either way.
+/// What a reader takes of a DS: the arrays kept (all when empty) and those streamed to `take`.
+struct DsTaking {
+  DsSelection wanted;
+  DsSelection streamed;
+  DsPieces take;
+};
+
+/// The next array, or std::nullopt when `taking` does not keep it (its payload skipped, or
+/// streamed to taking.take); `array_name` is its name either way.
 std::optional<DsArray> read_array(DsReader& in, std::uint32_t index, std::uint64_t& fingerprint,
-                                  const DsSelection& wanted, std::string& array_name) {
+                                  const DsTaking& taking, std::string& array_name) {
+  const DsSelection& wanted = taking.wanted;
   in.set_context("array #" + std::to_string(index + 1));
   in.start_record();
   char name[name_bytes];
@@ -253,6 +262,19 @@ std::optional<DsArray> read_array(DsReader& in, std::uint32_t index, std::uint64
   SIG_VERIFY(payload <= in.left(), in.path()
                                        << ": truncated in array '" << array.name << "' (expected "
                                        << payload << " bytes of data, " << in.left() << " left)");
+  if (taking.streamed && taking.streamed(array.name)) {
+    // Whole values per piece, so that the taker never splits one.
+    const std::size_t piece = kDsPieceBytes - kDsPieceBytes % value_size(array.type);
+    std::vector<char> buffer(static_cast<std::size_t>(std::min<std::uint64_t>(payload, piece)));
+    for (std::uint64_t done = 0; done < payload;) {
+      const auto size = static_cast<std::size_t>(std::min<std::uint64_t>(payload - done, piece));
+      in.read(buffer.data(), size, "data");
+      taking.take(array, buffer.data(), size);
+      done += size;
+    }
+    fingerprint = fold_fingerprint(fingerprint, in.check_crc());
+    return std::nullopt;
+  }
   if (wanted && array.name != provenance_array && !wanted(array.name)) {
     in.skip(payload, "data");
     fingerprint = fold_fingerprint(fingerprint, in.stored_crc());
@@ -304,7 +326,7 @@ void write_ds(const std::filesystem::path& path, const Ds& ds) {
 }
 
 namespace {
-Ds read_all(DsReader& in, const std::string& expected_kind, const DsSelection& wanted = {}) {
+Ds read_all(DsReader& in, const std::string& expected_kind, const DsTaking& taking = {}) {
   char file_magic[sizeof magic];
   in.read(file_magic, sizeof magic, "magic");
   SIG_VERIFY(std::memcmp(file_magic, magic, sizeof magic) == 0,
@@ -329,7 +351,7 @@ Ds read_all(DsReader& in, const std::string& expected_kind, const DsSelection& w
   std::set<std::string> names;
   for (std::uint32_t k = 0; k < n_arrays; ++k) {
     std::string name;
-    std::optional<DsArray> array = read_array(in, k, fingerprint, wanted, name);
+    std::optional<DsArray> array = read_array(in, k, fingerprint, taking, name);
     SIG_VERIFY(names.insert(name).second, in.path() << ": array '" << name << "': repeated");
     if (array) ds.put(std::move(*array));
   }
@@ -351,14 +373,7 @@ Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind) 
 
 Ds read_ds(const std::filesystem::path& path, const std::string& expected_kind,
            const DsSelection& wanted) {
-  const PhaseTimer timer("read");
-  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
-  DsReader in(path);
-  Ds ds = read_all(in, expected_kind, wanted);
-  note_case_input(ds.header.kind, path, ds.fingerprint,
-                  ds.has(provenance_array) ? parse_provenance(ds.text(provenance_array), ds.source)
-                                           : Provenance{});
-  return ds;
+  return read_ds_streamed(path, expected_kind, wanted, {}, {});
 }
 
 Ds read_ds_record(const std::filesystem::path& path, const std::string& expected_kind) {
@@ -370,7 +385,19 @@ Ds read_ds_record(const std::filesystem::path& path, const std::string& expected
   const PhaseTimer timer("read");
   SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
   DsReader in(path);
-  return read_all(in, expected_kind, wanted);
+  return read_all(in, expected_kind, {wanted, {}, {}});
+}
+
+Ds read_ds_streamed(const std::filesystem::path& path, const std::string& expected_kind,
+                    const DsSelection& wanted, const DsSelection& streamed, const DsPieces& take) {
+  const PhaseTimer timer("read");
+  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
+  DsReader in(path);
+  Ds ds = read_all(in, expected_kind, {wanted, streamed, take});
+  note_case_input(ds.header.kind, path, ds.fingerprint,
+                  ds.has(provenance_array) ? parse_provenance(ds.text(provenance_array), ds.source)
+                                           : Provenance{});
+  return ds;
 }
 
 Ds parse_ds(const std::string& name, std::string bytes, const std::string& expected_kind) {

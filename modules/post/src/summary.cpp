@@ -82,6 +82,8 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("nodes", mesh.num_nodes());
   s.set(mesh.dim == 3 ? "tetrahedra" : "triangles", mesh.num_cells());
   s.set("backend", solution.has("linear") ? solution.text("linear") : std::string());
+  s.set("ordering", solution.has("ordering") ? solution.text("ordering") : std::string());
+  s.set("ranks", solution.has("ranks") ? static_cast<long>(solution.integer("ranks")) : 1L);
   s.set("residual_history", history(solution, "history_residual"));
   s.set("increment_history", history(solution, "history_increment"));
   s.set("step_norm_history", history(solution, "history_step_norm"));

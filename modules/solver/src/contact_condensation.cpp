@@ -3,6 +3,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "solver/mpi_session.hpp"
 #include "solver/nodal_frames.hpp"
 #include "solver/schur.hpp"
 
@@ -22,8 +23,10 @@ int position_in(const std::vector<int>& interface, int dof) {
 
 ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K, std::vector<int> first_dofs,
                                          std::vector<ContactFrame> frames, bool tangential,
-                                         const std::string& backend, bool positive_definite)
-    : K_(std::move(K)), frames_of_nodes_(std::move(frames)), first_(std::move(first_dofs)) {
+                                         const std::string& backend, bool positive_definite,
+                                         bool rank_rows)
+    : K_(std::move(K)), frames_of_nodes_(std::move(frames)), first_(std::move(first_dofs)),
+      rank_rows_(rank_rows) {
   const int m = static_cast<int>(first_.size());
   SIG_VERIFY(static_cast<int>(frames_of_nodes_.size()) == m,
              "contact condensation: " << frames_of_nodes_.size() << " frames for " << m
@@ -59,7 +62,7 @@ ContactCondensation::ContactCondensation(Eigen::SparseMatrix<double> K, std::vec
   }
   try {
     schur_ = std::make_unique<SchurComplement>(K_, interface_, backend, MatrixKind::spd,
-                                               positive_definite);
+                                               positive_definite, rank_rows);
   } catch (const FactorizationFailure& e) {
     // With the contact components held the rest of the body must be fixed, whatever the method:
     // the stage names the part that is not (assembly/singular_matrix.hpp).
@@ -78,6 +81,10 @@ double ContactCondensation::seconds_factorize() const {
 
 double ContactCondensation::seconds_schur() const {
   return schur_->seconds_schur();
+}
+
+std::string ContactCondensation::ordering() const {
+  return schur_->ordering();
 }
 
 CondensedProblem ContactCondensation::problem(const Eigen::VectorXd& f) {
@@ -122,7 +129,9 @@ double ContactCondensation::relative_residual(const Eigen::VectorXd& u, const Ei
   SIG_VERIFY(load_.size() == K_.rows(), "contact condensation: no load condensed yet");
   Eigen::VectorXd framed = u;
   frames_->to_frames(framed, frames_of_nodes_);
-  Eigen::VectorXd r = K_ * framed - load_;
+  Eigen::VectorXd r = K_ * framed;
+  if (rank_rows_) mpi::sum(r.data(), static_cast<int>(r.size())); // each rank's rows of K u
+  r -= load_;
   for (int p = 0; p < contacts(); ++p) {
     r[first_[p] + d_ - 1] += N[p];
     if (tangential())

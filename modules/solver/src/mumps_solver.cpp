@@ -1,6 +1,7 @@
 #include "solver/mumps_solver.hpp"
 
 #include "core/error.hpp"
+#include "solver/mpi_session.hpp"
 
 #include <dmumps_c.h>
 
@@ -15,7 +16,6 @@ constexpr int job_end = -2;
 constexpr int job_analyze = 1;
 constexpr int job_factorize = 2;
 constexpr int job_solve = 3;
-constexpr int use_comm_world = -987654; // sequential MUMPS: its fake MPI's world
 constexpr int max_workspace_retries = 6;
 // ICNTL(7): AMD up to this many unknowns, MUMPS's automatic choice above (Scotch here: Debian's
 // MUMPS has no METIS). On the 2D Newton matrices of the ring (scene 7b) AMD's analysis costs
@@ -76,6 +76,7 @@ std::string error_text(int infog1) {
 struct MumpsSolver::State {
   DMUMPS_STRUC_C id{};
   MatrixKind kind;
+  bool rank_rows = false; ///< every rank of MPI_COMM_WORLD gives its rows (ICNTL(18) = 3)
   std::vector<int> schur_dofs;
   std::vector<int> listvar_schur; ///< 1-based copy handed to MUMPS
   std::vector<double> schur;      ///< m x m, column-major, filled by the factorization
@@ -99,6 +100,11 @@ struct MumpsSolver::State {
     id.job = job;
     dmumps_c(&id);
   }
+  /// The host's `count` values at v on every rank: MUMPS leaves centralized results (the
+  /// solution, the Schur complement, the reduced right side) on the host alone.
+  void share(double* v, std::size_t count) const {
+    if (rank_rows) mpi::broadcast(v, static_cast<int>(count));
+  }
   /// One half of a solve split around the Schur problem (ICNTL(26) = phase) on reduced_rhs and
   /// redrhs.
   void schur_solve(int phase, const char* what) {
@@ -115,6 +121,8 @@ struct MumpsSolver::State {
     id.redrhs = nullptr;
     icntl(26) = 0;
     verify(what);
+    share(phase == 1 ? redrhs.data() : reduced_rhs.data(),
+          phase == 1 ? redrhs.size() : reduced_rhs.size());
   }
   void verify(const char* phase) const {
     SIG_VERIFY(infog(1) >= 0, "MUMPS: " << phase << " failed: INFOG(1) = " << infog(1)
@@ -123,17 +131,20 @@ struct MumpsSolver::State {
   }
 };
 
-MumpsSolver::MumpsSolver(MatrixKind kind, std::vector<int> schur_dofs)
+MumpsSolver::MumpsSolver(MatrixKind kind, std::vector<int> schur_dofs, bool rank_rows)
     : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.kind = kind;
+  s.rank_rows = rank_rows;
   s.schur_dofs = std::move(schur_dofs);
   SIG_VERIFY(std::is_sorted(s.schur_dofs.begin(), s.schur_dofs.end()) &&
                  std::adjacent_find(s.schur_dofs.begin(), s.schur_dofs.end()) == s.schur_dofs.end(),
              "MUMPS: Schur variables must be sorted and distinct");
   s.id.par = 1;
   s.id.sym = sym_of(kind);
-  s.id.comm_fortran = use_comm_world;
+  // Every rank of the job, each giving its rows; else this process alone, whether a plain one
+  // (an MPI singleton) or one rank of an mpirun job whose every rank solves its own system.
+  s.id.comm_fortran = rank_rows ? mpi::world_fortran() : mpi::self_fortran();
   s.call(job_init);
   s.verify("initialization");
   // Failures come back as exceptions with INFOG(1); nothing is printed.
@@ -168,10 +179,23 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
       s.a.push_back(it.value());
     }
   s.id.n = static_cast<int>(A.rows());
-  s.id.nnz = static_cast<MUMPS_INT8>(s.a.size());
-  s.id.irn = s.irn.data();
-  s.id.jcn = s.jcn.data();
-  s.id.a = s.a.data();
+  // The entries of the whole matrix, for the choice of ordering: a rank holds only its rows'.
+  double entries = double(A.nonZeros());
+  if (s.rank_rows) {
+    // Distributed assembled input: MUMPS sums what the ranks give, (i, j) and (j, i) alike for
+    // SYM > 0, so each entry of the lower triangle comes from the one rank holding its row.
+    s.icntl(18) = 3;
+    s.id.nnz_loc = static_cast<MUMPS_INT8>(s.a.size());
+    s.id.irn_loc = s.irn.data();
+    s.id.jcn_loc = s.jcn.data();
+    s.id.a_loc = s.a.data();
+    mpi::sum(&entries, 1);
+  } else {
+    s.id.nnz = static_cast<MUMPS_INT8>(s.a.size());
+    s.id.irn = s.irn.data();
+    s.id.jcn = s.jcn.data();
+    s.id.a = s.a.data();
+  }
 
   const int m = static_cast<int>(s.schur_dofs.size());
   if (m > 0) {
@@ -181,8 +205,10 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
     std::transform(s.schur_dofs.begin(), s.schur_dofs.end(), s.listvar_schur.begin(),
                    [](int d) { return d + 1; });
     // ICNTL(19) = 3 on a 1 x 1 process grid: the Schur complement returned centralized, by
-    // columns, in a user array (the MUMPS guide's recommended centralized form).
-    s.icntl(19) = 3;
+    // columns, in a user array (the MUMPS guide's recommended centralized form). Over several
+    // ranks that grid's process need not be the host: ICNTL(19) = 1 returns it on the host, by
+    // rows (schur_complement() mirrors its lower triangle).
+    s.icntl(19) = s.rank_rows ? 1 : 3;
     s.id.size_schur = m;
     s.id.listvar_schur = s.listvar_schur.data();
     s.id.nprow = 1;
@@ -190,8 +216,8 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
     s.id.mblock = 100;
     s.id.nblock = 100;
   }
-  const bool amd = A.rows() <= amd_max_unknowns &&
-                   double(A.nonZeros()) <= amd_max_entries_per_row * double(A.rows());
+  const bool amd =
+      A.rows() <= amd_max_unknowns && entries <= amd_max_entries_per_row * double(A.rows());
   s.icntl(7) = amd ? ordering_amd : ordering_automatic;
   s.call(job_analyze);
   s.verify("analysis");
@@ -212,7 +238,7 @@ void MumpsSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   const double* values = A.isCompressed() ? A.valuePtr() : compressed.valuePtr();
   for (std::size_t i = 0; i < s.source.size(); ++i)
     s.a[i] = values[s.source[i]];
-  s.id.a = s.a.data();
+  (s.rank_rows ? s.id.a_loc : s.id.a) = s.a.data();
 
   const int m = static_cast<int>(s.schur_dofs.size());
   if (m > 0) {
@@ -235,6 +261,7 @@ void MumpsSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   if (s.kind == MatrixKind::spd && s.infog(12) > 0)
     throw FactorizationFailure("MUMPS: matrix declared positive definite is not: INFOG(12) = " +
                                std::to_string(s.infog(12)) + " negative pivots");
+  if (m > 0) s.share(s.schur.data(), s.schur.size());
   s.factorized = true;
 }
 
@@ -266,6 +293,7 @@ void MumpsSolver::solve_in_place(double* x, int rows, int columns) const {
   s.call(job_solve);
   s.id.rhs = nullptr;
   s.verify("solve");
+  s.share(x, static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns));
 }
 
 Eigen::VectorXd MumpsSolver::reduce(const Eigen::VectorXd& b) const {
@@ -318,8 +346,10 @@ Eigen::MatrixXd MumpsSolver::schur_complement() const {
              "MUMPS: no Schur complement (no Schur variables, or not factorized)");
   const int m = static_cast<int>(s.schur_dofs.size());
   Eigen::MatrixXd S = Eigen::Map<const Eigen::MatrixXd>(s.schur.data(), m, m);
-  // ICNTL(19) = 3 returns both triangles (= 2 only the lower one, = 1 the lower by rows);
-  // mirroring the lower one makes S exactly symmetric whatever rounding did to the upper.
+  // ICNTL(19) = 3 returns both triangles (= 2 only the lower one, = 1 the lower by rows, read
+  // here by columns as the upper); mirroring one makes S exactly symmetric whatever rounding did
+  // to the other.
+  if (s.rank_rows) S.transposeInPlace();
   if (s.id.sym != 0) S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
   return S;
 }

@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/cholmod_split.hpp"
+#include "solver/mpi_session.hpp"
 #include "solver/mumps_solver.hpp"
 
 #include <algorithm>
@@ -67,8 +68,8 @@ private:
 
 SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
                                  std::vector<int> interface_dofs, const std::string& backend,
-                                 MatrixKind kind, bool whole_positive_definite)
-    : backend_(backend), interface_(std::move(interface_dofs)) {
+                                 MatrixKind kind, bool whole_positive_definite, bool rank_rows)
+    : backend_(backend), interface_(std::move(interface_dofs)), rank_rows_(rank_rows) {
   std::transform(backend_.begin(), backend_.end(), backend_.begin(),
                  [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   const int n = static_cast<int>(K.rows());
@@ -82,7 +83,9 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
              "Schur complement: interface dofs must be sorted and distinct");
   SIG_VERIFY(interface_.front() >= 0 && interface_.back() < n,
              "Schur complement: interface dof out of [0, " << n << ")");
-  SIG_ASSERT((Eigen::SparseMatrix<double>(K.transpose()) - K).norm() <= 1e-12 * K.norm(),
+  // A rank's rows are not symmetric; the TAE's reader checked the whole.
+  SIG_ASSERT(rank_rows ||
+                 (Eigen::SparseMatrix<double>(K.transpose()) - K).norm() <= 1e-12 * K.norm(),
              "Schur complement of a non-symmetric K");
 
   // position[d] >= 0: interior index; position[d] < 0: interface index -position[d] - 1.
@@ -99,6 +102,9 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
 
   // CHOLMOD on a positive definite K: the whole factor, the interface last (cholmod_split.hpp).
   const BackendTraits traits = backend_traits(backend_);
+  SIG_VERIFY(!rank_rows || traits.partial_schur,
+             "a solve over several ranks (mpirun) factorizes with MUMPS: SOLVER linear=mumps, not "
+                 << backend_);
   if (whole_positive_definite && traits.split_schur && kind == MatrixKind::spd) {
     try {
       const Stopwatch factor_clock;
@@ -136,7 +142,7 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
   if (!split_interior) {
     // One partial factorization of K gives K_ii's factor and S together.
     const Stopwatch factor_clock;
-    auto mumps = std::make_unique<MumpsSolver>(kind, interface_);
+    auto mumps = std::make_unique<MumpsSolver>(kind, interface_, rank_rows);
     mumps->factorize(K);
     seconds_factorize_ = factor_clock.seconds();
     const Stopwatch schur_clock;
@@ -170,6 +176,10 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
 }
 
 SchurComplement::~SchurComplement() = default;
+
+std::string SchurComplement::ordering() const {
+  return mumps_ != nullptr ? mumps_->ordering() : std::string();
+}
 
 Eigen::VectorXd SchurComplement::interior_part(const Eigen::VectorXd& v) const {
   Eigen::VectorXd p(static_cast<Eigen::Index>(interior_.size()));
@@ -221,7 +231,9 @@ Eigen::VectorXd SchurComplement::expand(const Eigen::VectorXd& f, const Eigen::V
     condensed_load_.resize(0);
   } else {
     condensed_load_.resize(0); // the solve below overwrites MUMPS's reduced right-hand side
-    const Eigen::VectorXd r = interior_part(f) - K_ic_ * u_c;
+    Eigen::VectorXd K_ic_u_c = K_ic_ * u_c;
+    if (rank_rows_) mpi::sum(K_ic_u_c.data(), static_cast<int>(K_ic_u_c.size()));
+    const Eigen::VectorXd r = interior_part(f) - K_ic_u_c;
     const Eigen::VectorXd u_i = interior_solver_->solve(r).col(0);
     for (size_t k = 0; k < interior_.size(); ++k)
       u[interior_[k]] = u_i[Eigen::Index(k)];

@@ -13,6 +13,12 @@
 // displacements of case.tae, with per-step results in case.b. Non-convergence of a contact method
 // is a result: the stage exits 0 and the DS records converged = 0 with the iteration history ("Nv"
 // in the tables).
+//
+// Under `mpirun -np P` (a small-strain contact deck, linear=mumps) every rank holds the rows of
+// K of its nodes (a METIS partition, stages/rank_rows.hpp), read streaming off case.tae, and
+// MUMPS factorizes them together, keeping the contact unknowns as its Schur complement on rank
+// 0; the small contact problem is solved on the complement every rank receives, and rank 0
+// alone writes case.b. A rank that fails ends the job (MPI_Abort): no case.b is written.
 #include "assembly/initial.hpp"
 #include "assembly/loads.hpp"
 #include "assembly/rigid_motion.hpp"
@@ -26,8 +32,10 @@
 #include "core/stage_cards.hpp"
 #include "material/mili.hpp"
 #include "mesh/nopo.hpp"
+#include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
 #include "stages/finite_strain_stage.hpp"
+#include "stages/rank_rows.hpp"
 #include "stages/solution_ds.hpp"
 
 #include <cmath>
@@ -48,7 +56,10 @@ int main(int argc, char** argv) {
       .writes = {"OUTDIR/case.b (displacement, multipliers, statuses, iteration history, phase "
                  "times; per load step in large deformation)"},
       .cards = sig::stage_cards("solve").cards};
-  return sig::run_stage("solve", [&] {
+  const bool distributed = sig::mpi::launched(); // a rank of an mpirun job
+  const int code = sig::run_stage("solve", [&] {
+    // MPI first, so that a failure below can end the job's other ranks.
+    const int rank = distributed ? sig::mpi::rank() : 0;
     // 1. Arguments and the SOLVER card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile& datafile = args.deck;
@@ -92,12 +103,20 @@ int main(int argc, char** argv) {
     const std::string& backend = card.backend;
     const sig::ContactSolverParameters& parameters = card.parameters;
     const std::string& method = parameters.method;
+    if (distributed) {
+      SIG_VERIFY(backend == "mumps", datafile.path << ": a solve under mpirun factorizes with "
+                                                      "MUMPS: set SOLVER linear=mumps");
+      SIG_VERIFY(has_contact, datafile.path << ": a deck without contact is one linear solve: "
+                                               "run it without mpirun");
+    }
 
     // 2. The assembled system, the contact elements and the mesh; every part of the body held
     //    (by the DIRICHLET cards, and by the contact nodes, onto which the solve condenses), and
     //    the words for a matrix that fails to factorize all the same.
-    const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
+    const sig::LinearSystem system =
+        distributed ? sig::read_tae_rows(args.ds_path("tae"), sig::rows_of_rank(mesh))
+                    : sig::read_tae(args.ds_path("tae"));
     std::optional<sig::ContactElements> contact;
     if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     if (mesh.dim == 3) {
@@ -130,6 +149,9 @@ int main(int argc, char** argv) {
     if (has_contact || sig::has_hyperelastic_law(table))
       sig::verify_total_iterations(datafile, sig::ContactSolverParameters::solve_max_iterations);
     if (sig::has_hyperelastic_law(table)) {
+      if (distributed)
+        SIG_VERIFY(false, datafile.path << ": the large-deformation solve runs in one process: "
+                                           "run it without mpirun");
       if (!datafile.all("INITIAL").empty())
         datafile.all("INITIAL").front()->fail(
             "u", "the large-deformation solve starts from the reference configuration");
@@ -185,6 +207,9 @@ int main(int argc, char** argv) {
       // The mesh gives the first iterate of INITIAL and the norm of V of the convexification
       // loop's test.
       const bool loop = sig::needs_convexification(contact->law);
+      SIG_VERIFY(!(loop && distributed),
+                 datafile.path << ": the convexification loop of law=nonmonotone runs in one "
+                                  "process: run it without mpirun");
       Eigen::VectorXd start;
       if (!datafile.all("INITIAL").empty()) start = sig::initial_fields(datafile, mesh).u;
       if (std::isfinite(parameters.candidate_gap))
@@ -198,10 +223,17 @@ int main(int argc, char** argv) {
 
     timer.reset();
 
-    // 5. Write case.b and report.
+    // 5. Write case.b and report: rank 0's.
+    if (rank != 0) return;
+    if (distributed) solution.ranks = sig::mpi::size();
     sig::write_solution(args.ds_path("b"), solution, method, backend, datafile.title());
-    std::cout << "sig-solve: " << method << " (" << backend << "), " << solution.unknowns
-              << " dofs, " << (solution.converged ? "converged" : "NOT converged (Nv)") << " in "
+    std::cout << "sig-solve: " << method << " (" << backend
+              << (solution.ordering.empty() ? "" : ", ordering " + solution.ordering)
+              << (distributed ? ", " + std::to_string(solution.ranks) +
+                                    (solution.ranks == 1 ? " rank" : " ranks")
+                              : "")
+              << "), " << solution.unknowns << " dofs, "
+              << (solution.converged ? "converged" : "NOT converged (Nv)") << " in "
               << solution.history.size() << " iterations";
     if (const auto& loop = solution.convexification) {
       std::cout << " (" << loop->outer_iterations() << " convex solves:";
@@ -213,4 +245,7 @@ int main(int argc, char** argv) {
               << "\n";
     if (!solution.converged) std::cout << "sig-solve: Nv, " << solution.failure << "\n";
   });
+  // The other ranks may wait in a collective call of MUMPS: end them all.
+  if (code != 0 && distributed) sig::mpi::abort(code);
+  return code;
 }

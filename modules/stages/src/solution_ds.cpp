@@ -97,6 +97,8 @@ void write_solution(const std::filesystem::path& path, const StaticSolution& sol
   ds.put("u", std::span<const double>(solution.u.data(), solution.u.size()));
   ds.put_text("method", method);
   ds.put_text("linear", backend);
+  if (!solution.ordering.empty()) ds.put_text("ordering", solution.ordering);
+  ds.put_int("ranks", solution.ranks);
   ds.put_int("converged", solution.converged ? 1 : 0);
   ds.put_int("iterations", static_cast<std::int64_t>(solution.history.size()));
   ds.put_int("dofs", solution.unknowns);

@@ -8,6 +8,7 @@
 #include "solver/contact_condensation.hpp"
 #include "solver/convexification.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/mpi_session.hpp"
 #include "stages/newton_outcome.hpp"
 
 #include <algorithm>
@@ -86,6 +87,7 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
 }
 
 StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::string& backend) {
+  SIG_VERIFY(!system.rank_rows, "a linear solve without contact runs in one process (no mpirun)");
   const ReducedSystem reduced = reduce(system);
   StaticSolution s;
   Stopwatch clock;
@@ -272,6 +274,8 @@ StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
              "a DIRICHLET card holds a component of a contact node, which the penalty method "
              "cannot impose (it has no multipliers): use SOLVER method=alm or pdas");
   ReducedSystem reduced = reduce(system, held);
+  // A rank's rows give the load's rows it holds: the whole load is their sum.
+  if (system.rank_rows) mpi::sum(reduced.f.data(), static_cast<int>(reduced.f.size()));
   const std::vector<int> first_dofs = contact_first_dofs(reduced, contact);
   const bool friction = contact.has_friction();
   StaticSolution s;
@@ -279,7 +283,8 @@ StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
   // 1. The bulk in nodal frames condensed onto the normal displacements of the contact nodes
   //    (and their slips with friction): one sparse factorization.
   ContactCondensation condensation(std::move(reduced.K), first_dofs, contact.frames(), friction,
-                                   backend);
+                                   backend, false, system.rank_rows);
+  s.ordering = condensation.ordering();
   s.seconds["frames"] = condensation.seconds_frames();
   s.seconds["factorize"] = condensation.seconds_factorize();
   s.seconds["schur"] = condensation.seconds_schur();

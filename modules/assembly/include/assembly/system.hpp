@@ -41,6 +41,8 @@ struct LinearSystem {
   std::vector<int> dirichlet_dofs;     ///< sorted, unique, 0-based
   Eigen::VectorXd dirichlet_values;
   double assemble_seconds = 0.0; ///< wall time of assemble_system
+  /// K and f hold only the rows of this rank of an mpirun job (read_tae_rows), the rest empty.
+  bool rank_rows = false;
 
   int num_dofs() const { return static_cast<int>(f.size()); }
   /// The loads at time t: f + time_loads.change(t).
@@ -83,5 +85,12 @@ LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
 void write_tae(const std::filesystem::path& path, const LinearSystem& system,
                const std::string& title);
 LinearSystem read_tae(const std::filesystem::path& path);
+/// The part of a TAE that one rank of a distributed solve holds: of K, the entries of the rows
+/// `owned` marks (ndof flags; K stays ndof x ndof, its other rows zero: explicit zeros where
+/// the transposed entries of the held rows lie, so that the pattern is symmetric), streamed off the
+/// file so that the whole K is never in memory; f on those rows (zero elsewhere); every Dirichlet
+/// condition. No mass, viscosity or time loads (the static solve has none). Symmetry is checked
+/// where a rank sees both entries (rows and columns it owns).
+LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<char>& owned);
 
 } // namespace sig

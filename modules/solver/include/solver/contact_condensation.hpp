@@ -37,9 +37,11 @@ public:
   /// factorized: then a rigid motion of the body is held by nothing (the message says so).
   /// `positive_definite`: K itself is (a body held by Dirichlet conditions, the step matrix of a
   /// march), which lets CHOLMOD factorize it whole and split its solves (solver/schur.hpp).
+  /// `rank_rows`: K holds only this rank's rows of an mpirun job (SchurComplement's rank_rows);
+  /// loads are the whole ones, on every rank.
   ContactCondensation(Eigen::SparseMatrix<double> K, std::vector<int> first_dofs,
                       std::vector<ContactFrame> frames, bool tangential, const std::string& backend,
-                      bool positive_definite = false);
+                      bool positive_definite = false, bool rank_rows = false);
   ~ContactCondensation();
   ContactCondensation(const ContactCondensation&) = delete;
   ContactCondensation& operator=(const ContactCondensation&) = delete;
@@ -67,6 +69,8 @@ public:
   double seconds_frames() const { return seconds_frames_; }
   double seconds_factorize() const;
   double seconds_schur() const;
+  /// The ordering of the sparse factorization (SchurComplement::ordering).
+  std::string ordering() const;
 
 private:
   Eigen::SparseMatrix<double> K_; ///< in frames
@@ -78,6 +82,7 @@ private:
   std::unique_ptr<FrameRotation> frames_;
   std::unique_ptr<SchurComplement> schur_;
   Eigen::VectorXd load_; ///< the last condensed load, in frames
+  bool rank_rows_ = false;
   double seconds_frames_ = 0;
 };
 

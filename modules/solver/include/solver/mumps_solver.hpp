@@ -1,7 +1,8 @@
 #pragma once
-// Sequential MUMPS adapter: multifrontal LDL^T (SYM = 1 spd, 2 symmetric) or LU (SYM = 0),
-// AMD ordering up to 2e5 unknowns (a 2D problem's analysis 4-8x cheaper than nested
-// dissection's for the same factorization time), MUMPS's automatic choice above.
+// MUMPS adapter on this process alone (MPI_COMM_SELF, solver/mpi_session.hpp): multifrontal LDL^T
+// (SYM = 1 spd, 2 symmetric) or LU (SYM = 0), AMD ordering up to 2e5 unknowns (a 2D problem's
+// analysis 4-8x cheaper than nested dissection's for the same factorization time), MUMPS's
+// automatic choice above.
 //
 // With Schur variables it performs MUMPS's partial factorization (ICNTL(19)): the interior
 // block K_ii is factorized and S = K_cc - K_ci K_ii^{-1} K_ic comes out of the same pass. Solves
@@ -18,8 +19,11 @@ namespace sig {
 class MumpsSolver final : public LinearSolver {
 public:
   /// schur_dofs: sorted 0-based variables kept out of the factorization; empty for a plain
-  /// solver.
-  explicit MumpsSolver(MatrixKind kind, std::vector<int> schur_dofs = {});
+  /// solver. `rank_rows`: the solver of every rank of an mpirun job (MPI_COMM_WORLD), each rank
+  /// giving the rows it holds (the matrices passed hold only those, the other rows empty; the
+  /// calls are collective); right sides are the host's (rank 0), and the solutions, the Schur
+  /// complement and the reduced right sides come back on every rank.
+  explicit MumpsSolver(MatrixKind kind, std::vector<int> schur_dofs = {}, bool rank_rows = false);
   ~MumpsSolver() override;
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;

@@ -36,10 +36,12 @@ public:
   /// held by Dirichlet conditions); with "cholmod" K is then factorized whole, the interface
   /// ordered last (solver/cholmod_split.hpp), S read off the factor and a condense/expand pair
   /// costs one forward-backward substitution instead of two interior solves. If that
-  /// factorization fails the interior path above is taken.
+  /// factorization fails the interior path above is taken. `rank_rows`: K holds only this
+  /// rank's rows of an mpirun job (solver/mpi_session.hpp), which "mumps" factorizes with the
+  /// other ranks' (MumpsSolver's rank_rows); loads are then the whole ones, on every rank.
   SchurComplement(const Eigen::SparseMatrix<double>& K, std::vector<int> interface_dofs,
                   const std::string& backend, MatrixKind kind = MatrixKind::spd,
-                  bool whole_positive_definite = false);
+                  bool whole_positive_definite = false, bool rank_rows = false);
   ~SchurComplement();
   SchurComplement(const SchurComplement&) = delete;
   SchurComplement& operator=(const SchurComplement&) = delete;
@@ -58,6 +60,8 @@ public:
   const std::vector<int>& interior_dofs() const { return interior_; }
   int size() const { return static_cast<int>(interface_.size() + interior_.size()); }
   const std::string& backend() const { return backend_; }
+  /// The fill-reducing ordering of MUMPS's analysis ("amd", "scotch", ...); empty for the others.
+  std::string ordering() const;
   /// Wall-clock seconds of the analysis and factorization (for MUMPS: including S).
   double seconds_factorize() const { return seconds_factorize_; }
   /// Wall-clock seconds spent forming S after the factorization (block solves, symmetrization).
@@ -71,6 +75,7 @@ private:
   Eigen::MatrixXd S_;
   std::unique_ptr<detail::InteriorSolver> interior_solver_;
   MumpsSolver* mumps_ = nullptr; ///< the partial factorization, when the backend is MUMPS
+  bool rank_rows_ = false;       ///< K_ic_ holds this rank's rows only: its products are summed
   std::unique_ptr<CholmodSplitSolver> split_; ///< K factorized whole (CHOLMOD, constructor)
   bool split_reduced_ = false;                ///< split_ holds condense()'s forward substitution
   Eigen::VectorXd condensed_load_; ///< f of the last condense() that expand() can continue

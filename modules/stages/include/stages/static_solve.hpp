@@ -38,6 +38,8 @@ struct StaticSolution {
   std::optional<ConvexificationResult> convexification; ///< with a nonmonotone law
   int unknowns = 0;                      ///< dofs of the Newton vector, as the thesis counts them
   std::map<std::string, double> seconds; ///< factorize, frames, schur, solve
+  std::string ordering; ///< of MUMPS's analysis (SchurComplement::ordering); empty for the others
+  int ranks = 1;        ///< the processes of the solve (mpirun -np)
 };
 
 /// The convexification loop of a nonmonotone law: its options, and the mesh whose ||eps(u)||_L2

@@ -1,0 +1,49 @@
+#include "stages/rank_rows.hpp"
+
+#include "core/error.hpp"
+#include "mesh/mesh.hpp"
+#include "solver/mpi_session.hpp"
+
+#include <metis.h>
+
+#include <algorithm>
+
+namespace sig {
+
+std::vector<char> rows_of_rank(const Mesh& mesh) {
+  const int ranks = mpi::size();
+  SIG_VERIFY(mesh.num_cells() >= ranks && mesh.num_nodes() >= ranks,
+             "a mesh of " << mesh.num_cells() << " " << mesh.cell_name() << "s and "
+                          << mesh.num_nodes() << " nodes cannot be shared by " << ranks
+                          << " ranks: run mpirun with at most "
+                          << std::min(mesh.num_cells(), mesh.num_nodes()) << " ranks");
+  std::vector<int> part(static_cast<std::size_t>(mesh.num_nodes()), 0);
+  if (ranks > 1) {
+    if (mpi::rank() == 0) {
+      idx_t cells = mesh.num_cells(), nodes = mesh.num_nodes(), parts = ranks, cut = 0;
+      std::vector<idx_t> first{0}, node;
+      for (const Simplex& cell : mesh.cells) {
+        node.insert(node.end(), cell.begin(), cell.end());
+        first.push_back(static_cast<idx_t>(node.size()));
+      }
+      std::vector<idx_t> cell_part(static_cast<std::size_t>(cells)), node_part(part.size());
+      idx_t options[METIS_NOPTIONS];
+      METIS_SetDefaultOptions(options);
+      const int status =
+          METIS_PartMeshNodal(&cells, &nodes, first.data(), node.data(), nullptr, nullptr, &parts,
+                              nullptr, options, &cut, cell_part.data(), node_part.data());
+      SIG_VERIFY(status == METIS_OK,
+                 "METIS_PartMeshNodal failed (status " << status << ") on " << ranks << " parts");
+      part.assign(node_part.begin(), node_part.end());
+    }
+    mpi::broadcast(part.data(), static_cast<int>(part.size()));
+  }
+  const int d = mesh.dim, me = mpi::rank();
+  std::vector<char> owned(static_cast<std::size_t>(d) * part.size(), 0);
+  for (std::size_t node = 0; node < part.size(); ++node)
+    for (int c = 0; c < d; ++c)
+      owned[static_cast<std::size_t>(d) * node + static_cast<std::size_t>(c)] = part[node] == me;
+  return owned;
+}
+
+} // namespace sig
