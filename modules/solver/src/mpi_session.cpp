@@ -9,7 +9,15 @@
 #include <mpi.h>
 
 #include <cstdlib>
-#ifdef __SANITIZE_ADDRESS__
+// gcc says AddressSanitizer by a macro, clang (14) by __has_feature only.
+#if defined(__SANITIZE_ADDRESS__)
+#define SIG_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SIG_ADDRESS_SANITIZER 1
+#endif
+#endif
+#ifdef SIG_ADDRESS_SANITIZER
 #include <sanitizer/lsan_interface.h>
 #endif
 
@@ -18,7 +26,7 @@ namespace sig::mpi {
 namespace {
 
 void finalize() {
-#ifdef __SANITIZE_ADDRESS__
+#ifdef SIG_ADDRESS_SANITIZER
   // The leak check at exit would run after MPI_Finalize has unloaded OpenMPI's components, whose
   // frames LeakSanitizer could then not name for tests/lsan-openmpi.supp: check here instead,
   // while they are loaded (the rest of the process has ended its work: this runs at exit).
