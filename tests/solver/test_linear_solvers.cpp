@@ -92,8 +92,8 @@ TEST_P(LinearSolverTest, RefactorizesNewValuesOnAnalyzedPattern) {
 
 // Same size and entry count, different pattern: the analysis must be redone, not reused.
 TEST_P(LinearSolverTest, NewPatternIsAnalyzedAgain) {
-  const int n = 60;
-  auto coupled = [n](int far) {
+  constexpr int n = 60;
+  auto coupled = [](int far) {
     std::vector<Eigen::Triplet<double>> t;
     for (int k = 0; k < n; ++k) {
       t.emplace_back(k, k, 4.0);
@@ -247,10 +247,10 @@ TEST(Mumps, OrdersWithAmdBelowTwoHundredThousandUnknowns) {
 // 5x slower (mumps_solver.cpp). Here a 3D-like matrix of 1536 unknowns: the 27-point stencil of an
 // 8 x 8 x 8 grid (diagonally dominant) times a 3 x 3 SPD block, 81 entries per inner row.
 TEST(Mumps, OrdersDenseRowsWithNestedDissectionAtAnySize) {
-  const int m = 8, n = m * m * m;
+  constexpr int m = 8, n = m * m * m;
   const Eigen::Matrix3d B = (Eigen::Matrix3d() << 2, 1, 0, 1, 2, 1, 0, 1, 2).finished();
   std::vector<Eigen::Triplet<double>> t;
-  const auto at = [m](int i, int j, int k) { return (i * m + j) * m + k; };
+  const auto at = [](int i, int j, int k) { return (i * m + j) * m + k; };
   for (int i = 0; i < m; ++i)
     for (int j = 0; j < m; ++j)
       for (int k = 0; k < m; ++k)
