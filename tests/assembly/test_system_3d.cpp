@@ -12,6 +12,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <filesystem>
 #include <string>
 
@@ -82,9 +84,8 @@ TEST(System3d, TwoDimensionalFieldsAreRefused) {
   EXPECT_THROW(assemble(mesh, "TRACTION ref=2 f=0,-1 ramp=1\n"), InputError);
   const Datafile plane = Datafile::parse("MATERIAL law=hooke E=1 nu=0.3 plane=stress\n", "p.dat");
   EXPECT_THROW(material_table_from_cards(plane, mesh), InputError);
-  const Datafile viscous = Datafile::parse("MATERIAL law=kelvin-voigt E=1 nu=0.3\n", "k.dat");
-  EXPECT_THROW(material_table_from_cards(viscous, mesh), InputError);
-  // The hyperelastic laws are written on the 3D C: a 3D body takes them (issue 28).
+  // The hyperelastic laws and Kelvin-Voigt's are written on the 3D tensors: a 3D body takes them
+  // (issue 28; the viscous operator: ViscoelasticSystem3d below).
   const Datafile svk = Datafile::parse("MATERIAL law=svk E=1 nu=0.3\n", "s.dat");
   EXPECT_TRUE(material_table_from_cards(svk, mesh).entries.front().hyperelastic);
   // And the other way round: a 2D deck has no uz.
@@ -92,6 +93,36 @@ TEST(System3d, TwoDimensionalFieldsAreRefused) {
   square.facets.push_back({{0, 1}, 1});
   EXPECT_NO_THROW(assemble(square, "DIRICHLET ref=1 ux=0 uy=0\n"));
   EXPECT_THROW(assemble(square, "DIRICHLET ref=1 ux=0 uz=0\n"), InputError);
+}
+
+// Kelvin-Voigt on a 3D body (issue 28): the viscosity A (eta1, eta2) is Hooke's 3D operator with
+// the Lame constants (eta1, eta2 / 2), a memory term's matrix its tensor's 3D stiffness; a
+// ramped traction's rate is the constant traction's load over the ramp, f itself then 0.
+TEST(ViscoelasticSystem3d, ViscosityMemoryAndRampedLoad) {
+  const Mesh mesh = cube();
+  const double E = 100, nu = 0.3;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  std::ostringstream deck;
+  deck.precision(17);
+  deck << "MATERIAL law=kelvin-voigt E=7 nu=0.2 eta1=" << lambda << " eta2=" << 2 * mu << "\n"
+       << "MEMORY E=20 nu=0.1 beta=10\nTRACTION ref=2 f=1,2,-3 ramp=0.5\n";
+  // assemble() gives its deck a Hooke law: these decks carry their own.
+  const auto own = [&mesh](const std::string& text) {
+    const Datafile datafile = Datafile::parse(text, "v.dat");
+    return assemble_system(mesh, material_table_from_cards(datafile, mesh), datafile);
+  };
+  const LinearSystem kv = own(deck.str());
+  const LinearSystem hooke = own("MATERIAL E=100 nu=0.3\nTRACTION ref=2 f=1,2,-3\n");
+  EXPECT_LT((kv.V - hooke.K).norm(), 1e-12 * hooke.K.norm());
+  EXPECT_LT((kv.K - own("MATERIAL E=7 nu=0.2\n").K).norm(), 1e-12 * kv.K.norm());
+  ASSERT_EQ(kv.memory.size(), 1u);
+  EXPECT_EQ(kv.memory[0].beta, 10);
+  const LinearSystem memory = own("MATERIAL E=20 nu=0.1\n");
+  EXPECT_LT((kv.memory[0].K - memory.K).norm(), 1e-12 * memory.K.norm());
+  EXPECT_EQ(kv.f.norm(), 0.0);
+  ASSERT_EQ(kv.time_loads.rate.size(), hooke.f.size());
+  EXPECT_LT((0.5 * kv.time_loads.rate - hooke.f).norm(), 1e-14 * hooke.f.norm());
+  EXPECT_GT(hooke.f.norm(), 0.0);
 }
 
 } // namespace

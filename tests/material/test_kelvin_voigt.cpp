@@ -49,6 +49,24 @@ TEST(KelvinVoigt, ViscosityIsTheThesisOperator) {
   EXPECT_TRUE(a.D().isApprox(a.D().transpose()));
 }
 
+TEST(KelvinVoigt, ViscosityIn3dIsTheThesisOperatorAndRestrictsToThe2dOne) {
+  // The same operator on a 3D strain rate (e11, e22, e33, 2 e23, 2 e13, 2 e12); at e33 = e23 =
+  // e13 = 0 (plane strain) its in-plane rows are the 2D D.
+  const Viscosity a{0.25, 0.5};
+  Eigen::Matrix<double, 6, 1> eps;
+  eps << 0.3, -0.2, 0.7, 0.1, -0.6, 0.4;
+  const Eigen::Matrix<double, 6, 1> sigma = a.D3() * eps;
+  const double trace = eps(0) + eps(1) + eps(2);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(sigma(k), 0.25 * trace + 0.5 * eps(k)) << k;
+    EXPECT_DOUBLE_EQ(sigma(3 + k), 0.5 * eps(3 + k) / 2) << 3 + k;
+  }
+  const int in_plane[3] = {0, 1, 5};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      EXPECT_EQ(a.D3()(in_plane[i], in_plane[j]), a.D()(i, j)) << i << ", " << j;
+}
+
 TEST(KelvinVoigt, CardsBuildTheLawAndItsMemory) {
   const MaterialTable table =
       table_of("MATERIAL region=1 law=kelvin-voigt E=100 nu=0.3 eta1=0.25 eta2=0.5\n"

@@ -1,6 +1,7 @@
 // sig-assemble DATAFILE [-o OUTDIR]: MODULEF's THENEW/ELASCT + assembly. Reads the mesh
 // OUTDIR/case.nopo, the laws OUTDIR/case.mili and the DIRICHLET, TRACTION, PRESSURE and
 // BODYFORCE cards; writes the stiffness, mass, loads and Dirichlet dofs to OUTDIR/case.tae.
+#include "assembly/loads.hpp"
 #include "assembly/system.hpp"
 #include "core/datafile.hpp"
 #include "core/log.hpp"
@@ -33,6 +34,12 @@ int main(int argc, char** argv) {
     bool finite_strain = false;
     for (const sig::SubdomainMaterial& entry : table.entries)
       finite_strain = finite_strain || entry.hyperelastic != nullptr;
+    // The large-deformation solve and march hold their loads constant (sig-solve refuses ramp=
+    // as any static solve): a ramped load would be dropped without a word.
+    if (const sig::Card* ramped = sig::ramped_load_card(datafile); ramped && finite_strain)
+      ramped->fail("ramp", "a hyperelastic body (large deformation) holds its loads constant in "
+                           "time: remove ramp= (ramped loads serve the linear and the "
+                           "viscoelastic marches)");
 
     // 2. Pattern, stiffness, mass, loads, Dirichlet dofs.
     const sig::LinearSystem system = [&] {

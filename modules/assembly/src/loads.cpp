@@ -110,6 +110,15 @@ Eigen::Vector2d edge_outward_normal(const Mesh& mesh, const Facet& edge) {
   return outward_normal(mesh, EdgeOwners(mesh), edge);
 }
 
+LoadTarget load_target(const Card& card, Eigen::VectorXd& f, Eigen::VectorXd& rate) {
+  // A ramped card adds g / ramp to the rate (nothing at t = 0), a constant one g to f.
+  if (!card.has("ramp")) return {f, 1.0};
+  const double ramp = card.real("ramp");
+  if (!(ramp > 0) || !std::isfinite(ramp))
+    card.fail("ramp", "the time at which the ramped load reaches its value must be > 0");
+  return {rate, 1.0 / ramp};
+}
+
 const Card* ramped_load_card(const Datafile& datafile) {
   for (const char* keyword : {"TRACTION", "PRESSURE", "BODYFORCE"})
     for (const Card* card : datafile.all(keyword))
@@ -121,14 +130,7 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
                                const Datafile& datafile, TimeLoads* time_loads) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
   Eigen::VectorXd rate = Eigen::VectorXd::Zero(2 * mesh.num_nodes());
-  // A ramped card adds g / ramp to the rate (nothing at t = 0), a constant one g to f.
-  const auto target = [&](const Card& card) -> std::pair<Eigen::VectorXd&, double> {
-    if (!card.has("ramp")) return {f, 1.0};
-    const double ramp = card.real("ramp");
-    if (!(ramp > 0) || !std::isfinite(ramp))
-      card.fail("ramp", "the time at which the ramped load reaches its value must be > 0");
-    return {rate, 1.0 / ramp};
-  };
+  const auto target = [&](const Card& card) { return load_target(card, f, rate); };
   // No card's load may overflow: the error names the card, where the TAE's would not.
   const auto finite = [](const Card& card, const char* field, const Eigen::VectorXd& load) {
     if (!load.allFinite())

@@ -1,9 +1,10 @@
 // The load vector of a 3D body (issue 26): TRACTION and PRESSURE on referenced faces, BODYFORCE
 // on sub-domains, each the exact integral of the constant load against the P1 basis. A 3D deck
-// has no thickness; time-dependent loads (MOVINGLOAD, ramp=) are 2D only for now.
+// has no thickness; ramp= as in 2D (assembly/loads.hpp), MOVINGLOAD is 2D only for now.
 #include "assembly/cards.hpp"
 #include "assembly/loads.hpp"
 #include "assembly/p1_simplex.hpp"
+#include "assembly/time_loads.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "mesh/mesh.hpp"
@@ -45,41 +46,45 @@ void finite(const Card& card, const char* field, const Eigen::VectorXd& load) {
 
 } // namespace
 
-Eigen::VectorXd assemble_loads_3d(const Mesh& mesh, const Datafile& datafile) {
+Eigen::VectorXd assemble_loads_3d(const Mesh& mesh, const Datafile& datafile,
+                                  TimeLoads* time_loads) {
   SIG_VERIFY(mesh.dim == 3, "assemble_loads_3d: the mesh is " << mesh.dim << "D");
   for (const Card* moving : datafile.all("MOVINGLOAD"))
     moving->fail("ref", "a moving load in 3D is not implemented yet (issue 26)");
-  if (const Card* ramped = ramped_load_card(datafile))
-    ramped->fail("ramp", "a ramped load in 3D is not implemented yet (issue 26)");
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * mesh.num_nodes());
+  Eigen::VectorXd rate = Eigen::VectorXd::Zero(3 * mesh.num_nodes());
   for (const Card* card : datafile.all("TRACTION")) {
-    const Eigen::Vector3d traction = card_vector_3d(*card, "f");
+    const auto [into, scale] = load_target(*card, f, rate);
+    const Eigen::Vector3d traction = scale * card_vector_3d(*card, "f");
     for (int ref : card_references(*card, mesh, RefSupport::edges))
       for (const Facet& face : mesh.facets_with_ref(ref))
-        add_face_load(face, 0.5 * face_area_vector(mesh, face).norm(), traction, f);
-    finite(*card, "f", f);
+        add_face_load(face, 0.5 * face_area_vector(mesh, face).norm(), traction, into);
+    finite(*card, "f", into);
   }
   for (const Card* card : datafile.all("PRESSURE")) {
-    const double p = card->real("p");
+    const auto [into, scale] = load_target(*card, f, rate);
+    const double p = scale * card->real("p");
     for (int ref : card_references(*card, mesh, RefSupport::edges))
       for (const Facet& face : mesh.facets_with_ref(ref)) {
         const Eigen::Vector3d n = face_area_vector(mesh, face);
-        add_face_load(face, 0.5 * n.norm(), -p * n.normalized(), f);
+        add_face_load(face, 0.5 * n.norm(), -p * n.normalized(), into);
       }
-    finite(*card, "p", f);
+    finite(*card, "p", into);
   }
   for (const Card* card : datafile.all("BODYFORCE")) {
-    const Eigen::Vector3d force = card_vector_3d(*card, "f");
+    const auto [into, scale] = load_target(*card, f, rate);
+    const Eigen::Vector3d force = scale * card_vector_3d(*card, "f");
     const std::vector<int> regions = card_regions(*card, mesh);
     for (int t = 0; t < mesh.num_cells(); ++t) {
       if (std::find(regions.begin(), regions.end(), mesh.subdomain[t]) == regions.end()) continue;
       const SimplexVector<3> fe =
           p1_simplex_body_load<3>(p1_measure<3>(simplex_vertices<3>(mesh, t)), force, 1.0);
       for (int i = 0; i < 4; ++i)
-        f.segment<3>(3 * mesh.cells[t][i]) += fe.segment<3>(3 * i);
+        into.segment<3>(3 * mesh.cells[t][i]) += fe.segment<3>(3 * i);
     }
-    finite(*card, "f", f);
+    finite(*card, "f", into);
   }
+  if (time_loads != nullptr && (rate.array() != 0).any()) time_loads->rate = std::move(rate);
   return f;
 }
 

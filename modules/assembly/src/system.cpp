@@ -19,46 +19,63 @@ namespace sig {
 
 namespace {
 
-/// The P1 stiffness of the operator `tensor` gives each sub-domain (sigma = D eps), the
-/// sub-domains where it gives none left out.
-Eigen::SparseMatrix<double> assemble_operator(
-    const Mesh& mesh, const MaterialTable& table, const SparsityPattern& pattern,
-    const std::function<std::optional<Eigen::Matrix3d>(const SubdomainMaterial&)>& tensor) {
+/// The Voigt matrix of `law` (Hooke, Viscosity) on a body of dimension d: D (2D, the plane mode
+/// of the law) or D3.
+template <typename Law> Eigen::MatrixXd voigt_matrix(const Law& law, int d) {
+  if (d == 3) return law.D3();
+  return law.D();
+}
+
+/// What an operator gives a sub-domain: its Voigt matrix in the body's dimension, or none (the
+/// sub-domain is left out).
+using OperatorOf = std::function<std::optional<Eigen::MatrixXd>(const SubdomainMaterial&, int)>;
+
+/// The P1 stiffness of the operator `tensor` gives each sub-domain (sigma = D eps) on the
+/// simplices of a mesh of dimension d, the sub-domains where it gives none left out.
+template <int d>
+Eigen::SparseMatrix<double> assemble_operator(const Mesh& mesh, const MaterialTable& table,
+                                              const SparsityPattern& pattern,
+                                              const OperatorOf& tensor) {
+  std::map<int, std::optional<VoigtMatrix<d>>> of; // once per sub-domain, not per cell
+  for (int subdomain : mesh.subdomains())
+    if (const std::optional<Eigen::MatrixXd> D = tensor(table.of(subdomain), d))
+      of.emplace(subdomain, VoigtMatrix<d>(*D));
+    else
+      of.emplace(subdomain, std::nullopt);
   Eigen::SparseMatrix<double> K = pattern.zero_matrix();
   for (int t = 0; t < mesh.num_cells(); ++t) {
-    const SubdomainMaterial& material = table.of(mesh.subdomain[t]);
-    if (const std::optional<Eigen::Matrix3d> D = tensor(material))
-      pattern.add(K, t, p1_stiffness(triangle_vertices(mesh, t), *D, material.thickness));
+    const std::optional<VoigtMatrix<d>>& D = of.at(mesh.subdomain[t]);
+    if (!D) continue;
+    // A 2D body is a plate of the law's thickness; a 3D one has none.
+    const double thickness = d == 2 ? table.of(mesh.subdomain[t]).thickness : 1.0;
+    pattern.add(K, t, p1_simplex_stiffness<d>(simplex_vertices<d>(mesh, t), *D, thickness));
   }
   return K;
 }
 
-/// The P1 stiffness of Hooke's 3D law on the tetrahedra (no thickness in 3D).
-Eigen::SparseMatrix<double> assemble_stiffness_3d(const Mesh& mesh, const MaterialTable& table,
-                                                  const SparsityPattern& pattern) {
-  Eigen::SparseMatrix<double> K = pattern.zero_matrix();
-  for (int t = 0; t < mesh.num_cells(); ++t)
-    pattern.add(K, t,
-                p1_simplex_stiffness<3>(simplex_vertices<3>(mesh, t),
-                                        table.of(mesh.subdomain[t]).hooke.D3(), 1.0));
-  return K;
+Eigen::SparseMatrix<double> assemble_operator(const Mesh& mesh, const MaterialTable& table,
+                                              const SparsityPattern& pattern,
+                                              const OperatorOf& tensor) {
+  return with_dimension(mesh.dim, [&]<int d>(std::integral_constant<int, d>) {
+    return assemble_operator<d>(mesh, table, pattern, tensor);
+  });
 }
 
 } // namespace
 
 Eigen::SparseMatrix<double> assemble_stiffness(const Mesh& mesh, const MaterialTable& table,
                                                const SparsityPattern& pattern) {
-  if (mesh.dim == 3) return assemble_stiffness_3d(mesh, table, pattern);
-  return assemble_operator(mesh, table, pattern,
-                           [](const SubdomainMaterial& m) { return m.hooke.D(); });
+  return assemble_operator(mesh, table, pattern, [](const SubdomainMaterial& m, int d) {
+    return std::optional<Eigen::MatrixXd>(voigt_matrix(m.hooke, d));
+  });
 }
 
 Eigen::SparseMatrix<double> assemble_viscosity(const Mesh& mesh, const MaterialTable& table,
                                                const SparsityPattern& pattern) {
   return assemble_operator(mesh, table, pattern,
-                           [](const SubdomainMaterial& m) -> std::optional<Eigen::Matrix3d> {
+                           [](const SubdomainMaterial& m, int d) -> std::optional<Eigen::MatrixXd> {
                              if (!m.kelvin_voigt) return std::nullopt;
-                             return m.kelvin_voigt->viscosity.D();
+                             return voigt_matrix(m.kelvin_voigt->viscosity, d);
                            });
 }
 
@@ -70,16 +87,17 @@ std::vector<MemoryStiffness> assemble_memory(const Mesh& mesh, const MaterialTab
     if (std::find(rates.begin(), rates.end(), term.beta) == rates.end()) rates.push_back(term.beta);
   std::vector<MemoryStiffness> memory;
   for (double beta : rates) {
-    const auto tensor = [beta](const SubdomainMaterial& m) -> std::optional<Eigen::Matrix3d> {
+    const auto tensor = [beta](const SubdomainMaterial& m,
+                               int d) -> std::optional<Eigen::MatrixXd> {
       if (!m.kelvin_voigt) return std::nullopt;
-      Eigen::Matrix3d D = Eigen::Matrix3d::Zero();
+      Eigen::MatrixXd D = Eigen::MatrixXd::Zero(voigt_size(d), voigt_size(d));
       bool any = false;
       for (const MemoryTerm& term : m.kelvin_voigt->memory)
         if (term.beta == beta) {
-          D += term.modulus.D();
+          D += voigt_matrix(term.modulus, d);
           any = true;
         }
-      return any ? std::optional<Eigen::Matrix3d>(D) : std::nullopt;
+      return any ? std::optional<Eigen::MatrixXd>(D) : std::nullopt;
     };
     memory.push_back({beta, assemble_operator(mesh, table, pattern, tensor)});
   }
@@ -182,7 +200,7 @@ LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
     system.V = assemble_viscosity(mesh, table, pattern);
     system.memory = assemble_memory(mesh, table, pattern);
   }
-  system.f = mesh.dim == 3 ? assemble_loads_3d(mesh, datafile)
+  system.f = mesh.dim == 3 ? assemble_loads_3d(mesh, datafile, &system.time_loads)
                            : assemble_loads(mesh, table, datafile, &system.time_loads);
   dirichlet_from_cards(mesh, datafile, system.dirichlet_dofs, system.dirichlet_values);
   system.assemble_seconds = clock.seconds();

@@ -27,16 +27,18 @@ Eigen::Matrix3d Hooke::D() const {
   return d;
 }
 
-Eigen::Matrix<double, 6, 6> Hooke::D3() const {
-  const double l = E * nu / ((1 + nu) * (1 - 2 * nu));
-  const double m = mu();
+Eigen::Matrix<double, 6, 6> isotropic_d3(double lambda, double mu) {
   Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
-  d.topLeftCorner<3, 3>().setConstant(l);
+  d.topLeftCorner<3, 3>().setConstant(lambda);
   for (int k = 0; k < 3; ++k) {
-    d(k, k) += 2 * m;
-    d(3 + k, 3 + k) = m;
+    d(k, k) += 2 * mu;
+    d(3 + k, 3 + k) = mu;
   }
   return d;
+}
+
+Eigen::Matrix<double, 6, 6> Hooke::D3() const {
+  return isotropic_d3(E * nu / ((1 + nu) * (1 - 2 * nu)), mu());
 }
 
 Eigen::Vector3d Hooke::stress(const Eigen::Vector3d& strain) const {

@@ -14,6 +14,10 @@ Eigen::Matrix3d Viscosity::D() const {
   return d;
 }
 
+Eigen::Matrix<double, 6, 6> Viscosity::D3() const {
+  return isotropic_d3(eta1, 0.5 * eta2); // Lame constants (eta1, eta2 / 2)
+}
+
 Viscosity viscosity_from_card(const Card& card) {
   const auto coefficient = [&](const char* field) {
     const double eta = card.real(field, 0.0);

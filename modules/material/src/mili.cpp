@@ -157,19 +157,14 @@ SubdomainMaterial material_from_card(const Card& card) {
 
 namespace {
 
-// A 3D body has no plane mode and no thickness; its laws are Hooke's and the hyperelastic ones
-// (written on the 3D C, material/hyperelastic.hpp), Kelvin-Voigt's not yet (issue 28): a 2D
-// field or law in a 3D deck is refused on its card, not silently dropped.
+// A 3D body has no plane mode and no thickness (its laws, Hooke's, Kelvin-Voigt's and the
+// hyperelastic ones, are written on the 3D tensors): a 2D field in a 3D deck is refused on its
+// card, not silently dropped.
 void verify_card_in_3d(const Card& card) {
   for (const char* field : {"plane", "thickness"})
     if (card.has(field))
       card.fail(field, std::string("the mesh is 3D: '") + field +
                            "' belongs to a 2D body (plane strain or stress, a plate's thickness)");
-  const std::string law = card.choice("law", {"hooke", "svk", "ciarlet-geymonat", "kelvin-voigt"});
-  if (law == "kelvin-voigt")
-    card.fail("law", "law=" + law +
-                         " in 3D is not implemented yet (issue 28): law=hooke, svk and "
-                         "ciarlet-geymonat are");
 }
 
 } // namespace

@@ -37,9 +37,20 @@ Eigen::VectorXd assemble_loads(const Mesh& mesh, const MaterialTable& table,
                                const Datafile& datafile, TimeLoads* time_loads = nullptr);
 
 /// f of a 3D body (size 3 * nodes) from the TRACTION (f=fx,fy,fz), PRESSURE and BODYFORCE
-/// (f=fx,fy,fz) cards, on referenced faces and sub-domains (assembly/src/loads_3d.cpp).
-/// MOVINGLOAD and ramp= are refused on their card: 2D only for now (issue 26).
-Eigen::VectorXd assemble_loads_3d(const Mesh& mesh, const Datafile& datafile);
+/// (f=fx,fy,fz) cards, on referenced faces and sub-domains (assembly/src/loads_3d.cpp); the
+/// ramped ones' rate in `*time_loads` when it is given, as assemble_loads. MOVINGLOAD is refused
+/// on its card: 2D only for now (issue 26).
+Eigen::VectorXd assemble_loads_3d(const Mesh& mesh, const Datafile& datafile,
+                                  TimeLoads* time_loads = nullptr);
+
+/// Where a load card's nodal forces go, in either dimension: `f` with scale 1 (a constant load),
+/// or the rate of the ramped loads with scale 1 / ramp (ramp= given; the load reaches its value
+/// at t = ramp). sig::InputError on the card's line unless ramp > 0.
+struct LoadTarget {
+  Eigen::VectorXd& into;
+  double scale;
+};
+LoadTarget load_target(const Card& card, Eigen::VectorXd& f, Eigen::VectorXd& rate);
 
 /// The first load card of `datafile` with a ramp= field, or null: the stages without time refuse
 /// it on its own line.

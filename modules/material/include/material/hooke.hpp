@@ -34,6 +34,10 @@ struct Hooke {
   double von_mises(const Eigen::Vector3d& strain) const;
 };
 
+/// The 6x6 matrix of the isotropic 3D tensor of Lame constants (lambda, mu) on Voigt vectors with
+/// the engineering shear: lambda tr(eps) I + 2 mu eps. Hooke::D3 and the viscosity's D3.
+Eigen::Matrix<double, 6, 6> isotropic_d3(double lambda, double mu);
+
 /// von Mises equivalent stress sqrt(3 J2) of the stress state (s11, s22, s12) with out-of-plane
 /// s33 and no out-of-plane shear: what every 2D law reports.
 double von_mises_stress(double s11, double s22, double s12, double s33);

@@ -14,8 +14,9 @@
 //   MATERIAL [region=] law=kelvin-voigt E= nu= eta1= eta2= [plane=] [thickness=] [rho=]
 //   MEMORY   [region=] E= nu= beta=        repeatable: one exponential term each (none: K = 0)
 // A is the 2D operator as the thesis prints it whatever plane= says (plane= reduces B and the
-// memory tensors); eta1, eta2 >= 0 (eta1 = eta2 = 0: no viscosity, each step of the quasistatic
-// march is then a static solve); beta > 0.
+// memory tensors); on a 3D body (no plane=) A, B and the memory tensors are the 3D tensors, whose
+// plane-strain restrictions the 2D ones are; eta1, eta2 >= 0 (eta1 = eta2 = 0: no viscosity, each
+// step of the quasistatic march is then a static solve); beta > 0.
 #include "material/hooke.hpp"
 
 #include <Eigen/Core>
@@ -34,6 +35,8 @@ struct Viscosity {
 
   /// The 3x3 matrix of A on Voigt vectors with the engineering shear (as Hooke::D): sigma = D eps.
   Eigen::Matrix3d D() const;
+  /// The 6x6 matrix of A on a 3D body (as Hooke::D3); D() is its plane-strain restriction.
+  Eigen::Matrix<double, 6, 6> D3() const;
 };
 
 /// One exponential term of the memory kernel: K(t) = exp(-beta t) modulus.
