@@ -66,8 +66,7 @@ Marched march(const Case& c, double k, int steps, const Eigen::VectorXd& v0_full
     double stored = 0;
     if (contact)
       for (int p = 0; p < contact->size(); ++p) {
-        const Eigen::Vector2d up(scheme.displacement()[contact->dofs[p][0]],
-                                 scheme.displacement()[contact->dofs[p][1]]);
+        const Eigen::VectorXd up = scheme.displacement().segment(contact->first_dof[p], 2);
         stored +=
             c.contact->weight[p] *
             compliance_energy(c.contact->law[p], -contact->normal[p].dot(up) - c.contact->gap[p]);

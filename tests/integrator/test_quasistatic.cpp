@@ -329,7 +329,7 @@ struct NodeOutcome {
 NodeOutcome one_node(double fx, double fn, FrictionBound bound, double origin = 0) {
   OneNode scheme(fx, fn, origin);
   VelocityContact contact;
-  contact.dofs = {{0, 1}};
+  contact.first_dof = {0};
   contact.normal = {Eigen::Vector2d(0, 1)};
   ContactLaw law;
   law.normal = NormalLaw::damped_unilateral;

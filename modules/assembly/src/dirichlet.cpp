@@ -17,11 +17,6 @@ Eigen::VectorXd ReducedSystem::expand(const Eigen::VectorXd& u_free) const {
   return full;
 }
 
-std::array<int, 2> ReducedSystem::contact_node_dofs(int node) const {
-  const int first = contact_node_first_dof(node, 2);
-  return {first, first + 1};
-}
-
 int ReducedSystem::contact_node_first_dof(int node, int d) const {
   SIG_VERIFY(node >= 0 && d * node + d - 1 < num_full(),
              "contact node " << node + 1 << " is not a node of the system");

@@ -60,14 +60,17 @@ void DynamicBackwardEuler::accept(int, const Eigen::VectorXd& w) {
   update_products();
 }
 
+double DynamicBackwardEuler::normal_dot_u(const VelocityContact& contact, int p) const {
+  return contact.normal[p].dot(u_.segment(contact.first_dof[p], contact.dim()));
+}
+
 Eigen::VectorXd DynamicBackwardEuler::normal_origin(int, const VelocityContact& contact) const {
   SIG_VERIFY(gap_.size() == contact.size(), "backward Euler: " << gap_.size() << " gaps for "
                                                                << contact.size()
                                                                << " contact nodes");
   Eigen::VectorXd origin(contact.size());
   for (int p = 0; p < contact.size(); ++p) {
-    const Eigen::Vector2d u(u_[contact.dofs[p][0]], u_[contact.dofs[p][1]]);
-    origin[p] = (gap_[p] + contact.normal[p].dot(u)) / k_; // (d - u_n) / k, u_n = -n . u
+    origin[p] = (gap_[p] + normal_dot_u(contact, p)) / k_; // (d - u_n) / k, u_n = -n . u
   }
   return origin;
 }
@@ -111,9 +114,8 @@ EnergyRecord DynamicBackwardEuler::energy(const VelocityContact* contact) const 
              "backward Euler: " << gap_.size() << " gaps and " << setting_.size() << " laws for "
                                 << contact->size() << " contact nodes");
   for (int p = 0; p < contact->size(); ++p) {
-    const Eigen::Vector2d u(u_[contact->dofs[p][0]], u_[contact->dofs[p][1]]);
     e.interface += setting_.weight[p] *
-                   compliance_energy(setting_.law[p], -contact->normal[p].dot(u) - gap_[p]);
+                   compliance_energy(setting_.law[p], -normal_dot_u(*contact, p) - gap_[p]);
   }
   return e;
 }

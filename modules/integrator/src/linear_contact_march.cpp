@@ -1,8 +1,6 @@
 // The march in velocity on a linear bulk (linear_contact_march.hpp).
 #include "integrator/linear_contact_march.hpp"
 
-#include "solver/nodal_frames.hpp"
-
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/condensed_bulk.hpp"
@@ -43,12 +41,12 @@ LinearContactMarch::LinearContactMarch(VelocityScheme& scheme, const VelocityCon
                        << c.setting.size() << " laws");
   method_ = make_contact_method(parameters);
   options_ = newton_options(parameters);
-  std::vector<int> first_dofs;
-  for (const std::array<int, 2>& dofs : c.dofs)
-    first_dofs.push_back(dofs[0]); // the second follows it (ReducedSystem::contact_node_dofs)
-  condensation_ = std::make_unique<ContactCondensation>(
-      S, std::move(first_dofs), frames_of(c.normal), c.setting.has_friction(), backend,
-      true); // S is positive definite
+  std::vector<ContactFrame> frames;
+  for (const Eigen::VectorXd& n : c.normal)
+    frames.push_back(contact_frame(n)); // nodal_frame(n) in 2D
+  condensation_ = std::make_unique<ContactCondensation>(S, c.first_dof, std::move(frames),
+                                                        c.setting.has_friction(), backend,
+                                                        true); // S is positive definite
   Eigen::VectorXd default_stiffness(c.size());
   for (int p = 0; p < c.size(); ++p)
     default_stiffness[p] = off_wall_stiffness(*method_, c.setting.law[p], c.setting.weight[p]);

@@ -14,8 +14,9 @@
 //
 // The mesh is 2D or 3D: a 3D body marches the linear schemes (midpoint, Newmark; mass
 // consistent, lumped or emm) and the hyperelastic march (Gonzalez's or the midpoint stress) with
-// every strategy, frictionless; friction in time and the marches in velocity refuse a 3D mesh on
-// their card (issue 28).
+// every strategy, frictionless, and the quasistatic Kelvin-Voigt march with its normal laws in
+// velocity; friction in time and the backward-Euler march refuse a 3D mesh on their card (issue
+// 28).
 //
 // Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0),
 // with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
@@ -81,7 +82,8 @@ int main(int argc, char** argv) {
                  "march: the files hold the steps done, a warning is printed and the stage exits "
                  "0. A progress line shows the step, time steps per second and the time left. "
                  "On a 3D mesh: the linear schemes (midpoint, Newmark; consistent, lumped or EMM "
-                 "mass) and the hyperelastic march with every strategy, frictionless (issue 28); "
+                 "mass), the hyperelastic march with every strategy and the quasistatic "
+                 "Kelvin-Voigt march, frictionless (issue 28); "
                  "SOLVER candidate_gap= condenses only the contact nodes near the obstacle.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",

@@ -149,9 +149,10 @@ void refuse_in_3d(const Mesh& mesh, const Card& card, const std::string& field,
 
 VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced) {
   VelocityContact c;
-  for (int p = 0; p < elements.size(); ++p)
-    c.dofs.push_back(reduced.contact_node_dofs(elements.node[p]));
-  c.normal.assign(elements.normal.begin(), elements.normal.end()); // 2D: sig-march requires it
+  for (int p = 0; p < elements.size(); ++p) {
+    c.first_dof.push_back(reduced.contact_node_first_dof(elements.node[p], elements.dim));
+    c.normal.emplace_back(elements.normal[p]);
+  }
   c.setting = {elements.law, elements.weight};
   return c;
 }

@@ -8,7 +8,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-#include <array>
 #include <vector>
 
 namespace sig {
@@ -30,12 +29,10 @@ struct ReducedSystem {
   Eigen::VectorXd expand(const Eigen::VectorXd& u_free) const;
   /// The free part of a full vector.
   Eigen::VectorXd restrict(const Eigen::VectorXd& full) const;
-  /// The reduced indices of the two dofs of a contact node (0-based mesh node); sig::Error
-  /// naming the node and the component if one is imposed: Gamma3 and Gamma1 share no node.
-  std::array<int, 2> contact_node_dofs(int node) const;
-  /// The reduced index of the first of the d dofs of a contact node of a d-dimensional body
-  /// (dofs d node + component), its others following it (the free dofs keep their order); the
-  /// same sig::Error as contact_node_dofs if one is imposed.
+  /// The reduced index of the first of the d dofs of a contact node (0-based mesh node) of a
+  /// d-dimensional body (dofs d node + component), its others following it (the free dofs keep
+  /// their order); sig::Error naming the node and the component if one is imposed: Gamma3 and
+  /// Gamma1 share no node.
   int contact_node_first_dof(int node, int d) const;
   /// A_ff of a full matrix (e.g. the mass matrix for dynamics), same storage as K.
   Eigen::SparseMatrix<double> restrict_matrix(const Eigen::SparseMatrix<double>& A) const;

@@ -80,6 +80,8 @@ public:
 
 private:
   void update_products();
+  /// n . u at contact node p (u_n = -n . u), in the body's dimension.
+  double normal_dot_u(const VelocityContact& contact, int p) const;
 
   LoadHistory load_;
   Eigen::SparseMatrix<double> M_;

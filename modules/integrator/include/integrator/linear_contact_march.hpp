@@ -40,7 +40,6 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -52,12 +51,14 @@ class CondensedBulk;
 class ContactCondensation;
 class LinearSolver;
 
-/// The contact nodes as the march sees them: their free dofs, normals and laws (no mesh).
+/// The contact nodes as the march sees them: their free dofs, normals and laws (no mesh), in the
+/// body's dimension d = 2 or 3 (the normals' size).
 struct VelocityContact {
-  std::vector<std::array<int, 2>> dofs; ///< the two consecutive free dofs (u1, u2) per node
-  std::vector<Eigen::Vector2d> normal;  ///< obstacle normal per node
-  ContactSetting setting;               ///< laws and nodal weights
-  int size() const { return static_cast<int>(dofs.size()); }
+  std::vector<int> first_dof;          ///< per node: the first of its d consecutive free dofs
+  std::vector<Eigen::VectorXd> normal; ///< obstacle normal per node, d components
+  ContactSetting setting;              ///< laws and nodal weights
+  int size() const { return static_cast<int>(first_dof.size()); }
+  int dim() const { return normal.empty() ? 2 : static_cast<int>(normal.front().size()); }
 };
 
 /// A one-step scheme in velocity on a linear bulk (header: the extension point).
