@@ -110,12 +110,14 @@ with open(out / "runs.tsv") as f:
         t = {p: float(v) for p, v in s["times"].items() if p != "assemble"}
         runs.setdefault(int(row["ranks"]), []).append({
             "wall": float(row["wall_s"]), "phases": sum(t.values()), "times": t,
+            "analysis": s["mumps"]["analysis_seconds"],
             "rss": [int(v) for v in row["peak_rss_kb"].split(",")], "summary": s})
 ranks = sorted(runs)
 first = runs[ranks[0]][0]["summary"]
 phases = list(runs[ranks[0]][0]["times"])
 med = {p: {"wall": statistics.median(r["wall"] for r in rs),
            "phases": statistics.median(r["phases"] for r in rs),
+           "analysis": statistics.median(r["analysis"] for r in rs),
            **{ph: statistics.median(r["times"][ph] for r in rs) for ph in phases},
            "rss": [statistics.median(r["rss"][i] for r in rs) for i in range(p)]}
        for p, rs in runs.items()}
@@ -140,17 +142,18 @@ lines = [f"# The distributed solve: Hertz at N = {n}, MESH grading = {info['grad
          "entries, memory) do not depend on the load.", "",
          "## Times (medians, seconds)", "",
          "Phases: summary.json `times` without sig-assemble's `assemble`; factorize = MUMPS's "
-         "analysis + partial factorization, the Schur complement included; solve = the contact "
+         "analysis + partial factorization, the Schur complement included (analysis: of it, "
+         "MUMPS's analysis, on the host); solve = the contact "
          "Newton on the dense complement (every rank) and the expansion. Wall: the mpirun job "
          "(MPI's start, reading case.tae, writing case.b included). Efficiency: T_1 / (P T_P).", "",
-         "| ranks | " + " | ".join(phases) + " | phases | wall | efficiency (phases) | "
+         "| ranks | " + " | ".join(phases) + " | analysis | phases | wall | efficiency (phases) | "
          "efficiency (factorize) | peak RSS per rank (MB) |",
-         "|" + "---|" * (len(phases) + 6)]
+         "|" + "---|" * (len(phases) + 7)]
 for p in ranks:
     m = med[p]
     lines.append(f"| {p} | " + " | ".join(f"{m[ph]:.2f}" for ph in phases) +
-                 f" | {m['phases']:.2f} | {m['wall']:.2f} | {eff(p, 'phases'):.2f} | "
-                 f"{eff(p, 'factorize'):.2f} | " +
+                 f" | {m['analysis']:.2f} | {m['phases']:.2f} | {m['wall']:.2f} | "
+                 f"{eff(p, 'phases'):.2f} | {eff(p, 'factorize'):.2f} | " +
                  ", ".join(f"{v / 1024:.0f}" for v in m["rss"]) + " |")
 
 lines += ["", "## MUMPS's statistics (first run of each rank count)", "",

@@ -1,6 +1,7 @@
 #include "solver/mumps_solver.hpp"
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "solver/mpi_session.hpp"
 
 #include <dmumps_c.h>
@@ -257,7 +258,9 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
   const bool amd =
       A.rows() <= amd_max_unknowns && entries <= amd_max_entries_per_row * double(A.rows());
   s.icntl(7) = amd ? ordering_amd : ordering_automatic;
+  const Stopwatch clock;
   s.call(job_analyze);
+  s.statistics.analysis_seconds = clock.seconds();
   s.verify("analysis");
   s.pattern = pattern_fingerprint(A);
   s.analyzed = true;

@@ -98,7 +98,8 @@ void put_mumps_statistics(Ds& ds, const MumpsStatistics& m) {
                                                    {"delayed_pivots", m.delayed_pivots},
                                                    {"memory_max_mb", m.memory_max_mb},
                                                    {"memory_total_mb", m.memory_total_mb},
-                                                   {"schur_size", m.schur_size}};
+                                                   {"schur_size", m.schur_size},
+                                                   {"analysis_seconds", m.analysis_seconds}};
   for (const auto& [what, value] : totals)
     ds.put_scalar(std::string("mumps_") + what, value);
   const std::pair<const char*, const std::vector<double>*> per_rank[] = {

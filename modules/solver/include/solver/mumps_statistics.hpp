@@ -15,6 +15,9 @@ struct MumpsStatistics {
   double memory_max_mb = 0;   ///< INFOG(21): memory the factorization used on its largest rank
   double memory_total_mb = 0; ///< INFOG(22): ... summed over the ranks
   double schur_size = 0;      ///< order of the Schur complement (ICNTL(19)): the contact unknowns
+  /// Wall seconds of the last analysis (ordering and symbolic factorization, on the host: the
+  /// graph gathered there), a part of every factorization time the stages report.
+  double analysis_seconds = 0;
   /// Per rank, rank 0 (the host, which holds the Schur complement) first: RINFO(3) flops,
   /// INFO(27) factor entries, INFO(22) MB used, INFO(23) pivots eliminated.
   std::vector<double> rank_flops, rank_entries, rank_memory_mb, rank_pivots;
