@@ -15,7 +15,7 @@
 # --np P runs sig-solve as P ranks under mpirun (a small-strain contact deck with linear=mumps:
 # each rank holds its part of K, README "Distributed solve"); the other stages run as one
 # process. As root it sets OpenMPI's allow-run-as-root variables; --oversubscribe lets P exceed
-# the cores (one BLAS thread per rank, lib/environment.sh).
+# the cores (one BLAS thread per rank; mpirun_ranks, lib/environment.sh).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -50,10 +50,7 @@ done
 # stage NAME: one stage of the chain, sig-solve under mpirun with --np.
 stage() {
   if [ "$1" = solve ] && [ "$np" -gt 0 ]; then
-    if [ "$(id -u)" -eq 0 ]; then
-      export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-    fi
-    mpirun --oversubscribe -np "$np" "$bin/sig-solve" "$deck" "${options[@]}"
+    mpirun_ranks "$np" "$bin/sig-solve" "$deck" "${options[@]}"
   else
     "$bin/sig-$1" "$deck" "${options[@]}"
   fi

@@ -7,3 +7,15 @@ export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1}
 if [ -f "$(dirname "${BASH_SOURCE[0]}")/installed.sh" ]; then
   source "$(dirname "${BASH_SOURCE[0]}")/installed.sh"
 fi
+
+# mpirun_ranks P COMMAND...: COMMAND as the P ranks of an mpirun job (README "Distributed
+# solve"). As root it sets OpenMPI's allow-run-as-root variables; --oversubscribe lets P exceed
+# the cores (one BLAS thread per rank, above).
+mpirun_ranks() {
+  local np=$1
+  shift
+  if [ "$(id -u)" -eq 0 ]; then
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  fi
+  mpirun --oversubscribe -np "$np" "$@"
+}

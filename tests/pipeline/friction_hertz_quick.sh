@@ -62,7 +62,7 @@ PY
 # Same answers under mpirun (issue 27): the pdas run's sig-solve again as 1 and 2 ranks
 # (oversubscribed; each rank holds the rows of its METIS part of K, MUMPS factorizes them
 # together); displacements, multipliers and statuses agree with the one-process run to 1e-8
-# relative, and case.b records the ranks and the ordering.
+# relative, and case.b records the ranks, the ordering and MUMPS's statistics per rank.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 for np in 1 2; do
   dir=$work/np$np
@@ -96,6 +96,13 @@ for np in (1, 2):
     for key in ("normal_status", "friction_status", "iterations"):
         if b[key] != one[key]:
             fail.append(f"np {np}: {key} differs from one process")
+    # MUMPS's statistics, one value per rank gathered from the ranks: the sums are its totals.
+    for total, per_rank in (("mumps_flops", "mumps_rank_flops"),
+                            ("mumps_factor_entries", "mumps_rank_entries")):
+        shares = b[per_rank]
+        if (len(shares) != np or min(shares) <= 0 or
+                abs(sum(shares) - b[total][0]) > 1e-9 * b[total][0]):
+            fail.append(f"np {np}: {per_rank} {shares} do not share {total} {b[total][0]}")
 if fail:
     print("\n".join("FAIL: " + f for f in fail))
     sys.exit(1)

@@ -5,12 +5,31 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace sig {
 namespace {
 
 Json history(const Ds& solution, const std::string& name) {
   return Json::array_of(solution.has(name) ? numbers(solution, name) : std::vector<double>{});
+}
+
+/// MUMPS's statistics of the factorization (case.b's mumps_ arrays, stages/solution_ds.cpp):
+/// the totals as numbers, the per-rank mumps_rank_ arrays as lists, rank 0 first; none without.
+std::optional<Json> mumps_statistics(const Ds& solution) {
+  const std::string prefix = "mumps_", per_rank = "rank_";
+  Json statistics = Json::object();
+  bool any = false;
+  for (const auto& array : solution.arrays()) {
+    if (!array.name.starts_with(prefix) || array.type != DsType::Float64) continue;
+    const std::string what = array.name.substr(prefix.size());
+    if (what.starts_with(per_rank))
+      statistics.set(what, Json::array_of(solution.reals(array.name)));
+    else
+      statistics.set(what, solution.scalar(array.name));
+    any = true;
+  }
+  return any ? std::optional<Json>(std::move(statistics)) : std::nullopt;
 }
 
 } // namespace
@@ -84,6 +103,7 @@ Json build_summary(const std::string& title, const Mesh& mesh, const Ds& solutio
   s.set("backend", solution.has("linear") ? solution.text("linear") : std::string());
   s.set("ordering", solution.has("ordering") ? solution.text("ordering") : std::string());
   s.set("ranks", solution.has("ranks") ? static_cast<long>(solution.integer("ranks")) : 1L);
+  if (std::optional<Json> mumps = mumps_statistics(solution)) s.set("mumps", std::move(*mumps));
   s.set("residual_history", history(solution, "history_residual"));
   s.set("increment_history", history(solution, "history_increment"));
   s.set("step_norm_history", history(solution, "history_step_norm"));

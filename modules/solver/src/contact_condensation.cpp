@@ -87,6 +87,10 @@ std::string ContactCondensation::ordering() const {
   return schur_->ordering();
 }
 
+const MumpsStatistics* ContactCondensation::mumps_statistics() const {
+  return schur_->mumps_statistics();
+}
+
 CondensedProblem ContactCondensation::problem(const Eigen::VectorXd& f) {
   CondensedProblem problem;
   problem.S = schur_->matrix();

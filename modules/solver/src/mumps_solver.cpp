@@ -1,6 +1,7 @@
 #include "solver/mumps_solver.hpp"
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "solver/mpi_session.hpp"
 
 #include <dmumps_c.h>
@@ -71,6 +72,11 @@ std::string error_text(int infog1) {
   }
 }
 
+// MUMPS's counts of entries overflow a 32-bit INFO as a negative number of millions.
+double entry_count(int value) {
+  return value < 0 ? -1e6 * value : value;
+}
+
 } // namespace
 
 struct MumpsSolver::State {
@@ -92,9 +98,42 @@ struct MumpsSolver::State {
   /// Between reduce() and expand(): MUMPS's right side after the forward elimination, which the
   /// backward substitution continues from, and the reduced right side.
   std::vector<double> reduced_rhs, redrhs;
+  MumpsStatistics statistics; ///< of the last factorization
 
   int& icntl(int i) { return id.icntl[i - 1]; }
   int infog(int i) const { return id.infog[i - 1]; }
+  int info(int i) const { return id.info[i - 1]; }
+
+  /// The factorization's statistics: INFOG and RINFOG are the same on every rank; each rank's
+  /// INFO and RINFO are summed into its own slot of the per-rank arrays (a gather by sum).
+  void record_statistics() {
+    MumpsStatistics& st = statistics;
+    st.flops = id.rinfog[2];
+    st.flops_estimate = id.rinfog[0];
+    st.factor_entries = entry_count(infog(29));
+    st.largest_front = infog(11);
+    st.delayed_pivots = infog(13);
+    st.memory_max_mb = infog(21);
+    st.memory_total_mb = infog(22);
+    st.schur_size = double(schur_dofs.size());
+    const int ranks = rank_rows ? mpi::size() : 1;
+    const auto own = static_cast<std::size_t>(rank_rows ? mpi::rank() : 0);
+    constexpr std::size_t fields = 4;
+    std::vector<double> gathered(fields * static_cast<std::size_t>(ranks), 0.0);
+    double* mine = gathered.data() + fields * own;
+    mine[0] = id.rinfo[2];
+    mine[1] = entry_count(info(27));
+    mine[2] = info(22);
+    mine[3] = info(23);
+    if (rank_rows) mpi::sum(gathered.data(), static_cast<int>(gathered.size()));
+    std::vector<double>* per_rank[fields] = {&st.rank_flops, &st.rank_entries, &st.rank_memory_mb,
+                                             &st.rank_pivots};
+    for (std::size_t f = 0; f < fields; ++f) {
+      per_rank[f]->resize(static_cast<std::size_t>(ranks));
+      for (std::size_t r = 0; r < per_rank[f]->size(); ++r)
+        (*per_rank[f])[r] = gathered[fields * r + f];
+    }
+  }
 
   void call(int job) {
     id.job = job;
@@ -219,7 +258,9 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
   const bool amd =
       A.rows() <= amd_max_unknowns && entries <= amd_max_entries_per_row * double(A.rows());
   s.icntl(7) = amd ? ordering_amd : ordering_automatic;
+  const Stopwatch clock;
   s.call(job_analyze);
+  s.statistics.analysis_seconds = clock.seconds();
   s.verify("analysis");
   s.pattern = pattern_fingerprint(A);
   s.analyzed = true;
@@ -262,6 +303,7 @@ void MumpsSolver::factorize(const Eigen::SparseMatrix<double>& A) {
     throw FactorizationFailure("MUMPS: matrix declared positive definite is not: INFOG(12) = " +
                                std::to_string(s.infog(12)) + " negative pivots");
   if (m > 0) s.share(s.schur.data(), s.schur.size());
+  s.record_statistics();
   s.factorized = true;
 }
 
@@ -338,6 +380,11 @@ std::string MumpsSolver::ordering() const {
   default:
     return "other";
   }
+}
+
+const MumpsStatistics& MumpsSolver::statistics() const {
+  SIG_VERIFY(state_->factorized, "MUMPS: no statistics before a successful factorize");
+  return state_->statistics;
 }
 
 Eigen::MatrixXd MumpsSolver::schur_complement() const {

@@ -181,6 +181,10 @@ std::string SchurComplement::ordering() const {
   return mumps_ != nullptr ? mumps_->ordering() : std::string();
 }
 
+const MumpsStatistics* SchurComplement::mumps_statistics() const {
+  return mumps_ != nullptr ? &mumps_->statistics() : nullptr;
+}
+
 Eigen::VectorXd SchurComplement::interior_part(const Eigen::VectorXd& v) const {
   Eigen::VectorXd p(static_cast<Eigen::Index>(interior_.size()));
   for (size_t k = 0; k < interior_.size(); ++k)

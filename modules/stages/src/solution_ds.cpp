@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace sig {
 
@@ -85,6 +86,33 @@ void put_convexification(Ds& ds, const ConvexificationResult& loop) {
   ds.put("friction_coefficient", std::span<const double>(loop.mu.data(), loop.mu.size()));
 }
 
+namespace {
+
+/// MUMPS's statistics of the factorization: the totals as scalars mumps_<what>, the per-rank
+/// values (rank 0 first) as arrays mumps_rank_<what>; summary.json takes every mumps_ array.
+void put_mumps_statistics(Ds& ds, const MumpsStatistics& m) {
+  const std::pair<const char*, double> totals[] = {{"flops", m.flops},
+                                                   {"flops_estimate", m.flops_estimate},
+                                                   {"factor_entries", m.factor_entries},
+                                                   {"largest_front", m.largest_front},
+                                                   {"delayed_pivots", m.delayed_pivots},
+                                                   {"memory_max_mb", m.memory_max_mb},
+                                                   {"memory_total_mb", m.memory_total_mb},
+                                                   {"schur_size", m.schur_size},
+                                                   {"analysis_seconds", m.analysis_seconds}};
+  for (const auto& [what, value] : totals)
+    ds.put_scalar(std::string("mumps_") + what, value);
+  const std::pair<const char*, const std::vector<double>*> per_rank[] = {
+      {"flops", &m.rank_flops},
+      {"entries", &m.rank_entries},
+      {"memory_mb", &m.rank_memory_mb},
+      {"pivots", &m.rank_pivots}};
+  for (const auto& [what, values] : per_rank)
+    ds.put(std::string("mumps_rank_") + what, std::span<const double>(*values));
+}
+
+} // namespace
+
 void write_solution(const std::filesystem::path& path, const StaticSolution& solution,
                     const std::string& method, const std::string& backend,
                     const std::string& title) {
@@ -99,6 +127,7 @@ void write_solution(const std::filesystem::path& path, const StaticSolution& sol
   ds.put_text("linear", backend);
   if (!solution.ordering.empty()) ds.put_text("ordering", solution.ordering);
   ds.put_int("ranks", solution.ranks);
+  if (solution.mumps) put_mumps_statistics(ds, *solution.mumps);
   ds.put_int("converged", solution.converged ? 1 : 0);
   ds.put_int("iterations", static_cast<std::int64_t>(solution.history.size()));
   ds.put_int("dofs", solution.unknowns);

@@ -285,6 +285,7 @@ StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
   ContactCondensation condensation(std::move(reduced.K), first_dofs, contact.frames(), friction,
                                    backend, false, system.rank_rows);
   s.ordering = condensation.ordering();
+  if (const MumpsStatistics* statistics = condensation.mumps_statistics()) s.mumps = *statistics;
   s.seconds["frames"] = condensation.seconds_frames();
   s.seconds["factorize"] = condensation.seconds_factorize();
   s.seconds["schur"] = condensation.seconds_schur();

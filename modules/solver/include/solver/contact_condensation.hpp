@@ -26,6 +26,7 @@ namespace sig {
 
 class FrameRotation;
 class SchurComplement;
+struct MumpsStatistics;
 
 class ContactCondensation {
 public:
@@ -71,6 +72,8 @@ public:
   double seconds_schur() const;
   /// The ordering of the sparse factorization (SchurComplement::ordering).
   std::string ordering() const;
+  /// MUMPS's statistics of that factorization (SchurComplement::mumps_statistics).
+  const MumpsStatistics* mumps_statistics() const;
 
 private:
   Eigen::SparseMatrix<double> K_; ///< in frames

@@ -10,6 +10,7 @@
 // full solve is split around the Schur problem, reduce() then expand() (ICNTL(26) = 1, 2), for
 // the cost of one solve.
 #include "solver/linear_solver.hpp"
+#include "solver/mumps_statistics.hpp"
 
 #include <memory>
 #include <vector>
@@ -40,6 +41,8 @@ public:
   std::string name() const override { return "mumps"; }
   /// Ordering used by the last analysis (INFOG(7)): "metis", "scotch", "pord", "amd", ...
   std::string ordering() const;
+  /// MUMPS's statistics of the last factorization, every rank's gathered on each.
+  const MumpsStatistics& statistics() const;
   /// The Schur complement of the last factorization (full symmetric matrix for SYM > 0),
   /// rows and columns in the order of schur_dofs.
   Eigen::MatrixXd schur_complement() const;

@@ -20,6 +20,7 @@ namespace sig {
 
 class CholmodSplitSolver;
 class MumpsSolver;
+struct MumpsStatistics;
 
 namespace detail {
 /// Solves K_ii y = r (columns of r in interior order); one kind per backend path (schur.cpp).
@@ -62,6 +63,8 @@ public:
   const std::string& backend() const { return backend_; }
   /// The fill-reducing ordering of MUMPS's analysis ("amd", "scotch", ...); empty for the others.
   std::string ordering() const;
+  /// MUMPS's statistics of its partial factorization; null for the other backends.
+  const MumpsStatistics* mumps_statistics() const;
   /// Wall-clock seconds of the analysis and factorization (for MUMPS: including S).
   double seconds_factorize() const { return seconds_factorize_; }
   /// Wall-clock seconds spent forming S after the factorization (block solves, symmetrization).

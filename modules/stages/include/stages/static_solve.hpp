@@ -13,6 +13,7 @@
 #include "solver/contact_method.hpp"
 #include "solver/contact_newton.hpp"
 #include "solver/convexification.hpp"
+#include "solver/mumps_statistics.hpp"
 
 #include <map>
 #include <optional>
@@ -40,6 +41,7 @@ struct StaticSolution {
   std::map<std::string, double> seconds; ///< factorize, frames, schur, solve
   std::string ordering; ///< of MUMPS's analysis (SchurComplement::ordering); empty for the others
   int ranks = 1;        ///< the processes of the solve (mpirun -np)
+  std::optional<MumpsStatistics> mumps; ///< MUMPS's factorization of the condensation
 };
 
 /// The convexification loop of a nonmonotone law: its options, and the mesh whose ||eps(u)||_L2
