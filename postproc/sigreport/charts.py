@@ -66,8 +66,11 @@ def _annotate_once(ax, items, fontsize, gap=3, same_gap=20):
     `same_gap` pixels of a label with the same text is not labelled again (label once, the legend
     tells the series apart); a label that would come within `gap` pixels of another or of the
     legend moves below, to the left or further away from its point, and is left out when no
-    place is free (the report's table has every number)."""
+    place is free (the report's table has every number). A label stays inside the axes: outside
+    it could meet a tick label, the axis labels or the title, which the points' positions (the
+    measured times) would decide from run to run."""
     renderer = ax.figure.canvas.get_renderer()
+    frame = ax.get_window_extent(renderer)
     legend = ax.get_legend()
     placed = [(legend.get_window_extent(renderer), None)] if legend else []  # (bbox, text)
     offsets = [(4, 4), (4, -10), (-4, 4), (-4, -10), (4, 16), (4, -22), (-4, 16), (-4, -22)]
@@ -79,7 +82,9 @@ def _annotate_once(ax, items, fontsize, gap=3, same_gap=20):
             if any(t == text and box.padded(same_gap).overlaps(b) for b, t in placed):
                 ann.remove()
                 break
-            if not any(box.padded(gap).overlaps(b) for b, _ in placed):
+            inside = (frame.x0 <= box.x0 and box.x1 <= frame.x1 and frame.y0 <= box.y0
+                      and box.y1 <= frame.y1)
+            if inside and not any(box.padded(gap).overlaps(b) for b, _ in placed):
                 placed.append((box, text))
                 break
             ann.remove()
@@ -118,7 +123,8 @@ def speed_accuracy_chart(path, series, xlabel, ylabel, title="", log=True, figsi
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     if title:
-        ax.set_title(title + (" (hollow on the grey line: Nv)" if nv_points else ""))
+        # pad: a y tick label at the axes' top edge reaches half its height above it
+        ax.set_title(title + (" (hollow on the grey line: Nv)" if nv_points else ""), pad=12)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=legend_fontsize)
     ax.margins(0.08)  # room for the labels of the outermost points
