@@ -32,7 +32,8 @@ ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   LSAN_OPTIONS=suppressions=$SIG_ROOT/tests/lsan-openmpi.supp \
   ctest --test-dir "$asan" -j "$jobs" -L unit --output-on-failure
 
-# Fuzzing (tests/fuzz/README.md), in the same build: every library instrumented.
+# Fuzzing (tests/fuzz/README.md), in the same build: ASan + UBSan everywhere, libFuzzer's
+# coverage on the readers' libraries.
 if [ $fuzz -eq 0 ]; then
   echo "test.sh: clang or libFuzzer (libclang-rt-14-dev) absent: fuzzing skipped"
 elif ! grep -q '^SIG_FUZZ:BOOL=ON' "$asan/CMakeCache.txt"; then
