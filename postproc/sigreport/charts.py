@@ -123,8 +123,7 @@ def speed_accuracy_chart(path, series, xlabel, ylabel, title="", log=True, figsi
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     if title:
-        # pad: a y tick label at the axes' top edge reaches half its height above it
-        ax.set_title(title + (" (hollow on the grey line: Nv)" if nv_points else ""), pad=12)
+        ax.set_title(title + (" (hollow on the grey line: Nv)" if nv_points else ""))
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=legend_fontsize)
     ax.margins(0.08)  # room for the labels of the outermost points

@@ -18,8 +18,10 @@ annotations, the texts in a map's cells).
 
 Before the checks, what can be untangled is: a legend that covers data (a point or a line of
 its axes, an image) moves to the right of its axes (keep_legends_off_data); crowded x tick
-labels of a log axis are written as plain numbers, then turned by 30 or 90 degrees. The figure
-is then laid out again (tight_layout) unless layout=False.
+labels of a log axis are written as plain numbers, then turned by 30 or 90 degrees; a title
+that meets a tick label of its axes (a y tick at the top edge reaches half its height above
+it, where the data put one) is lifted. The figure is then laid out again (tight_layout) unless
+layout=False.
 """
 import functools
 import re
@@ -169,6 +171,32 @@ def _turn_crowded_x_ticks(fig):
     return turned
 
 
+def _lift_titles(fig):
+    """Lift the title of every axes that meets one of its tick labels, by the labels' overlap
+    and a gap of 2 points; True when any moved. Draws fig."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    lifted = False
+    for ax in fig.axes:
+        title = ax.title
+        if not title.get_visible() or not title.get_text().strip():
+            continue
+        box = title.get_window_extent(renderer)
+        ticks = [t.get_window_extent(renderer) for t in
+                 _tick_labels(ax.xaxis) + _tick_labels(ax.yaxis)]
+        overlap = max((t.y1 - box.y0 for t in ticks if t.overlaps(box)), default=0.0)
+        if overlap <= 0:
+            continue
+        from matplotlib import rcParams
+        pad = rcParams["axes.titlepad"] + (overlap + 2 * fig.dpi / 72) * 72 / fig.dpi
+        ax.set_title(title.get_text(), pad=pad, fontsize=title.get_fontsize(),
+                     fontweight=title.get_fontweight())
+        lifted = True
+    if lifted:
+        fig.canvas.draw()
+    return lifted
+
+
 def _covers_data(ax, box):
     """Whether the display box covers data of ax: an image, a point of a collection, a vertex of
     a line or a point of one of its segments (nine points a segment)."""
@@ -239,6 +267,9 @@ def save_figure(fig, path, dpi=110, layout=True):
             if not _turn_crowded_x_ticks(fig) or not layout:
                 break
             fig.tight_layout()
+        if _lift_titles(fig) and layout:
+            fig.tight_layout()
+            _lift_titles(fig)  # the new layout may put a tick at the top edge again
         problems = collisions(fig)
         if problems:
             raise ChartError(f"{path}: not saved, texts on top of each other: "

@@ -101,6 +101,23 @@ def test_crowded_log_ticks_are_untangled(tmp_path):
     assert labels and all("times" not in t for t in labels)
 
 
+def test_a_title_over_a_tick_label_is_lifted(tmp_path):
+    # A log y axis ending on a decade puts its top label "10^0" half above the axes, into the
+    # title (the frictional Hertz speed chart, when the measured points set such limits).
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    ax.loglog([0.01, 3], [1e-4, 0.5], "o")
+    ax.set_ylim(1e-4, 1.0)
+    ax.set_title("Frictional Hertz: speed against accuracy (hollow on the grey line: Nv)")
+    size = ax.title.get_fontsize()
+    ax.set_xlabel("sig-solve time (s)")
+    ax.set_ylabel("tangential traction error (-)")
+    fig.tight_layout()
+    assert any("title" in c and "y tick" in c for c in collisions(fig))
+    save_figure(fig, tmp_path / "title.png")
+    assert collisions(fig) == []
+    assert ax.get_title().startswith("Frictional Hertz") and ax.title.get_fontsize() == size
+
+
 def test_a_legend_over_the_data_moves_beside_the_axes(tmp_path):
     fig, ax = plt.subplots(figsize=(4, 3))
     for k in range(6):
