@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Pipeline test (issue 27, "Faults"): sig-solve under mpirun fails whole and leaves nothing half
+# done.
+#  - a mesh with fewer cells than ranks (the square of two triangles as 3 ranks) is refused by
+#    every rank with a message that names the largest usable count; non-zero exit, no case.b;
+#  - rank 0 killed (SIGKILL) while it writes case.b (SIG_STOP_WRITING stops it there, as in
+#    killed_stage.sh), the other rank having done its part: mpirun ends non-zero, no case.b, no
+#    rank left running.
+# Run from the repository root with SIG_BIN set (ctest does both).
+set -euo pipefail
+source "$(dirname "$0")/lib/common.sh"
+command -v mpirun > /dev/null || die "no mpirun: drivers/setup.sh installs mpi-default-bin"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+
+# 1. Fewer cells than ranks.
+deck=$work/tiny.dat
+cat > "$deck" <<'EOF'
+TITLE two triangles on a compliant foundation
+MESH generator=square lx=1 nx=1
+MATERIAL law=hooke E=200 nu=0.3 plane=strain
+DIRICHLET ref=1 ux=0 uy=0
+TRACTION ref=2 f=0,-8
+CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=compliance-unilateral cn=10 g=0.05
+SOLVER method=pdas gamma=200 eps=1e-8 maxit=200 linear=mumps
+OUTPUT vtk=no
+EOF
+tiny=$work/tiny
+drivers/chain.sh "$deck" -o "$tiny" > "$work/tiny_chain.log" 2>&1 ||
+  { cat "$work/tiny_chain.log"; die "the two-triangle chain failed in one process"; }
+rm -f "$tiny/case.b"
+status=0
+mpirun --oversubscribe -np 3 "$bin/sig-solve" "$deck" -o "$tiny" > "$work/tiny.log" 2>&1 ||
+  status=$?
+[ $status -ne 0 ] || fail "3 ranks on 2 triangles exited 0"
+grep -q "cannot be shared by 3 ranks: run mpirun with at most 2 ranks" "$work/tiny.log" ||
+  { cat "$work/tiny.log"; fail "no message naming the ranks a 2-triangle mesh allows"; }
+[ ! -e "$tiny/case.b" ] || fail "a refused distributed solve wrote case.b"
+echo "mpi_faults: 3 ranks on 2 triangles refused (exit $status)"
+
+# 2. Rank 0 killed in the write of case.b.
+hertz=$work/hertz.dat
+sed -e 's/N=256/N=32/' datafiles/scene7a/hertz.dat > "$hertz"
+out=$work/hertz
+drivers/chain.sh "$hertz" -o "$out" > "$work/hertz_chain.log" 2>&1 ||
+  { cat "$work/hertz_chain.log"; die "the Hertz chain failed in one process"; }
+rm -f "$out/case.b"
+SIG_STOP_WRITING=case.b mpirun --oversubscribe -np 2 "$bin/sig-solve" "$hertz" -o "$out" \
+  > "$work/killed.log" 2>&1 &
+job=$!
+host=""
+for _ in $(seq 600); do # up to 60 s on a loaded machine
+  for pid in $(pgrep -P "$job" -x sig-solve || true); do
+    [ "$(awk '{print $3}' "/proc/$pid/stat" 2> /dev/null)" = T ] && host=$pid
+  done
+  [ -n "$host" ] || ! kill -0 "$job" 2> /dev/null && break
+  sleep 0.1
+done
+[ -n "$host" ] || { cat "$work/killed.log"; die "rank 0 did not stop in the write of case.b"; }
+ranks=$(pgrep -P "$job" -x sig-solve | tr '\n' ' ')
+kill -9 "$host"
+status=0
+wait "$job" || status=$?
+[ $status -ne 0 ] || fail "mpirun exited 0 with rank 0 killed"
+[ ! -e "$out/case.b" ] || fail "case.b written though rank 0 was killed in its write"
+# mpirun's teardown signals the other rank as it exits: give the process a moment to go.
+for pid in $ranks; do
+  for _ in $(seq 50); do
+    kill -0 "$pid" 2> /dev/null && [ "$(awk '{print $3}' "/proc/$pid/stat" 2> /dev/null)" != Z ] ||
+      break
+    sleep 0.1
+  done
+  ! kill -0 "$pid" 2> /dev/null || [ "$(awk '{print $3}' "/proc/$pid/stat" 2> /dev/null)" = Z ] ||
+    fail "rank process $pid still running 5 s after the job ended"
+done
+echo "mpi_faults: rank 0 (pid $host) killed in the write of case.b: mpirun exit $status," \
+  "no case.b, ranks ($ranks) gone"
+[ $failures -eq 0 ] || exit 1
