@@ -63,20 +63,26 @@ void start() {
   std::atexit(finalize);
 }
 
-int rank() {
-  if (!launched() && !started()) return 0;
+namespace {
+
+/// `query` of MPI_COMM_WORLD (its rank or size), or `alone` for a process mpirun did not start
+/// and that has not started MPI.
+int of_world(int (*query)(MPI_Comm, int*), int alone) {
+  if (!launched() && !started()) return alone;
   start();
-  int r = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &r);
-  return r;
+  int value = alone;
+  query(MPI_COMM_WORLD, &value);
+  return value;
+}
+
+} // namespace
+
+int rank() {
+  return of_world(MPI_Comm_rank, 0);
 }
 
 int size() {
-  if (!launched() && !started()) return 1;
-  start();
-  int n = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &n);
-  return n;
+  return of_world(MPI_Comm_size, 1);
 }
 
 int self_fortran() {
