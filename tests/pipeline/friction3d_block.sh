@@ -10,7 +10,8 @@
 #    or s times its area) along its slip, the others without slip, the sums as above; Tresca
 #    s = 3 q: every node sticks;
 #  - Tresca s = 0.9 q: the load exceeds what friction holds, the solve reports the drift;
-#  - a friction law not done in 3D (nonmonotone) is refused naming the field.
+#  - nonmonotone friction (the convexification loop) with some nodes slipping at mu(|slip|) N,
+#    and mu2 (of the penetration) on a compliant layer holding what mu0 alone would not.
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 require_command gmsh "the box generator meshes through gmsh"
@@ -87,10 +88,44 @@ run tresca_drift 's/law=coulomb mu=0.5/law=tresca threshold=0.9e5/' || true
 grep -q "did not converge: drift" "$work/tresca_drift.log" ||
   fail "Tresca below the load: no drift reported ($(grep -m1 -i 'warn\|error' "$work/tresca_drift.log"))"
 
+# Nonmonotone friction (1.39), the convexification loop on the cone: a = 0.13 > q / p = 0.1 >
+# b = 0.05, so the nodes that slip lose their hold and some slip, the others stick; each slipping
+# node's |T| is mu(|slip|) N to the loop's tolerance (eps 1e-5: its frozen coefficient lags the
+# last slip), the sums hold the load.
 checks=$((checks + 1))
-if run nonmonotone 's/law=coulomb mu=0.5/law=nonmonotone a=0.5 b=0.2 alpha=2000/'; then
-  fail "law=nonmonotone was solved in 3D"
-elif ! grep -q "field 'law': law=nonmonotone in 3D is not implemented" "$work/nonmonotone.log"; then
-  fail "the refusal of nonmonotone in 3D: $(grep -m1 -i error "$work/nonmonotone.log")"
-fi
-finish "a block pulled on a rigid plane in 3D with Coulomb and Tresca friction"
+run nonmonotone 's/law=coulomb mu=0.5/law=nonmonotone a=0.13 b=0.05 alpha=1e6/' ||
+  fail "law=nonmonotone in 3D failed: $(grep -m1 -i 'error\|warn' "$work/nonmonotone.log")"
+grep -q "convex solves" "$work/nonmonotone.log" || fail "law=nonmonotone ran no convexification loop"
+"$python" - "$work/nonmonotone/contact.csv" <<'PY' || fail "the nonmonotone solution"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+p, q, a, b, alpha = 1e6, 1e5, 0.13, 0.05, 1e6
+problems = []
+T = [sum(float(r[f"tangential_force_{k}"]) for r in rows) for k in (1, 2, 3)]
+if math.dist(T, (0.6 * q, 0.8 * q, 0.0)) > 1e-9 * q or any(r["converged"] != "1" for r in rows):
+    problems.append(f"not converged, or the tangential forces sum to {T}")
+slipping = 0
+for r in rows:
+    t = math.hypot(*[float(r[f"tangential_force_{k}"]) for k in (1, 2, 3)])
+    N, s = float(r["multiplier"]), float(r["slip"])
+    if r["friction_status"] == "S+":
+        slipping += 1
+        mu = (a - b) * math.exp(-alpha * s) + b
+        if abs(t - mu * N) > 1e-4 * mu * N:
+            problems.append(f"node {r['node']} slips by {s} with |T| / N = {t / N}, mu = {mu}")
+    elif s > 1e-15 or t > a * N * (1 + 1e-12):
+        problems.append(f"node {r['node']} sticks with slip {s} and |T| / N = {t / N}")
+if not 0 < slipping < len(rows):
+    problems.append(f"{slipping} of {len(rows)} nodes slip: the case needs both")
+print("\n".join(problems) or f"nonmonotone: {slipping} of {len(rows)} nodes slip")
+sys.exit(1 if problems else 0)
+PY
+
+# mu2 (8.3) of the penetration on a compliant layer with its wall at g: cn = 1e12 Pa/m takes the
+# pressure p at q_n = p / cn = 1e-6 m = g / 2, so mu = (2 - 1/2) mu0 = 0.135 > q / p with mu0 =
+# 0.09 (below q / p: the penetration, not mu0, holds the block): every node sticks.
+checks=$((checks + 1))
+run mu2 's/law=signorini/law=compliance-unilateral cn=1e12 g=2e-6/; s/law=coulomb mu=0.5/law=mu2 mu=0.09/' ||
+  fail "law=mu2 in 3D failed: $(grep -m1 -i 'error\|warn' "$work/mu2.log")"
+solved mu2 tresca 1e300 all # no bound to check but the outcome: mu0 alone would let it slide
+finish "a block pulled on a rigid plane in 3D with Coulomb, Tresca, nonmonotone and mu2 friction"

@@ -144,6 +144,41 @@ TEST_P(EveryExactMethod, StickBelowTheBoundNeedsTwoSolves) {
 INSTANTIATE_TEST_SUITE_P(Convexification, EveryExactMethod,
                          ::testing::Values("alm", "pdas", "projection"));
 
+// The same node in 3D, pushed along an oblique direction e of its tangent plane: isotropic
+// stiffness k_x in the plane, so it slips along e by the 2D fixed point r*, the loop measuring the
+// slip's magnitude |w_t| and the tangential forces' (contact_bulk.hpp: two per node, flat), and
+// it needs the 2D count of convex solves.
+TEST(Convexification, ANodeOfA3DBodySlipsToThe2DFixedPoint) {
+  const ContactLaw law = nonmonotone(1, 0.5, 100);
+  const double F = 6, r_star = fixed_point(F, law);
+  const Eigen::Vector2d e(0.6, -0.8);
+  CondensedProblem problem;
+  problem.S = Eigen::Vector3d(kKx, kKx, kKy).asDiagonal();
+  problem.f = Eigen::Vector3d(F * e.x(), F * e.y(), kP);
+  problem.tangential_dof = {0, 1};
+  problem.normal_dof = {2};
+  problem.gap = Eigen::VectorXd::Zero(1);
+  ContactSetting setting;
+  setting.law = {law};
+  setting.weight = Eigen::VectorXd::Ones(1);
+  ConvexificationOptions options;
+  options.eps = 1e-5;
+  for (const char* method : {"alm", "pdas"}) {
+    const CondensedSolution s =
+        solve_condensed_contact(problem, setting, inner(method), {}, {options, {}, {}, {}});
+    ASSERT_TRUE(s.convexification && s.convexification->converged)
+        << method << ": " << (s.convexification ? s.convexification->failure : "no loop");
+    EXPECT_EQ(s.convexification->outer_iterations(), scalar_count(F, law, options.eps)) << method;
+    EXPECT_NEAR((s.w.head<2>() - r_star * e).norm(), 0.0, 1e-5 * r_star) << method;
+    EXPECT_NEAR(s.w[2], kG, 1e-12) << method;
+    ASSERT_EQ(s.contact.tangential_force.size(), 2);
+    EXPECT_NEAR((s.contact.tangential_force - kCn * kG * s.convexification->mu[0] * e).norm(), 0.0,
+                1e-9)
+        << method;
+    EXPECT_NEAR(s.convexification->mu[0], friction_coefficient(law, r_star), 1e-6) << method;
+  }
+}
+
 TEST(Convexification, EqualCoefficientsAreCoulomb) {
   // a = b: mu is constant, the loop's second solve repeats the first, which is Coulomb's.
   ContactLaw same = nonmonotone(0.8, 0.8, 7);

@@ -1,6 +1,7 @@
 #include "assembly/strain.hpp"
 
 #include "assembly/p1.hpp"
+#include "assembly/p1_simplex.hpp"
 #include "core/error.hpp"
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
@@ -26,17 +27,40 @@ double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u) {
   return strain_norm(mesh, u, [](int) { return true; });
 }
 
-double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u,
-                   const std::function<bool(int)>& counts) {
-  const std::vector<Eigen::Vector3d> strains = element_strains(mesh, u);
+namespace {
+
+/// The integral of eps : eps over the counted cells of a mesh of dimension d.
+template <int d>
+double squared_strain_norm(const Mesh& mesh, const Eigen::VectorXd& u,
+                           const std::function<bool(int)>& counts) {
+  constexpr int shears = voigt_size(d) - d;
   double sum = 0;
   for (int t = 0; t < mesh.num_cells(); ++t) {
     if (!counts(t)) continue;
-    const Eigen::Vector3d& e = strains[t]; // (e11, e22, 2 e12): eps : eps = e11^2 + e22^2 + 2 e12^2
-    sum += 0.5 * std::abs(signed_double_area(mesh, t)) *
-           (e[0] * e[0] + e[1] * e[1] + 0.5 * e[2] * e[2]);
+    const SimplexVertices<d> x = simplex_vertices<d>(mesh, t);
+    SimplexVector<d> ue;
+    for (int i = 0; i <= d; ++i)
+      ue.template segment<d>(d * i) = u.segment<d>(d * mesh.cells[t][i]);
+    const Eigen::Matrix<double, voigt_size(d), 1> e =
+        p1_simplex_strain_matrix<d>(p1_simplex_gradients<d>(x)) * ue;
+    // Voigt with engineering shears: eps : eps = the normal components squared plus half of
+    // each shear squared (2D: e11^2 + e22^2 + 2 e12^2).
+    sum += std::abs(p1_measure<d>(x)) *
+           (e.template head<d>().squaredNorm() + 0.5 * e.template tail<shears>().squaredNorm());
   }
-  return std::sqrt(sum);
+  return sum;
+}
+
+} // namespace
+
+double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u,
+                   const std::function<bool(int)>& counts) {
+  SIG_VERIFY(u.size() == mesh.dim * mesh.num_nodes(),
+             "strain_norm: " << u.size() << " values for " << mesh.num_nodes() << " nodes in "
+                             << mesh.dim << "D");
+  return std::sqrt(with_dimension(mesh.dim, [&](auto dim) {
+    return squared_strain_norm<decltype(dim)::value>(mesh, u, counts);
+  }));
 }
 
 std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const MaterialTable& table,

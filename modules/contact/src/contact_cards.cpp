@@ -193,13 +193,6 @@ std::optional<ContactElements> contact_from_cards(const Datafile& datafile, cons
   if (const std::optional<LawProblem> problem = law_problem(law))
     card.fail(problem->field == "g" && card.has("gap") ? "gap" : problem->field, problem->what);
   friction_from_cards(datafile, static_cast<int>(ref), law);
-  // In 3D the friction laws of a fixed bound: the cone (Coulomb) and Tresca's disc; the laws
-  // whose bound follows the slip or the penetration need the convexification loop, 2D for now.
-  if (mesh.dim == 3 && law.friction != FrictionLaw::none && law.friction != FrictionLaw::tresca &&
-      law.friction != FrictionLaw::coulomb)
-    friction.front()->fail("law", "law=" + to_string(law.friction) +
-                                      " in 3D is not implemented yet (issue 26): tresca and "
-                                      "coulomb are");
   const std::unique_ptr<Obstacle> obstacle = obstacle_from_card(card, mesh.dim);
   std::vector<int> excluded;
   std::vector<int> zone = mesh.nodes_with_ref(static_cast<int>(ref));

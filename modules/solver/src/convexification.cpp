@@ -14,10 +14,25 @@ namespace {
 /// The longest status cycle the loop looks for.
 constexpr int kLongestCycle = 16;
 
-/// ||xi||_L2(Gamma3) of nodal forces: sum_i w_i |F_i / w_i|^2 = sum_i |F_i|^2 / w_i.
+/// |v_i|^2 per node of a flat per-node tangential vector (contact_bulk.hpp: d - 1 components per
+/// node, one in 2D).
+Eigen::VectorXd node_squares(const Eigen::VectorXd& v, int nodes) {
+  const int tangents = nodes > 0 ? static_cast<int>(v.size()) / nodes : 1;
+  SIG_VERIFY(tangents >= 1 && tangents * nodes == v.size(),
+             "convexification: " << v.size() << " tangential values for " << nodes
+                                 << " contact nodes");
+  return Eigen::Map<const Eigen::MatrixXd>(v.data(), tangents, nodes)
+      .colwise()
+      .squaredNorm()
+      .transpose();
+}
+
+/// ||xi||_L2(Gamma3) of nodal forces: sum_i w_i |F_i / w_i|^2 = sum_i |F_i|^2 / w_i, the
+/// tangential force T flat with d - 1 components per node.
 double traction_norm(const Eigen::VectorXd& N, const Eigen::VectorXd& T,
                      const Eigen::VectorXd& weight) {
-  return std::sqrt(((N.array().square() + T.array().square()) / weight.array()).sum());
+  const Eigen::VectorXd t2 = node_squares(T, static_cast<int>(N.size()));
+  return std::sqrt(((N.array().square() + t2.array()) / weight.array()).sum());
 }
 
 /// The change a relative to the norm b it is a change of; from nothing (b = 0) any change is
@@ -68,7 +83,8 @@ ConvexificationResult convexify(ContactBulk& bulk, const ContactSetting& setting
              "convexification: the displacement measure is missing");
   const int m = setting.size();
   const auto slip = [&] {
-    const Eigen::VectorXd r = measures.slip ? measures.slip(bulk) : bulk.slip().cwiseAbs();
+    const Eigen::VectorXd r =
+        measures.slip ? measures.slip(bulk) : node_squares(bulk.slip(), m).cwiseSqrt();
     SIG_VERIFY(r.size() == m, "convexification: the slip measure has " << r.size() << " values for "
                                                                        << m << " contact nodes");
     return r;
@@ -85,7 +101,8 @@ ConvexificationResult convexify(ContactBulk& bulk, const ContactSetting& setting
 
   ConvexificationResult result;
   Eigen::VectorXd u_before = measures.displacement(bulk), mu_before(m);
-  Eigen::VectorXd N_before = Eigen::VectorXd::Zero(m), T_before = Eigen::VectorXd::Zero(m);
+  Eigen::VectorXd N_before = Eigen::VectorXd::Zero(m);
+  Eigen::VectorXd T_before = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m) * bulk.tangents());
   for (int p = 0; p < m; ++p)
     mu_before[p] = frozen.law[p].mu;
   std::vector<Statuses> seen;

@@ -15,10 +15,10 @@ std::vector<Eigen::Vector3d> element_strains(const Mesh& mesh, const Eigen::Vect
 
 /// ||eps(u)||_L2(Omega) = (integral of eps(u) : eps(u))^(1/2), the norm of V (thesis (2.6),
 /// (u, v)_V = integral of eps(u) . eps(v), l.3041; ALGORITHMS.md 0.6): exact for P1, whose
-/// strain is constant on each triangle.
+/// strain is constant on each cell; a mesh of either dimension (u: dim values per node).
 double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u);
 
-/// The same integral over the triangles t with counts(t) only (an error away from singular
+/// The same integral over the cells t with counts(t) only (an error away from singular
 /// corners: sig-error --window).
 double strain_norm(const Mesh& mesh, const Eigen::VectorXd& u,
                    const std::function<bool(int)>& counts);
