@@ -360,21 +360,21 @@ TEST(ContactKernel, HeldComponentsAreABilateralWallAndAStick) {
   // wall whatever the sign of the reaction, the tangential component sticks at its held slip
   // whatever the force; each kernel is smooth (one branch) and its derivative the exact one.
   ContactLaw held = law_of(NormalLaw::signorini, FrictionLaw::none);
-  held.held_normal = held.held_tangential = true;
+  held.held_normal = held.held_tangent[0] = true;
   held.depth = -0.2; // held away from the surface
-  held.held_slip = 0.05;
+  held.held_slip[0] = 0.05;
   for (double r : kAugmentations)
     for (const NodeVariables& x : points_of_every_branch()) {
       const ContactKernel k = contact_kernel(held, x, r, r);
       EXPECT_TRUE(k.wall_active && k.held && k.stick);
       EXPECT_DOUBLE_EQ(k.normal, x.lambda + r * (x.q_n - held.depth));
-      EXPECT_DOUBLE_EQ(k.tangential, x.t + r * (x.q_t - held.held_slip));
+      EXPECT_DOUBLE_EQ(k.tangential, x.t + r * (x.q_t - held.held_slip[0]));
       EXPECT_EQ(normal_status(k), NormalStatus::held);
       EXPECT_EQ(friction_status(held, k), FrictionStatus::stick);
       expect_derivatives(held, x, r, "held, r " + std::to_string(r));
     }
   // Its zeros are the held values, with any reaction.
-  const ContactKernel at = contact_kernel(held, {held.depth, held.held_slip, -3.0, 7.0}, 1, 1);
+  const ContactKernel at = contact_kernel(held, {held.depth, held.held_slip[0], -3.0, 7.0}, 1, 1);
   EXPECT_EQ(at.complementarity, Eigen::Vector2d::Zero());
   EXPECT_FALSE(law_problem(held).has_value());
   held.friction = FrictionLaw::coulomb; // out of contact: no friction law

@@ -308,12 +308,58 @@ TEST(ContactKernel3d, TheConeApexOnTheWallSticks) {
   EXPECT_EQ(off.tangential, Eigen::Vector2d::Zero());
 }
 
-TEST(ContactKernel3d, AHeldTangentialComponentIsRefused) {
-  // A roller on a 3D contact node holds one Cartesian direction of the tangent plane, not a
-  // slip: not implemented, refused rather than computed as the 2D stick.
-  ContactLaw law = law_of(NormalLaw::signorini, FrictionLaw::coulomb);
-  law.held_tangential = true;
-  EXPECT_THROW(contact_kernel(law, Variables3{}, 1, 1), Error);
+TEST_P(EveryLaw3d, AHeldTangentialComponentSticksAndTheOtherKeepsTheLawOfItsLine) {
+  // A roller on a 3D contact node holds one tangent of its frame (ContactLaw::held_tangent): that
+  // component sticks at its held slip whatever its force; the other keeps the friction law on its
+  // line, the 2D kernel's at the same (q_n, q_t, lambda, t); the derivative is exact on every
+  // branch, the free component's kink |z_j| = s crossed from both sides.
+  for (int held : {0, 1}) {
+    ContactLaw law = law_of(GetParam().normal, GetParam().friction, GetParam().bound);
+    const ContactLaw plane_law = law; // the 2D kernel of the free line
+    law.held_tangent[held] = true;
+    law.held_slip[held] = 0.05;
+    const int free = 1 - held;
+    std::vector<Variables3> points = points_of_every_branch();
+    for (double r : kAugmentations) {
+      for (double offset : {-1e-3, 1e-3}) { // either side of the free line's kink
+        Variables3 x{0.45, Eigen::Vector2d(0.03, -0.02), 0.8, Eigen::Vector2d(0.3, -0.7)};
+        const double s = contact_kernel(law, x, r, r).bound;
+        if (s <= 0) continue;
+        x.t[free] = s + offset - r * x.q_t[free];
+        points.push_back(x);
+      }
+      for (const Variables3& x : points) {
+        const std::string where = describe(law) + " r " + std::to_string(r) + " q_n " +
+                                  std::to_string(x.q_n) + " t " + std::to_string(x.t[free]);
+        const Kernel3 k = contact_kernel(law, x, r, r);
+        EXPECT_DOUBLE_EQ(k.tangential[held], x.t[held] + r * (x.q_t[held] - 0.05)) << where;
+        const ContactKernel line =
+            contact_kernel(plane_law, {x.q_n, x.q_t[free], x.lambda, x.t[free]}, r, r);
+        EXPECT_DOUBLE_EQ(k.normal, line.normal) << where;
+        if (law.friction != FrictionLaw::none) {
+          EXPECT_DOUBLE_EQ(k.tangential[free], line.tangential) << where;
+          EXPECT_EQ(k.stick, line.stick) << where;
+          EXPECT_EQ(k.slip[free], line.slip) << where;
+        }
+        EXPECT_EQ(k.slip[held], 0.0) << where;
+        // A point on the free line's kink itself has no branch to difference on.
+        const double z = x.t[free] + r * x.q_t[free];
+        if (std::abs(std::abs(z) - k.bound) > 1e-9 * (1 + k.bound))
+          expect_derivatives(law, x, r, where);
+      }
+    }
+  }
+  // Both held: a stick in both components, whatever the friction law.
+  ContactLaw both = law_of(GetParam().normal, GetParam().friction, GetParam().bound);
+  both.held_tangent = {true, true};
+  both.held_slip = {0.05, -0.02};
+  const Variables3 x{0.1, Eigen::Vector2d(0.3, 0.4), 0.8, Eigen::Vector2d(5.0, -6.0)};
+  const Kernel3 k = contact_kernel(both, x, 2, 2);
+  EXPECT_TRUE(k.stick);
+  EXPECT_EQ(k.tangential, x.t + 2 * (x.q_t - Eigen::Vector2d(0.05, -0.02)));
+}
+
+TEST(ContactKernel3d, AHeldNormalIsABilateralWall) {
   ContactLaw bilateral = law_of(NormalLaw::signorini, FrictionLaw::none);
   bilateral.held_normal = true;
   const Kernel3 k = contact_kernel(

@@ -10,6 +10,7 @@
 #    or s times its area) along its slip, the others without slip, the sums as above; Tresca
 #    s = 3 q: every node sticks;
 #  - Tresca s = 0.9 q: the load exceeds what friction holds, the solve reports the drift;
+#  - rollers ux = 0 on the sides: the edge nodes' held x1 and their x2 slip on its line;
 #  - nonmonotone friction (the convexification loop) with some nodes slipping at mu(|slip|) N,
 #    and mu2 (of the penetration) on a compliant layer holding what mu0 alone would not.
 set -euo pipefail
@@ -118,6 +119,34 @@ for r in rows:
 if not 0 < slipping < len(rows):
     problems.append(f"{slipping} of {len(rows)} nodes slip: the case needs both")
 print("\n".join(problems) or f"nonmonotone: {slipping} of {len(rows)} nodes slip")
+sys.exit(1 if problems else 0)
+PY
+
+# Rollers ux = 0 on the four sides (ref 3) hold the base's edge nodes in x1 (one tangent of
+# their frame) and take the load's x1 part; mu = 0.09 < 0.1 = |q| / p, but the x2 part alone,
+# 0.08 p, is held: the edge nodes that slip do so along x2 with |T2| = mu N exactly (the cone
+# cut by the held plane), the others on the cone |T| = mu N; the x2 forces sum to the load.
+checks=$((checks + 1))
+run rollers 's/law=coulomb mu=0.5/law=coulomb mu=0.09/; s/^SOLVER method=pdas$/DIRICHLET ref=3 ux=0\nSOLVER method=pdas/' ||
+  fail "rollers on a frictional base failed: $(grep -m1 -i 'error\|warn' "$work/rollers.log")"
+"$python" - "$work/rollers/contact.csv" <<'PY' || fail "the rollers' solution"
+import csv, math, sys
+rows, mu, q = list(csv.DictReader(open(sys.argv[1]))), 0.09, 1e5
+problems, slips = [], [0, 0]
+if abs(sum(float(r["tangential_force_2"]) for r in rows) - 0.8 * q) > 1e-9 * q:
+    problems.append("the x2 forces do not sum to the load")
+for r in rows:
+    edge = float(r["x1"]) in (0.0, 1.0) or float(r["x2"]) in (0.0, 1.0)
+    T = [float(r[f"tangential_force_{k}"]) for k in (1, 2)]
+    N = float(r["multiplier"])
+    if r["friction_status"] != "S+":
+        continue
+    slips[edge] += 1
+    if abs((abs(T[1]) if edge else math.hypot(*T)) - mu * N) > 1e-8 * mu * N:
+        problems.append(f"node {r['node']} (edge: {edge}) slips with T {T}, mu N {mu * N}")
+if not all(slips):
+    problems.append(f"slipping interior / edge nodes {slips}: the case needs both")
+print("\n".join(problems) or f"rollers: {slips[1]} edge and {slips[0]} interior nodes slip")
 sys.exit(1 if problems else 0)
 PY
 

@@ -123,9 +123,9 @@ TEST(HeldContactNodes, EachHeldComponentInTheNodesFrame) {
   // Normal (0, -1): u_n = -n . u = u2, q_n = u2 - 0.1; t = (-1, 0), q_t = -u1.
   ContactElements c = one_node({0, -1});
   EXPECT_EQ(hold_on_contact_nodes(holding(6, 0.25), c), std::vector<int>{6}); // u1 of node 3
-  EXPECT_TRUE(c.law[0].held_tangential);
+  EXPECT_TRUE(c.law[0].held_tangent[0]);
   EXPECT_FALSE(c.law[0].held_normal);
-  EXPECT_DOUBLE_EQ(c.law[0].held_slip, -0.25);
+  EXPECT_DOUBLE_EQ(c.law[0].held_slip[0], -0.25);
   EXPECT_EQ(c.law[0].friction, FrictionLaw::coulomb);
   c = one_node({0, -1});
   EXPECT_EQ(hold_on_contact_nodes(holding(7, 0.25), c), std::vector<int>{7}); // u2

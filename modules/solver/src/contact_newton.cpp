@@ -287,7 +287,7 @@ NodeConditions Driver<d>::node_conditions(int p, const Kernel& k, double q_n, co
     (void)t;
     if (k.stick && method_.has_multipliers()) {
       c.tangential.imposed = true;
-      c.tangential.value = law.held_slip - q_t; // stick: back to the slip it holds, 0 or held
+      c.tangential.value = law.held_slip[0] - q_t; // stick: back to the slip it holds, 0 or held
     } else if (k.stick) {
       c.tangential.force = w * k.tangential;
       c.tangential.stiffness = w * k.d_force(1, kQt);
@@ -306,7 +306,8 @@ NodeConditions Driver<d>::node_conditions(int p, const Kernel& k, double q_n, co
   return c;
 }
 
-/// The 3D tangential conditions of node p (d = 3): stick, both slips held (multipliers) or
+/// The 3D tangential conditions of node p (d = 3): a component a DIRICHLET card holds back to
+/// its slip, the other by the 2D law of its line; stick, both slips held (multipliers) or
 /// penalty's spring; slip, the force T = s e, e = z / |z|, z = t + r_t q_t, whose Newton step on
 /// C_t = t - T(t, q_t) = 0 is (I - A) dt = T - t + B dq_t + e ds with A = dT/dt = s (I - e e^T)
 /// / |z| and B = dT/dq_t = r_t A: the step's multiplier, t + dt, is then the force law
@@ -325,10 +326,27 @@ void Driver<d>::tangential_conditions_3d(int p, const Kernel& k, const Tan& q_t,
   Block stiffness = Block::Zero();
   const auto rows = k.d_force.template bottomRows<d - 1>();
   const Block B = rows.template middleCols<d - 1>(Col::q_t);
+  const ContactLaw& law = s_.law[p];
+  if (law.held_tangential()) { // multipliers: penalty cannot hold a component (static_solve)
+    // Per component: a held one back to its slip, the free one as in 2D (the line's law).
+    for (int i = 0; i < d - 1; ++i) {
+      DofCondition& ci = c.tangent(i);
+      if (law.held_tangent[i] || k.stick) {
+        ci.imposed = true;
+        ci.value = (law.held_tangent[i] ? law.held_slip[i] : 0.0) - q_t[i];
+      } else if (k.bound_slope != 0 && c.normal.imposed) {
+        ci.coupling = k.slip[i] * k.bound_slope;
+      } else {
+        ci.force = w * k.slip[i] * k.bound;
+        ci.cross = w * k.slip[i] * k.d_bound(Col::q_n);
+      }
+    }
+    return;
+  }
   if (k.stick && multipliers) {
     for (int i = 0; i < d - 1; ++i) {
       c.tangent(i).imposed = true;
-      c.tangent(i).value = -q_t[i]; // back to no slip (a held slip is refused in 3D)
+      c.tangent(i).value = -q_t[i]; // back to no slip
     }
     return;
   }

@@ -31,6 +31,15 @@ std::vector<int> contact_first_dofs(const ReducedSystem& reduced, const ContactE
   return first;
 }
 
+/// The tangent k of contact node p's frame along the mesh axis `component` (|t_k . e_c| >=
+/// aligned), or -1 if none is: a roller's held axis must be one of the node's tangents.
+int held_tangent_of(const ContactElements& contact, int p, int component, double aligned) {
+  const ContactFrame frame = contact.frame(p);
+  for (int k = 0; k + 1 < contact.dim; ++k)
+    if (std::abs(frame(component, k)) >= aligned) return k;
+  return -1;
+}
+
 } // namespace
 
 std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElements& contact) {
@@ -45,7 +54,7 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
       if (at == system.dirichlet_dofs.end() || *at != dof) continue;
       const double value = system.dirichlet_values[at - system.dirichlet_dofs.begin()];
       // The held axis e_c in the node's frame: u_n = -n . u, q_n = u_n - d, q_t = t . u.
-      const double along_n = contact.normal[p][component], along_t = contact.tangent[p][component];
+      const double along_n = contact.normal[p][component];
       constexpr double kAligned = 1 - 1e-12;
       if (std::abs(along_n) >= kAligned) {
         law.held_normal = true;
@@ -55,23 +64,17 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
                     std::to_string(contact.node[p] + 1) +
                     ") has its normal component held by a DIRICHLET card: it is out of the "
                     "contact set, its normal force the condition's reaction");
-      } else if (d == 2 && std::abs(along_t) >= kAligned) {
-        // In 3D a held axis of the tangent plane is one direction of a two-component slip, which
-        // the law's scalar held slip cannot say (contact_kernel.hpp refuses it).
-        law.held_tangential = true;
-        law.held_slip = along_t * value;
+      } else if (const int k = held_tangent_of(contact, p, component, kAligned); k >= 0) {
+        law.held_tangent[k] = true;
+        law.held_slip[k] = contact.frame(p)(component, k) * value;
       } else {
         SIG_VERIFY(false, "contact node "
                               << p + 1 << " (mesh node " << contact.node[p] + 1
                               << "): a DIRICHLET card holds u" << component + 1 << ", which is "
-                              << (d == 2 ? "neither the obstacle's normal "
-                                         : "not along the obstacle's normal ")
-                              << coordinates(contact.normal[p])
-                              << (d == 2 ? " nor its tangent there; hold only the normal or the "
-                                           "tangential component"
-                                         : " there; hold only the normal component")
-                              << " of a contact node, or take the node out of the contact zone "
-                                 "(CONTACT exclude=REF)");
+                              << "neither the obstacle's normal " << coordinates(contact.normal[p])
+                              << " nor " << (d == 2 ? "its tangent" : "one of the node's tangents")
+                              << " there; hold only those components of a contact node, or take "
+                                 "the node out of the contact zone (CONTACT exclude=REF)");
       }
       held.push_back(dof);
     }

@@ -48,6 +48,44 @@ template <int n> double magnitude(const Eigen::Matrix<double, n, 1>& z) {
   return z.norm();
 }
 
+/// The node sits at the apex of the Coulomb cone on an active wall (header: stick side).
+template <int d> bool at_apex(const ContactKernelIn<d>& k) {
+  return k.bound == 0 && k.wall_active && k.bound_slope > 0;
+}
+
+/// The tangential rows of a 3D node with a held component (ContactLaw::held_tangent): the held
+/// one sticks at its slip whatever its force, T_k = t_k + r_t (q_tk - held_k); the other, if
+/// free, keeps the friction law on its line, the 2D kernel's projection on [-s, s] of z_j = t_j
+/// + r_t q_tj (the disc cut by the held plane: no curvature term). The node sticks when the free
+/// component does (or none is free), and slips along +-t_j otherwise.
+void held_tangent_3d(const ContactLaw& law, const NodeVariablesIn<3>& x, double r_t,
+                     const KernelBranchIn<3>* on, ContactKernelIn<3>& k) {
+  using Col = KernelColumns<3>;
+  k.stick = true;
+  for (int c = 0; c < 2; ++c) {
+    auto row = k.d_force.row(1 + c);
+    const double z = x.t[c] + r_t * x.q_t[c];
+    if (law.held_tangent[c]) {
+      k.tangential[c] = z - r_t * law.held_slip[c];
+      row[Col::q_t + c] = r_t;
+      row[Col::t + c] = 1;
+      continue;
+    }
+    const bool stick = on ? on->stick : (k.bound > 0 || at_apex(k)) && std::abs(z) <= k.bound;
+    k.stick = stick;
+    if (stick) {
+      k.tangential[c] = z;
+      row[Col::q_t + c] = r_t;
+      row[Col::t + c] = 1;
+    } else {
+      const double sigma = on ? on->slip[c] : d_project_interval_ds(z, k.bound); // 0: z = s = 0
+      k.slip[c] = sigma;
+      k.tangential[c] = sigma * k.bound;
+      row = sigma * k.d_bound;
+    }
+  }
+}
+
 /// The kernel at x, on its own branch or, given `on`, on that one.
 template <int d>
 ContactKernelIn<d> evaluate(const ContactLaw& law, const NodeVariablesIn<d>& x, double r_n,
@@ -108,20 +146,18 @@ ContactKernelIn<d> evaluate(const ContactLaw& law, const NodeVariablesIn<d>& x, 
     tangential_rows.template middleCols<d - 1>(Col::q_t) = r_t * TangentBlock::Identity();
     tangential_rows.template middleCols<d - 1>(Col::t) = TangentBlock::Identity();
   };
-  if (law.held_tangential) { // stuck at the held slip, whatever the force
+  if (law.held_tangential()) { // stuck at the held slip, whatever the force
     if constexpr (d == 2) {
       k.stick = true;
-      k.tangential = x.t + r_t * (x.q_t - law.held_slip);
+      k.tangential = x.t + r_t * (x.q_t - law.held_slip[0]);
       stick_rows();
     } else {
-      throw Error("a Dirichlet condition on a tangential component of a contact node is not "
-                  "implemented in 3D");
+      held_tangent_3d(law, x, r_t, on, k);
     }
   } else if (law.has_friction()) {
     const Tangent<d> z = x.t + r_t * x.q_t;
     const double size = magnitude(z);
-    const bool apex_in_contact = k.bound == 0 && k.wall_active && k.bound_slope > 0;
-    k.stick = on ? on->stick : (k.bound > 0 || apex_in_contact) && size <= k.bound;
+    k.stick = on ? on->stick : (k.bound > 0 || at_apex(k)) && size <= k.bound;
     if (k.stick) {
       k.tangential = z;
       stick_rows();

@@ -216,7 +216,8 @@ std::optional<LawProblem> law_problem(const ContactLaw& law) {
 std::string describe(const ContactLaw& law) {
   std::ostringstream out;
   if (law.held_normal) out << "normal held at q_n=" << law.depth << ", ";
-  if (law.held_tangential) out << "slip held at q_t=" << law.held_slip << ", ";
+  for (int k = 0; k < 2; ++k)
+    if (law.held_tangent[k]) out << "slip " << k + 1 << " held at " << law.held_slip[k] << ", ";
   out << to_string(law.normal);
   if (law.has_compliance()) {
     out << " cn=" << law.cn;

@@ -17,6 +17,8 @@ template <int d>
 FrictionStatus friction_status_in(const ContactLaw& law, const ContactKernelIn<d>& kernel) {
   if (!law.has_friction()) return FrictionStatus::none;
   if (kernel.stick) return FrictionStatus::stick;
+  // A held tangential component beside a free, frictionless one (3D): nothing rubs.
+  if (law.friction == FrictionLaw::none) return FrictionStatus::none;
   if (law.has_coefficient() && normal_status_in<d>(kernel) == NormalStatus::free)
     return FrictionStatus::none; // no normal force, so no friction
   if constexpr (d == 2) {

@@ -56,9 +56,10 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 /// The Dirichlet conditions of `system` on contact nodes (a roller on a corner of Gamma3) moved
 /// into the laws of `contact`, each in the node's frame: a held normal component takes the node
 /// out of contact (ContactLaw::held_normal, a warning naming it), a held tangential one sticks
-/// at its slip (held_tangential). Returns the held dofs, sorted: the contact solve imposes them,
-/// so the reduced system keeps them free. sig::Error naming the node for a held component that is
-/// neither the node's normal nor its tangent.
+/// at its slip (held_tangent; in 3D the node's other tangent keeps its friction law). Returns the
+/// held dofs, sorted: the contact solve imposes them, so the reduced system keeps them free.
+/// sig::Error naming the node for a held component that is neither the node's normal nor one of
+/// its tangents (contact_frame: in 3D an axis of the tangent plane that is not t1 or t2).
 std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElements& contact);
 
 /// Why SOLVER candidate_gap= cannot serve these contact elements (a law that acts on nodes apart

@@ -57,6 +57,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -142,11 +143,13 @@ struct ContactLaw {
   /// Components of the node that a Dirichlet condition holds (a roller on a contact node), set by
   /// the solve stage from the deck's DIRICHLET cards, never stored in CONT. A held normal takes
   /// the node out of contact: a bilateral wall at q_n = depth whose reaction may pull, no
-  /// compliance; a held tangential component sticks at the slip q_t = held_slip whatever its
-  /// force (no bound: the condition's reaction, not friction).
+  /// compliance; a held tangential component sticks at its slip held_slip whatever its force
+  /// (no bound: the condition's reaction, not friction). Component k is the tangent t_(k+1) of
+  /// contact_frame: the one tangent in 2D (k = 0), either of the pair in 3D, where the other, if
+  /// free, keeps the friction law on its line (|T_k| <= s: the cone cut by the held plane).
   bool held_normal = false;
-  bool held_tangential = false;
-  double held_slip = 0;
+  std::array<bool, 2> held_tangent{};
+  std::array<double, 2> held_slip{};
 
   bool has_wall() const {
     return normal == NormalLaw::signorini || normal == NormalLaw::compliance_unilateral ||
@@ -157,7 +160,9 @@ struct ContactLaw {
   bool in_velocity() const {
     return normal == NormalLaw::damped || normal == NormalLaw::damped_unilateral;
   }
-  bool has_friction() const { return friction != FrictionLaw::none || held_tangential; }
+  /// Some tangential component is held (held_tangent).
+  bool held_tangential() const { return held_tangent[0] || held_tangent[1]; }
+  bool has_friction() const { return friction != FrictionLaw::none || held_tangential(); }
   /// The bound is a coefficient times a pressure (coulomb, nonmonotone, mu1, mu2), not a given
   /// traction.
   bool has_coefficient() const {
