@@ -345,14 +345,23 @@ TEST(ContactKernel, TheConeApexOnTheWallSticks) {
     EXPECT_EQ(k.d_force(1, kQt), r);
     expect_kink_side(coulomb, apex, r, kLambda, 1.0, "apex, r " + std::to_string(r));
   }
-  // Off the wall, or under a bound that does not follow N (Tresca's zero threshold, a pure
-  // compliance at its start), the apex slips with sigma = 0: T = 0, nothing held.
+  // Off the wall, or under a bound that a press does not raise (Tresca's zero threshold), the
+  // apex slips with sigma = 0: T = 0, nothing held.
   EXPECT_FALSE(contact_kernel(coulomb, {coulomb.depth - 0.1, 0.0, 0.0, 0.0}, 1, 1).stick);
   ContactLaw loose = law_of(NormalLaw::signorini, FrictionLaw::tresca);
   loose.threshold = 0;
   EXPECT_FALSE(contact_kernel(loose, {loose.depth, 0.0, 0.0, 0.0}, 1, 1).stick);
+  // A compliance at its kink q_n = 0 (the contact side, slope cn): Coulomb's bound mu cn [q_n]_+
+  // rises with a press, so its apex sticks as the wall's does (a body at rest on a compliant
+  // foundation held by friction alone starts from a step that holds it); apart (q_n < 0) the
+  // node slips with nothing to hold.
   const ContactLaw compliance = law_of(NormalLaw::compliance, FrictionLaw::coulomb);
-  EXPECT_FALSE(contact_kernel(compliance, {0.0, 0.0, 0.0, 0.0}, 1, 1).stick);
+  for (double r : kAugmentations) {
+    const NodeVariables apex{0.0, 0.0, 0.0, 0.0};
+    EXPECT_TRUE(contact_kernel(compliance, apex, r, r).stick) << "r " << r;
+    expect_kink_side(compliance, apex, r, kQn, 1.0, "compliance apex, r " + std::to_string(r));
+  }
+  EXPECT_FALSE(contact_kernel(compliance, {-0.1, 0.0, 0.0, 0.0}, 1, 1).stick);
 }
 
 TEST(ContactKernel, HeldComponentsAreABilateralWallAndAStick) {

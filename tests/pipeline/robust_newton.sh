@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Requirement (issue 23): a body held by friction alone converges from rest, with no INITIAL card
-# (a 2 x 1 block under the traction (0.2, -1), Coulomb mu = 0.3), with pdas, alm and projection;
+# (a 2 x 1 block under the traction (0.2, -1), Coulomb mu = 0.3), with pdas, alm and projection,
+# on a rigid plane and on a compliant foundation;
 # the same block pushed beyond its friction bound (traction (0.5, -1): Q = 1 > mu P = 0.6) has no
 # equilibrium, and every output a user opens says so: sig-solve's Nv line, case.b's
 # failure_reason, summary.json's failure "drift" with its size, contact.csv's converged column
@@ -23,9 +24,15 @@ OUTPUT vtk=yes
 EOF
 }
 
-for method in pdas alm projection; do
-  dir=$work/held_$method
-  block "$dir.dat" 0.2,-1 "$method"
+# The same block on a compliant foundation (compliance, and a compliant layer over a wall):
+# at rest every node is at q_n = 0, the compliance's kink, where Coulomb's bound mu cn [q_n]_+ is
+# 0 but rises with a press (the cone's apex, held on its stick side).
+compliance="CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=compliance cn=200"
+layer="CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=compliance-unilateral cn=200 g=0.02"
+for variant in "pdas" "alm" "projection" "pdas|$compliance" "alm|$compliance" "pdas|$layer"; do
+  IFS='|' read -r method contact <<<"$variant"
+  dir=$work/held_${method}_${#contact}
+  block "$dir.dat" 0.2,-1 "$method" "$contact"
   SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; die "$method: the chain failed"; }
   grep -q "converged in" "$dir.log" || { grep sig-solve "$dir.log"; die "$method: the block held by friction did not converge from rest"; }
   /usr/bin/python3 - "$dir/contact.csv" <<'PY' || die "$method: not an equilibrium of the block"
@@ -37,7 +44,7 @@ assert abs(N - 2.0) < 1e-8 and abs(T - 0.4) < 1e-8, (N, T)  # P = 2 x 1, Q = 2 x
 assert all(r["converged"] == "1" for r in rows)
 assert all(abs(float(r["tangential_multiplier"])) <= 0.3 * float(r["multiplier"]) + 1e-12 for r in rows)
 PY
-  echo "robust_newton: $method: the block held by friction converges from rest ($(grep -o 'converged in [0-9]* iterations' "$dir.log"))"
+  echo "robust_newton: $method${contact:+ (${contact#*law=})}: the block held by friction converges from rest ($(grep -o 'converged in [0-9]* iterations' "$dir.log"))"
 done
 
 dir=$work/slides

@@ -9,6 +9,9 @@
 #include <mpi.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <system_error>
 // gcc says AddressSanitizer by a macro, clang (14) by __has_feature only.
 #if defined(__SANITIZE_ADDRESS__)
 #define SIG_ADDRESS_SANITIZER 1
@@ -25,6 +28,18 @@ namespace sig::mpi {
 
 namespace {
 
+/// A singleton's own session folder (empty when OpenMPI's default or the user's serves).
+std::filesystem::path& session_base() {
+  static std::filesystem::path base;
+  return base;
+}
+
+void remove_session_folder() {
+  if (session_base().empty()) return;
+  std::error_code ignored; // a folder left in the temporary area is no error of the run
+  std::filesystem::remove_all(session_base(), ignored);
+}
+
 void finalize() {
 #ifdef SIG_ADDRESS_SANITIZER
   // The leak check at exit would run after MPI_Finalize has unloaded OpenMPI's components, whose
@@ -35,6 +50,19 @@ void finalize() {
   int finalized = 0;
   MPI_Finalized(&finalized);
   if (!finalized) MPI_Finalize();
+  remove_session_folder();
+}
+
+/// Isolated singletons all take OpenMPI 4's job family 0, so concurrent ones (ctest -j, the
+/// stages of two chains) race on one session folder, TMPDIR/ompi.HOST.UID/jf.0: one fails its
+/// mkdir ("File exists", orte_init failed) or removes the folder under another. Each singleton
+/// gets a folder of its own unless the user chose one (OMPI_MCA_orte_tmpdir_base).
+void use_own_session_folder() {
+  if (std::getenv("OMPI_MCA_orte_tmpdir_base") != nullptr) return;
+  std::string pattern = (std::filesystem::temp_directory_path() / "sig-mpi-XXXXXX").string();
+  if (mkdtemp(pattern.data()) == nullptr) return; // OpenMPI's default then, as before
+  session_base() = pattern;
+  setenv("OMPI_MCA_orte_tmpdir_base", pattern.c_str(), 1);
 }
 
 } // namespace
@@ -58,8 +86,12 @@ void start() {
     setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     setenv("OMPI_MCA_btl", "self", 0);
     setenv("OMPI_MCA_pml", "ob1", 0);
+    use_own_session_folder();
   }
-  SIG_VERIFY(MPI_Init(nullptr, nullptr) == MPI_SUCCESS, "MPI: MPI_Init failed");
+  if (MPI_Init(nullptr, nullptr) != MPI_SUCCESS) {
+    remove_session_folder();
+    throw Error("MPI: MPI_Init failed");
+  }
   std::atexit(finalize);
 }
 

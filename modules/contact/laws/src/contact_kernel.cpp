@@ -48,9 +48,10 @@ template <int n> double magnitude(const Eigen::Matrix<double, n, 1>& z) {
   return z.norm();
 }
 
-/// The node sits at the apex of the Coulomb cone on an active wall (header: stick side).
+/// The node sits at the apex of the cone where a press would raise the bound, ds/dq_n > 0: on an
+/// active wall under Coulomb, or at a compliance's kink q_n = 0 (header: the stick side).
 template <int d> bool at_apex(const ContactKernelIn<d>& k) {
-  return k.bound == 0 && k.wall_active && k.bound_slope > 0;
+  return k.bound == 0 && k.d_bound(KernelColumns<d>::q_n) > 0;
 }
 
 /// The tangential rows of a 3D node with a held component (ContactLaw::held_tangent): the held

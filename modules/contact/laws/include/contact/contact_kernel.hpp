@@ -20,11 +20,12 @@
 //
 // Branches (the generalized derivative is the one of the branch, kinks as complementarity.hpp):
 // the wall is active (chi = 1) iff lambda + r_n (q_n - g) >= 0; the node sticks iff
-// |t + r_t q_t| <= s and either s > 0 or the node sits at the apex of the Coulomb cone on an
-// active wall (s = mu N = 0, chi = 1: a node that just touches, as every node in contact at rest
-// does), otherwise it slips with sigma = sign(t + r_t q_t) (0 when that is 0, a node with s = 0
-// that does not move). The apex is a kink of the projection like |z| = s, and belongs to the
-// stick side as every kink belongs to contact: its slip element, T = 0, would hold nothing
+// |t + r_t q_t| <= s and either s > 0 or the node sits at the apex of the Coulomb cone where a
+// press would raise the bound, ds/dq_n > 0 (s = mu N = 0 on an active wall, chi = 1, or at a
+// compliance's kink q_n = 0, N = cn [q_n]_+: a node that just touches, as every node in contact
+// at rest does), otherwise it slips with sigma = sign(t + r_t q_t) (0 when that is 0: a node
+// with s = 0 that does not move). The apex is a kink of the projection like |z| = s, and belongs to
+// the stick side as every kink belongs to contact: its slip element, T = 0, would hold nothing
 // sideways, and a body held by friction alone would start from a step that drifts.
 // In 3D (d = 3) the tangential quantities are vectors in the node's orthonormal tangent pair and
 // the projection on [-s, s] becomes the one on the disc of radius s (the Coulomb cone's section):
