@@ -7,8 +7,8 @@
 # pressure (nodal force over tributary area) p, the nodal forces summing to p times the base's
 # area, the base on the plane, the top lowered by p lz / E; contact.csv has x3 and u3, the .vtu
 # the contact pressure and status. The same
-# deck with every method; a deck with a 2D obstacle, with a friction law not done in 3D
-# (nonmonotone) or with a sphere in 2D words is refused naming the field. And the same block in
+# deck with every method; a deck with a 2D obstacle, a 2D body's plane= or a sphere in 2D words is
+# refused naming the field. And the same block in
 # large deformation (Saint Venant-Kirchhoff, lambda = 0), uniaxial again (issue 28).
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
@@ -141,5 +141,5 @@ refused() { # NAME SED-EXPRESSION FIELD
 refused two_components 's/point=0,0,0 normal=0,0,1/point=0,0 normal=0,1/' "field 'point'"
 refused disc 's/obstacle=plane point=0,0,0 normal=0,0,1/obstacle=disc centre=0,0,-1 radius=1/' \
   "field 'obstacle'"
-refused friction '$a FRICTION ref=1 law=nonmonotone a=0.5 b=0.2 alpha=2000' "field 'law'"
+refused plane_strain 's/^MATERIAL .*/& plane=strain/' "field 'plane'"
 finish "a block pressed on a rigid plane in 3D: the patch test with every method"
