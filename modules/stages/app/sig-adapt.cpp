@@ -193,7 +193,7 @@ int main(int argc, char** argv) {
       if (clock_start_us < 0) return seconds_since(process_start);
       const auto now = std::chrono::duration_cast<std::chrono::microseconds>(
           std::chrono::system_clock::now().time_since_epoch());
-      return (static_cast<double>(now.count()) - clock_start_us) * 1e-6;
+      return (static_cast<double>(now.count()) - clock_start_us) / 1e6;
     };
 
     // 2. The steps: chain, estimate, then mark and refine but after the last.
