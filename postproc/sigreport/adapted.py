@@ -26,8 +26,9 @@ DOFS_FRACTION, TIME_FRACTION = 0.2, 0.5
 
 
 def read_adapt_csv(folder, name="adapt.csv"):
-    """adapt.csv of drivers/adapt.sh in `folder` (or sig-adapt's loop.csv): one dict a step with step and dofs (int),
-    estimate, estimate_s, refine_s, wall_s, refine_wall_s and elapsed_s (float)."""
+    """adapt.csv of drivers/adapt.sh in `folder` (or `name`, sig-adapt's loop.csv): one dict a
+    step with step and dofs (int), estimate, estimate_s, refine_s, wall_s, refine_wall_s and
+    elapsed_s (float)."""
     path = Path(folder) / name
     if not path.is_file():
         raise ReportError(f"{path}: missing (the scene driver's adaptive loop did not run)")
