@@ -185,7 +185,8 @@ int main(int argc, char** argv) {
     const sig::Datafile deck = sig::Datafile::read(datafile);
     const std::vector<std::string> chain = sig::stage_chain(deck);
     fs::create_directories(outdir);
-    // The steps' files synced once a step, not one by one (core/ds.hpp: defer_file_syncs).
+    // The steps' files synced once a step, after its estimate (the refined mesh with the next
+    // step's files; the last step is not refined), not one by one (core/ds.hpp).
     sig::defer_file_syncs();
     // The loop's wall clock: from the caller's start when given (the process's own start then
     // counts), else from this main's.
@@ -227,7 +228,6 @@ int main(int argc, char** argv) {
             "refine",
             {step.string(), "-o", dir.string(), "--theta", theta, "--shape", datafile.string()},
             dir / "refine.log");
-        sig::sync_deferred_files(dir);
         refine_wall = seconds_since(refine_start);
         std::ifstream log(dir / "refine.log");
         const std::string text{std::istreambuf_iterator<char>(log), {}};
