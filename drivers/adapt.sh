@@ -7,14 +7,19 @@
 #   (Dörfler's marking with theta T, default 0.5; longest-edge bisection keeping references
 #   and sub-domains, new nodes on the first deck's arcs).
 # It stops after K steps (default 4) or at the first step with N dofs or more (default: no
-# budget). OUTDIR (default out/<stem>-adapt) gets adapt.csv: step, dofs, estimate (sig-estimate's
-# eta, in the norm of V) and, with --reference DIR (a chain's output on a finer mesh), error
-# (sig-error's absolute error against it) and effectivity (estimate / error); then the loop's
-# cost per step: estimate_s and refine_s, the stages' own times (sig-estimate's indicators,
-# case.est `seconds`; sig-refine's marking and bisection, from its log; 0 at the last step, which
-# is not refined), wall_s, the wall clock of the step's chain and sig-estimate processes, and
-# refine_wall_s, sig-refine's (sig-error's measure left out of both). The solve's own time is
-# the step's summary.json `times`.
+# budget). The loop runs in one process, sig-adapt: each step's stages (the chain's mesh ... post,
+# sig-estimate, sig-refine) are called there and write their DS files as the chain does, synced
+# once a step; a process a stage cost each step 0.1-0.3 s of start-ups, file syncs, an MPI
+# singleton and the driver's queries, more than the stages' work on the small meshes.
+# OUTDIR (default out/<stem>-adapt) gets adapt.csv: step, dofs, estimate (sig-estimate's eta, in
+# the norm of V) and, with --reference DIR (a chain's output on a finer mesh), error (sig-error's
+# absolute error against it, measured after the loop) and effectivity (estimate / error); then
+# the loop's cost per step: estimate_s and refine_s, the stages' own times (sig-estimate's
+# indicators, case.est `seconds`; sig-refine's marking and bisection, from its log; 0 at the last
+# step, which is not refined), wall_s, the wall clock of the step's chain and estimate,
+# refine_wall_s, sig-refine's, and elapsed_s, the loop's wall clock from this script's call of
+# sig-adapt (its process's start counted) to the end of the step's estimate. The solve's own
+# time is the step's summary.json `times`.
 # A march (TIME card) gets one mesh adapted to the whole march: sig-estimate estimates every kept
 # state (step 0, every output_every-th step, the last), a triangle's indicator is its largest
 # eta_T over them (the worst time of each place), the estimate and the error are those of the
@@ -68,63 +73,27 @@ fi
 mkdir -p "$outdir"
 deck_path=$(cd "$(dirname "$deck")" && pwd)/$name
 
-# The values of the scalar arrays NAME,NAME... of a DS, space-separated, from sig-dump's JSON.
-ds_values() {
-  "$bin/sig-dump" --json --values="$2" "$1" | python3 -c 'import json, sys
-arrays = {a["name"]: a for a in json.load(sys.stdin)["arrays"]}
-print(" ".join(str(arrays[name]["values"][0]) for name in sys.argv[1].split(",")))' "$2"
-}
+# The loop, in one process (sig-adapt: every stage's main called there, each writing its DS
+# files into step<k>/ as the chain does; files synced once a step). Its wall clock starts here,
+# so that its process's start counts (elapsed_s).
+t0=${EPOCHREALTIME/./}
+"$bin/sig-adapt" "$deck_path" -o "$outdir" --steps "$steps" --dofs "$dofs" --theta "$theta" \
+  --clock-start "$t0" | sed 's/^sig-adapt: /adapt.sh: /' ||
+  { echo "adapt.sh: the loop failed (sig-adapt)" >&2; exit 1; }
 
-# The seconds since START_US (microseconds of $EPOCHREALTIME without its point), to the us.
-seconds_since() {
-  local us=$((${EPOCHREALTIME/./} - $1))
-  printf '%d.%06d' $((us / 1000000)) $((us % 1000000))
-}
-
+# adapt.csv: sig-adapt's loop.csv with, given a reference, sig-error's error of each step and
+# the effectivity (measured after the loop: not part of its cost).
 csv=$outdir/adapt.csv
-echo "step,dofs,estimate,error,effectivity,estimate_s,refine_s,wall_s,refine_wall_s" >"$csv"
-for ((k = 0; k < steps; k++)); do
-  dir=$outdir/step$k
-  step_deck=$deck_path
-  if [ "$k" -gt 0 ]; then
-    # The deck with the refined mesh: its MESH card replaced, every other card as it was.
-    step_deck=$outdir/step$k.dat
-    awk -v mesh="MESH file=step$((k - 1))/refined.nopo" \
-      'toupper($1) == "MESH" { print mesh; next } { print }' "$deck_path" >"$step_deck"
-  fi
-  mkdir -p "$dir"
-  t0=${EPOCHREALTIME/./}
-  "$root/drivers/chain.sh" "$step_deck" -o "$dir" >"$dir/chain.log" 2>&1 ||
-    { cat "$dir/chain.log" >&2; echo "adapt.sh: step $k: the chain failed" >&2; exit 1; }
-  "$bin/sig-estimate" "$step_deck" -o "$dir" >"$dir/estimate.log" 2>&1 ||
-    { cat "$dir/estimate.log" >&2; echo "adapt.sh: step $k: sig-estimate failed" >&2; exit 1; }
-  wall=$(seconds_since "$t0")
-  read -r estimate step_dofs estimate_s < <(ds_values "$dir/case.est" estimate,dofs,seconds)
-  [ -n "$estimate_s" ] || { echo "adapt.sh: step $k: cannot read $dir/case.est" >&2; exit 1; }
+echo "step,dofs,estimate,error,effectivity,estimate_s,refine_s,wall_s,refine_wall_s,elapsed_s" >"$csv"
+while IFS=, read -r k step_dofs estimate times; do
   error= effectivity=
   if [ -n "$reference" ]; then
-    error=$("$bin/sig-error" --json "$dir" "$reference" |
-      python3 -c 'import json, sys; print(json.load(sys.stdin)["error"])')
-    effectivity=$(python3 -c "print($estimate / $error if $error > 0 else '')")
+    error=$("$bin/sig-error" --json "$outdir/step$k" "$reference" |
+      sed -n 's/^ *"error": *\([^,]*\),*$/\1/p')
+    [ -n "$error" ] || { echo "adapt.sh: step $k: no error from sig-error" >&2; exit 1; }
+    effectivity=$(awk -v e="$estimate" -v r="$error" 'BEGIN { if (r > 0) printf "%.17g", e / r }')
+    echo "adapt.sh: step $k: error $error, effectivity $effectivity"
   fi
-  echo "adapt.sh: step $k: $step_dofs dofs, estimate $estimate${error:+, error $error, effectivity $effectivity}"
-  refine_s=0 refine_wall=0
-  last=0
-  [ "$k" -lt $((steps - 1)) ] || last=1
-  if [ $last -eq 0 ] && [ "$dofs" -gt 0 ] && [ "$step_dofs" -ge "$dofs" ]; then
-    echo "adapt.sh: $step_dofs dofs reach the budget of $dofs: stopped"
-    last=1
-  fi
-  if [ $last -eq 0 ]; then
-    t0=${EPOCHREALTIME/./}
-    "$bin/sig-refine" "$step_deck" -o "$dir" --theta "$theta" --shape "$deck_path" \
-      >"$dir/refine.log" 2>&1 ||
-      { cat "$dir/refine.log" >&2; echo "adapt.sh: step $k: sig-refine failed" >&2; exit 1; }
-    refine_wall=$(seconds_since "$t0")
-    refine_s=$(sed -n 's/.*; mark and refine \([0-9.e+-]*\) s$/\1/p' "$dir/refine.log")
-    [ -n "$refine_s" ] || { echo "adapt.sh: step $k: no time in $dir/refine.log" >&2; exit 1; }
-  fi
-  echo "$k,$step_dofs,$estimate,$error,$effectivity,$estimate_s,$refine_s,$wall,$refine_wall" >>"$csv"
-  [ $last -eq 0 ] || break
-done
+  echo "$k,$step_dofs,$estimate,$error,$effectivity,$times" >>"$csv"
+done < <(tail -n +2 "$outdir/loop.csv")
 echo "$csv"

@@ -69,7 +69,7 @@ template=$root/datafiles/scene4/ball.dat
 square=$root/datafiles/scene4/square.dat
 parse_quick_out out/scene4 "$@"
 
-require_stages mesh material contact assemble solve post error estimate refine dump
+require_stages mesh material contact assemble solve post error estimate refine adapt dump
 require_decks "$template" "$square"
 require_charts
 

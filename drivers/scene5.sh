@@ -62,7 +62,7 @@ template=$root/datafiles/scene5/strip.dat
 rescaled=$root/datafiles/scene5/strip_rescaled.dat
 parse_quick_out out/scene5 "$@"
 
-require_stages mesh material contact assemble march post error estimate refine dump
+require_stages mesh material contact assemble march post error estimate refine adapt dump
 require_decks "$template" "$rescaled"
 require_charts
 

@@ -21,11 +21,18 @@
 # adding N = 64) and on the thesis's uniform mesh (MESH grading=0, OUTDIR/error/N<N>/). Only the
 # uniform mesh refines everywhere with N (the graded one refines Gamma3 but keeps its interior
 # growth law), so only it is an h-refinement in the sense of Fig 7.10.
+# The Hertz half disc adapted (issue 29), OUTDIR/adapted/: drivers/adapt.sh from the uniform
+# N = 16 (PDAS gamma = 1e2, Dörfler theta 0.5; 9 steps, 8 with --quick) against the overkill
+# overkill2/, the last adapted mesh refined uniformly twice (finer everywhere than every adapted
+# mesh: they nest); the uniform meshes of the error study against the uniform N = 512, finer
+# everywhere than each of them (error/N<N>/pdas_1e2/error.json, sig-error's norm of V), with the
+# references' own estimates (case.est): adapted meshes no worse per dof (the report's check).
 # Then postproc/scene7a_report.py OUTDIR writes OUTDIR/report.md, its PNGs and OUTDIR/scene.json.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/adapted.sh"
 
 usage() {
   cat <<EOF
@@ -41,7 +48,7 @@ invocation="drivers/scene7a.sh${*:+ $*}"
 template=$root/datafiles/scene7a/hertz.dat
 parse_quick_out out/scene7a "$@"
 
-require_stages mesh material contact assemble solve post
+require_stages mesh material contact assemble solve post error estimate refine adapt
 require_decks "$template"
 require_charts
 
@@ -50,9 +57,11 @@ require_charts
 if [ $quick -eq 1 ]; then
   meshes=(128 256)
   error_meshes=(64 128 256 512)
+  adapt_steps=8
 else
   meshes=(128 256 512)
   error_meshes=(64 128 256 512)
+  adapt_steps=9
 fi
 sweep=(1 10 1e2 1e3 1e4)
 penalty_sweep=(1e2 1e3 1e4 1e5 1e6)
@@ -100,13 +109,14 @@ variant() {
   provenance
   echo "meshes: ${meshes[*]}"
   echo "error_meshes: ${error_meshes[*]}"
+  echo "adapt_steps: $adapt_steps"
 } >"$out/command.txt"
 cp "$template" "$out/hertz.template.dat"
 
-rm -rf "$out"/N[0-9]* "$out/error"
+rm -rf "$out"/N[0-9]* "$out/error" "$out/adapted"
 # Runs: per mesh a base and 20 variants; per mesh of the error study a uniform base and variant,
 # and the graded pair where the sweep lacks that mesh.
-runs=$((21 * ${#meshes[@]} + 2 * ${#error_meshes[@]}))
+runs=$((21 * ${#meshes[@]} + 2 * ${#error_meshes[@]} + 3)) # + the adapted loop, 2 overkills
 for n in "${error_meshes[@]}"; do
   [[ " ${meshes[*]} " == *" $n "* ]] || runs=$((runs + 2))
 done
@@ -135,6 +145,27 @@ for n in "${error_meshes[@]}"; do
   base "$out/error" "$n" 0
   variant "$out/error" "$n" 0 pdas 1e2
   echo "scene7a.sh: N = $n (error study) done ($((SECONDS - t0)) s)"
+done
+
+# The adapted study: the loop from the uniform N = 16, its overkill, the errors of both series in
+# the norm of V, each against a reference finer everywhere than the meshes it judges.
+adapted=$out/adapted
+mkdir -p "$adapted"
+write_deck "$adapted/hertz.template.dat" 16 0 pdas 1e2
+deck_variant "$adapted/hertz.template.dat" "$adapted/hertz.dat" --set OUTPUT.vtk=no
+"$root/drivers/adapt.sh" "$adapted/hertz.dat" -o "$adapted" --steps "$adapt_steps" --theta 0.5 \
+  >"$adapted/adapt.log" 2>&1 || { tail -20 "$adapted/adapt.log" >&2; die "adapt.sh failed"; }
+progress_step "adapted ($adapt_steps steps)"
+overkill_references "$adapted" "$adapt_steps" "$adapted/hertz.dat" "$adapted/hertz.dat"
+for ((k = 0; k < adapt_steps; k++)); do
+  error_json "adapted/step$k" adapted/overkill2
+done
+error_json adapted/overkill1 adapted/overkill2
+finest=${error_meshes[-1]}
+run_stage estimate "$out/error/N$finest/pdas_1e2/hertz.dat" "$out/error/N$finest/pdas_1e2" ||
+  failed+=("$out/error/N$finest/pdas_1e2 (sig-estimate)")
+for n in "${error_meshes[@]::${#error_meshes[@]}-1}"; do
+  error_json "error/N$n/pdas_1e2" "error/N$finest/pdas_1e2"
 done
 echo "scene7a.sh: all runs done in $((SECONDS - start)) s"
 record_seconds $start

@@ -35,8 +35,10 @@ overkill_references() {
   done
 }
 
-# timed_chain DECK DIR: drivers/chain.sh on DECK into DIR (the finest uniform mesh judged, by the
-# same chain as the adaptive steps), its wall clock in DIR/chain_wall.txt.
+# timed_chain DECK DIR: drivers/chain.sh on DECK into DIR (the finest uniform mesh judged, a
+# process a stage), its wall clock, start-ups included, in DIR/chain_wall.txt; then the same chain
+# the loop's way into DIR/one_process (sig-adapt --steps 1: one process, files synced once, its
+# estimate included; elapsed_s of its loop.csv), shown beside.
 timed_chain() {
   local deck=$1 dir=$2 t0 us
   mkdir -p "$dir"
@@ -44,6 +46,8 @@ timed_chain() {
   logged "$dir.log" "$root/drivers/chain.sh" "$deck" -o "$dir"
   us=$((${EPOCHREALTIME/./} - t0))
   printf '%d.%06d\n' $((us / 1000000)) $((us % 1000000)) >"$dir/chain_wall.txt"
+  logged "$dir.log" "$bin/sig-adapt" "$deck" -o "$dir/one_process" --steps 1 \
+    --clock-start "${EPOCHREALTIME/./}"
 }
 
 # adapted_errors FOLDER STEPS LADDER REFERENCE DECK N...: the errors of an adapted study (folders

@@ -6,6 +6,7 @@ chart of the error against the dofs, uniform and adapted side by side.
     eta = est_value(folder)                   # sig-estimate's eta (case.est), None when absent
     corrected(error, eta)                     # the error against the exact solution, estimated
     loop_cost(steps, last)                    # (stages' own seconds, wall seconds) to step last
+    one_process_wall(uniform)                 # the uniform chain run in one process, or None
     adapted_figure(path, steps, ladder, ...)  # the PNG's name
 """
 import csv
@@ -24,16 +25,18 @@ EFFECTIVITY_RANGE = (0.3, 3.0)
 DOFS_FRACTION, TIME_FRACTION = 0.2, 0.5
 
 
-def read_adapt_csv(folder):
-    """adapt.csv of drivers/adapt.sh in `folder`: one dict a step with step and dofs (int),
-    estimate, estimate_s, refine_s, wall_s and refine_wall_s (float)."""
-    path = Path(folder) / "adapt.csv"
+def read_adapt_csv(folder, name="adapt.csv"):
+    """adapt.csv of drivers/adapt.sh in `folder` (or `name`, sig-adapt's loop.csv): one dict a
+    step with step and dofs (int), estimate, estimate_s, refine_s, wall_s, refine_wall_s and
+    elapsed_s (float)."""
+    path = Path(folder) / name
     if not path.is_file():
         raise ReportError(f"{path}: missing (the scene driver's adaptive loop did not run)")
     with path.open() as f:
         return [{"step": int(row["step"]), "dofs": int(row["dofs"]),
                  **{key: float(row[key]) for key in ("estimate", "estimate_s", "refine_s",
-                                                     "wall_s", "refine_wall_s")}}
+                                                     "wall_s", "refine_wall_s",
+                                                     "elapsed_s")}}
                 for row in csv.DictReader(f)]
 
 
@@ -56,12 +59,29 @@ def corrected(error, reference_estimate):
 
 def loop_cost(steps, last):
     """The adaptive loop's cost up to step `last` (its estimate included, its refinement not):
-    the stages' own times (solve + estimate + refine) and the wall clocks."""
+    the stages' own times (solve + estimate + refine) and the loop's wall clock, elapsed_s: from
+    drivers/adapt.sh's call of sig-adapt (the process's start included) to the end of step
+    `last`'s estimate, every stage and sync of the steps before in it."""
     own = sum(s["solve_s"] + s["estimate_s"] for s in steps[:last + 1]) + \
         sum(s["refine_s"] for s in steps[:last])
-    wall = sum(s["wall_s"] for s in steps[:last + 1]) + \
-        sum(s["refine_wall_s"] for s in steps[:last])
-    return own, wall
+    return own, steps[last]["elapsed_s"]
+
+
+def one_process_wall(uniform):
+    """The wall clock of the uniform mesh's chain run in one process as the loop's steps are
+    (drivers/lib/adapted.sh: sig-adapt --steps 1 in UNIFORM/one_process, its estimate included),
+    or None when it was not run."""
+    path = Path(uniform) / "one_process"
+    return read_adapt_csv(path, "loop.csv")[0]["elapsed_s"] if (path / "loop.csv").is_file() \
+        else None
+
+
+def one_process_text(one_process, wall):
+    """The clause on the uniform mesh run in one process, the loop's way, for the reports."""
+    if one_process is None:
+        return ""
+    return (f"; the uniform mesh run the loop's way (one process, sig-adapt --steps 1, its "
+            f"estimate included) takes {one_process:.2f} s: {wall / one_process:.2f} of it")
 
 
 def adapted_figure(path, steps, ladder, eta_overkill, eta_uniform, ref, slope, title):
@@ -106,7 +126,8 @@ def add_reach_checks(checks, figure, finest_name, uniform, reached, costs, solve
                ours=f"{own:.3f} s / {uniform_own:.3f} s = {own / uniform_own:.2f}",
                target="<= 0.5")
     checks.add(f"{figure} adapted: the whole loop to that error in at most half {uniform}'s "
-               "time, wall clocks of every stage (mesh ... post, estimate, refine) against its "
-               "chain's", wall / uniform_wall <= TIME_FRACTION,
+               "time, wall clocks: sig-adapt's process (mesh ... post, estimate, refine a step) "
+               "against drivers/chain.sh's processes (mesh ... post), start-ups included",
+               wall / uniform_wall <= TIME_FRACTION,
                ours=f"{wall:.2f} s / {uniform_wall:.2f} s = {wall / uniform_wall:.2f}",
                target="<= 0.5")

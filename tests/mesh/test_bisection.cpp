@@ -171,6 +171,61 @@ TEST(Bisection, HalfDiscAndDiscArcsStayOnTheirCircles) {
   expect_arc_nodes_on_circle(disc({1, 3}, 0.5, 8), whole);
 }
 
+/// The MESH card's mesh refined twice where every third triangle is marked (the closure then
+/// cuts its neighbours too), the arcs of the card's generator: each refinement keeps the coarse
+/// mesh's references, Gamma3 (3) among them, and sub-domains, the vertex references of its nodes,
+/// the length of each straight reference and every node of an arc's reference on its circle.
+void expect_references_kept(const std::string& text) {
+  SCOPED_TRACE(text);
+  const Datafile deck = Datafile::parse(text + "\n", "deck.dat");
+  const std::vector<BoundaryArc> arcs = boundary_arcs(deck.require("MESH"));
+  Mesh mesh = mesh_from_card(deck.require("MESH"), SIG_SOURCE_DIR);
+  ASSERT_FALSE(mesh.facets_with_ref(3).empty()) << "no Gamma3 to keep";
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<int> marked;
+    for (int t = pass; t < mesh.num_cells(); t += 3)
+      marked.push_back(t);
+    const Bisection refined = bisect(mesh, marked, arcs);
+    const Mesh& fine = refined.mesh;
+    EXPECT_EQ(fine.num_nodes(), mesh.num_nodes() + refined.bisected_edges);
+    EXPECT_GT(fine.facets_with_ref(3).size(), mesh.facets_with_ref(3).size()) << "pass " << pass;
+    EXPECT_EQ(fine.references(), mesh.references()) << "pass " << pass;
+    EXPECT_EQ(fine.subdomains(), mesh.subdomains()) << "pass " << pass;
+    for (int i = 0; i < mesh.num_nodes(); ++i)
+      ASSERT_EQ(fine.vertex_ref[i], mesh.vertex_ref[i]) << "node " << i + 1 << ", pass " << pass;
+    for (int ref : mesh.references()) {
+      const auto arc = std::find_if(arcs.begin(), arcs.end(),
+                                    [&](const BoundaryArc& a) { return a.ref == ref; });
+      if (arc == arcs.end()) {
+        const double before = total_length(mesh, mesh.facets_with_ref(ref));
+        EXPECT_NEAR(total_length(fine, fine.facets_with_ref(ref)), before, 1e-12 * (1 + before))
+            << "reference " << ref << ", pass " << pass;
+        continue;
+      }
+      for (int i : fine.nodes_with_ref(ref))
+        ASSERT_NEAR((fine.nodes[i] - arc->centre).norm(), arc->radius, 1e-12 * arc->radius)
+            << "node " << i + 1 << " of reference " << ref << ", pass " << pass;
+    }
+    mesh = fine;
+  }
+}
+
+// The generators' cards as the scenes' decks write them, smaller: scene 4's square, scene 5's
+// union-jack strip, the thin slab's refs, the rim's ring with its Gamma1 and Gamma3 cut-offs;
+// scene 7a's graded half disc and the disc need gmsh; a gmsh file (MESH file=).
+TEST(Bisection, EveryGeneratorAndAGmshFileKeepGamma3AndEveryReference) {
+  expect_references_kept("MESH generator=square lx=1 nx=4");
+  expect_references_kept("MESH generator=rectangle lx=5 ly=1 nx=8 ny=2 pattern=union-jack "
+                         "refs=3,4,2,1");
+  expect_references_kept("MESH generator=rectangle lx=2 ly=0.1 nx=8 ny=4 refs=3,1,2,1");
+  expect_references_kept("MESH generator=ring centre=0,10 r_in=9 r_out=10 N=32 "
+                         "gamma1_above=19.9 gamma3_below=17.08");
+  expect_references_kept("MESH file=tests/fuzz/corpus/gmsh/square_v41_ascii.msh");
+  if (!testing::have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  expect_references_kept("MESH generator=half-disc R=8 N=16 grading=0.1");
+  expect_references_kept("MESH generator=disc centre=10,10 R=10 N=16 grading=0.03 arcs=uniform");
+}
+
 TEST(Bisection, RefusesToPassTheNodeLimit) {
   const Mesh coarse = square(1.0, 4);
   try {

@@ -8,14 +8,17 @@
 #  - the dofs grow, the estimate and the error fall at every step, effectivity in [0.3, 3];
 #  - every step's mesh keeps the references 1-4 and the bounding box of the first;
 #  - --dofs stops the loop at the first step past the budget;
-#  - sig-refine refuses a theta outside (0, 1] and a stale case.est.
+#  - sig-refine refuses a theta outside (0, 1] and a stale case.est;
+#  - the loop runs in one process (sig-adapt) and writes what the chain writes: step 1's DS
+#    files are those of drivers/chain.sh on step1.dat, times and dates left out; its wall clock
+#    elapsed_s grows from step to step.
 # On the Hertz half disc of scene 7a (N = 32, 2 steps): the refined arc's nodes lie on the
 # circle of radius R (the generator's, not the chords'), the estimate falls, Gamma3 and the
 # Dirichlet node survive. On a small march (scene 5's strip), one mesh for the whole march:
 # refined where the indicator, the largest over the kept states, is.
 set -euo pipefail
 source tests/pipeline/lib/common.sh
-require_stages mesh material contact assemble solve post estimate refine error dump
+require_stages mesh material contact assemble solve post estimate refine adapt error dump
 
 sed -e 's/nx=16 ny=8/nx=8 ny=4/' datafiles/first/block.dat >"$work/block.dat"
 sed -e 's/nx=16 ny=8/nx=128 ny=64/' datafiles/first/block.dat >"$work/reference.dat"
@@ -55,6 +58,36 @@ for k in 1 2; do
   grep -q "^MESH file=step$((k - 1))/refined.nopo$" "$work/block/step$k.dat" ||
     fail "step $k: its deck does not read the refined mesh"
 done
+
+# One process, the chain's files: step 1 again by drivers/chain.sh, a process a stage.
+SIG_BIN=$bin drivers/chain.sh "$work/block/step1.dat" -o "$work/chain1" >"$work/chain1.log" 2>&1 ||
+  { tail -20 "$work/chain1.log"; die "chain.sh failed on step1.dat"; }
+# sig-dump --json of a DS without its date and its arrays of times and provenance.
+untimed() {
+  "$bin/sig-dump" --json "$1" | "$python" -c 'import json, sys
+d = json.load(sys.stdin)
+d.pop("date", None)
+d["arrays"] = [a for a in d["arrays"] if not any(w in a["name"] for w in
+               ("time", "seconds", "wall", "provenance"))]
+print(json.dumps(d, sort_keys=True))'
+}
+for ds in nopo mili cont tae b post; do
+  checks=$((checks + 1))
+  [ "$(untimed "$work/block/step1/case.$ds")" = "$(untimed "$work/chain1/case.$ds")" ] ||
+    fail "step 1's case.$ds (sig-adapt) is not chain.sh's"
+done
+checks=$((checks + 1))
+"$python" - "$work/block/adapt.csv" <<'PY' || fail "elapsed_s of the block's loop"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+elapsed = [float(r["elapsed_s"]) for r in rows]
+walls = [float(r["wall_s"]) for r in rows]
+bad = [f"step {k}: elapsed_s {e} below the step's wall_s {w}" for k, (e, w) in
+       enumerate(zip(elapsed, walls)) if e < w]
+bad += [f"elapsed_s {a} -> {b}" for a, b in zip(elapsed, elapsed[1:]) if not b > a]
+print("\n".join("FAIL: " + b for b in bad))
+sys.exit(1 if bad else 0)
+PY
 
 # A budget of 200 dofs: steps 0, 1, 2 have 90, 138, 260 dofs; the loop stops after step 2.
 checks=$((checks + 1))

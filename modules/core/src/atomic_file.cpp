@@ -28,7 +28,26 @@ void sync_folder(const std::filesystem::path& folder) {
   ::fsync(fd);
   ::close(fd);
 }
+
+// defer_file_syncs: a process's choice, made once by its main before it writes.
+bool& syncs_deferred() {
+  static bool deferred = false;
+  return deferred;
+}
 } // namespace
+
+void defer_file_syncs() {
+  syncs_deferred() = true;
+}
+
+void sync_deferred_files(const std::filesystem::path& folder) {
+  const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY);
+  SIG_VERIFY(fd >= 0, folder.string() << ": cannot open to sync its files: " << reason());
+  const bool synced = ::syncfs(fd) == 0;
+  const std::string why = reason();
+  ::close(fd);
+  SIG_VERIFY(synced, folder.string() << ": cannot sync its file system: " << why);
+}
 
 // Hidden, in the same folder (rename stays within one file system), unique per process.
 std::filesystem::path temporary_path(const std::filesystem::path& target) {
@@ -94,7 +113,8 @@ void AtomicFile::write(const void* data, std::size_t size) {
 
 void AtomicFile::commit() {
   SIG_VERIFY(file_ != nullptr, target_.string() << ": committed twice");
-  const bool flushed = std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+  const bool flushed =
+      std::fflush(file_) == 0 && (syncs_deferred() || ::fsync(::fileno(file_)) == 0);
   const int saved_errno = errno;
   const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;
@@ -111,7 +131,7 @@ void AtomicFile::commit() {
     throw Error(target_.string() + ": cannot rename " + temporary_.string() +
                 " into place: " + why);
   }
-  sync_folder(target_.parent_path());
+  if (!syncs_deferred()) sync_folder(target_.parent_path());
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {

@@ -17,7 +17,7 @@ public:
   ~AtomicFile();
 
   void write(const void* data, std::size_t size);
-  /// Flush, fsync, close and rename over the target.
+  /// Flush, fsync (unless deferred: core/ds.hpp), close and rename over the target.
   void commit();
 
 private:

@@ -175,6 +175,10 @@ const std::vector<std::string>& cards_looked_up() {
   return looked_up();
 }
 
+void forget_cards_looked_up() {
+  looked_up().clear();
+}
+
 Datafile Datafile::read(const std::filesystem::path& path) {
   verify_regular_file(path, "datafile");
   std::ifstream in(path, std::ios::binary);

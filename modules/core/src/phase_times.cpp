@@ -59,6 +59,10 @@ std::vector<std::pair<std::string, double>> phase_times() {
   return times;
 }
 
+void forget_phase_times() {
+  std::erase_if(phases(), [](const Phase& p) { return p.running == 0; });
+}
+
 double process_seconds() {
   return now();
 }

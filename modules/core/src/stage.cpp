@@ -202,6 +202,8 @@ int run_stage(const std::string& stage, const std::function<void()>& body) {
     code = 1;
   }
   append_card_trace(program_name(stage));
+  forget_cards_looked_up();
+  forget_phase_times();
   return code;
 }
 

@@ -91,8 +91,11 @@ const CardSpec* find_card_spec(const std::string& keyword);
 const char* renamed_field(const std::string& keyword, const std::string& field);
 
 /// The keywords this process has looked up in any datafile (Datafile::all, find, require,
-/// title), upper case: what a stage reads, which its --help must list (the test suite checks it
-/// through SIG_CARD_TRACE, see stage.hpp).
+/// title) since the last stage ended, upper case: what a stage reads, which its --help must list
+/// (the test suite checks it through SIG_CARD_TRACE, see stage.hpp).
 const std::vector<std::string>& cards_looked_up();
+/// Forgets them: run_stage does at a stage's end, so that the next stage in the same process (the
+/// adaptive loop, sig-adapt) is traced with its own.
+void forget_cards_looked_up();
 
 } // namespace sig

@@ -141,6 +141,17 @@ Ds parse_ds(const std::string& name, std::string bytes, const std::string& expec
 /// (CSV, JSON, reports) so that a killed stage leaves the previous file intact.
 void write_file_atomically(const std::filesystem::path& path, const std::string& contents);
 
+/// Every file written atomically (DS, NOPO, text) is synced, its data and its folder's entry,
+/// before it counts as written: whole on disk even after a crash of the machine. A process that
+/// writes many small files of one computation may defer that: after defer_file_syncs() files are
+/// still renamed into place complete (no reader, and no killed stage, sees half of one) but not
+/// synced one by one, and sync_deferred_files() makes every one durable with one syncfs of the
+/// file system of `folder`. The adaptive loop (sig-adapt) does so once a step: some 20 files a
+/// step, each fsync of a file and its folder 3-4 ms on the shared machine (measured: 0.46 s of
+/// a 0.5 s loop of 7 steps), where the stages' work is a few ms.
+void defer_file_syncs();
+void sync_deferred_files(const std::filesystem::path& folder);
+
 /// CRC-32 (IEEE 802.3, the zlib polynomial).
 std::uint32_t crc32(const void* data, std::size_t size, std::uint32_t crc = 0);
 

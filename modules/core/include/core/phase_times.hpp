@@ -30,6 +30,9 @@ private:
 
 /// The phases timed so far, in the order they first ran, with their seconds.
 std::vector<std::pair<std::string, double>> phase_times();
+/// Forgets them, none running: run_stage does at a stage's end, so that the next stage in the
+/// same process (the adaptive loop, sig-adapt) records its own.
+void forget_phase_times();
 
 /// Seconds since the process started (its first timer or static initialisation of core).
 double process_seconds();

@@ -1,0 +1,12 @@
+#pragma once
+// The stage's main as a function: its executable calls it, and so does the adaptive loop
+// (sig-adapt), which runs a step's stages in its own process, each writing its DS files.
+namespace sig {
+
+/// sig-post, sig-estimate and sig-refine with this command line (argv[0] the program's name):
+/// the exit status.
+int post_main(int argc, char** argv);
+int estimate_main(int argc, char** argv);
+int refine_main(int argc, char** argv);
+
+} // namespace sig
