@@ -223,13 +223,18 @@ TEST(Tae, RoundTrip) {
   EXPECT_TRUE(back.time_loads.empty());
 }
 
+/// A Kelvin-Voigt body with two memory terms, a ramped and a constant traction (and `density`,
+/// e.g. " rho=3", for a mass) on a mesh of two regions.
+LinearSystem viscoelastic_system(const Mesh& mesh, const std::string& density = "") {
+  return assemble(mesh, "MATERIAL law=kelvin-voigt E=2 nu=0.3 eta1=0.25 eta2=0.5" + density +
+                            "\nMEMORY region=1 E=1 nu=0.3 beta=10\nMEMORY E=3 nu=0.2 beta=0.5\n"
+                            "TRACTION ref=3 f=0,-10 ramp=1\nTRACTION ref=2 f=1,0\n"
+                            "DIRICHLET ref=4 ux=0 uy=0\n");
+}
+
 TEST(Tae, ViscoelasticRoundTrip) {
   const Mesh mesh = test::square_mesh(3, 2, 1.0, 0.2, 2);
-  const LinearSystem s =
-      assemble(mesh, "MATERIAL law=kelvin-voigt E=2 nu=0.3 eta1=0.25 eta2=0.5\n"
-                     "MEMORY region=1 E=1 nu=0.3 beta=10\nMEMORY E=3 nu=0.2 beta=0.5\n"
-                     "TRACTION ref=3 f=0,-10 ramp=1\nTRACTION ref=2 f=1,0\n"
-                     "DIRICHLET ref=4 ux=0 uy=0\n");
+  const LinearSystem s = viscoelastic_system(mesh);
   const testing::ScratchFolder dir;
   const auto path = dir / "case.tae";
   write_tae(path, s, "viscoelastic round trip");
@@ -285,11 +290,7 @@ TEST(Tae, RowsOfTwoRanksSumToTheWhole) {
 // to the whole, as K; the time loads come whole to every rank; without `march` none of them.
 TEST(Tae, MarchRowsOfTwoRanksSumToTheWhole) {
   const Mesh mesh = test::square_mesh(6, 4, 1.0, 0.2, 2);
-  const LinearSystem s =
-      assemble(mesh, "MATERIAL law=kelvin-voigt E=2 nu=0.3 eta1=0.25 eta2=0.5 rho=3\n"
-                     "MEMORY region=1 E=1 nu=0.3 beta=10\nMEMORY E=3 nu=0.2 beta=0.5\n"
-                     "TRACTION ref=3 f=0,-10 ramp=1\nTRACTION ref=2 f=1,0\n"
-                     "DIRICHLET ref=4 ux=0 uy=0\n");
+  const LinearSystem s = viscoelastic_system(mesh, " rho=3");
   ASSERT_EQ(s.memory.size(), 2u);
   ASSERT_GT(s.M.nonZeros(), 0);
   const testing::ScratchFolder dir;

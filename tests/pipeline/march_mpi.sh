@@ -13,7 +13,9 @@ source "$(dirname "$0")/lib/common.sh"
 source "$root/drivers/lib/deck.sh"
 require_command mpirun "drivers/setup.sh installs mpi-default-bin"
 require_stages mesh material contact assemble march dump
+# A waiting rank yields its core: ctest's other tests share the 2 cores (drivers/lib/environment.sh).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+export OMPI_MCA_mpi_yield_when_idle=1
 
 # 1. One process.
 deck=$work/rail.dat
@@ -36,7 +38,7 @@ grep -q "(mumps, ordering amd, 2 ranks" "$work/two.log" ||
 checks=$((checks + 1))
 "$python" "$root/tests/pipeline/lib/same_history.py" "$bin" "$one/case.hist" "$two/case.hist" \
   1e-8 > "$work/same.txt" || fail "2 ranks differ from one process: $(grep FAIL "$work/same.txt")"
-worst=$(grep -v identical "$work/same.txt" | sort -g -k3 | tail -1)
+worst=$(grep -v identical "$work/same.txt" | sort -g -k3 | tail -1 | sed "s/^ok *//")
 echo "$test_name: 2 ranks against one process: $(grep -c identical "$work/same.txt") arrays" \
   "identical, the worst $worst"
 checks=$((checks + 1))
