@@ -67,6 +67,7 @@
 #include "stages/march_stage.hpp"
 #include "stages/march_tables.hpp"
 #include "stages/quasistatic_stage.hpp"
+#include "stages/rank_rows.hpp"
 #include "stages/time_card.hpp"
 
 #include <cmath>
@@ -117,9 +118,7 @@ int main(int argc, char** argv) {
            "backward-euler: the energies and the convexification counts)"},
       .cards = sig::stage_cards("march").cards};
   const bool distributed = sig::mpi::launched(); // a rank of an mpirun job
-  const int code = sig::run_stage("sig-march", [&] {
-    // MPI first, so that a failure below can end the job's other ranks.
-    if (distributed) sig::mpi::start();
+  return sig::run_stage_on_ranks("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
@@ -306,7 +305,4 @@ int main(int argc, char** argv) {
                 history.converged ? "" : " (STOPPED: Newton failed)");
     std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
   });
-  // The other ranks may wait in a collective call of MUMPS: end them all.
-  if (code != 0 && distributed) sig::mpi::abort(code);
-  return code;
 }

@@ -57,9 +57,7 @@ int main(int argc, char** argv) {
                  "times; per load step in large deformation)"},
       .cards = sig::stage_cards("solve").cards};
   const bool distributed = sig::mpi::launched(); // a rank of an mpirun job
-  const int code = sig::run_stage("solve", [&] {
-    // MPI first, so that a failure below can end the job's other ranks.
-    if (distributed) sig::mpi::start();
+  return sig::run_stage_on_ranks("solve", [&] {
     // 1. Arguments and the SOLVER card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile& datafile = args.deck;
@@ -239,7 +237,4 @@ int main(int argc, char** argv) {
               << "\n";
     if (!solution.converged) std::cout << "sig-solve: Nv, " << solution.failure << "\n";
   });
-  // The other ranks may wait in a collective call of MUMPS: end them all.
-  if (code != 0 && distributed) sig::mpi::abort(code);
-  return code;
 }

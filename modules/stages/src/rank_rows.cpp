@@ -4,6 +4,7 @@
 #include "assembly/system.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "core/stage.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/mpi_session.hpp"
 
@@ -73,6 +74,16 @@ void require_mumps_under_mpirun(const Datafile& datafile, const std::string& bac
 std::string solver_words(const std::string& backend, const std::string& ordering, int ranks) {
   return backend + (ordering.empty() ? "" : ", ordering " + ordering) +
          (mpi::launched() ? ", " + std::to_string(ranks) + (ranks == 1 ? " rank" : " ranks") : "");
+}
+
+int run_stage_on_ranks(const std::string& stage, const std::function<void()>& body) {
+  const bool distributed = mpi::launched();
+  const int code = run_stage(stage, [&] {
+    if (distributed) mpi::start();
+    body();
+  });
+  if (code != 0 && distributed) mpi::abort(code);
+  return code;
 }
 
 bool writes_outputs() {

@@ -4,6 +4,7 @@
 // dof of a node with its node, so that the frames of a contact node turn rows of one rank; and
 // what a distributed stage does with them beside the factorization.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ void require_mumps_under_mpirun(const Datafile& datafile, const std::string& bac
 /// "mumps, ordering amd, 2 ranks" for a stage's log line: the backend, MUMPS's ordering where it
 /// has one, and under mpirun the ranks.
 std::string solver_words(const std::string& backend, const std::string& ordering, int ranks);
+
+/// run_stage (core/stage.hpp) for a stage that may run as a rank of an mpirun job: there MPI
+/// starts before `body`, so that a failure in it can end the job, and a non-zero exit ends every
+/// rank (MPI_Abort: the others may wait in a collective call of MUMPS).
+int run_stage_on_ranks(const std::string& stage, const std::function<void()>& body);
 
 /// Whether this process writes the stage's files: the host (rank 0) of an mpirun job once every
 /// rank has come here (a collective call: a rank that failed has aborted the job before, so the
