@@ -12,9 +12,9 @@
 # (core/provenance.hpp) and `sig-dump --stale` compares that with the deck (core/stale.hpp): no
 # hashing here. --all runs every stage.
 #
-# --np P runs sig-solve as P ranks under mpirun (a small-strain contact deck with linear=mumps:
-# each rank holds its part of K, README "Distributed solve"); the other stages run as one
-# process. As root it sets OpenMPI's allow-run-as-root variables; --oversubscribe lets P exceed
+# --np P runs sig-solve (a small-strain contact deck with linear=mumps) or sig-march (a march in
+# velocity, backward-euler or quasistatic, with linear=mumps) as P ranks under mpirun: each rank
+# holds its part of K (README "Distributed solve"); the other stages run as one process. As root it sets OpenMPI's allow-run-as-root variables; --oversubscribe lets P exceed
 # the cores (one BLAS thread per rank; mpirun_ranks, lib/environment.sh).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
@@ -47,10 +47,10 @@ while [ $# -gt 0 ]; do
   shift
 done
 
-# stage NAME: one stage of the chain, sig-solve under mpirun with --np.
+# stage NAME: one stage of the chain, sig-solve or sig-march under mpirun with --np.
 stage() {
-  if [ "$1" = solve ] && [ "$np" -gt 0 ]; then
-    mpirun_ranks "$np" "$bin/sig-solve" "$deck" "${options[@]}"
+  if { [ "$1" = solve ] || [ "$1" = march ]; } && [ "$np" -gt 0 ]; then
+    mpirun_ranks "$np" "$bin/sig-$1" "$deck" "${options[@]}"
   else
     "$bin/sig-$1" "$deck" "${options[@]}"
   fi

@@ -223,13 +223,18 @@ TEST(Tae, RoundTrip) {
   EXPECT_TRUE(back.time_loads.empty());
 }
 
+/// A Kelvin-Voigt body with two memory terms, a ramped and a constant traction (and `density`,
+/// e.g. " rho=3", for a mass) on a mesh of two regions.
+LinearSystem viscoelastic_system(const Mesh& mesh, const std::string& density = "") {
+  return assemble(mesh, "MATERIAL law=kelvin-voigt E=2 nu=0.3 eta1=0.25 eta2=0.5" + density +
+                            "\nMEMORY region=1 E=1 nu=0.3 beta=10\nMEMORY E=3 nu=0.2 beta=0.5\n"
+                            "TRACTION ref=3 f=0,-10 ramp=1\nTRACTION ref=2 f=1,0\n"
+                            "DIRICHLET ref=4 ux=0 uy=0\n");
+}
+
 TEST(Tae, ViscoelasticRoundTrip) {
   const Mesh mesh = test::square_mesh(3, 2, 1.0, 0.2, 2);
-  const LinearSystem s =
-      assemble(mesh, "MATERIAL law=kelvin-voigt E=2 nu=0.3 eta1=0.25 eta2=0.5\n"
-                     "MEMORY region=1 E=1 nu=0.3 beta=10\nMEMORY E=3 nu=0.2 beta=0.5\n"
-                     "TRACTION ref=3 f=0,-10 ramp=1\nTRACTION ref=2 f=1,0\n"
-                     "DIRICHLET ref=4 ux=0 uy=0\n");
+  const LinearSystem s = viscoelastic_system(mesh);
   const testing::ScratchFolder dir;
   const auto path = dir / "case.tae";
   write_tae(path, s, "viscoelastic round trip");
@@ -279,6 +284,46 @@ TEST(Tae, RowsOfTwoRanksSumToTheWhole) {
   }
   // A partition of another mesh is refused with the file named.
   EXPECT_THROW(read_tae_rows(path, std::vector<char>(first.size() - 2, 1)), Error);
+}
+
+// A march's rows (mpirun sig-march): M, V, every memory term and M_lumped of each rank's rows sum
+// to the whole, as K; the time loads come whole to every rank; without `march` none of them.
+TEST(Tae, MarchRowsOfTwoRanksSumToTheWhole) {
+  const Mesh mesh = test::square_mesh(6, 4, 1.0, 0.2, 2);
+  const LinearSystem s = viscoelastic_system(mesh, " rho=3");
+  ASSERT_EQ(s.memory.size(), 2u);
+  ASSERT_GT(s.M.nonZeros(), 0);
+  const testing::ScratchFolder dir;
+  const auto path = dir / "case.tae";
+  write_tae(path, s, "march rows");
+  const int n = s.num_dofs();
+  std::vector<char> first(static_cast<std::size_t>(n)), second(first.size());
+  for (int dof = 0; dof < n; ++dof)
+    first[static_cast<std::size_t>(dof)] = dof / 2 % 2 == 0;
+  for (std::size_t k = 0; k < first.size(); ++k)
+    second[k] = !first[k];
+  const LinearSystem a = read_tae_rows(path, first, true), b = read_tae_rows(path, second, true);
+  EXPECT_EQ((a.K + b.K - s.K).norm(), 0.0);
+  EXPECT_EQ((a.M + b.M - s.M).norm(), 0.0);
+  EXPECT_EQ((a.V + b.V - s.V).norm(), 0.0);
+  EXPECT_EQ(a.M_lumped + b.M_lumped, s.M_lumped);
+  EXPECT_EQ(a.f + b.f, s.f);
+  for (std::size_t j = 0; j < 2; ++j) {
+    EXPECT_EQ(a.memory[j].beta, s.memory[j].beta);
+    EXPECT_EQ((a.memory[j].K + b.memory[j].K - s.memory[j].K).norm(), 0.0);
+    EXPECT_GT(a.memory[j].K.norm(), 0.0);
+    EXPECT_GT(b.memory[j].K.norm(), 0.0);
+  }
+  for (const LinearSystem* part : {&a, &b}) {
+    EXPECT_EQ(part->time_loads.rate, s.time_loads.rate);
+    for (int j = 0; j < n; ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(part->M, j); it; ++it)
+        EXPECT_TRUE((part == &a ? first : second)[static_cast<std::size_t>(it.row())]);
+  }
+  const LinearSystem solve = read_tae_rows(path, first);
+  EXPECT_EQ(solve.M.size(), 0);
+  EXPECT_EQ(solve.V.size(), 0);
+  EXPECT_TRUE(solve.memory.empty() && solve.time_loads.empty());
 }
 
 TEST(Tae, NoMassWithoutDensity) {

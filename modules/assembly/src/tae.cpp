@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <span>
 #include <sstream>
 
@@ -295,15 +296,19 @@ LinearSystem read_tae(const std::filesystem::path& path) {
 
 namespace {
 
-/// The entries of K_col or K_val, in file order, kept when their row is owned.
+/// The entries of K_col, K_val (or M_val, V_val), in file order, kept when their row is owned;
+/// memory_val holds one such array per memory term, one after the other.
 template <class T> class RowEntries {
 public:
   RowEntries(const std::vector<std::int64_t>& rowptr, const std::vector<char>& owned)
       : rowptr_(rowptr), owned_(owned) {}
   void take(const char* piece, std::size_t size) {
     const auto n = static_cast<std::int64_t>(rowptr_.size()) - 1;
-    for (std::size_t b = 0; b < size; b += sizeof(T), ++entry_) {
-      while (row_ < n && entry_ >= rowptr_[row_ + 1] - 1)
+    const std::int64_t nnz = rowptr_.back() - 1;
+    for (std::size_t b = 0; b < size; b += sizeof(T), ++taken_) {
+      const std::int64_t entry = nnz > 0 ? taken_ % nnz : taken_;
+      if (entry == 0) row_ = 0; // the next matrix's first entry
+      while (row_ < n && entry >= rowptr_[row_ + 1] - 1)
         ++row_;
       if (row_ < n && owned_[static_cast<std::size_t>(row_)] != 0) {
         T value;
@@ -312,22 +317,43 @@ public:
       }
     }
   }
-  std::int64_t entries() const { return entry_; }
+  std::int64_t entries() const { return taken_; }
   std::vector<T>& kept() { return kept_; }
 
 private:
   const std::vector<std::int64_t>& rowptr_;
   const std::vector<char>& owned_;
-  std::int64_t entry_ = 0, row_ = 0;
+  std::int64_t taken_ = 0, row_ = 0;
   std::vector<T> kept_;
 };
 
+/// The arrays of a TAE read_tae_rows streams (the matrices' entries), and those it keeps whole.
+bool streamed_row_array(const std::string& name) {
+  return name == "K_rowptr" || name == "K_col" || name == "K_val" || name == "M_val" ||
+         name == "V_val" || name == "memory_val";
+}
+
+bool whole_row_array(const std::string& name) {
+  return name == "ndof" || name == "f" || name == "dirichlet_dof" || name == "dirichlet_value" ||
+         name == "M_lumped" || name == "f_rate" || name == "memory_beta" ||
+         name.starts_with("moving_");
+}
+
+/// The values of `whole` on the rows `owned` marks, zero on the others.
+Eigen::VectorXd on_rows(const std::vector<double>& whole, const std::vector<char>& owned) {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(owned.size()));
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    if (owned[i]) v[static_cast<Eigen::Index>(i)] = whole[i];
+  return v;
+}
+
 } // namespace
 
-LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<char>& owned) {
+LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<char>& owned,
+                           bool march) {
   std::vector<std::int64_t> rowptr; // whole (ndof + 1 indices): the structure, not the values
   RowEntries<std::int64_t> col(rowptr, owned);
-  RowEntries<double> val(rowptr, owned);
+  std::map<std::string, RowEntries<double>> values; // K_val, and M_val ... for a march
   const auto take = [&](const DsArray& array, const char* piece, std::size_t size) {
     if (array.name == "K_rowptr") {
       SIG_VERIFY(array.type == DsType::Int64, path.string() << ": array 'K_rowptr' is not Int64");
@@ -345,15 +371,17 @@ LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<
       SIG_VERIFY(array.type == DsType::Int64, path.string() << ": array 'K_col' is not Int64");
       col.take(piece, size);
     } else {
-      SIG_VERIFY(array.type == DsType::Float64, path.string() << ": array 'K_val' is not Float64");
-      val.take(piece, size);
+      SIG_VERIFY(array.type == DsType::Float64,
+                 path.string() << ": array '" << array.name << "' is not Float64");
+      values.try_emplace(array.name, rowptr, owned).first->second.take(piece, size);
     }
   };
-  const auto streamed = [](const std::string& name) {
-    return name == "K_rowptr" || name == "K_col" || name == "K_val";
+  const auto streamed = [march](const std::string& name) {
+    return streamed_row_array(name) && (march || name.starts_with("K_"));
   };
-  const auto wanted = [](const std::string& name) {
-    return name == "ndof" || name == "f" || name == "dirichlet_dof" || name == "dirichlet_value";
+  const auto wanted = [march](const std::string& name) {
+    return whole_row_array(name) &&
+           (march || name == "ndof" || name == "f" || name.starts_with("dirichlet_"));
   };
   const Ds ds = read_ds_streamed(path, "TAE", wanted, streamed, take);
   const std::int64_t n = ds.integer("ndof");
@@ -361,7 +389,8 @@ LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<
              path.string() << ": ndof = " << n << ", the partition has " << owned.size()
                            << " rows (a TAE of another mesh?)");
   SIG_VERIFY(static_cast<std::int64_t>(rowptr.size()) == n + 1 && rowptr.front() == 1 &&
-                 col.entries() == rowptr.back() - 1 && val.entries() == col.entries(),
+                 col.entries() == rowptr.back() - 1 && values.contains("K_val") &&
+                 values.at("K_val").entries() == col.entries(),
              path.string() << ": arrays K_rowptr/K_col/K_val do not describe a " << n << " x " << n
                            << " matrix");
   // This rank's rows in the file's CSR form, the others empty; from_csr checks them.
@@ -372,22 +401,54 @@ LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<
     const std::int64_t count = owned[static_cast<std::size_t>(i)] ? rowptr[i + 1] - rowptr[i] : 0;
     local_rowptr[i + 1] = local_rowptr[i] + count;
   }
+  // Every matrix of the file on K's pattern: its rows' entries, checked as K's.
+  const auto rows_of = [&](const char* name, std::vector<double> kept) {
+    SIG_VERIFY(values.at(name).entries() == col.entries(),
+               path.string() << ": array '" << name << "' holds " << values.at(name).entries()
+                             << " values for the " << col.entries() << " entries of K");
+    return from_csr(path, n, local_rowptr, col.kept(), kept, name, &owned);
+  };
   LinearSystem system;
   system.rank_rows = true;
-  system.K = from_csr(path, n, local_rowptr, col.kept(), val.kept(), "K_val", &owned);
+  system.K = rows_of("K_val", std::move(values.at("K_val").kept()));
   // The pattern made symmetric with explicit zeros at the transposed places of the rows held:
   // the frames of the contact nodes turn K in place on a symmetric pattern
-  // (solver/nodal_frames.hpp), and a row not held stays zero through them.
+  // (solver/nodal_frames.hpp), and a row not held stays zero through them. The other matrices
+  // of a march enter its step matrix beside K, on K's pattern.
   const Eigen::SparseMatrix<double> transposed = system.K.transpose();
   system.K = system.K + 0.0 * transposed;
   const auto f = ds.reals("f");
   SIG_VERIFY(static_cast<std::int64_t>(f.size()) == n,
              path.string() << ": array 'f' must have ndof = " << n << " values");
-  system.f = Eigen::VectorXd::Zero(n);
-  for (std::int64_t i = 0; i < n; ++i)
-    if (owned[static_cast<std::size_t>(i)]) system.f[i] = f[static_cast<std::size_t>(i)];
+  system.f = on_rows(f, owned);
   system.M_lumped = Eigen::VectorXd::Zero(n);
   read_dirichlet(path, ds, n, system);
+  if (!march) return system;
+  if (values.contains("M_val")) system.M = rows_of("M_val", std::move(values.at("M_val").kept()));
+  if (values.contains("V_val")) system.V = rows_of("V_val", std::move(values.at("V_val").kept()));
+  if (ds.has("memory_beta")) {
+    const auto beta = ds.reals("memory_beta");
+    SIG_VERIFY(values.contains("memory_val") &&
+                   values.at("memory_val").entries() ==
+                       static_cast<std::int64_t>(beta.size()) * col.entries(),
+               path.string() << ": array 'memory_val' does not hold " << beta.size() << " terms of "
+                             << col.entries() << " entries");
+    const std::vector<double>& kept = values.at("memory_val").kept();
+    const auto local = static_cast<std::ptrdiff_t>(col.kept().size());
+    for (std::size_t j = 0; j < beta.size(); ++j) {
+      SIG_VERIFY(beta[j] > 0, path.string() << ": array 'memory_beta' entry " << j + 1 << " = "
+                                            << beta[j] << " is not > 0");
+      const auto first = kept.begin() + static_cast<std::ptrdiff_t>(j) * local;
+      system.memory.push_back(
+          {beta[j], from_csr(path, n, local_rowptr, col.kept(),
+                             std::vector<double>(first, first + local), "memory_val", &owned)});
+    }
+  }
+  const auto lumped = ds.reals("M_lumped");
+  SIG_VERIFY(static_cast<std::int64_t>(lumped.size()) == n,
+             path.string() << ": array 'M_lumped' must have ndof = " << n << " values");
+  system.M_lumped = on_rows(lumped, owned);
+  system.time_loads = get_time_loads(path, ds, n);
   return system;
 }
 

@@ -12,7 +12,8 @@ DynamicBackwardEuler::DynamicBackwardEuler(ViscoelasticProblem problem, double k
                                            Eigen::VectorXd u0, Eigen::VectorXd w0,
                                            Eigen::VectorXd gap, ContactSetting setting)
     : load_(std::move(problem.load)), M_(std::move(problem.M)), k_(k), u_(std::move(u0)),
-      w_(std::move(w0)), gap_(std::move(gap)), setting_(std::move(setting)) {
+      w_(std::move(w0)), rank_rows_(problem.rank_rows), gap_(std::move(gap)),
+      setting_(std::move(setting)) {
   SIG_VERIFY(k_ > 0 && std::isfinite(k_), "backward Euler: time step k = " << k_);
   SIG_VERIFY(problem.memory.empty(),
              "backward Euler: the dynamic march of ch. 6 has no memory term (MEMORY cards are "
@@ -32,16 +33,15 @@ DynamicBackwardEuler::DynamicBackwardEuler(ViscoelasticProblem problem, double k
   M_.prune(0.0);
   S_ = (1.0 / k_) * M_ + k_ * problem.K;
   if (problem.C.size() > 0) S_ += problem.C;
-  // The products read the lower triangles only: half the memory traffic of the full matrices.
-  K_lower_ = problem.K.triangularView<Eigen::Lower>();
-  M_lower_ = M_.triangularView<Eigen::Lower>();
+  K_product_ = SymmetricProduct(problem.K, rank_rows_);
+  M_product_ = SymmetricProduct(M_, rank_rows_);
   update_products();
 }
 
 void DynamicBackwardEuler::update_products() {
   const Stopwatch clock;
-  Ku_.noalias() = K_lower_.selfadjointView<Eigen::Lower>() * u_;
-  Mw_.noalias() = M_lower_.selfadjointView<Eigen::Lower>() * w_;
+  Ku_ = K_product_(u_);
+  Mw_ = M_product_(w_);
   seconds_products_ = clock.seconds();
 }
 

@@ -8,29 +8,28 @@ namespace sig {
 
 QuasistaticKelvinVoigt::QuasistaticKelvinVoigt(ViscoelasticProblem problem, double k,
                                                Eigen::VectorXd u0)
-    : load_(std::move(problem.load)), k_(k), u_(std::move(u0)) {
+    : load_(std::move(problem.load)), k_(k), rank_rows_(problem.rank_rows), u_(std::move(u0)) {
   SIG_VERIFY(k_ > 0 && std::isfinite(k_), "quasistatic march: time step k = " << k_);
   SIG_VERIFY(load_, "quasistatic march: no load history");
   const int n = problem.num_dofs();
   if (u_.size() == 0) u_ = Eigen::VectorXd::Zero(n);
   SIG_VERIFY(u_.size() == n, "quasistatic march: u0 of size " << u_.size() << " for " << n);
   S_ = k_ * problem.K;
-  // The right side's products read the lower triangles only: half the memory traffic.
-  elastic_lower_ = problem.K.triangularView<Eigen::Lower>();
+  elastic_ = SymmetricProduct(problem.K, rank_rows_);
   if (problem.C.size() > 0) S_ += problem.C;
   // w_0 = 0 (ALGORITHMS.md C8): every history starts at P_1 = 0.
   for (const ExponentialStiffness& term : problem.memory) {
     S_ += (0.5 * k_) * term.K;
-    memory_lower_.push_back(term.K.triangularView<Eigen::Lower>());
+    memory_K_.emplace_back(term.K, rank_rows_);
     memory_.emplace_back(term.beta, k_, Eigen::VectorXd::Zero(n));
   }
 }
 
 Eigen::VectorXd QuasistaticKelvinVoigt::right_side(int n) const {
   Eigen::VectorXd b = load_(n * k_);
-  b.noalias() -= elastic_lower_.selfadjointView<Eigen::Lower>() * u_;
+  elastic_.subtract(u_, b);
   for (std::size_t m = 0; m < memory_.size(); ++m)
-    b.noalias() -= memory_lower_[m].selfadjointView<Eigen::Lower>() * (k_ * memory_[m].history());
+    memory_K_[m].subtract(k_ * memory_[m].history(), b);
   return b;
 }
 

@@ -6,6 +6,8 @@
 #include "solver/condensed_bulk.hpp"
 #include "solver/contact_condensation.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/mpi_session.hpp"
+#include "solver/mumps_solver.hpp"
 
 #include <sstream>
 
@@ -30,7 +32,7 @@ LinearContactMarch::LinearContactMarch(VelocityScheme& scheme, const VelocityCon
   w_ = Eigen::VectorXd::Zero(S.rows());
   const Stopwatch clock;
   if (contact_ == nullptr) {
-    factor_ = make_linear_solver(backend, MatrixKind::spd);
+    factor_ = make_linear_solver(backend, MatrixKind::spd, scheme_.rank_rows());
     factor_->factorize(S);
     seconds_factorize_ = clock.seconds();
     return;
@@ -46,7 +48,8 @@ LinearContactMarch::LinearContactMarch(VelocityScheme& scheme, const VelocityCon
     frames.push_back(contact_frame(n)); // nodal_frame(n) in 2D
   condensation_ = std::make_unique<ContactCondensation>(S, c.first_dof, std::move(frames),
                                                         c.setting.has_friction(), backend,
-                                                        true); // S is positive definite
+                                                        true, // S is positive definite
+                                                        scheme_.rank_rows());
   Eigen::VectorXd default_stiffness(c.size());
   for (int p = 0; p < c.size(); ++p)
     default_stiffness[p] = off_wall_stiffness(*method_, c.setting.law[p], c.setting.weight[p]);
@@ -62,6 +65,16 @@ int LinearContactMarch::dense_factorizations() const {
 
 int LinearContactMarch::tail_factorizations() const {
   return bulk_ ? bulk_->tail_factorizations() : 0;
+}
+
+std::string LinearContactMarch::ordering() const {
+  if (condensation_) return condensation_->ordering();
+  const auto* mumps = dynamic_cast<const MumpsSolver*>(factor_.get());
+  return mumps != nullptr ? mumps->ordering() : std::string();
+}
+
+int LinearContactMarch::ranks() const {
+  return scheme_.rank_rows() ? mpi::size() : 1;
 }
 
 MarchRecords LinearContactMarch::records() const {

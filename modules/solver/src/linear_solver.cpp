@@ -79,7 +79,11 @@ std::string to_string(MatrixKind kind) {
   return "?";
 }
 
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, MatrixKind kind) {
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, MatrixKind kind,
+                                                 bool rank_rows) {
+  SIG_VERIFY(!rank_rows || backend_named(name) == Backend::mumps,
+             "a solve over several ranks (mpirun) factorizes with MUMPS: SOLVER linear=mumps, not "
+                 << name);
   switch (backend_named(name)) {
   case Backend::cholmod:
     SIG_VERIFY(kind == MatrixKind::spd, "linear solver 'cholmod' factorizes spd matrices only, not "
@@ -88,7 +92,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, Matrix
   case Backend::umfpack:
     return std::make_unique<UmfpackSolver>(kind);
   case Backend::mumps:
-    return std::make_unique<MumpsSolver>(kind);
+    return std::make_unique<MumpsSolver>(kind, std::vector<int>{}, rank_rows);
   }
   return nullptr;
 }

@@ -15,10 +15,12 @@
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
 #include "solver/convexification.hpp"
+#include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
 #include "stages/march_inputs.hpp"
 #include "stages/march_stage.hpp"
 #include "stages/march_tables.hpp"
+#include "stages/rank_rows.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -72,10 +74,12 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   // 1. Cards: what the march does not model, then SOLVER and CONVEXIFICATION.
   refuse_other_models(datafile, time);
   SolverCard solver = read_solver_card(datafile, /*march=*/true);
+  if (mpi::launched()) require_mumps_under_mpirun(datafile, solver.backend);
   if (datafile.find("CONTACT") != nullptr)
     verify_total_iterations(datafile, ContactSolverParameters::solve_max_iterations, time.steps);
 
-  // 2. Mesh, laws, the assembled system (K, M, V, loads in time), the initial state.
+  // 2. Mesh, laws, the assembled system (K, M, V, loads in time; under mpirun this rank's rows of
+  //    the matrices, stages/rank_rows.hpp), the initial state.
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
   refuse_in_3d(mesh, datafile.require("TIME"), "scheme",
                "the backward-Euler march in velocity (scheme=backward-euler)");
@@ -85,7 +89,7 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
           .front()
           ->fail("law", "a hyperelastic law is large deformation; the backward-Euler march is "
                         "small strain (law=hooke or kelvin-voigt)");
-  const LinearSystem system = read_tae(args.ds_path("tae"));
+  const LinearSystem system = read_tae_of_rank(args.ds_path("tae"), mesh, /*march=*/true);
   if (system.M.nonZeros() == 0) {
     const std::string why = "every MATERIAL has density 0: the dynamic march needs a mass, give "
                             "the MATERIAL cards rho > 0 (1e-6 GPa s^2/m^2 is 1000 kg/m^3 in GPa "
@@ -94,7 +98,7 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
     if (!materials.empty()) materials.front()->fail("rho", why);
     throw InputError(datafile.path, 0, "rho", why);
   }
-  const ReducedSystem reduced = reduce(system);
+  const ReducedSystem reduced = reduce_on_ranks(system);
   const InitialFields initial = initial_fields(datafile, mesh);
   Eigen::VectorXd u0 = reduced.restrict(initial.u), w0 = reduced.restrict(initial.v);
 
@@ -167,8 +171,9 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
       });
   const auto [iterations, most] = newton_iterations(history);
 
-  // 6. case.hist and steps.csv (both atomic), and a summary line. A failed step's products were
-  //    not formed: 0.
+  // 6. case.hist and steps.csv (both atomic), and a summary line: the host's, every rank done. A
+  //    failed step's products were not formed: 0.
+  if (!writes_outputs()) return;
   HistoryInfo info = velocity_history_info(time, solver, march, elements ? &*elements : nullptr);
   info.seconds = history.seconds;
   info.mass = to_string(time.mass);
@@ -191,10 +196,10 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
               "%g, factorizations: %d sparse + %d dense, Newton iterations %d (at most %d a "
               "step), convexification %.0f (at most %.0f a step), E0 = %.9g, E = %.9g, "
               "factorize %.3f s, march %.3f s%s\n",
-              label.c_str(), solver.backend.c_str(), to_string(time.mass).c_str(),
-              reduced.num_free(), contact ? contact->size() : 0, history.steps.size() - 1,
-              time.steps, time.k, march.sparse_factorizations(), march.dense_factorizations(),
-              iterations, most, outer_total, outer_most,
+              label.c_str(), solver_words(solver.backend, info.ordering, info.ranks).c_str(),
+              to_string(time.mass).c_str(), reduced.num_free(), contact ? contact->size() : 0,
+              history.steps.size() - 1, time.steps, time.k, march.sparse_factorizations(),
+              march.dense_factorizations(), iterations, most, outer_total, outer_most,
               history.steps.front().energy.total + history.steps.front().energy.interface,
               history.steps.back().energy.total + history.steps.back().energy.interface,
               march.seconds_factorize(), history.seconds,

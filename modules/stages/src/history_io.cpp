@@ -131,6 +131,8 @@ void write_hist(const std::filesystem::path& path, const MarchHistory& history,
   if (!info.mass.empty()) ds.put_text("mass", info.mass);
   if (!info.stress.empty()) ds.put_text("stress", info.stress);
   ds.put_text("linear", info.linear);
+  if (!info.ordering.empty()) ds.put_text("ordering", info.ordering);
+  ds.put_int("ranks", info.ranks);
   if (info.setup) ds.put_text("method", info.setup->method);
   ds.put_scalar("k", info.k);
   ds.put_scalar("T", info.T);

@@ -68,6 +68,7 @@ ViscoelasticProblem viscoelastic_problem(const LinearSystem& system, const Reduc
     problem.memory.push_back({term.beta, reduced.restrict_matrix(term.K)});
   if (mass.size() > 0) problem.M = reduced.restrict_matrix(mass);
   problem.load = reduced_load(reduced);
+  problem.rank_rows = system.rank_rows;
   return problem;
 }
 

@@ -27,6 +27,18 @@
 // one both take the friction laws (integrator/elastodynamic_march.hpp,
 // stages/finite_strain_march.hpp). A step whose Newton fails stops the march: the files hold the
 // steps done, HIST converged = 0, a warning is printed and the stage exits 0.
+//
+// Under `mpirun -np P` (the marches in velocity: TIME scheme=backward-euler or quasistatic, with
+// SOLVER linear=mumps) every rank holds the rows of the step matrix's operators (K, M, V, the
+// memory terms) of its nodes (a METIS partition, stages/rank_rows.hpp), read streaming off
+// case.tae, and MUMPS factorizes the step matrix over them once, keeping the contact unknowns as
+// its Schur complement on rank 0. Each step's right side is formed from every rank's rows (the
+// products summed over the ranks), the contact problem of the step (its Newton, and the
+// convexification loop of FRICTION law=nonmonotone) is solved on the complement every rank
+// receives, and rank 0 alone writes case.hist and steps.csv, which record the ranks, once every
+// rank is done. A rank that fails ends the job (MPI_Abort): no file is written. The midpoint and
+// Newmark schemes and the hyperelastic march (TIME scheme=midpoint) are refused under mpirun on
+// the TIME card.
 #include "stages/stage_mains.hpp"
 
 #include "assembly/dirichlet.hpp"
@@ -46,6 +58,7 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
+#include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
 #include "stages/contact_card.hpp"
 #include "stages/dynamic_stage.hpp"
@@ -56,6 +69,7 @@
 #include "stages/march_stage.hpp"
 #include "stages/march_tables.hpp"
 #include "stages/quasistatic_stage.hpp"
+#include "stages/rank_rows.hpp"
 #include "stages/time_card.hpp"
 
 #include <cmath>
@@ -88,7 +102,10 @@ int march_main(int argc, char** argv) {
                  "On a 3D mesh: the linear schemes (midpoint, Newmark; consistent, lumped or EMM "
                  "mass), the hyperelastic march with every strategy and the quasistatic "
                  "Kelvin-Voigt march, frictionless (issue 28); "
-                 "SOLVER candidate_gap= condenses only the contact nodes near the obstacle.",
+                 "SOLVER candidate_gap= condenses only the contact nodes near the obstacle. "
+                 "Under mpirun -np P the marches in velocity (backward-euler, quasistatic; "
+                 "SOLVER linear=mumps) factorize their step matrix by MUMPS over the ranks, each "
+                 "holding the rows of its METIS part of the mesh.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
                 "OUTDIR/case.mili (sig-material: the laws, hyperelastic or not)",
@@ -104,7 +121,8 @@ int march_main(int argc, char** argv) {
            "status counts, largest velocity, normal displacement and pressure; "
            "backward-euler: the energies and the convexification counts)"},
       .cards = sig::stage_cards("march").cards};
-  return sig::run_stage("sig-march", [&] {
+  const bool distributed = sig::mpi::launched(); // a rank of an mpirun job
+  return sig::run_stage_on_ranks("sig-march", [&] {
     // 1. Command line and cards: TIME, INITIAL, CONTACT (strategy, r, gap), SOLVER (backend,
     // maxit).
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
@@ -121,6 +139,14 @@ int march_main(int argc, char** argv) {
          inertia = scheme.march != sig::MarchKind::quasistatic](const std::string& library) {
           return deck + ": " + sig::explain_failed_factorization(outdir, nullptr, inertia, library);
         });
+    // Under mpirun: the marches in velocity, whose step matrix MUMPS factorizes over the ranks.
+    if (distributed && scheme.march != sig::MarchKind::quasistatic &&
+        scheme.march != sig::MarchKind::viscoelastodynamics)
+      datafile.require("TIME").fail("scheme",
+                                    "scheme=" + time.scheme +
+                                        " marches in one process: under mpirun sig-march takes "
+                                        "the marches in velocity (scheme=backward-euler or "
+                                        "quasistatic); run it without mpirun");
     if (scheme.march == sig::MarchKind::quasistatic) {
       sig::run_quasistatic_march(args, datafile, time);
       return;

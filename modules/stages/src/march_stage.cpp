@@ -2,6 +2,7 @@
 
 #include "contact/contact_elements.hpp"
 #include "core/log.hpp"
+#include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
 
 #include <algorithm>
@@ -13,11 +14,14 @@ MarchHistory march_with_progress(
     const std::function<std::string(const StepRecord&, const DynamicState&)>& report) {
   Progress progress("sig-march " + label, time.steps, "time steps");
   std::string detail;
+  // The ranks of an mpirun job march together: the host alone shows it.
+  const bool host = mpi::rank() == 0;
   const MarchHistory history = march(scheme, time.steps, time.output_every,
                                      [&](const StepRecord& record, const DynamicState& state) {
                                        detail = report(record, state);
-                                       progress.update(record.step, detail);
+                                       if (host) progress.update(record.step, detail);
                                      });
+  if (!host) return history;
   if (history.converged) {
     progress.finish(detail);
   } else {
@@ -50,6 +54,8 @@ HistoryInfo velocity_history_info(const TimeParameters& time, const SolverCard& 
   HistoryInfo info = history_info(time, solver.backend, elements);
   info.setup = HistoryInfo::Setup{march.seconds_factorize(), march.dense_factorizations(),
                                   elements ? solver.parameters.method : "linear"};
+  info.ordering = march.ordering();
+  info.ranks = march.ranks();
   return info;
 }
 

@@ -13,10 +13,12 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
+#include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
 #include "stages/march_inputs.hpp"
 #include "stages/march_stage.hpp"
 #include "stages/march_tables.hpp"
+#include "stages/rank_rows.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -58,8 +60,10 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
   refuse_other_models(datafile);
   QuasistaticCase c;
   c.solver = read_solver_card(datafile, /*march=*/true);
+  if (mpi::launched()) require_mumps_under_mpirun(datafile, c.solver.backend);
 
-  // 2. Mesh, laws, assembled system (elastic K, viscous V, memory terms, loads in time).
+  // 2. Mesh, laws, assembled system (elastic K, viscous V, memory terms, loads in time; under
+  //    mpirun this rank's rows of the matrices, stages/rank_rows.hpp).
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
   // 3D: the march and its normal laws in velocity on the one code path (issue 28); the slip rate
   // of a 3D node has two tangents, which the friction laws in velocity do not take yet.
@@ -71,8 +75,8 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
           .front()
           ->fail("law", "a hyperelastic law is large deformation; the quasistatic march is small "
                         "strain (law=hooke or kelvin-voigt)");
-  c.system = read_tae(args.ds_path("tae"));
-  c.reduced = reduce(c.system);
+  c.system = read_tae_of_rank(args.ds_path("tae"), mesh, /*march=*/true);
+  c.reduced = reduce_on_ranks(c.system);
   c.u0 = c.reduced.restrict(initial_fields(datafile, mesh).u);
 
   // 3. The contact boundary.
@@ -112,7 +116,8 @@ void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
       });
   const auto [iterations, most] = newton_iterations(history);
 
-  // 3. case.hist and steps.csv (both atomic), and a summary line.
+  // 3. case.hist and steps.csv (both atomic), and a summary line: the host's, every rank done.
+  if (!writes_outputs()) return;
   HistoryInfo info = velocity_history_info(time, solver, march, elements ? &*elements : nullptr);
   info.seconds = history.seconds;
   write_hist(args.ds_path("hist"), history, c.reduced, info, datafile.title());
@@ -121,10 +126,10 @@ void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
   std::printf("sig-march: %s (%s), %d free dofs, %d contact nodes, %zu/%d steps of k = %g, "
               "factorizations: %d sparse + %d dense, Newton iterations %d (at most %d a step), "
               "factorize %.3f s, march %.3f s%s\n",
-              label.c_str(), solver.backend.c_str(), c.reduced.num_free(),
-              contact ? contact->size() : 0, history.steps.size() - 1, time.steps, time.k,
-              march.sparse_factorizations(), march.dense_factorizations(), iterations, most,
-              march.seconds_factorize(), history.seconds,
+              label.c_str(), solver_words(solver.backend, info.ordering, info.ranks).c_str(),
+              c.reduced.num_free(), contact ? contact->size() : 0, history.steps.size() - 1,
+              time.steps, time.k, march.sparse_factorizations(), march.dense_factorizations(),
+              iterations, most, march.seconds_factorize(), history.seconds,
               history.converged ? "" : " (STOPPED: Newton failed)");
   std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
 }

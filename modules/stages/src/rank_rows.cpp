@@ -1,6 +1,10 @@
 #include "stages/rank_rows.hpp"
 
+#include "assembly/dirichlet.hpp"
+#include "assembly/system.hpp"
+#include "core/datafile.hpp"
 #include "core/error.hpp"
+#include "core/stage.hpp"
 #include "mesh/mesh.hpp"
 #include "solver/mpi_session.hpp"
 
@@ -44,6 +48,49 @@ std::vector<char> rows_of_rank(const Mesh& mesh) {
     for (int c = 0; c < d; ++c)
       owned[static_cast<std::size_t>(d) * node + static_cast<std::size_t>(c)] = part[node] == me;
   return owned;
+}
+
+LinearSystem read_tae_of_rank(const std::filesystem::path& path, const Mesh& mesh, bool march) {
+  if (!mpi::launched()) return read_tae(path);
+  return read_tae_rows(path, rows_of_rank(mesh), march);
+}
+
+ReducedSystem reduce_on_ranks(const LinearSystem& system,
+                              const std::vector<int>& imposed_elsewhere) {
+  ReducedSystem reduced = reduce(system, imposed_elsewhere);
+  if (system.rank_rows) mpi::sum(reduced.f.data(), static_cast<int>(reduced.f.size()));
+  return reduced;
+}
+
+void require_mumps_under_mpirun(const Datafile& datafile, const std::string& backend) {
+  if (backend == "mumps") return;
+  const std::string why = "a stage under mpirun factorizes with MUMPS over its ranks: set SOLVER "
+                          "linear=mumps (not " +
+                          backend + ")";
+  if (const Card* solver = datafile.find("SOLVER")) solver->fail("linear", why);
+  throw InputError(datafile.path, 0, "linear", why);
+}
+
+std::string solver_words(const std::string& backend, const std::string& ordering, int ranks) {
+  return backend + (ordering.empty() ? "" : ", ordering " + ordering) +
+         (mpi::launched() ? ", " + std::to_string(ranks) + (ranks == 1 ? " rank" : " ranks") : "");
+}
+
+int run_stage_on_ranks(const std::string& stage, const std::function<void()>& body) {
+  const bool distributed = mpi::launched();
+  const int code = run_stage(stage, [&] {
+    if (distributed) mpi::start();
+    body();
+  });
+  if (code != 0 && distributed) mpi::abort(code);
+  return code;
+}
+
+bool writes_outputs() {
+  if (!mpi::launched()) return true;
+  double done = 1;
+  mpi::sum(&done, 1);
+  return mpi::rank() == 0;
 }
 
 } // namespace sig

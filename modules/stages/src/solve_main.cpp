@@ -61,9 +61,7 @@ int solve_main(int argc, char** argv) {
                  "times; per load step in large deformation)"},
       .cards = sig::stage_cards("solve").cards};
   const bool distributed = sig::mpi::launched(); // a rank of an mpirun job
-  const int code = sig::run_stage("solve", [&] {
-    // MPI first, so that a failure below can end the job's other ranks.
-    const int rank = distributed ? sig::mpi::rank() : 0;
+  return sig::run_stage_on_ranks("solve", [&] {
     // 1. Arguments and the SOLVER card.
     const sig::StageArgs args = sig::parse_stage_args(argc, argv, help);
     const sig::Datafile& datafile = args.deck;
@@ -108,8 +106,7 @@ int solve_main(int argc, char** argv) {
     const sig::ContactSolverParameters& parameters = card.parameters;
     const std::string& method = parameters.method;
     if (distributed) {
-      SIG_VERIFY(backend == "mumps", datafile.path << ": a solve under mpirun factorizes with "
-                                                      "MUMPS: set SOLVER linear=mumps");
+      sig::require_mumps_under_mpirun(datafile, backend);
       SIG_VERIFY(has_contact, datafile.path << ": a deck without contact is one linear solve: "
                                                "run it without mpirun");
     }
@@ -118,9 +115,7 @@ int solve_main(int argc, char** argv) {
     //    (by the DIRICHLET cards, and by the contact nodes, onto which the solve condenses), and
     //    the words for a matrix that fails to factorize all the same.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
-    const sig::LinearSystem system =
-        distributed ? sig::read_tae_rows(args.ds_path("tae"), sig::rows_of_rank(mesh))
-                    : sig::read_tae(args.ds_path("tae"));
+    const sig::LinearSystem system = sig::read_tae_of_rank(args.ds_path("tae"), mesh);
     std::optional<sig::ContactElements> contact;
     if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
     if (mesh.dim == 3) {
@@ -227,16 +222,13 @@ int solve_main(int argc, char** argv) {
 
     timer.reset();
 
-    // 5. Write case.b and report: rank 0's.
-    if (rank != 0) return;
+    // 5. Write case.b and report: rank 0's, every rank done.
+    if (!sig::writes_outputs()) return;
     if (distributed) solution.ranks = sig::mpi::size();
     sig::write_solution(args.ds_path("b"), solution, method, backend, datafile.title());
-    std::cout << "sig-solve: " << method << " (" << backend
-              << (solution.ordering.empty() ? "" : ", ordering " + solution.ordering)
-              << (distributed ? ", " + std::to_string(solution.ranks) +
-                                    (solution.ranks == 1 ? " rank" : " ranks")
-                              : "")
-              << "), " << solution.unknowns << " dofs, "
+    std::cout << "sig-solve: " << method << " ("
+              << sig::solver_words(backend, solution.ordering, solution.ranks) << "), "
+              << solution.unknowns << " dofs, "
               << (solution.converged ? "converged" : "NOT converged (Nv)") << " in "
               << solution.history.size() << " iterations";
     if (const auto& loop = solution.convexification) {
@@ -249,9 +241,6 @@ int solve_main(int argc, char** argv) {
               << "\n";
     if (!solution.converged) std::cout << "sig-solve: Nv, " << solution.failure << "\n";
   });
-  // The other ranks may wait in a collective call of MUMPS: end them all.
-  if (code != 0 && distributed) sig::mpi::abort(code);
-  return code;
 }
 
 } // namespace sig

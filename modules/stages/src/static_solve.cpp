@@ -8,8 +8,8 @@
 #include "solver/contact_condensation.hpp"
 #include "solver/convexification.hpp"
 #include "solver/linear_solver.hpp"
-#include "solver/mpi_session.hpp"
 #include "stages/newton_outcome.hpp"
+#include "stages/rank_rows.hpp"
 
 #include <algorithm>
 #include <array>
@@ -276,9 +276,7 @@ StaticSolution solve_whole(const LinearSystem& system, ContactElements contact,
   SIG_VERIFY(held.empty() || parameters.method != "penalty",
              "a DIRICHLET card holds a component of a contact node, which the penalty method "
              "cannot impose (it has no multipliers): use SOLVER method=alm or pdas");
-  ReducedSystem reduced = reduce(system, held);
-  // A rank's rows give the load's rows it holds: the whole load is their sum.
-  if (system.rank_rows) mpi::sum(reduced.f.data(), static_cast<int>(reduced.f.size()));
+  ReducedSystem reduced = reduce_on_ranks(system, held);
   const std::vector<int> first_dofs = contact_first_dofs(reduced, contact);
   const bool friction = contact.has_friction();
   StaticSolution s;

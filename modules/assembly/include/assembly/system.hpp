@@ -41,7 +41,8 @@ struct LinearSystem {
   std::vector<int> dirichlet_dofs;     ///< sorted, unique, 0-based
   Eigen::VectorXd dirichlet_values;
   double assemble_seconds = 0.0; ///< wall time of assemble_system
-  /// K and f hold only the rows of this rank of an mpirun job (read_tae_rows), the rest empty.
+  /// K, f (and M, M_lumped, V, the memory terms) hold only the rows of this rank of an mpirun
+  /// job (read_tae_rows), the rest empty; the time loads are whole.
   bool rank_rows = false;
 
   int num_dofs() const { return static_cast<int>(f.size()); }
@@ -85,12 +86,16 @@ LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
 void write_tae(const std::filesystem::path& path, const LinearSystem& system,
                const std::string& title);
 LinearSystem read_tae(const std::filesystem::path& path);
-/// The part of a TAE that one rank of a distributed solve holds: of K, the entries of the rows
-/// `owned` marks (ndof flags; K stays ndof x ndof, its other rows zero: explicit zeros where
-/// the transposed entries of the held rows lie, so that the pattern is symmetric), streamed off the
-/// file so that the whole K is never in memory; f on those rows (zero elsewhere); every Dirichlet
-/// condition. No mass, viscosity or time loads (the static solve has none). Symmetry is checked
-/// where a rank sees both entries (rows and columns it owns).
-LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<char>& owned);
+/// The part of a TAE that one rank of a distributed solve or march holds: of K, the entries of
+/// the rows `owned` marks (ndof flags; K stays ndof x ndof, its other rows zero: explicit zeros
+/// where the transposed entries of the held rows lie, so that the pattern is symmetric), streamed
+/// off the file so that the whole K is never in memory; f on those rows (zero elsewhere); every
+/// Dirichlet condition. With `march`, also the same rows of M, V and the memory terms (streamed
+/// as K, on K's pattern as the file has them) and of M_lumped, and the time loads whole (their
+/// change is a vector of the whole body, cheap beside the matrices); without it no mass,
+/// viscosity or time loads (the static solve has none). Symmetry is checked where a rank sees
+/// both entries (rows and columns it owns).
+LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<char>& owned,
+                           bool march = false);
 
 } // namespace sig

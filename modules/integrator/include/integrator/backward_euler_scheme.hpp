@@ -34,6 +34,7 @@
 // (ALGORITHMS.md 3.6 check 3); friction only takes more.
 #include "integrator/linear_contact_march.hpp"
 #include "integrator/viscoelastic_problem.hpp"
+#include "solver/symmetric_product.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -53,6 +54,7 @@ public:
   std::string name() const override { return "backward-euler"; }
   double time_step() const override { return k_; }
   const Eigen::SparseMatrix<double>& step_matrix() const override { return S_; }
+  bool rank_rows() const override { return rank_rows_; }
   Eigen::VectorXd right_side(int n) const override;
   void accept(int n, const Eigen::VectorXd& w) override;
   const Eigen::VectorXd& displacement() const override { return u_; }
@@ -88,8 +90,9 @@ private:
   double k_;
   Eigen::SparseMatrix<double> S_;
   Eigen::VectorXd u_, w_;
-  Eigen::SparseMatrix<double> K_lower_, M_lower_; ///< the lower triangles of K and M_
-  Eigen::VectorXd Ku_, Mw_;                       ///< K u_ and M_ w_
+  bool rank_rows_ = false;
+  SymmetricProduct K_product_, M_product_; ///< K u and M_ w
+  Eigen::VectorXd Ku_, Mw_;                ///< K u_ and M_ w_
   double seconds_products_ = 0;
   Eigen::VectorXd gap_;
   ContactSetting setting_; ///< the laws of the displacement

@@ -17,6 +17,7 @@
 #include "integrator/linear_contact_march.hpp"
 #include "integrator/memory.hpp"
 #include "integrator/viscoelastic_problem.hpp"
+#include "solver/symmetric_product.hpp"
 
 #include <vector>
 
@@ -31,6 +32,7 @@ public:
   std::string name() const override { return "quasistatic"; }
   double time_step() const override { return k_; }
   const Eigen::SparseMatrix<double>& step_matrix() const override { return S_; }
+  bool rank_rows() const override { return rank_rows_; }
   Eigen::VectorXd right_side(int n) const override;
   void accept(int n, const Eigen::VectorXd& w) override;
   const Eigen::VectorXd& displacement() const override { return u_; }
@@ -39,9 +41,10 @@ private:
   LoadHistory load_;
   double k_;
   Eigen::SparseMatrix<double> S_;
-  Eigen::SparseMatrix<double> elastic_lower_;             ///< K_B's lower triangle
-  std::vector<Eigen::SparseMatrix<double>> memory_lower_; ///< the K_m's lower triangles
-  std::vector<ExponentialMemory> memory_;                 ///< P_m
+  bool rank_rows_ = false;
+  SymmetricProduct elastic_;               ///< K_B u
+  std::vector<SymmetricProduct> memory_K_; ///< the K_m's products
+  std::vector<ExponentialMemory> memory_;  ///< P_m
   Eigen::VectorXd u_;
 };
 

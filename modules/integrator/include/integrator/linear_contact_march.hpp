@@ -71,6 +71,10 @@ public:
   /// S on the free dofs, symmetric positive definite (with the contact components held), the
   /// same at every step.
   virtual const Eigen::SparseMatrix<double>& step_matrix() const = 0;
+  /// The step matrix holds only this rank's rows of an mpirun job (ViscoelasticProblem's
+  /// rank_rows): the march factorizes it with MUMPS over the ranks; right sides are whole on
+  /// every rank.
+  virtual bool rank_rows() const { return false; }
   /// b_n of step n >= 1, from the steps accepted so far (1 .. n - 1).
   virtual Eigen::VectorXd right_side(int n) const = 0;
   /// Step n's velocity w_n (free dofs) is the solution: update the history.
@@ -128,6 +132,11 @@ public:
   /// solver/condensed_bulk.hpp); 0 without contact.
   int tail_factorizations() const;
   double seconds_factorize() const { return seconds_factorize_; }
+  /// MUMPS's ordering of the step matrix (empty with another backend).
+  std::string ordering() const;
+  /// The processes the step matrix is factorized over: the ranks of the mpirun job where the
+  /// scheme's step matrix holds rank rows, else 1.
+  int ranks() const;
 
 private:
   VelocityScheme& scheme_;

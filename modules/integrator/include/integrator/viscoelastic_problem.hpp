@@ -25,6 +25,10 @@ struct ViscoelasticProblem {
   std::vector<ExponentialStiffness> memory; ///< the memory kernel's terms; none without memory
   Eigen::SparseMatrix<double> M;            ///< mass; 0 x 0 for the quasistatic march
   LoadHistory load;                         ///< f(t)
+  /// K, C, M and the memory terms hold only this rank's rows of an mpirun job (the other rows
+  /// empty; f(t) whole): the schemes sum their products over the ranks
+  /// (solver/symmetric_product.hpp) and MUMPS factorizes their step matrix over them.
+  bool rank_rows = false;
 
   int num_dofs() const { return static_cast<int>(K.rows()); }
 };

@@ -50,8 +50,11 @@ std::uint64_t pattern_fingerprint(const Eigen::SparseMatrix<double>& A);
 inline constexpr const char* linear_solver_names = "cholmod|umfpack|mumps";
 
 /// `name` is one of cholmod|umfpack|mumps; an unknown name, or a kind the backend cannot
-/// factorize (CHOLMOD is spd only), is a sig::Error that lists the choices.
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, MatrixKind kind);
+/// factorize (CHOLMOD is spd only), is a sig::Error that lists the choices. `rank_rows`: the
+/// solver of every rank of an mpirun job, each giving its rows (MumpsSolver's rank_rows): MUMPS
+/// only, any other name a sig::Error.
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, MatrixKind kind,
+                                                 bool rank_rows = false);
 
 /// What a backend offers beyond the LinearSolver interface, for the callers that choose how to
 /// use it (the Schur complement's path, the kind of a symmetric matrix): they ask here, never

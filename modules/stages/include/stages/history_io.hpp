@@ -6,7 +6,8 @@
 //
 // Every HIST:
 //   scheme, linear (text: the TIME scheme, the linear solver's backend); k, T, time_march
-//   (scalars: the seconds of the march); steps, output_every, converged (integers: 0 if a step
+//   (scalars: the seconds of the march); ranks (integer: the processes of the march, mpirun
+//   -np; 1 in one process); steps, output_every, converged (integers: 0 if a step
 //   failed and the march stopped there), failure (text naming the step and why, empty otherwise);
 //   the kept states (step 0, every output_every-th step and the last step done): ndof,
 //   output_step, output_time, u and v {outputs, ndof} on the full dofs (imposed values on the
@@ -16,6 +17,7 @@
 //   step_seconds.
 // Optional parts, each where the march has it:
 //   mass (text)       a march with a mass (TIME mass=)
+//   ordering (text)   MUMPS's ordering of the step matrix (a march in velocity with linear=mumps)
 //   stress (text)     a hyperelastic body: the time step's stress (material/algorithmic_stress.hpp)
 //   energy            kinetic, elastic, total = kinetic + elastic (energy.hpp, (8.33)); with
 //   contact
@@ -71,6 +73,8 @@ struct ContactHistoryInfo {
 struct HistoryInfo {
   std::string scheme;   ///< TIME scheme=
   std::string linear;   ///< cholmod | umfpack | mumps
+  std::string ordering; ///< of MUMPS's analysis (empty: another backend, or none)
+  int ranks = 1;        ///< the processes of the march (mpirun -np)
   std::string mass;     ///< TIME mass= (empty: a march without mass)
   std::string stress;   ///< a hyperelastic body's stress (empty otherwise)
   double k = 0, T = 0;  ///< TIME k= and T=

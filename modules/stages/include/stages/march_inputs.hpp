@@ -39,7 +39,8 @@ Elastodynamics reduced_elastodynamics(const ReducedSystem& reduced,
 
 /// The reduced problem of the marches in velocity: K_ff, the viscosity V and the memory terms of
 /// `system` restricted to the free dofs, M_ff of the full-size `mass` (empty: none) and the
-/// loads reduced_load(reduced).
+/// loads reduced_load(reduced); rank rows where the system holds them (an mpirun job, with the
+/// load of reduce_on_ranks, stages/rank_rows.hpp).
 ViscoelasticProblem viscoelastic_problem(const LinearSystem& system, const ReducedSystem& reduced,
                                          const Eigen::SparseMatrix<double>& mass = {});
 
