@@ -13,7 +13,7 @@
 // x = G (u_n + d), obey
 //     x = x_free - 2 C lambda,  C = G Z,   i.e.   A (x - x_free) + lambda = 0,  A = (2 C)^{-1}:
 // a small problem on the p contact nodes (p, or d p with friction), whatever the contact law. S is
-// factorized once (by the scheme), Z takes p (2p) solves once, and a step costs one sparse solve
+// factorized once (by the scheme), Z takes p (d p) solves once, and a step costs one sparse solve
 // plus dense work of that size. The work of the contact forces over the step is
 // -lambda . (x_{n+1} - x_n): -N . (q_{n+1} - q_n) - T . slip, the slip being the increment of the
 // tangential displacement over the step, and the midpoint rule's discrete energy obeys
