@@ -25,41 +25,22 @@
 # reduction to the 2D march: tests/integrator/test_frictional_march_3d.cpp.
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
+source "$(dirname "$0")/lib/half_ball.sh"
 require_stages mesh material contact assemble march dump
 require_command gmsh "the half ball is meshed by gmsh"
 
-deck=$root/datafiles/scene3d/oblique_impact.dat
-base=$work/base
-mkdir -p "$base"
-sed -E -e "s|^MESH .*|MESH generator=half-ball R=10 h=0.25 grading=0.3|" "$deck" >"$base/ball.dat"
-for stage in mesh material assemble; do
-  "$bin/sig-$stage" "$base/ball.dat" -o "$base" >"$work/$stage.log" 2>&1 ||
-    { cat "$work/$stage.log"; die "sig-$stage on the coarse half ball"; }
-done
+half_ball_base "$root/datafiles/scene3d/oblique_impact.dat" 0.25 0.3
+plane="CONTACT ref=3 obstacle=plane point=0,0,-0.00525 normal=0,0,1"
 
-# run NAME CONTACT_FIELDS MASS [SED]: sig-contact and sig-march in $work/NAME with that strategy
-# and mass (and the sed expression SED on the deck).
-run() {
-  local dir=$work/$1
-  mkdir -p "$dir"
-  for ds in nopo mili tae; do ln -s "$base/case.$ds" "$dir/case.$ds"; done
-  sed -E -e "s|^CONTACT .*|CONTACT ref=3 obstacle=plane point=0,0,-0.00525 normal=0,0,1 $2|" \
-    -e "s|mass=emm|mass=$3|" -e "${4:-}" "$base/ball.dat" >"$dir/ball.dat"
-  "$bin/sig-contact" "$dir/ball.dat" -o "$dir" >"$dir/contact.log" 2>&1 ||
-    { cat "$dir/contact.log"; die "sig-contact for $1"; }
-  "$bin/sig-march" "$dir/ball.dat" -o "$dir" >"$dir/march.log" 2>&1 ||
-    { cat "$dir/march.log"; die "sig-march for $1"; }
-}
-
-run signorini "strategy=signorini" consistent 's|output_every=50|output_every=10|'
-run compliance "strategy=compliance r=1e12" consistent
-run specific-penalty "strategy=specific-penalty r=1e12" consistent
-run two-step "strategy=two-step" consistent
-run ipm "strategy=ipm r=1e12 g=5e-4" consistent
-run ipm-emm "strategy=ipm r=1e12 g=5e-4" emm
-run ipm-newmark "strategy=ipm r=1e12 g=5e-4" consistent 's|scheme=midpoint|scheme=newmark|'
-run frictionless "strategy=signorini" consistent '/^FRICTION /d'
-run zero "strategy=signorini" consistent 's|mu=0.3|mu=0|'
+run signorini "$plane strategy=signorini" consistent 's|output_every=50|output_every=10|'
+run compliance "$plane strategy=compliance r=1e12" consistent
+run specific-penalty "$plane strategy=specific-penalty r=1e12" consistent
+run two-step "$plane strategy=two-step" consistent
+run ipm "$plane strategy=ipm r=1e12 g=5e-4" consistent
+run ipm-emm "$plane strategy=ipm r=1e12 g=5e-4" emm
+run ipm-newmark "$plane strategy=ipm r=1e12 g=5e-4" consistent 's|scheme=midpoint|scheme=newmark|'
+run frictionless "$plane strategy=signorini" consistent '/^FRICTION /d'
+run zero "$plane strategy=signorini" consistent 's|mu=0.3|mu=0|'
 # The hyperelastic block: its base (ref 1) on the plane.
 block=$work/block
 mkdir -p "$block"
