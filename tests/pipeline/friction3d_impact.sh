@@ -20,8 +20,9 @@
 # m/s onto the plane 0.01 below its base, 50 steps of k = 2e-4, every strategy: each step
 # converged, the balance to 1e-9 of E0 (measured 1e-14), the friction work never grows and
 # dissipates.
-# Where 3D friction is still refused (the quasistatic march, law=nonmonotone):
-# tests/bad_inputs/mesh3d_quasistatic_friction.dat, mesh3d_nonmonotone.dat. The exact
+# Where 3D friction is still refused (the quasistatic march; law=nonmonotone is the backward-Euler
+# march's, which a 3D mesh refuses): tests/bad_inputs/mesh3d_quasistatic_friction.dat,
+# mesh3d_march_velocity.dat. The exact
 # reduction to the 2D march: tests/integrator/test_frictional_march_3d.cpp.
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
