@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
-# drivers/scene3d_impact.sh [--quick] [-o OUTDIR]: the ball impact in 3D (issue 28, "Ball
-# impact"; datafiles/scene3d/ball_impact.dat): scene 8a's ball and speed on the rigid plane with
-# every contact strategy of scene 8a, on a ladder of half-ball meshes graded towards the pole, then
-# its report beside Hertz's impact time.
+# drivers/scene3d_impact.sh [--quick] [--friction] [-o OUTDIR]: the ball impact in 3D (issue 28,
+# "Ball impact"; datafiles/scene3d/ball_impact.dat): scene 8a's ball and speed on the rigid plane
+# with every contact strategy of scene 8a, on a ladder of half-ball meshes graded towards the
+# pole, then its report beside Hertz's impact time.
+#
+# --friction: the oblique frictional impact instead (datafiles/scene3d/oblique_impact.dat: the
+# same ball at (3, 4, -10) m/s, Coulomb mu = 0.3) with the same strategies and ladder, no 2D
+# runs; its report (postproc/scene3d_friction_report.py, OUTDIR/report.md and runs.csv) gives per
+# run the balance of scene 8b, max |E + interface - friction work - wall work - E0| / E0 (to
+# 1e-9 at the Newton eps 1e-10, the deck's), the friction work and its largest rise over a step
+# (<= 0: dissipative), E(T) / E0 and the Newton iterations. Default OUTDIR
+# out/scene3d_friction.
 #
 #   full:    meshes (h, grading) = (0.25, 0.3) (0.14, 0.2) (0.1, 0.15) (0.07, 0.1)
 #   --quick: mesh (0.25, 0.3) only
@@ -23,9 +31,10 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 
 usage() {
   cat <<EOF
-usage: drivers/scene3d_impact.sh [--quick] [-o OUTDIR]
+usage: drivers/scene3d_impact.sh [--quick] [--friction] [-o OUTDIR]
   --quick     the coarsest mesh only (about a minute)
-  -o OUTDIR   results folder (default out/scene3d_impact)
+  --friction  the oblique impact with Coulomb friction (datafiles/scene3d/oblique_impact.dat)
+  -o OUTDIR   results folder (default out/scene3d_impact, with --friction out/scene3d_friction)
   -h, --help  this message
 Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3),
 SIG_GMSH (default gmsh: the half ball's mesher).
@@ -33,8 +42,17 @@ EOF
 }
 
 invocation="drivers/scene3d_impact.sh${*:+ $*}"
-template=$root/datafiles/scene3d/ball_impact.dat
-parse_quick_out out/scene3d_impact "$@"
+out=
+quick=0
+friction=0
+parse_options -o=out --quick:quick=1 --friction:friction=1 -- "$@"
+if [ $friction -eq 1 ]; then
+  template=$root/datafiles/scene3d/oblique_impact.dat
+  out=${out:-out/scene3d_friction}
+else
+  template=$root/datafiles/scene3d/ball_impact.dat
+  out=${out:-out/scene3d_impact}
+fi
 
 require_stages mesh material contact assemble march
 require_decks "$template"
@@ -88,6 +106,13 @@ for mesh in "${meshes[@]}"; do
   done
   echo "scene3d_impact.sh: mesh $k (h = $h, grading = $grading) done ($((SECONDS - t0)) s)"
 done
+if [ $friction -eq 1 ]; then
+  echo "scene3d_impact.sh: all runs done in $((SECONDS - start)) s"
+  record_seconds $start
+  "$python" "$root/postproc/scene3d_friction_report.py" "$out"
+  [ ${#failed[@]} -eq 0 ] || die "${#failed[@]} run(s) failed: ${failed[*]}"
+  exit 0
+fi
 # Scene 8a's 2D ball (datafiles/scene8a/ball.dat, its 128-node circle) with the same strategies,
 # k, T and gap below its lowest point (x2 = 15): the losses the 3D ones are compared with.
 deck2d=$root/datafiles/scene8a/ball.dat

@@ -22,9 +22,12 @@
 #  - sig-post writes the 5 kept states of a 3D march as .vtu (velocity with 3 components);
 #  - a candidate zone too small for the contact (SOLVER candidate_gap=0.006, the pole's cap) stops
 #    the march when a watched node goes through the plane, naming it.
-# What a 3D march refuses (friction, the marches in velocity): tests/bad_inputs/mesh3d_march_*.dat.
+# What a 3D march refuses (the marches in velocity, friction in the quasistatic one):
+# tests/bad_inputs/mesh3d_march_velocity.dat, mesh3d_quasistatic_friction.dat. With friction:
+# tests/pipeline/friction3d_impact.sh.
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
+source "$(dirname "$0")/lib/half_ball.sh"
 require_stages mesh material contact assemble march post dump
 require_command gmsh "the half ball is meshed by gmsh"
 
@@ -32,26 +35,7 @@ H=0.25
 GRADING=0.3
 TOL=0.15
 deck=$root/datafiles/scene3d/ball_impact.dat
-base=$work/base
-mkdir -p "$base"
-sed -E -e "s|^MESH .*|MESH generator=half-ball R=10 h=$H grading=$GRADING|" "$deck" >"$base/ball.dat"
-for stage in mesh material assemble; do
-  "$bin/sig-$stage" "$base/ball.dat" -o "$base" >"$work/$stage.log" 2>&1 ||
-    { cat "$work/$stage.log"; die "sig-$stage on the coarse half ball"; }
-done
-
-# run NAME CONTACT_LINE MASS [SED]: sig-contact and sig-march in $work/NAME on the coarse deck
-# with that CONTACT card and mass (and the sed expression SED).
-run() {
-  local dir=$work/$1
-  mkdir -p "$dir"
-  for ds in nopo mili tae; do ln -s "$base/case.$ds" "$dir/case.$ds"; done
-  sed -E -e "s|^CONTACT .*|$2|" -e "s|mass=emm|mass=$3|" -e "${4:-}" "$base/ball.dat" >"$dir/ball.dat"
-  "$bin/sig-contact" "$dir/ball.dat" -o "$dir" >"$dir/contact.log" 2>&1 ||
-    { cat "$dir/contact.log"; die "sig-contact for $1"; }
-  "$bin/sig-march" "$dir/ball.dat" -o "$dir" >"$dir/march.log" 2>&1 ||
-    { cat "$dir/march.log"; die "sig-march for $1"; }
-}
+half_ball_base "$deck" $H $GRADING
 
 plane="CONTACT ref=3 obstacle=plane point=0,0,-0.00525 normal=0,0,1"
 run signorini "$plane strategy=signorini" consistent

@@ -186,7 +186,9 @@ const std::vector<CardSpec>& card_schema() {
       {"FRICTION",
        false,
        "friction law of the contact boundary of a CONTACT card (slip q_t = t . u, t = (n2, -n1): "
-       "+x1 on the foundation x2 <= 0)",
+       "+x1 on the foundation x2 <= 0; in 3D a vector of the node's tangent plane, its components "
+       "along the tangents t1, t2 of the node's contact frame, the force in the disc of radius "
+       "the bound)",
        {
            {"ref", "boundary reference of the CONTACT card"},
            {"law", "none | tresca (1.33): |T| <= threshold on every contact node | coulomb "

@@ -7,14 +7,38 @@
 
 namespace sig {
 
+namespace {
+
+/// Whether the law of node p gives it a force at its penetration q_n and slip (the bulk's flat
+/// slips q_t, d - 1 per node) without multipliers: in 3D the slip is the node's tangent-plane
+/// vector.
+template <int d>
+bool gives_force(const ContactLaw& law, double q_n, const Eigen::VectorXd& q_t, int p) {
+  NodeVariablesIn<d> x;
+  x.q_n = q_n;
+  if constexpr (d == 2)
+    x.q_t = q_t[p];
+  else
+    x.q_t = q_t.segment<d - 1>((d - 1) * p);
+  const ContactKernelIn<d> k = contact_kernel(law, x, 1.0, 1.0);
+  if constexpr (d == 2)
+    return k.normal != 0.0 || k.tangential != 0.0;
+  else
+    return k.normal != 0.0 || !k.tangential.isZero();
+}
+
+} // namespace
+
 bool predictor_solves_step(const ContactBulk& bulk, const ContactSetting& setting, double eps) {
   const Eigen::VectorXd q_n = bulk.penetration(), q_t = bulk.slip();
-  for (int p = 0; p < setting.size(); ++p) {
-    const ContactKernel k = contact_kernel(setting.law[p], {q_n[p], q_t[p], 0.0, 0.0}, 1.0, 1.0);
-    if (k.normal != 0.0 || k.tangential != 0.0) return false;
-  }
+  const bool plane = bulk.has_tangential() && bulk.tangents() == 2;
+  for (int p = 0; p < setting.size(); ++p)
+    if (plane ? gives_force<3>(setting.law[p], q_n[p], q_t, p)
+              : gives_force<2>(setting.law[p], q_n[p], q_t, p))
+      return false;
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(setting.size());
-  return bulk.equilibrium_residual(none, none) <= eps * bulk.force_scale();
+  const Eigen::VectorXd no_tangential = Eigen::VectorXd::Zero(q_t.size());
+  return bulk.equilibrium_residual(none, no_tangential) <= eps * bulk.force_scale();
 }
 
 ContactStepSolution ContactStrategy::solve(ContactBulk& bulk, const ContactSetting& setting,
@@ -27,7 +51,8 @@ ContactStepSolution ContactStrategy::solve(ContactBulk& bulk, const ContactSetti
   const ContactSetting first{first_laws(setting, start), setting.weight};
   if (predictor_solves_step(bulk, first, p_.eps)) {
     ContactStepSolution s;
-    s.normal_force = s.tangential_force = Eigen::VectorXd::Zero(m);
+    s.normal_force = Eigen::VectorXd::Zero(m);
+    s.tangential_force = Eigen::VectorXd::Zero(bulk.slip().size()); // d - 1 per node
     s.normal_status.assign(m, NormalStatus::free);
     s.friction_status.assign(m, FrictionStatus::none);
     s.law = first.law;

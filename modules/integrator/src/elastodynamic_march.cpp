@@ -38,11 +38,12 @@ ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBo
   SIG_VERIFY(boundary.B.cols() == scheme.problem().num_dofs(),
              "march: the contact boundary has " << boundary.B.cols() << " dofs, the problem "
                                                 << scheme.problem().num_dofs());
-  SIG_VERIFY(boundary.tangential.rows() == boundary.size() &&
+  SIG_VERIFY((boundary.tangential.rows() == boundary.size() ||
+              boundary.tangential.rows() == 2 * boundary.size()) &&
                  boundary.tangential.cols() == boundary.B.cols(),
-             "march: a tangential operator of " << boundary.tangential.rows() << " x "
-                                                << boundary.tangential.cols() << " for "
-                                                << boundary.size() << " contact nodes");
+             "march: a tangential operator of "
+                 << boundary.tangential.rows() << " x " << boundary.tangential.cols() << " for "
+                 << boundary.size() << " contact nodes (one or two tangents each)");
   SIG_VERIFY(boundary.watched.rows() == boundary.watched_gap.size() &&
                  std::ssize(boundary.watched_nodes) == boundary.watched.rows() &&
                  (boundary.watched.rows() == 0 || boundary.watched.cols() == boundary.B.cols()),
@@ -53,7 +54,7 @@ ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBo
   normal_dof_.resize(p);
   std::iota(normal_dof_.begin(), normal_dof_.end(), 0);
   if (condensed_.G.rows() > p) {
-    tangential_dof_.resize(p);
+    tangential_dof_.resize(condensed_.G.rows() - p); // d - 1 per node, node i's at (d - 1) i
     std::iota(tangential_dof_.begin(), tangential_dof_.end(), p);
   }
   x_now_ = condensed_.G * state_.u;
@@ -67,7 +68,11 @@ StepRecord ElastodynamicSteps::start() const {
   if (boundary_ != nullptr) {
     // No secant law before the first step: no interface energy.
     r.energy.max_penetration = std::max(q_now_.maxCoeff(), 0.0);
-    r.contact.normal_force = r.contact.tangential_force = Eigen::VectorXd::Zero(boundary_->size());
+    const int p = boundary_->size();
+    r.contact.normal_force = Eigen::VectorXd::Zero(p);
+    // d - 1 per node with friction (3D: two), one without.
+    r.contact.tangential_force =
+        Eigen::VectorXd::Zero(tangential_dof_.empty() ? p : std::ssize(tangential_dof_));
   }
   return r;
 }
@@ -112,8 +117,9 @@ StepRecord ElastodynamicSteps::step(int) {
     // 3. Their response: d = d_free - 2 Z lambda. In free flight lambda = 0 and the free step is
     //    the step.
     Eigen::VectorXd lambda = forces.normal_force;
-    if (!tangential_dof_.empty()) {
-      lambda.resize(2 * p);
+    const auto slips = std::ssize(tangential_dof_);
+    if (slips > 0) {
+      lambda.resize(p + slips);
       lambda << forces.normal_force, forces.tangential_force;
     }
     if ((lambda.array() != 0.0).any()) {
@@ -128,9 +134,9 @@ StepRecord ElastodynamicSteps::step(int) {
     }
     const Eigen::VectorXd x_next = condensed_.G * next.u;
     const Eigen::VectorXd q_next = x_next.head(p) - boundary.geometric_gap;
-    const Eigen::VectorXd slip = tangential_dof_.empty()
+    const Eigen::VectorXd slip = slips == 0
                                      ? Eigen::VectorXd(Eigen::VectorXd::Zero(p))
-                                     : Eigen::VectorXd(x_next.tail(p) - x_now_.tail(p));
+                                     : Eigen::VectorXd(x_next.tail(slips) - x_now_.tail(slips));
     r.work.load = f_bar.dot(next.u - state_.u);
     r.energy = energy_of(scheme_.problem(), next);
     add_contact_step(r.energy, r.work, forces.normal_force, forces.tangential_force, q_now_, q_next,

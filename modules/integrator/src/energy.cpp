@@ -47,7 +47,11 @@ void add_contact_step(EnergyRecord& record, StepWork& work, const Eigen::VectorX
   record.max_penetration = q_after.size() ? std::max(q_after.maxCoeff(), 0.0) : 0.0;
   record.active_nodes = static_cast<int>((N.array() > 0).count());
   record.normal_force = N.sum();
-  record.tangential_force = T.sum();
+  // 3D (two components a node, along t1 and t2): the magnitude of the sum of the tangent-plane
+  // vectors, on a plane (one frame at every node) the resultant's.
+  record.tangential_force = T.size() == 2 * N.size() && N.size() > 0
+                                ? T.reshaped(2, N.size()).rowwise().sum().norm()
+                                : T.sum();
 }
 
 } // namespace sig

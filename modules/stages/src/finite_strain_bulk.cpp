@@ -138,8 +138,6 @@ FiniteStrainBulk::FiniteStrainBulk(const FiniteStrainProblem& problem, const std
                  "contact node " << node(p) + 1 << " has a Dirichlet condition");
   }
   friction_ = contacts_ > 0 && any_friction(problem.contact->law);
-  SIG_VERIFY(!friction_ || d == 2,
-             "friction of a hyperelastic body in 3D is not implemented yet (issue 28)");
   if (dynamic()) {
     SIG_VERIFY(problem.time_step > 0, "time step k = " << problem.time_step << " must be > 0");
     mass_ = pattern_.zero_matrix();
@@ -271,17 +269,20 @@ bool FiniteStrainBulk::evaluate(State& s, bool with_tangent) {
   }
   s.has_tangent = with_tangent;
   s.penetration.resize(contacts_);
-  s.slip.resize(contacts_);
+  s.slip = Eigen::VectorXd::Zero(tangents() * contacts_);
   s.normal.resize(contacts_);
   for (int p = 0; p < contacts_; ++p) {
     const int a = d_ * node(p);
     const Point x = problem_.mesh->nodes[node(p)] + s.u.segment(a, d_);
     s.penetration[p] = -problem_.obstacle->signed_distance(x);
     s.normal[p] = problem_.obstacle->normal(x);
-    // The slip along the 2D contact tangent (friction is 2D only: a 3D body's is 0, unused).
-    s.slip[p] = d_ == 2 ? contact_tangent(Eigen::Vector2d(s.normal[p]))
-                              .dot(s.u.segment<2>(a) - slip_origin_.segment<2>(a))
-                        : 0.0;
+    // With friction the slip since the step's start along each tangent of the present frame
+    // (contact_frame: t in 2D, t1 and t2 in 3D), node p's at (d - 1) p.
+    if (!friction_) continue;
+    const ContactFrame frame = contact_frame(s.normal[p]);
+    const Eigen::VectorXd moved = s.u.segment(a, d_) - slip_origin_.segment(a, d_);
+    for (int k = 0; k < d_ - 1; ++k)
+      s.slip[(d_ - 1) * p + k] = frame.col(k).dot(moved);
   }
   return true;
 }
@@ -291,8 +292,10 @@ double FiniteStrainBulk::equilibrium_residual(const Eigen::VectorXd& N,
   Eigen::VectorXd r = now_.bulk.internal_force - load();
   for (int p = 0; p < contacts_; ++p) {
     r.segment(d_ * node(p), d_) -= N[p] * now_.normal[p];
-    if (friction_) // 2D
-      r.segment<2>(2 * node(p)) += T[p] * contact_tangent(Eigen::Vector2d(now_.normal[p]));
+    if (!friction_) continue;
+    const ContactFrame frame = contact_frame(now_.normal[p]);
+    for (int k = 0; k < d_ - 1; ++k)
+      r.segment(d_ * node(p), d_) += T[(d_ - 1) * p + k] * frame.col(k);
   }
   // A Dirichlet dof's row is its mismatch with the load step's target, times its stiffness: the
   // force that would move it there (a step shorter than 1 leaves part of it).
@@ -377,23 +380,29 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
       r0[normal_dof] += c.force;
     }
   }
-  // Tangential rows: T = force + stiffness dw_t + coupling N + cross dw_n. With an imposed
-  // normal, N = -(r0_n + A_n dw) is its reaction, so the row r0_t + A_t dw + T = 0 becomes
-  // (r0_t - coupling r0_n) + (A_t - coupling A_n) dw + force + ... = 0.
+  // Tangential rows, one per tangent k (the rotated dofs d node + k): T_k = force + stiffness
+  // dw_tk + coupling N + cross dw_n (+ tangential_12 dw_t of the other tangent in 3D). With an
+  // imposed normal, N = -(r0_n + A_n dw) is its reaction, so the row r0_t + A_t dw + T = 0
+  // becomes (r0_t - coupling r0_n) + (A_t - coupling A_n) dw + force + ... = 0.
   for (int p = 0; p < contacts_ && friction_; ++p) {
-    const int tangential_dof = 2 * node(p), normal_dof = tangential_dof + 1;
-    const DofCondition& c = conditions[p].tangential;
-    if (c.imposed) {
-      imposed.emplace_back(tangential_dof, c.value);
-      continue;
+    const int normal_dof = d_ * node(p) + d_ - 1;
+    for (int k = 0; k < d_ - 1; ++k) {
+      const int tangential_dof = d_ * node(p) + k;
+      const DofCondition& c = conditions[p].tangent(k);
+      if (c.imposed) {
+        imposed.emplace_back(tangential_dof, c.value);
+        continue;
+      }
+      if (c.coupling != 0.0) {
+        J_->add_row(tangential_dof, normal_dof, -c.coupling);
+        r0[tangential_dof] -= c.coupling * r0[normal_dof];
+      }
+      J_->diagonal(tangential_dof) += c.stiffness;
+      J_->entry(tangential_dof, normal_dof) += c.cross;
+      if (d_ == 3 && conditions[p].tangential_12 != 0.0)
+        J_->entry(tangential_dof, d_ * node(p) + 1 - k) += conditions[p].tangential_12;
+      r0[tangential_dof] += c.force;
     }
-    if (c.coupling != 0.0) {
-      J_->add_row(tangential_dof, normal_dof, -c.coupling);
-      r0[tangential_dof] -= c.coupling * r0[normal_dof];
-    }
-    J_->diagonal(tangential_dof) += c.stiffness;
-    J_->entry(tangential_dof, normal_dof) += c.cross;
-    r0[tangential_dof] += c.force;
   }
   std::sort(imposed.begin(), imposed.end());
   if (damping_ > 0) // on every dof: the imposed ones' rows are eliminated whatever their diagonal
@@ -410,20 +419,23 @@ StepSolution FiniteStrainBulk::solve(const std::vector<NodeConditions>& conditio
   StepSolution s;
   s.normal_increment.resize(contacts_);
   s.normal_force.resize(contacts_);
-  s.tangential_force = Eigen::VectorXd::Zero(contacts_);
+  s.tangential_force = Eigen::VectorXd::Zero(tangents() * contacts_);
   for (int p = 0; p < contacts_; ++p) {
     const int normal_dof = d_ * node(p) + d_ - 1;
     const DofCondition& c = conditions[p].normal;
     s.normal_increment[p] = dw[normal_dof];
     s.normal_force[p] = c.imposed ? -(r0[normal_dof] + J_->normal_row_times(p, dw))
                                   : c.force + c.stiffness * dw[normal_dof];
-    const DofCondition& t = conditions[p].tangential;
-    const int tangential_dof = normal_dof - 1;
     if (!friction_) continue;
-    s.tangential_force[p] = t.imposed
-                                ? -(r0[tangential_dof] + J_->row_times(tangential_dof, dw))
-                                : t.force + t.stiffness * dw[tangential_dof] +
-                                      t.coupling * s.normal_force[p] + t.cross * dw[normal_dof];
+    for (int k = 0; k < d_ - 1; ++k) {
+      const DofCondition& t = conditions[p].tangent(k);
+      const int tangential_dof = d_ * node(p) + k;
+      double& T = s.tangential_force[(d_ - 1) * p + k];
+      T = t.imposed ? -(r0[tangential_dof] + J_->row_times(tangential_dof, dw))
+                    : t.force + t.stiffness * dw[tangential_dof] + t.coupling * s.normal_force[p] +
+                          t.cross * dw[normal_dof];
+      if (d_ == 3 && !t.imposed) T += conditions[p].tangential_12 * dw[d_ * node(p) + 1 - k];
+    }
   }
   // du = Q dw.
   step_ = dw;

@@ -86,7 +86,10 @@ StepRecord HyperelasticSteps::start() const {
   r.time = state_.time;
   r.energy = energies(state_, hyperelastic_energy(*problem_.mesh, *problem_.materials, state_.u));
   r.energy.max_penetration = m_ > 0 ? std::max(q_now_.maxCoeff(), 0.0) : 0.0;
-  if (m_ > 0) r.contact.normal_force = r.contact.tangential_force = Eigen::VectorXd::Zero(m_);
+  if (m_ > 0) {
+    r.contact.normal_force = Eigen::VectorXd::Zero(m_);
+    r.contact.tangential_force = Eigen::VectorXd::Zero(bulk_.slip().size()); // d - 1 a node
+  }
   return r;
 }
 

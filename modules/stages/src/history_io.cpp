@@ -68,15 +68,25 @@ void put_rows(Ds& ds, const std::string& name, const std::vector<const Eigen::Ve
   ds.put(name, values, {static_cast<std::int64_t>(rows.size()), p});
 }
 
+/// Per node the magnitude of the tangential force T (flat, d - 1 components a node): itself in
+/// 2D (signed), |T| in the tangent plane in 3D.
+Eigen::VectorXd tangential_per_node(const Eigen::VectorXd& T, Eigen::Index p) {
+  if (T.size() == p) return T;
+  SIG_VERIFY(T.size() == 2 * p, "HIST: a tangential force of " << T.size() << " components for "
+                                                               << p << " contact nodes");
+  return T.reshaped(2, p).colwise().norm().transpose();
+}
+
 /// The contact forces per kept state, divided by the weights: pressure and, with friction,
-/// tangential_pressure.
+/// tangential_pressure (3D: the magnitude in the tangent plane).
 void put_kept_pressures(Ds& ds, const MarchHistory& history, const HistoryInfo& info) {
   const auto p = static_cast<std::int64_t>(info.contact_nodes.size());
   std::vector<Eigen::VectorXd> normal, tangential;
   for (int step : history.output_step) {
     const ContactRecord& c = history.steps[static_cast<std::size_t>(step)].contact;
     normal.push_back(c.normal_force.cwiseQuotient(info.weight));
-    if (info.friction) tangential.push_back(c.tangential_force.cwiseQuotient(info.weight));
+    if (info.friction)
+      tangential.push_back(tangential_per_node(c.tangential_force, p).cwiseQuotient(info.weight));
   }
   const auto pointers = [](const std::vector<Eigen::VectorXd>& rows) {
     std::vector<const Eigen::VectorXd*> out;

@@ -83,21 +83,23 @@ ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& me
     SIG_VERIFY(elements.node[i] >= 0 && elements.node[i] < mesh.num_nodes(),
                "contact element " << i + 1 << ": node " << elements.node[i] + 1
                                   << " is not a node of the mesh");
-  // Row i: u_n,i = -n_i . u_i and the tangential displacement t_i . u_i (t1_i in 3D, the first
-  // column of the node's contact frame), on the node's d free dofs.
+  // Row i: u_n,i = -n_i . u_i; rows (d - 1) i + k: the tangential displacements t_k,i . u_i
+  // along the tangents of the node's contact frame (its first d - 1 columns: t_i in 2D, t1_i and
+  // t2_i in 3D), on the node's d free dofs.
   const int d = mesh.dim;
   std::vector<Eigen::Triplet<double>> normal, tangential;
   for (int i = 0; i < p; ++i) {
     const int first = reduced.contact_node_first_dof(elements.node[i], d);
-    const Eigen::VectorXd t = elements.frame(i).col(0);
+    const ContactFrame frame = elements.frame(i);
     for (int component = 0; component < d; ++component) {
       normal.emplace_back(i, first + component, -elements.normal[i][component]);
-      tangential.emplace_back(i, first + component, t[component]);
+      for (int k = 0; k < d - 1; ++k)
+        tangential.emplace_back((d - 1) * i + k, first + component, frame(component, k));
     }
   }
   b.B.resize(p, reduced.num_free());
   b.B.setFromTriplets(normal.begin(), normal.end());
-  b.tangential.resize(p, reduced.num_free());
+  b.tangential.resize((d - 1) * p, reduced.num_free());
   b.tangential.setFromTriplets(tangential.begin(), tangential.end());
   return b;
 }

@@ -13,10 +13,12 @@
 //          only the contact nodes of initial gap at most this condensed, the others watched)
 //
 // The mesh is 2D or 3D: a 3D body marches the linear schemes (midpoint, Newmark; mass
-// consistent, lumped or emm) and the hyperelastic march (Gonzalez's or the midpoint stress) with
-// every strategy, frictionless, and the quasistatic Kelvin-Voigt march with its normal laws in
-// velocity; friction in time and the backward-Euler march refuse a 3D mesh on their card (issue
-// 28).
+// consistent, lumped or emm) and the hyperelastic march (Gonzalez's or the midpoint stress)
+// with every strategy and the friction laws (coulomb, tresca, mu1, mu2: the slip over a step a
+// vector of the node's tangent plane, two slips a node, the force in the disc of radius s, the
+// Coulomb cone's section), and the quasistatic Kelvin-Voigt march with its normal laws in
+// velocity; friction in the quasistatic march and the backward-Euler march refuse a 3D mesh on
+// their card (issue 28).
 //
 // Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0),
 // with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
@@ -100,8 +102,9 @@ int march_main(int argc, char** argv) {
                  "march: the files hold the steps done, a warning is printed and the stage exits "
                  "0. A progress line shows the step, time steps per second and the time left. "
                  "On a 3D mesh: the linear schemes (midpoint, Newmark; consistent, lumped or EMM "
-                 "mass), the hyperelastic march with every strategy and the quasistatic "
-                 "Kelvin-Voigt march, frictionless (issue 28); "
+                 "mass) and the hyperelastic march with every strategy and friction law (the "
+                 "Coulomb cone, two slips a node), the quasistatic Kelvin-Voigt march "
+                 "frictionless (issue 28); "
                  "SOLVER candidate_gap= condenses only the contact nodes near the obstacle. "
                  "Under mpirun -np P the marches in velocity (backward-euler, quasistatic; "
                  "SOLVER linear=mumps) factorize their step matrix by MUMPS over the ranks, each "
@@ -202,9 +205,6 @@ int march_main(int argc, char** argv) {
 
     // 2. Mesh and assembled system; a dynamic case needs a mass.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
-    // 3D: linear elastodynamics and the hyperelastic march, with frictionless contact (issue 28).
-    if (const sig::Card* friction = sig::friction_card_with_law(datafile))
-      sig::refuse_in_3d(mesh, *friction, "law", "friction in a march (its slips in two tangents)");
     const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
     if (system.M.nonZeros() == 0)
       throw sig::InputError(datafile.path, 0, "rho",

@@ -6,13 +6,15 @@
 //   1. the free step d_free = S^{-1} (2 f_bar - 2 K u_n + (4 / k) M v_n) (one sparse solve);
 //   2. the strategy's forces lambda on the step condensed onto the components x = G u of the p
 //      contact nodes, their normal displacements and, when a law has friction, their slips (a
-//      CondensedBulk of the one contact driver, p or 2p unknowns), from x_n and
+//      CondensedBulk of the one contact driver, p or d p unknowns), from x_n and
 //      x_free = G (u_n + d_free);
 //   3. d = d_free - 2 Z lambda, v_{n+1} = (2 / k) d - v_n (dense, Z kept from the start).
 // Friction is that of the hyperelastic march (stages/finite_strain_march.hpp, ALGORITHMS.md 4.3):
 // each strategy's phases carry the CONT friction law (Tresca, Coulomb with the whole normal
 // force, mu1 / mu2 of the penetration), the slip of a node over a step being the increment of
-// its tangential displacement, t . (u_{n+1} - u_n). Where a linear body differs: the frame
+// its tangential displacement, t . (u_{n+1} - u_n); in 3D the slip is the vector of the node's
+// tangent plane (t1, t2 . (u_{n+1} - u_n)) and the force lies in the disc of radius the bound
+// (the Coulomb cone's section), one code for d = 2 and 3. Where a linear body differs: the frame
 // (n, t) of a node is the obstacle's at the node's reference position, as the penetration
 // B u - d is linear in u (small displacements; on a plane the same as the hyperelastic march's
 // current frame), and the balance E + interface - friction work - wall work = E0 holds to
@@ -49,8 +51,9 @@ private:
   const ContactBoundary* boundary_ = nullptr;
   const ContactStrategy* strategy_ = nullptr;
   CondensedContact condensed_;
-  std::vector<int> normal_dof_;     ///< 0 .. p - 1: the normal displacements
-  std::vector<int> tangential_dof_; ///< p .. 2p - 1 with friction: the slips
+  std::vector<int> normal_dof_; ///< 0 .. p - 1: the normal displacements
+  /// p .. d p - 1 with friction: the slips, d - 1 a node (3D: along t1, t2, node i's at p + 2 i)
+  std::vector<int> tangential_dof_;
   DynamicState state_;
   Eigen::VectorXd x_now_; ///< the condensed components of the state (G u)
   Eigen::VectorXd q_now_; ///< the penetrations of the state

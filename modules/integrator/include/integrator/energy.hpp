@@ -31,7 +31,8 @@ struct EnergyRecord {
   double friction_work = 0.0; ///< work of the tangential forces since step 0: -sum T slip
   double wall_work = 0.0;     ///< work of the normal forces not stored in the interface
   /// The contact forces of the last step summed over the nodes, sum N and sum T (the momentum
-  /// they give the body over the step is k times their resultant, ALGORITHMS.md 4.8 check 6).
+  /// they give the body over the step is k times their resultant, ALGORITHMS.md 4.8 check 6);
+  /// in 3D |sum T|, T the nodes' tangent-plane vectors (on a plane the resultant's magnitude).
   double normal_force = 0.0;
   double tangential_force = 0.0;
 };

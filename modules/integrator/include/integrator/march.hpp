@@ -26,8 +26,10 @@ namespace sig {
 
 /// Per contact node after a step (empty without contact).
 struct ContactRecord {
-  Eigen::VectorXd normal_force;     ///< N (nodal force, pushing the body off)
-  Eigen::VectorXd tangential_force; ///< T (opposing the slip)
+  Eigen::VectorXd normal_force; ///< N (nodal force, pushing the body off)
+  /// T (opposing the slip), d - 1 components per node with friction (3D: along the node's t1
+  /// and t2, node i's at 2 i), one per node without
+  Eigen::VectorXd tangential_force;
   std::vector<NormalStatus> normal_status;
   std::vector<FrictionStatus> friction_status;
   /// The marches in velocity: the normal velocity towards the obstacle and the tangential

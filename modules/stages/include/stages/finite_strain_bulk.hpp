@@ -10,8 +10,9 @@
 // consistent for any obstacle whose d is the true distance (grad d = n): the constraint rows use
 // n, and the contact force N_p n(x_p) adds -N_p dn/dx (the obstacle's curvature, zero for a
 // plane) to the tangent; dn/dx is a central difference of Obstacle::normal, since the obstacle
-// interface offers n only. Friction (the march's, along the contact tangent) is 2D only: a 3D
-// body's contact is frictionless (issue 28).
+// interface offers n only. Friction (the march's): the slip since the step's start along each
+// tangent of the node's present frame (t in 2D, t1 and t2 in 3D; contact_bulk.hpp's flat
+// layout), the force law of each tangential component on its rotated dof.
 //
 // Cost: the Newton matrix keeps ONE sparsity pattern for the whole solve (newton_matrix.hpp), so
 // the linear solver's symbolic analysis is done once and a step costs one numeric factorization
@@ -84,6 +85,8 @@ public:
 
   int contacts() const override { return contacts_; }
   bool has_tangential() const override { return friction_; }
+  /// With friction d - 1 (2D: one), else one (the slips are then zeros).
+  int tangents() const override { return friction_ ? d_ - 1 : 1; }
   Eigen::VectorXd penetration() const override { return now_.penetration; }
   Eigen::VectorXd slip() const override { return now_.slip; }
   double equilibrium_residual(const Eigen::VectorXd& N, const Eigen::VectorXd& T) const override;
@@ -112,7 +115,7 @@ private:
     Eigen::VectorXd u;
     HyperelasticState bulk;
     Eigen::VectorXd penetration; ///< q_n per contact node
-    Eigen::VectorXd slip;        ///< q_t per contact node (friction)
+    Eigen::VectorXd slip;        ///< q_t, d - 1 per contact node with friction (else zeros)
     std::vector<Point> normal;   ///< obstacle normal at the current position
     double inertia = 0;          ///< ||(2 / k^2) M (u - u_prev)||: dynamics' force scale
     PreviousStrain strain;       ///< dynamics: F and W per triangle at u

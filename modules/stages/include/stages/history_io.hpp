@@ -35,7 +35,8 @@
 //                     step_seconds_contact (the contact problem)
 //   contact           contact_node (1-based mesh nodes of the p contact nodes, CONT order),
 //                     weight {p}, pressure {outputs, p} (N / weight at the kept states, 0 at step
-//                     0); with friction tangential_pressure {outputs, p} (T / weight)
+//                     0); with friction tangential_pressure {outputs, p} (T / weight; 3D:
+//                     |T| / weight, T in the node's tangent plane)
 //   strategy          strategy (text, contact_strategy_names), r and depth (scalars: the CONTACT
 //                     card's foundation stiffness per unit area and wall depth g, 0 if not given)
 //   contact per step  the marches in velocity, {rows, p} (row 0 zeros): velocity_n, velocity_t

@@ -44,9 +44,9 @@ Elastodynamics reduced_elastodynamics(const ReducedSystem& reduced,
 ViscoelasticProblem viscoelastic_problem(const LinearSystem& system, const ReducedSystem& reduced,
                                          const Eigen::SparseMatrix<double>& mass = {});
 
-/// The boundary on the free dofs of `reduced`, its normal and tangential operators, gaps, laws
-/// and weights as the CONT file has them; sig::Error if a contact node has a Dirichlet dof or is
-/// not a node of the mesh.
+/// The boundary on the free dofs of `reduced`, its normal and tangential operators (d - 1
+/// tangential rows a node), gaps, laws and weights as the CONT file has them; sig::Error if a
+/// contact node has a Dirichlet dof or is not a node of the mesh.
 ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& mesh,
                                  const ReducedSystem& reduced);
 
