@@ -1,7 +1,6 @@
 #include "contact/contact_kernel.hpp"
 
 #include "contact/complementarity.hpp"
-#include "core/error.hpp"
 
 #include <algorithm>
 
