@@ -14,17 +14,12 @@ namespace {
 /// The longest status cycle the loop looks for.
 constexpr int kLongestCycle = 16;
 
-/// |v_i|^2 per node of a flat per-node tangential vector (contact_bulk.hpp: d - 1 components per
-/// node, one in 2D).
+/// |v_i|^2 per node of a flat per-node tangential vector, its size checked.
 Eigen::VectorXd node_squares(const Eigen::VectorXd& v, int nodes) {
-  const int tangents = nodes > 0 ? static_cast<int>(v.size()) / nodes : 1;
-  SIG_VERIFY(tangents >= 1 && tangents * nodes == v.size(),
+  SIG_VERIFY(nodes > 0 ? v.size() % nodes == 0 && v.size() >= nodes : v.size() == 0,
              "convexification: " << v.size() << " tangential values for " << nodes
                                  << " contact nodes");
-  return Eigen::Map<const Eigen::MatrixXd>(v.data(), tangents, nodes)
-      .colwise()
-      .squaredNorm()
-      .transpose();
+  return tangential_squares(v, nodes);
 }
 
 /// ||xi||_L2(Gamma3) of nodal forces: sum_i w_i |F_i / w_i|^2 = sum_i |F_i|^2 / w_i, the

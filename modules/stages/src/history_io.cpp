@@ -4,6 +4,7 @@
 #include "core/ds.hpp"
 #include "core/ds_columns.hpp"
 #include "core/error.hpp"
+#include "solver/contact_bulk.hpp"
 
 #include <cstdint>
 
@@ -74,7 +75,7 @@ Eigen::VectorXd tangential_per_node(const Eigen::VectorXd& T, Eigen::Index p) {
   if (T.size() == p) return T;
   SIG_VERIFY(T.size() == 2 * p, "HIST: a tangential force of " << T.size() << " components for "
                                                                << p << " contact nodes");
-  return T.reshaped(2, p).colwise().norm().transpose();
+  return tangential_squares(T, p).cwiseSqrt();
 }
 
 /// The contact forces per kept state, divided by the weights: pressure and, with friction,

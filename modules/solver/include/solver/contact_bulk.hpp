@@ -59,6 +59,17 @@ struct StepSolution {
   double proximal_force = 0;
 };
 
+/// |v_p|^2 per contact node of a flat per-node tangential vector (the header's layout: node p's
+/// components at (d - 1) p + k, one per node in 2D, where it is v_p^2); v's size a multiple of
+/// `nodes`, which the caller checks.
+inline Eigen::VectorXd tangential_squares(const Eigen::VectorXd& v, Eigen::Index nodes) {
+  const Eigen::Index tangents = nodes > 0 ? v.size() / nodes : 1;
+  return Eigen::Map<const Eigen::MatrixXd>(v.data(), tangents, nodes)
+      .colwise()
+      .squaredNorm()
+      .transpose();
+}
+
 class ContactBulk {
 public:
   virtual ~ContactBulk() = default;
