@@ -31,11 +31,10 @@ std::vector<int> contact_first_dofs(const ReducedSystem& reduced, const ContactE
   return first;
 }
 
-/// The tangent k of contact node p's frame along the mesh axis `component` (|t_k . e_c| >=
+/// The tangent k of a contact node's frame along the mesh axis `component` (|t_k . e_c| >=
 /// aligned), or -1 if none is: a roller's held axis must be one of the node's tangents.
-int held_tangent_of(const ContactElements& contact, int p, int component, double aligned) {
-  const ContactFrame frame = contact.frame(p);
-  for (int k = 0; k + 1 < contact.dim; ++k)
+int held_tangent_of(const ContactFrame& frame, int component, double aligned) {
+  for (int k = 0; k + 1 < frame.cols(); ++k)
     if (std::abs(frame(component, k)) >= aligned) return k;
   return -1;
 }
@@ -47,6 +46,7 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
   for (int p = 0; p < contact.size(); ++p) {
     ContactLaw& law = contact.law[p];
     const int d = contact.dim;
+    const ContactFrame frame = contact.frame(p);
     for (int component = 0; component < d; ++component) {
       const int dof = d * contact.node[p] + component;
       const auto at =
@@ -64,9 +64,9 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
                     std::to_string(contact.node[p] + 1) +
                     ") has its normal component held by a DIRICHLET card: it is out of the "
                     "contact set, its normal force the condition's reaction");
-      } else if (const int k = held_tangent_of(contact, p, component, kAligned); k >= 0) {
+      } else if (const int k = held_tangent_of(frame, component, kAligned); k >= 0) {
         law.held_tangent[k] = true;
-        law.held_slip[k] = contact.frame(p)(component, k) * value;
+        law.held_slip[k] = frame(component, k) * value;
       } else {
         SIG_VERIFY(false, "contact node "
                               << p + 1 << " (mesh node " << contact.node[p] + 1
