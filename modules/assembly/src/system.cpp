@@ -183,6 +183,19 @@ void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vecto
   }
 }
 
+const Card* dirichlet_card_of(const Mesh& mesh, const Datafile& datafile, int dof) {
+  const int node = dof / mesh.dim, component = dof % mesh.dim;
+  const char* fields[3] = {"ux", "uy", "uz"};
+  for (const Card* card : datafile.all("DIRICHLET")) {
+    if (!card->has(fields[component])) continue;
+    for (int ref : card_references(*card, mesh, RefSupport::edges_or_vertices)) {
+      const std::vector<int> nodes = mesh.nodes_with_ref(ref);
+      if (std::find(nodes.begin(), nodes.end(), node) != nodes.end()) return card;
+    }
+  }
+  return nullptr;
+}
+
 Eigen::VectorXd LinearSystem::load_at(double t) const {
   if (time_loads.empty()) return f;
   return f + time_loads.change(t, num_dofs());

@@ -209,6 +209,7 @@ int solve_main(int argc, char** argv) {
       SIG_VERIFY(!(loop && distributed),
                  datafile.path << ": the convexification loop of law=nonmonotone runs in one "
                                   "process: run it without mpirun");
+      sig::verify_held_contact_components(mesh, datafile, system, *contact, method);
       Eigen::VectorXd start;
       if (!datafile.all("INITIAL").empty()) start = sig::initial_fields(datafile, mesh).u;
       if (std::isfinite(parameters.candidate_gap))

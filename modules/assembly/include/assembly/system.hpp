@@ -17,6 +17,7 @@
 
 namespace sig {
 
+class Card;
 class Datafile;
 struct Mesh;
 struct MaterialTable;
@@ -70,6 +71,9 @@ Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& tabl
 /// give two values (on the second card's field, naming the first card's line).
 void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vector<int>& dofs,
                           Eigen::VectorXd& values);
+/// The first DIRICHLET card of `datafile` that holds `dof` (d node + component), or nullptr:
+/// the card a later stage names when it cannot honour that condition.
+const Card* dirichlet_card_of(const Mesh& mesh, const Datafile& datafile, int dof);
 
 /// Everything from the mesh, the MILI table and the DIRICHLET, TRACTION, PRESSURE, BODYFORCE
 /// and MOVINGLOAD cards.
