@@ -14,6 +14,7 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
+#include "solver/contact_bulk.hpp"
 #include "solver/convexification.hpp"
 #include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
@@ -81,8 +82,6 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   // 2. Mesh, laws, the assembled system (K, M, V, loads in time; under mpirun this rank's rows of
   //    the matrices, stages/rank_rows.hpp), the initial state.
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
-  refuse_in_3d(mesh, datafile.require("TIME"), "scheme",
-               "the backward-Euler march in velocity (scheme=backward-euler)");
   for (const SubdomainMaterial& m : read_mili(args.ds_path("mili")).entries)
     if (m.hyperelastic)
       datafile.all("MATERIAL")
@@ -131,7 +130,8 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
       // mu(0) of the previous step's slip rate: the bulk restarts from its velocity.
       ContactSetting start = setting;
       if (options.start == ConvexificationStart::given) {
-        const Eigen::VectorXd rate = bulk.slip().cwiseAbs();
+        // |w_t| per node: d - 1 components a node (solver/contact_bulk.hpp).
+        const Eigen::VectorXd rate = tangential_squares(bulk.slip(), start.size()).cwiseSqrt();
         for (int p = 0; p < start.size(); ++p)
           start.law[p].mu = friction_coefficient(start.law[p], rate[p]);
       }
@@ -139,8 +139,9 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
       const Eigen::VectorXd origin = scheme.normal_origin(n, *contact);
       ConvexificationMeasures measures;
       measures.displacement = [&origin](const ContactBulk& b) {
-        Eigen::VectorXd v(2 * origin.size());
-        v << b.penetration() + origin, b.slip();
+        const Eigen::VectorXd slip = b.slip();
+        Eigen::VectorXd v(origin.size() + slip.size());
+        v << b.penetration() + origin, slip;
         return v;
       };
       ConvexificationResult r = convexify(bulk, start, *method, inner, options, measures, iterate);

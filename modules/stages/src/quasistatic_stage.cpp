@@ -64,11 +64,9 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
 
   // 2. Mesh, laws, assembled system (elastic K, viscous V, memory terms, loads in time; under
   //    mpirun this rank's rows of the matrices, stages/rank_rows.hpp).
+  // 2D and 3D on one code path: a 3D node's slip rate has two components, along its tangents t1
+  // and t2, and its friction force lies in the Coulomb cone's disc (contact/contact_kernel.hpp).
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
-  // 3D: the march and its normal laws in velocity on the one code path (issue 28); the slip rate
-  // of a 3D node has two tangents, which the friction laws in velocity do not take yet.
-  if (const Card* friction = friction_card_with_law(datafile))
-    refuse_in_3d(mesh, *friction, "law", "friction in the quasistatic march (its slip rates)");
   for (const SubdomainMaterial& m : read_mili(args.ds_path("mili")).entries)
     if (m.hyperelastic)
       datafile.all("MATERIAL")
