@@ -52,6 +52,11 @@ be=(-e 's/law=damped cn=10/law=compliance cn=1000/' -e 's/eta2=10$/eta2=10 rho=1
   -e 's/^TIME .*/TIME scheme=backward-euler T=3 k=0.5/')
 for d in 2 3; do
   variant $d stick "${stick[@]}"
+  variant $d mu1 -e 's/law=coulomb mu=0.2/law=mu1 mu=0.2/' \
+    -e 's/law=damped cn=10/law=damped-unilateral cn=10 g=0.2/'
+  variant $d nonmono -e 's/law=coulomb mu=0.2/law=nonmonotone a=0.2 b=0.1 alpha=50 of=slip-rate/' \
+    -e 's/T=0.5 k=0.05/T=0.25 k=0.05/'
+  echo "CONVEXIFICATION eps=1e-10" >>"$work/nonmono${d}d.dat"
   variant $d be "${be[@]}"
   variant $d bestick "${be[@]}" "${stick[@]}" -e 's/T=3 k=0.5/T=10 k=0.5/'
   variant $d benonmono "${be[@]}" \
@@ -62,7 +67,7 @@ for d in 2 3; do
   [ $d = 2 ] && echo "INITIAL v=0.01,0" >>"$work/beslide2d.dat"
   [ $d = 3 ] && echo "INITIAL v=0.006,0.008,0" >>"$work/beslide3d.dat"
 done
-for name in creep_slip stick be bestick benonmono beslide; do
+for name in creep_slip stick mu1 nonmono be bestick benonmono beslide; do
   for d in 2 3; do
     "$root/drivers/chain.sh" "$work/$name${d}d.dat" -o "$work/$name$d" >"$work/$name$d.log" 2>&1 ||
       { tail -20 "$work/$name$d.log"; die "drivers/chain.sh $name${d}d.dat failed"; }
@@ -157,40 +162,46 @@ for name, q in (("creep_slip", 0.3), ("stick", 0.1)):
               f"the slip crept to {results[2]:.6g} of s_inf = {2 * H * (q - mu * p) / E:.6g}")
 
 def law_check(d, h, coefficient):
-    """Every step, every node: slipping (status 2), |T| = coefficient(|w_t|) N along w_t; or
-    sticking (status 1), w_t = 0 and |T| <= coefficient(0) N. The worst departure of |T| from
+    """Every step, every node: slipping (status 2), |T| = coefficient(|w_t|, w_n) N along w_t; or
+    sticking (status 1), w_t = 0 and |T| <= coefficient(0, w_n) N. The worst departure of |T| from
     its law, relative to N, and the steps' counts of slipping and sticking nodes."""
     t = d - 1
     off, counts = 0.0, {1: 0, 2: 0, "other": 0}
     for n in range(1, len(h["time"]["values"])):
         vt, ft = rows(h["velocity_t"])[n], rows(h["force_t"])[n]
         fn, status = rows(h["force_n"])[n], rows(h["friction_status"])[n]
+        vn = rows(h["velocity_n"])[n]
         for i in range(len(fn)):
             w, T = vt[t * i:t * i + t], ft[t * i:t * i + t]
             rate = math.sqrt(sum(c * c for c in w))
             if status[i] == 2 and rate > 0:
-                bound = coefficient(rate) * fn[i]
+                bound = coefficient(rate, vn[i]) * fn[i]
                 off = max(off, max(abs(T[c] - bound * w[c] / rate) for c in range(t)) / fn[i])
             elif status[i] == 1 and rate == 0:
                 size = math.sqrt(sum(c * c for c in T))
-                off = max(off, max(size - coefficient(0.0) * fn[i], 0.0) / fn[i])
+                off = max(off, max(size - coefficient(0.0, vn[i]) * fn[i], 0.0) / fn[i])
             else:
                 status[i] = "other"
             counts[status[i]] += 1
     return off, counts
 
 a_, b_, alpha = 0.2, 0.1, 50.0
-for name, coefficient, tolerance in (
-        ("be", lambda r: mu, 1e-9),
-        ("benonmono", lambda r: (a_ - b_) * math.exp(-alpha * r) + b_, 1e-8)):
+nonmonotone = lambda r, v_n: (a_ - b_) * math.exp(-alpha * r) + b_
+# mu1 of the normal velocity v_n, the asperities' depth g = 0.2 a velocity bound here.
+mu1 = lambda r, v_n: mu * min(max(v_n, 0.0) / 0.2, 1.0)
+for name, coefficient, tolerance, steps in (
+        ("be", lambda r, v_n: mu, 1e-9, 6), ("benonmono", nonmonotone, 1e-8, 6),
+        ("nonmono", nonmonotone, 1e-8, 5), ("mu1", mu1, 1e-9, 10)):
+    march = "backward Euler" if name.startswith("be") else "quasistatic"
     for d in (2, 3):
         x, h = run(name, d)
         off, counts = law_check(d, h, coefficient)
-        check(h["converged"]["values"] == [1] and len(h["time"]["values"]) == 7,
-              f"backward Euler {name} {d}D: 6 steps done")
-        slips = counts[2] == 6 * len(h["weight"]["values"]) if name == "be" else counts[2] > 0
+        check(h["converged"]["values"] == [1] and len(h["time"]["values"]) == steps + 1,
+              f"{march} {name} {d}D: {steps} steps done")
+        everywhere = name in ("be", "mu1")
+        slips = counts[2] == steps * len(h["weight"]["values"]) if everywhere else counts[2] > 0
         check(slips and counts["other"] == 0 and off < tolerance,
-              f"backward Euler {name} {d}D: slipping node-steps {counts[2]}, sticking {counts[1]}; "
+              f"{march} {name} {d}D: slipping node-steps {counts[2]}, sticking {counts[1]}; "
               f"|T| = mu(|w_t|) N along w_t, or w_t = 0 and |T| <= mu(0) N "
               f"(worst {off:.1e} of N, tolerance {tolerance:g})")
 

@@ -64,8 +64,7 @@ void put_rows(Ds& ds, const std::string& name, const std::vector<const Eigen::Ve
   std::vector<double> values;
   for (const Eigen::VectorXd* row : rows) {
     SIG_VERIFY(row->size() == c * p, "HIST: a " << name << " of " << row->size() << " values for "
-                                                << p << " contact nodes of " << c
-                                                << " components");
+                                                << p << " contact nodes of " << c << " components");
     values.insert(values.end(), row->data(), row->data() + row->size());
   }
   std::vector<std::int64_t> shape{static_cast<std::int64_t>(rows.size()), p};
