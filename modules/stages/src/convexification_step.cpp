@@ -19,12 +19,13 @@ double ConvexificationRecords::most() const {
   return outer.empty() ? 0.0 : *std::max_element(outer.begin(), outer.end());
 }
 
-StepSolver convexification_step(const VelocityScheme& scheme, const VelocityContact& contact,
+StepSolver convexification_step(const VelocityScheme& scheme, const VelocityContact* contact,
                                 const SolverCard& solver, ConvexificationRecords& records) {
+  if (contact == nullptr || !needs_convexification(contact->setting.law)) return {};
   std::shared_ptr<const ContactMethod> method = make_contact_method(solver.parameters);
   const ContactNewtonOptions inner = newton_options(solver.parameters);
   const ConvexificationOptions options = solver.convexification;
-  return [&scheme, &contact, &records, method, inner,
+  return [&scheme, contact, &records, method, inner,
           options](ContactBulk& bulk, const ContactSetting& setting, ContactIterate& iterate) {
     // mu(0) of the previous step's slip rate |w_t|: the bulk restarts from its velocity.
     ContactSetting start = setting;
@@ -34,7 +35,7 @@ StepSolver convexification_step(const VelocityScheme& scheme, const VelocityCont
         start.law[p].mu = friction_coefficient(start.law[p], rate[p]);
     }
     const int n = static_cast<int>(records.outer.size()); // this step: one record per step before
-    const Eigen::VectorXd origin = scheme.normal_origin(n, contact);
+    const Eigen::VectorXd origin = scheme.normal_origin(n, *contact);
     ConvexificationMeasures measures;
     measures.displacement = [&origin](const ContactBulk& b) {
       const Eigen::VectorXd slip = b.slip();

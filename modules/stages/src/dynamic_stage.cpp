@@ -14,7 +14,6 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
-#include "solver/convexification.hpp"
 #include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
 #include "stages/convexification_step.hpp"
@@ -110,9 +109,8 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
 
   // 4. The step solver: the one Newton driver, or the convexification loop around it.
   ConvexificationRecords convexification;
-  StepSolver step_solver;
-  if (contact && needs_convexification(contact->setting.law))
-    step_solver = convexification_step(scheme, *contact, solver, convexification);
+  const StepSolver step_solver =
+      convexification_step(scheme, contact ? &*contact : nullptr, solver, convexification);
   LinearContactMarch march(scheme, contact ? &*contact : nullptr, solver.parameters, solver.backend,
                            step_solver);
 

@@ -25,9 +25,10 @@ struct ConvexificationRecords {
 };
 
 /// The step solver of `contact`'s march on `scheme` with the SOLVER card's method and
-/// CONVEXIFICATION options; each step appends its counts to `records`, which must outlive the
-/// march.
-StepSolver convexification_step(const VelocityScheme& scheme, const VelocityContact& contact,
+/// CONVEXIFICATION options when a law of `contact` is nonmonotone, else empty (the march's own
+/// Newton driver; `contact` null: no contact); each step appends its counts to `records`, which
+/// must outlive the march, as `contact` and `scheme` must.
+StepSolver convexification_step(const VelocityScheme& scheme, const VelocityContact* contact,
                                 const SolverCard& solver, ConvexificationRecords& records);
 
 /// case.hist's and steps.csv's columns of the loop (outer_iterations, outer_converged,
