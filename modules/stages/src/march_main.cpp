@@ -193,10 +193,11 @@ int march_main(int argc, char** argv) {
     sig::ContactStrategyParameters strategy_parameters;
     if (const sig::Card* friction = sig::friction_card_with_law(datafile);
         friction && friction->choice("law", sig::friction_law_choices) == "nonmonotone")
-      friction->fail("law", "law=nonmonotone needs its convexification loop in every step, which "
-                            "only the backward-Euler march runs (TIME scheme=backward-euler): "
-                            "coulomb, tresca, mu1 or mu2 with scheme=" +
-                                time.scheme);
+      friction->fail(
+          "law", "law=nonmonotone needs its convexification loop in every step, which "
+                 "only the marches in velocity run (TIME scheme=backward-euler or quasistatic): "
+                 "coulomb, tresca, mu1 or mu2 with scheme=" +
+                     time.scheme);
     if (contact != nullptr) {
       strategy_info = sig::contact_history_info(*contact);
       strategy_parameters = sig::contact_strategy_parameters(*contact, solver_card);
