@@ -4,19 +4,24 @@
 # of the slip rate in 2D and 3D on one code path, and the backward-Euler march runs on a 3D mesh.
 # The case, datafiles/scene3d/creep_slip.dat: a Kelvin-Voigt pad (nu = 0, eta1 = 0), its top
 # clamped sideways and pressed by p, its base on a foundation and dragged by a traction q along
-# the in-plane (0.6, 0.8) (2D: a strip, the pull along x1), Coulomb friction mu. Its stresses are
-# uniform, so P1 holds the exact solution in both dimensions (u affine in height):
-#   quasistatic, law=damped: every base node sinks at the rate p / cn and carries N = p w; with
-#     q > mu p it slips along the pull with |T| = mu N and the pad's shear creeps by the march's
+# the in-plane (0.6, 0.8) (2D: a strip, the pull along x1), Coulomb friction mu, its sides
+# carrying the complementary shear. Its stresses are uniform, so P1 holds the exact solution in
+# both dimensions (u affine in height), against which 2D and 3D are checked alike:
+#   quasistatic, law=damped, every step and node: N = p w, the sinking rate p / cn; with q > mu p
+#     the slip along the pull, |T| = mu N and the pad's shear creeping by the march's
 #     backward-Euler recurrence s_n - s_inf = (s_{n-1} - s_inf) eta2 / (eta2 + k E), s_inf =
-#     2 H (q - mu p) / E, the vertical strain likewise towards -p / E; with q < mu p it sticks, T
-#     balances q w, the pad does not shear.
-#   backward Euler, law=compliance, rho > 0: the transient is not uniform (the mass's waves), its
-#     limit is the static state: u3 = -p / cn - p x3 / E, the slip s_inf (stick: 0), |T| = mu N;
-#     FRICTION law=nonmonotone (of=slip-rate, its convexification loop in every step) slips at
-#     rest with mu(0) = a: s_inf = 2 H (q - a p) / E.
-# Checked at every step (quasistatic) or at the last (backward Euler), every contact node, to
-# 1e-9 of each quantity's scale; 2D and 3D against the same formulas. (About 3 s: ten chains.)
+#     2 H (q - mu p) / E, the vertical strain likewise towards -p / E; with q < mu p stick, T =
+#     q w, no shear (1e-9 of each quantity's scale); case.hist's velocity_t, force_t {rows, p}
+#     in 2D, {rows, p, 2} in 3D.
+#   backward Euler, law=compliance, rho > 0 (its transient is not uniform: the mass's waves):
+#     stick taken to rest, the static state u3 = -p / cn - p x3 / E, T = q w; a slide (Tresca at
+#     the threshold q, no clamp, no pressure, an initial velocity V) moving rigidly at V with
+#     T = s w at every node and step.
+#   the laws, per node and step, where the field has no closed form: |T| = mu(|w_t|, w_n) N
+#     along w_t (or w_t = 0 and |T| <= mu(0) N): Coulomb and nonmonotone (of=slip-rate, the
+#     convexification loop in every step) in the backward Euler, nonmonotone and mu1 (of the
+#     normal velocity) in the quasistatic march.
+# (About 4 s: fourteen chains.)
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 
@@ -148,6 +153,12 @@ for name, q in (("creep_slip", 0.3), ("stick", 0.1)):
             fields = max(fields, check_field(d, x, rows(h["u"])[n], s[n], e[n], -n * k * p / cn)
                          / (abs(s[-1]) + abs(e[-1]) * H + p / cn))
         status = {v for r in rows(h["friction_status"])[1:] for v in r}
+        # case.hist's layout: d - 1 tangential components a node (history_io.hpp).
+        nodes_ = len(h["weight"]["values"])
+        shape = [steps + 1, nodes_] + ([2] if d == 3 else [])
+        check(h["velocity_t"]["shape"] == shape and h["force_t"]["shape"] == shape and
+              h["force_n"]["shape"] == [steps + 1, nodes_],
+              f"quasistatic {name} {d}D: velocity_t and force_t of shape {shape}")
         check(h["converged"]["values"] == [1] and steps == 10, f"quasistatic {name} {d}D: 10 steps done")
         check(nodes < 1e-9, f"quasistatic {name} {d}D: per node N = p w, rate p / cn, the slip rate "
               f"of the recurrence, T = {'mu N' if slipping else 'q w'} along the pull "
