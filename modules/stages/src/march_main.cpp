@@ -16,9 +16,8 @@
 // consistent, lumped or emm) and the hyperelastic march (Gonzalez's or the midpoint stress)
 // with every strategy and the friction laws (coulomb, tresca, mu1, mu2: the slip over a step a
 // vector of the node's tangent plane, two slips a node, the force in the disc of radius s, the
-// Coulomb cone's section), and the quasistatic Kelvin-Voigt march with its normal laws in
-// velocity; friction in the quasistatic march and the backward-Euler march refuse a 3D mesh on
-// their card (issue 28).
+// Coulomb cone's section), and the marches in velocity (quasistatic Kelvin-Voigt, backward
+// Euler) with their laws and friction of the slip rate (two components a node).
 //
 // Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0),
 // with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
@@ -103,8 +102,8 @@ int march_main(int argc, char** argv) {
                  "0. A progress line shows the step, time steps per second and the time left. "
                  "On a 3D mesh: the linear schemes (midpoint, Newmark; consistent, lumped or EMM "
                  "mass) and the hyperelastic march with every strategy and friction law (the "
-                 "Coulomb cone, two slips a node), the quasistatic Kelvin-Voigt march "
-                 "frictionless (issue 28); "
+                 "Coulomb cone, two slips a node), the quasistatic and backward-Euler marches "
+                 "in velocity with their friction laws (two slip rates a node); "
                  "SOLVER candidate_gap= condenses only the contact nodes near the obstacle. "
                  "Under mpirun -np P the marches in velocity (backward-euler, quasistatic; "
                  "SOLVER linear=mumps) factorize their step matrix by MUMPS over the ranks, each "
@@ -194,10 +193,11 @@ int march_main(int argc, char** argv) {
     sig::ContactStrategyParameters strategy_parameters;
     if (const sig::Card* friction = sig::friction_card_with_law(datafile);
         friction && friction->choice("law", sig::friction_law_choices) == "nonmonotone")
-      friction->fail("law", "law=nonmonotone needs its convexification loop in every step, which "
-                            "only the backward-Euler march runs (TIME scheme=backward-euler): "
-                            "coulomb, tresca, mu1 or mu2 with scheme=" +
-                                time.scheme);
+      friction->fail(
+          "law", "law=nonmonotone needs its convexification loop in every step, which "
+                 "only the marches in velocity run (TIME scheme=backward-euler or quasistatic): "
+                 "coulomb, tresca, mu1 or mu2 with scheme=" +
+                     time.scheme);
     if (contact != nullptr) {
       strategy_info = sig::contact_history_info(*contact);
       strategy_parameters = sig::contact_strategy_parameters(*contact, solver_card);
