@@ -495,7 +495,8 @@ std::filesystem::path tae_part_path(const std::filesystem::path& tae, int rank) 
 }
 
 void write_tae_part(const std::filesystem::path& tae, int rank, const TaeParts& parts,
-                    const LinearSystem& rows, const std::string& title) {
+                    const LinearSystem& rows, const std::string& title,
+                    const std::function<void()>& before_rename) {
   Ds ds("TAEP", title, "sig-assemble");
   ds.put_int("part_rank", rank);
   ds.put_int("part_ranks", parts.ranks);
@@ -503,7 +504,7 @@ void write_tae_part(const std::filesystem::path& tae, int rank, const TaeParts& 
   ds.put_int("ndof", rows.num_dofs());
   put_matrices(ds, rows);
   put_vectors(ds, rows);
-  write_ds(tae_part_path(tae, rank), ds);
+  write_ds(tae_part_path(tae, rank), ds, before_rename);
 }
 
 void write_tae_index(const std::filesystem::path& tae, const TaeParts& parts,

@@ -288,7 +288,8 @@ std::optional<DsArray> read_array(DsReader& in, std::uint32_t index, std::uint64
 }
 } // namespace
 
-void write_ds(const std::filesystem::path& path, const Ds& ds) {
+void write_ds(const std::filesystem::path& path, const Ds& ds,
+              const std::function<void()>& before_rename) {
   const PhaseTimer timer("write");
   check_writable(path, ds);
   // Inside a stage the DS records the inputs it was built from, replacing what it may hold.
@@ -322,7 +323,7 @@ void write_ds(const std::filesystem::path& path, const Ds& ds) {
   for (const DsArray* a : arrays)
     out.write_array(*a);
   out.raw(trailer, sizeof trailer);
-  file.commit();
+  file.commit(before_rename);
 }
 
 namespace {

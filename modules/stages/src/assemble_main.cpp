@@ -85,8 +85,10 @@ int assemble_main(int argc, char** argv) {
     std::string parts_words;
     if (parted) {
       const sig::TaeParts parts = sig::parts_of_job();
-      sig::write_tae_part(tae, sig::mpi::rank(), parts, system, datafile.title());
-      sig::mpi::sum(&nnz, 1);
+      // Renamed into place once every rank's part is whole: a rank that dies before leaves the
+      // case's parts as they were.
+      sig::write_tae_part(tae, sig::mpi::rank(), parts, system, datafile.title(),
+                          [&] { sig::mpi::sum(&nnz, 1); });
       if (!sig::writes_outputs()) return;
       sig::write_tae_index(tae, parts, system, datafile.title());
       sig::remove_tae_parts(tae, parts.ranks);

@@ -18,6 +18,7 @@
 //   index  ndof, parts, part_run, files (the parts' names, one a line), f_rate, M_lumped, f,
 //          dirichlet_dof, dirichlet_value, time_assemble, moving_*
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,9 +37,12 @@ struct TaeParts {
 std::filesystem::path tae_part_path(const std::filesystem::path& tae, int rank);
 
 /// The part of `rank`: `rows`, the system of its rows (assemble_system with owned rows), beside
-/// the index `tae`.
+/// the index `tae`. `before_rename` runs once the part is whole under its temporary name
+/// (write_ds): there a rank waits for the others, so that no part is renamed into place unless
+/// every rank has written its own.
 void write_tae_part(const std::filesystem::path& tae, int rank, const TaeParts& parts,
-                    const LinearSystem& rows, const std::string& title);
+                    const LinearSystem& rows, const std::string& title,
+                    const std::function<void()>& before_rename = {});
 
 /// The index `tae` of the parts: `system`'s vectors (its matrices are not written).
 void write_tae_index(const std::filesystem::path& tae, const TaeParts& parts,
