@@ -75,6 +75,14 @@ checks=$((checks + 1))
 echo "$test_name: the parts of 2 ranks against the whole TAE as 2 ranks:" \
   "$(grep -c identical "$work/same_dist.txt") arrays identical," \
   "the worst $(grep -v identical "$work/same_dist.txt" | sort -g -k3 | tail -1 | sed "s/^ok *//")"
+# sig-post says in the march's summary.json how it ran.
+checks=$((checks + 1))
+"$bin/sig-post" "$deck" -o "$dist" > "$work/post.log" 2>&1 || { cat "$work/post.log"; die "sig-post failed"; }
+"$python" -c '
+import json, sys
+s = json.load(open(sys.argv[1]))
+sys.exit(0 if s["ranks"] == 2 and s["ordering"] == "amd" and s["scheme"] == "backward-euler" else 1)' \
+  "$dist/summary.json" || fail "the march's summary.json lacks ranks 2: $(cat "$dist/summary.json")"
 # A part of another run (the same deck assembled again), a job of another size: refused, the
 # file named, no case.hist.
 refused_parts() {
