@@ -30,26 +30,25 @@ EOF
 tiny=$work/tiny
 drivers/chain.sh "$deck" -o "$tiny" > "$work/tiny_chain.log" 2>&1 ||
   { cat "$work/tiny_chain.log"; die "the two-triangle chain failed in one process"; }
+# refused_on_tiny STAGE: sig-STAGE as 3 ranks on the two triangles ends non-zero with the
+# message naming the ranks the mesh allows.
+refused_on_tiny() {
+  status=0
+  mpirun --oversubscribe -np 3 "$bin/sig-$1" "$deck" -o "$tiny" > "$work/tiny.log" 2>&1 ||
+    status=$?
+  [ $status -ne 0 ] || fail "sig-$1 as 3 ranks on 2 triangles exited 0"
+  grep -q "cannot be shared by 3 ranks: run mpirun with at most 2 ranks" "$work/tiny.log" ||
+    { cat "$work/tiny.log"; fail "sig-$1: no message naming the ranks a 2-triangle mesh allows"; }
+  echo "mpi_faults: sig-$1 as 3 ranks on 2 triangles refused (exit $status)"
+}
 rm -f "$tiny/case.b"
-status=0
-mpirun --oversubscribe -np 3 "$bin/sig-solve" "$deck" -o "$tiny" > "$work/tiny.log" 2>&1 ||
-  status=$?
-[ $status -ne 0 ] || fail "3 ranks on 2 triangles exited 0"
-grep -q "cannot be shared by 3 ranks: run mpirun with at most 2 ranks" "$work/tiny.log" ||
-  { cat "$work/tiny.log"; fail "no message naming the ranks a 2-triangle mesh allows"; }
+refused_on_tiny solve
 [ ! -e "$tiny/case.b" ] || fail "a refused distributed solve wrote case.b"
-echo "mpi_faults: 3 ranks on 2 triangles refused (exit $status)"
 # sig-assemble too, before it writes a part or the index.
 before=$(cksum < "$tiny/case.tae")
-status=0
-mpirun --oversubscribe -np 3 "$bin/sig-assemble" "$deck" -o "$tiny" > "$work/tiny_assemble.log" 2>&1 ||
-  status=$?
-[ $status -ne 0 ] || fail "sig-assemble as 3 ranks on 2 triangles exited 0"
-grep -q "cannot be shared by 3 ranks: run mpirun with at most 2 ranks" "$work/tiny_assemble.log" ||
-  { cat "$work/tiny_assemble.log"; fail "sig-assemble: no message naming the ranks the mesh allows"; }
+refused_on_tiny assemble
 [ "$(cksum < "$tiny/case.tae")" = "$before" ] && [ -z "$(ls "$tiny" | grep 'case.tae.r')" ] ||
   fail "a refused distributed assembly changed case.tae or wrote a part: $(ls "$tiny")"
-echo "mpi_faults: sig-assemble as 3 ranks on 2 triangles refused (exit $status)"
 
 # kill_in_write STAGE FILE: runs sig-STAGE as 2 ranks of mpirun on the Hertz case, the rank that
 # writes FILE stopped in its write (SIG_STOP_WRITING) and killed (SIGKILL): mpirun must end
