@@ -7,7 +7,7 @@
 # the contact unknowns its Schur complement): every array of case.hist within 1e-8 of its largest
 # value, the statuses and the Newton and outer counts identical, case.hist records 2 ranks.
 # The same march on a distributed assembly (mpirun -np 2 sig-assemble: a part per rank) within
-# 1e-12 of that on the whole TAE; a part of another run and a job of another size than the
+# 1e-10 of that on the whole TAE; a part of another run and a job of another size than the
 # parts' refused, naming the file. Refused under mpirun, by card and field, and nothing written:
 # a step matrix for CHOLMOD (SOLVER linear=), a march of one process (TIME scheme=midpoint).
 # About 8 s.
@@ -53,7 +53,11 @@ sys.exit(0 if a["ranks"] == [2] and a["converged"] == [1] else 1)' ||
 
 # 2b. Distributed assembly (mpirun -np 2 sig-assemble): each rank writes the rows of its part to
 # case.tae.r<rank>, rank 0 the index case.tae; the march reads the parts and gives the answers
-# of the march on the whole TAE to 1e-12 (its rows are the whole assembly's, bit for bit).
+# of the march on the whole TAE to 1e-10. Its rows are the whole assembly's bit for bit (the unit
+# test TaeParts.EachRankReadsOfItsPartWhatTheWholeTaeGives), and on a quiet machine the two
+# marches agree in every bit; under ctest's load MUMPS over 2 ranks is not repeatable run to run
+# (on these bit-identical inputs the two marches once differed by 9.9e-12 of the largest kinetic
+# energy).
 dist=$work/dist
 mkdir -p "$dist"
 cp "$one"/case.nopo* "$one"/case.mili* "$one"/case.cont* "$dist"/
@@ -70,7 +74,7 @@ mpirun --oversubscribe -np 2 "$bin/sig-march" "$deck" -o "$dist" > "$work/dist.l
   { cat "$work/dist.log"; die "mpirun -np 2 sig-march on the parts failed"; }
 checks=$((checks + 1))
 "$python" "$root/tests/pipeline/lib/same_history.py" "$bin" "$two/case.hist" "$dist/case.hist" \
-  1e-12 > "$work/same_dist.txt" ||
+  1e-10 > "$work/same_dist.txt" ||
   fail "the parts' march differs from the whole TAE's: $(grep FAIL "$work/same_dist.txt")"
 echo "$test_name: the parts of 2 ranks against the whole TAE as 2 ranks:" \
   "$(grep -c identical "$work/same_dist.txt") arrays identical," \

@@ -48,7 +48,9 @@ int assemble_main(int argc, char** argv) {
       .purpose = "Assembly stage (MODULEF's THENEW/ELASCT and assembly): P1 stiffness and mass "
                  "matrices, load vectors and Dirichlet dofs of the case.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)", "OUTDIR/case.mili (sig-material)"},
-      .writes = {"OUTDIR/case.tae (dof numbering, K, M, loads, Dirichlet dofs and values)"},
+      .writes = {"OUTDIR/case.tae (dof numbering, K, M, loads, Dirichlet dofs and values)",
+                 "under mpirun -np P >= 2: OUTDIR/case.tae.r0 .. r<P-1> (each rank's rows of K, "
+                 "M, its METIS part) and OUTDIR/case.tae their index (no matrix)"},
       .cards = sig::stage_cards("assemble").cards};
   return sig::run_stage_on_ranks("sig-assemble", [&] {
     // 1. Command line and inputs.
