@@ -76,9 +76,11 @@ void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vecto
 const Card* dirichlet_card_of(const Mesh& mesh, const Datafile& datafile, int dof);
 
 /// Everything from the mesh, the MILI table and the DIRICHLET, TRACTION, PRESSURE, BODYFORCE
-/// and MOVINGLOAD cards.
-LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
-                             const Datafile& datafile);
+/// and MOVINGLOAD cards. With `owned` (per dof, a rank's rows: stages/rank_rows.hpp) the
+/// matrices hold those rows only, assembled on the cells that reach them (the others empty; the
+/// values those of the whole assembly, bit for bit), the vectors stay the whole body's.
+LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table, const Datafile& datafile,
+                             const std::vector<char>* owned = nullptr);
 
 /// DS "TAE": ndof; K_rowptr, K_col (1-based CSR of the full symmetric matrix), K_val; M_val
 /// (same pattern, only if M is not empty); M_lumped; f; dirichlet_dof (1-based);
