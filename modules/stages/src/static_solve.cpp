@@ -74,14 +74,14 @@ void verify_held_contact_components(const Mesh& mesh, const Datafile& datafile,
       const int dof = d * contact.node[p] + component;
       if (!std::binary_search(system.dirichlet_dofs.begin(), system.dirichlet_dofs.end(), dof))
         continue;
-      const Card* card = dirichlet_card_of(mesh, datafile, dof);
       const std::string field = std::string("u") + "xyz"[component];
       if (held_axis(contact, p, component).kind == HeldAxis::Kind::oblique) {
-        if (card) card->fail(field, oblique_hold_problem(contact, p, component));
+        if (const Card* card = dirichlet_card_of(mesh, datafile, dof))
+          card->fail(field, oblique_hold_problem(contact, p, component));
         SIG_VERIFY(false, datafile.path << ": a DIRICHLET condition "
                                         << oblique_hold_problem(contact, p, component));
       }
-      if (method == "penalty" && card)
+      if (const Card* card = method == "penalty" ? dirichlet_card_of(mesh, datafile, dof) : nullptr)
         card->fail(field, "holds u" + std::to_string(component + 1) + " of contact node " +
                               std::to_string(p + 1) +
                               ", which the penalty method cannot impose (it has no multipliers): "
