@@ -159,6 +159,52 @@ TEST(Schur, MumpsSymmetricKindMatchesSpdKind) {
 namespace sig {
 namespace {
 
+/// S = K_cc - K_ci K_ii^-1 K_ic, dense.
+Eigen::MatrixXd dense_schur(const Eigen::SparseMatrix<double>& K, const std::vector<int>& c) {
+  const Eigen::MatrixXd Kd(K);
+  const std::vector<int> i_dofs = test::complement(c, static_cast<int>(K.rows()));
+  const Eigen::MatrixXd K_ic = test::dense_block(Kd, i_dofs, c);
+  const Eigen::LLT<Eigen::MatrixXd> llt(test::dense_block(Kd, i_dofs, i_dofs));
+  return test::dense_block(Kd, c, c) - K_ic.transpose() * llt.solve(K_ic);
+}
+
+/// What expect_dense_formulas used: the load f = K x, the interface values u_c expanded into u.
+struct SplitCheck {
+  Eigen::MatrixXd S;
+  Eigen::VectorXd x, f, u_c, u;
+};
+
+/// The split's S, condensed load and expansion (of any interface values) against the dense
+/// formulas S = K_cc - K_ci K_ii^-1 K_ic, f_c - K_ci K_ii^-1 f_i, K_ii^-1 (f_i - K_ic u_c).
+SplitCheck expect_dense_formulas(CholmodSplitSolver& split, const Eigen::SparseMatrix<double>& K,
+                                 const std::vector<int>& c) {
+  const int n = static_cast<int>(K.rows());
+  const std::vector<int> i_dofs = test::complement(c, n);
+  const Eigen::MatrixXd Kd(K);
+  const Eigen::MatrixXd K_ic = test::dense_block(Kd, i_dofs, c);
+  const Eigen::LLT<Eigen::MatrixXd> llt(test::dense_block(Kd, i_dofs, i_dofs));
+  SplitCheck check;
+  check.S = dense_schur(K, c);
+  EXPECT_LT((split.schur_complement() - check.S).norm(), 1e-12 * check.S.norm()) << n;
+  check.x = test::manufactured(n);
+  check.f = K * check.x;
+  Eigen::VectorXd f_i(i_dofs.size()), f_c(c.size());
+  for (size_t k = 0; k < i_dofs.size(); ++k)
+    f_i[k] = check.f[i_dofs[k]];
+  for (size_t k = 0; k < c.size(); ++k)
+    f_c[k] = check.f[c[k]];
+  const Eigen::VectorXd condensed = f_c - K_ic.transpose() * llt.solve(f_i);
+  EXPECT_LT((split.reduce(check.f) - condensed).norm(), 1e-12 * condensed.norm()) << n;
+  check.u_c = test::manufactured(static_cast<int>(c.size()), 0.7);
+  check.u = split.expand(check.u_c);
+  const Eigen::VectorXd u_i = llt.solve(f_i - K_ic * check.u_c);
+  for (size_t k = 0; k < c.size(); ++k)
+    EXPECT_EQ(check.u[c[k]], check.u_c[k]);
+  for (size_t k = 0; k < i_dofs.size(); ++k)
+    EXPECT_NEAR(check.u[i_dofs[k]], u_i[k], 1e-11 * u_i.norm()) << n;
+  return check;
+}
+
 // The CHOLMOD split (solver/cholmod_split.hpp): K factorized whole with the interface last. S is
 // the factor's trailing block squared, the condensed load and the expansion of ANY interface
 // values are the dense formulas', and the pair solves K x = f when the interface values are
@@ -172,32 +218,10 @@ TEST(Schur, CholmodSplitMatchesTheDenseFormulas) {
   for (int i = 1; i <= g.nx; ++i)
     for (int a = 0; a < 2; ++a)
       c.push_back(2 * (i - 1) + a); // the bottom edge, low numbers: the split must move them last
-  const std::vector<int> i_dofs = test::complement(c, n);
-  const Eigen::MatrixXd Kd(K);
-  auto block = [&](const std::vector<int>& r, const std::vector<int>& s) {
-    return test::dense_block(Kd, r, s);
-  };
-  const Eigen::MatrixXd K_ii = block(i_dofs, i_dofs), K_ic = block(i_dofs, c);
-  const Eigen::LLT<Eigen::MatrixXd> llt(K_ii);
-  const Eigen::MatrixXd S = block(c, c) - K_ic.transpose() * llt.solve(K_ic);
-
   CholmodSplitSolver split(K, c);
-  EXPECT_LT((split.schur_complement() - S).norm(), 1e-12 * S.norm());
-  const Eigen::VectorXd f = K * test::manufactured(n);
-  Eigen::VectorXd f_i(i_dofs.size()), f_c(c.size());
-  for (size_t k = 0; k < i_dofs.size(); ++k)
-    f_i[k] = f[i_dofs[k]];
-  for (size_t k = 0; k < c.size(); ++k)
-    f_c[k] = f[c[k]];
-  const Eigen::VectorXd condensed = f_c - K_ic.transpose() * llt.solve(f_i);
-  EXPECT_LT((split.reduce(f) - condensed).norm(), 1e-12 * condensed.norm());
-  const Eigen::VectorXd u_c = test::manufactured(static_cast<int>(c.size()), 0.7);
-  const Eigen::VectorXd u = split.expand(u_c);
-  const Eigen::VectorXd u_i = llt.solve(f_i - K_ic * u_c);
-  for (size_t k = 0; k < c.size(); ++k)
-    EXPECT_EQ(u[c[k]], u_c[k]);
-  for (size_t k = 0; k < i_dofs.size(); ++k)
-    EXPECT_NEAR(u[i_dofs[k]], u_i[k], 1e-11 * u_i.norm());
+  const SplitCheck check = expect_dense_formulas(split, K, c);
+  const Eigen::VectorXd &f = check.f, &u_c = check.u_c, &u = check.u;
+  const Eigen::MatrixXd& S = check.S;
   EXPECT_THROW(split.expand(u_c), Error); // one expand per reduce
 
   SchurComplement whole(K, c, "cholmod", MatrixKind::spd, true), apart(K, c, "cholmod");
@@ -276,15 +300,6 @@ std::vector<int> lattice_bottom(int n) {
   return c;
 }
 
-/// S = K_cc - K_ci K_ii^-1 K_ic, dense.
-Eigen::MatrixXd dense_schur(const Eigen::SparseMatrix<double>& K, const std::vector<int>& c) {
-  const Eigen::MatrixXd Kd(K);
-  const std::vector<int> i_dofs = test::complement(c, static_cast<int>(K.rows()));
-  const Eigen::MatrixXd K_ic = test::dense_block(Kd, i_dofs, c);
-  const Eigen::LLT<Eigen::MatrixXd> llt(test::dense_block(Kd, i_dofs, i_dofs));
-  return test::dense_block(Kd, c, c) - K_ic.transpose() * llt.solve(K_ic);
-}
-
 // The supernodal split on both dimensions' patterns: K positive definite (2D: the rectangle
 // clamped on its left edge, interface its bottom edge; 3D: the lattice with springs on its face
 // i = 0, interface its bottom face), S, the condensed load and the expansion against the dense
@@ -302,35 +317,12 @@ TEST(Schur, CholmodSupernodalSplitMatchesTheDenseFormulas) {
   const std::pair<Eigen::SparseMatrix<double>, std::vector<int>> cases[] = {
       {test::clamped_stiffness(g), edge}, {lattice, lattice_bottom(6)}};
   for (const auto& [K, c] : cases) {
-    const int n = static_cast<int>(K.rows());
-    const Eigen::MatrixXd S = dense_schur(K, c);
     CholmodSplitSolver split(K, c, SplitLayout::supernodal);
-    EXPECT_LT((split.schur_complement() - S).norm(), 1e-12 * S.norm()) << n;
+    const SplitCheck check = expect_dense_formulas(split, K, c);
     EXPECT_EQ((split.schur_complement() - split.schur_complement().transpose()).norm(), 0.0);
-
-    const std::vector<int> i_dofs = test::complement(c, n);
-    const Eigen::MatrixXd Kd(K);
-    const Eigen::MatrixXd K_ic = test::dense_block(Kd, i_dofs, c);
-    const Eigen::LLT<Eigen::MatrixXd> llt(test::dense_block(Kd, i_dofs, i_dofs));
-    const Eigen::VectorXd x = test::manufactured(n);
-    const Eigen::VectorXd f = K * x;
-    Eigen::VectorXd f_i(i_dofs.size()), f_c(c.size());
-    for (size_t k = 0; k < i_dofs.size(); ++k)
-      f_i[k] = f[i_dofs[k]];
-    for (size_t k = 0; k < c.size(); ++k)
-      f_c[k] = f[c[k]];
-    const Eigen::VectorXd condensed = f_c - K_ic.transpose() * llt.solve(f_i);
-    EXPECT_LT((split.reduce(f) - condensed).norm(), 1e-12 * condensed.norm()) << n;
-    const Eigen::VectorXd u_c = test::manufactured(static_cast<int>(c.size()), 0.7);
-    const Eigen::VectorXd u = split.expand(u_c);
-    const Eigen::VectorXd u_i = llt.solve(f_i - K_ic * u_c);
-    for (size_t k = 0; k < c.size(); ++k)
-      EXPECT_EQ(u[c[k]], u_c[k]);
-    for (size_t k = 0; k < i_dofs.size(); ++k)
-      EXPECT_NEAR(u[i_dofs[k]], u_i[k], 1e-11 * u_i.norm()) << n;
-    EXPECT_THROW(split.expand(u_c), Error); // one expand per reduce
-    const Eigen::VectorXd w = S.llt().solve(split.reduce(f));
-    EXPECT_LT((split.expand(w) - x).norm(), 1e-10 * x.norm()) << n;
+    EXPECT_THROW(split.expand(check.u_c), Error); // one expand per reduce
+    const Eigen::VectorXd w = check.S.llt().solve(split.reduce(check.f));
+    EXPECT_LT((split.expand(w) - check.x).norm(), 1e-10 * check.x.norm());
   }
 }
 
