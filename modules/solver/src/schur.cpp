@@ -119,8 +119,11 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
       seconds_factorize_ = factor_clock.seconds();
       return;
     } catch (const Error& e) {
-      log_warning(std::string("the matrix could not be factorized whole, its interface last (") +
-                  e.what() + "): its interior is factorized apart");
+      // Supernodal: K_ii is not positive definite, which the interior path below reports in its
+      // own words (the stage then names the part held by nothing), so no warning first.
+      if (!nested || dynamic_cast<const FactorizationFailure*>(&e) == nullptr)
+        log_warning(std::string("the matrix could not be factorized whole, its interface last (") +
+                    e.what() + "): its interior is factorized apart");
       split_.reset();
     }
   }
