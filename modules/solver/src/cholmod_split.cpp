@@ -28,8 +28,8 @@ struct CholmodSplitSolver::State {
 namespace {
 
 /// CSYMAMD's constraint sets on the whole K: 0 the interior, 1 the Schur variables (ordered
-/// after set 0), whose factor is sparser than a minimum degree order of the interior followed by
-/// the Schur variables (the interior's order knows nothing of them). Fills perm.
+/// after set 0), whose factor is sparser on 2D meshes than a free order of the interior (METIS)
+/// followed by the Schur variables (the interior's order knows nothing of them). Fills perm.
 void order_constrained(cholmod_sparse& view, const std::vector<int>& is_last,
                        const std::vector<int>& last, std::vector<int>& perm, cholmod_common& c) {
   std::vector<int> order(view.nrow);
@@ -132,7 +132,8 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
     SIG_VERIFY(sigma > 0, "CHOLMOD split: the Schur variables' diagonal of K is zero");
     shifted = K;
     for (int d : last)
-      shifted.coeffRef(d, d) += sigma; // stored: K's diagonal is in its pattern (sigma > 0)
+      shifted.coeffRef(d, d) += sigma;
+    shifted.makeCompressed(); // a diagonal entry missing from K's pattern was inserted
     view = view_lower(shifted);
   }
   c.nmethods = 1;

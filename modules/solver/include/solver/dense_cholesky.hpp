@@ -17,8 +17,9 @@ bool cholesky_in_place(Eigen::MatrixXd& A);
 /// LU with partial pivoting of a square matrix: Eigen's PartialPivLU below `lapack_min_rows`
 /// rows, LAPACK's dgetrf from there on. On the frictional 3D half ball (issue 26) the contact
 /// zone's tail system has 2000-3000 unknowns and is factorized at every Newton iteration, where
-/// Eigen's LU took about a quarter of the dense Newton; the 2D scenes' tails are a few hundred
-/// unknowns at most, which keep Eigen's (so their results stay bit for bit).
+/// Eigen's matrix kernels (its LU's among them) took about a quarter of the dense Newton's time
+/// (perf, 66366 dofs); smaller tails keep Eigen's (the DS files of scenes 7a and 7b --quick
+/// stayed bit for bit).
 class DenseLu {
 public:
   static constexpr Eigen::Index lapack_min_rows = 1024;
