@@ -15,8 +15,9 @@
 # the ball); projection is not run then. Runs:
 #  - pdas, alm and projection (their default parameters) condensing the candidates of initial gap
 #    below a^2 / R (SOLVER candidate_gap=, the nodes within about 1.4 a of the pole), CHOLMOD
-#    (the Schur complement by block solves with the interior's factor) and, for pdas, MUMPS (the
-#    Schur complement inside its factorization, ICNTL(19));
+#    (the whole stiffness factorized supernodally, the condensed unknowns last, the Schur
+#    complement read off the factor: solver/cholmod_split.hpp) and, for pdas, MUMPS (the Schur
+#    complement inside its factorization, ICNTL(19));
 #  - pdas condensing every node of the curved face (unless --no-whole): the dense Schur complement
 #    the candidates avoid;
 #  - the floor: the stiffness of the same mesh without contact, the flat top clamped (DIRICHLET
@@ -52,9 +53,7 @@ usage: drivers/bench-hertz3d.sh [--h H] [--grading G] [--mu MU [--shift DX] [--d
   --drop DZ      with --mu: the top's displacement along -x3 (default 0.07)
   --repeat K     timed runs per case, medians reported (default 5)
   --cases LIST   the contact runs to time, comma-separated among pdas, pdas_mumps, alm,
-                 projection, pdas_whole (default all; the floors always run). On a large ball
-                 the CHOLMOD runs form the Schur complement by one block solve per condensed
-                 unknown: minutes at 150k dofs, where pdas_mumps alone is the practical choice
+                 projection, pdas_whole (default all; the floors always run)
   -o OUTDIR      results folder (default out/bench-hertz3d)
   --no-getfem    skip the GetFEM comparison
   --no-whole     skip the run condensing every contact node

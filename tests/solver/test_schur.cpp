@@ -159,6 +159,52 @@ TEST(Schur, MumpsSymmetricKindMatchesSpdKind) {
 namespace sig {
 namespace {
 
+/// S = K_cc - K_ci K_ii^-1 K_ic, dense.
+Eigen::MatrixXd dense_schur(const Eigen::SparseMatrix<double>& K, const std::vector<int>& c) {
+  const Eigen::MatrixXd Kd(K);
+  const std::vector<int> i_dofs = test::complement(c, static_cast<int>(K.rows()));
+  const Eigen::MatrixXd K_ic = test::dense_block(Kd, i_dofs, c);
+  const Eigen::LLT<Eigen::MatrixXd> llt(test::dense_block(Kd, i_dofs, i_dofs));
+  return test::dense_block(Kd, c, c) - K_ic.transpose() * llt.solve(K_ic);
+}
+
+/// What expect_dense_formulas used: the load f = K x, the interface values u_c expanded into u.
+struct SplitCheck {
+  Eigen::MatrixXd S;
+  Eigen::VectorXd x, f, u_c, u;
+};
+
+/// The split's S, condensed load and expansion (of any interface values) against the dense
+/// formulas S = K_cc - K_ci K_ii^-1 K_ic, f_c - K_ci K_ii^-1 f_i, K_ii^-1 (f_i - K_ic u_c).
+SplitCheck expect_dense_formulas(CholmodSplitSolver& split, const Eigen::SparseMatrix<double>& K,
+                                 const std::vector<int>& c) {
+  const int n = static_cast<int>(K.rows());
+  const std::vector<int> i_dofs = test::complement(c, n);
+  const Eigen::MatrixXd Kd(K);
+  const Eigen::MatrixXd K_ic = test::dense_block(Kd, i_dofs, c);
+  const Eigen::LLT<Eigen::MatrixXd> llt(test::dense_block(Kd, i_dofs, i_dofs));
+  SplitCheck check;
+  check.S = dense_schur(K, c);
+  EXPECT_LT((split.schur_complement() - check.S).norm(), 1e-12 * check.S.norm()) << n;
+  check.x = test::manufactured(n);
+  check.f = K * check.x;
+  Eigen::VectorXd f_i(i_dofs.size()), f_c(c.size());
+  for (size_t k = 0; k < i_dofs.size(); ++k)
+    f_i[k] = check.f[i_dofs[k]];
+  for (size_t k = 0; k < c.size(); ++k)
+    f_c[k] = check.f[c[k]];
+  const Eigen::VectorXd condensed = f_c - K_ic.transpose() * llt.solve(f_i);
+  EXPECT_LT((split.reduce(check.f) - condensed).norm(), 1e-12 * condensed.norm()) << n;
+  check.u_c = test::manufactured(static_cast<int>(c.size()), 0.7);
+  check.u = split.expand(check.u_c);
+  const Eigen::VectorXd u_i = llt.solve(f_i - K_ic * check.u_c);
+  for (size_t k = 0; k < c.size(); ++k)
+    EXPECT_EQ(check.u[c[k]], check.u_c[k]);
+  for (size_t k = 0; k < i_dofs.size(); ++k)
+    EXPECT_NEAR(check.u[i_dofs[k]], u_i[k], 1e-11 * u_i.norm()) << n;
+  return check;
+}
+
 // The CHOLMOD split (solver/cholmod_split.hpp): K factorized whole with the interface last. S is
 // the factor's trailing block squared, the condensed load and the expansion of ANY interface
 // values are the dense formulas', and the pair solves K x = f when the interface values are
@@ -172,32 +218,10 @@ TEST(Schur, CholmodSplitMatchesTheDenseFormulas) {
   for (int i = 1; i <= g.nx; ++i)
     for (int a = 0; a < 2; ++a)
       c.push_back(2 * (i - 1) + a); // the bottom edge, low numbers: the split must move them last
-  const std::vector<int> i_dofs = test::complement(c, n);
-  const Eigen::MatrixXd Kd(K);
-  auto block = [&](const std::vector<int>& r, const std::vector<int>& s) {
-    return test::dense_block(Kd, r, s);
-  };
-  const Eigen::MatrixXd K_ii = block(i_dofs, i_dofs), K_ic = block(i_dofs, c);
-  const Eigen::LLT<Eigen::MatrixXd> llt(K_ii);
-  const Eigen::MatrixXd S = block(c, c) - K_ic.transpose() * llt.solve(K_ic);
-
   CholmodSplitSolver split(K, c);
-  EXPECT_LT((split.schur_complement() - S).norm(), 1e-12 * S.norm());
-  const Eigen::VectorXd f = K * test::manufactured(n);
-  Eigen::VectorXd f_i(i_dofs.size()), f_c(c.size());
-  for (size_t k = 0; k < i_dofs.size(); ++k)
-    f_i[k] = f[i_dofs[k]];
-  for (size_t k = 0; k < c.size(); ++k)
-    f_c[k] = f[c[k]];
-  const Eigen::VectorXd condensed = f_c - K_ic.transpose() * llt.solve(f_i);
-  EXPECT_LT((split.reduce(f) - condensed).norm(), 1e-12 * condensed.norm());
-  const Eigen::VectorXd u_c = test::manufactured(static_cast<int>(c.size()), 0.7);
-  const Eigen::VectorXd u = split.expand(u_c);
-  const Eigen::VectorXd u_i = llt.solve(f_i - K_ic * u_c);
-  for (size_t k = 0; k < c.size(); ++k)
-    EXPECT_EQ(u[c[k]], u_c[k]);
-  for (size_t k = 0; k < i_dofs.size(); ++k)
-    EXPECT_NEAR(u[i_dofs[k]], u_i[k], 1e-11 * u_i.norm());
+  const SplitCheck check = expect_dense_formulas(split, K, c);
+  const Eigen::VectorXd &f = check.f, &u_c = check.u_c, &u = check.u;
+  const Eigen::MatrixXd& S = check.S;
   EXPECT_THROW(split.expand(u_c), Error); // one expand per reduce
 
   SchurComplement whole(K, c, "cholmod", MatrixKind::spd, true), apart(K, c, "cholmod");
@@ -228,6 +252,115 @@ TEST(Schur, CholmodSimplicialSolvesTheClampedBody) {
   EXPECT_LT((simplicial.solve(K * (2 * u)) - 2 * u).norm(), 2e-10 * u.norm()); // reused workspace
   const test::Grid h{6, 5};
   EXPECT_THROW(CholmodSimplicialSolver(test::elasticity_stiffness(h)), Error); // singular
+}
+
+} // namespace
+} // namespace sig
+
+namespace sig {
+namespace {
+
+// A symmetric positive semi-definite matrix with the pattern of a 3D stiffness: the nodes of an
+// n x n x n lattice, 3 unknowns each, every node coupled to its 26 neighbours by an spd 3 x 3
+// block (81 entries a row inside: above nested_dissection_entries_per_row, as a 3D P1 row);
+// kernel the 3 translations. Unknowns 3 node + a, node = (k n + j) n + i.
+Eigen::SparseMatrix<double> lattice_stiffness_3d(int n) {
+  std::vector<Eigen::Triplet<double>> t;
+  const auto node = [n](int i, int j, int k) { return (k * n + j) * n + i; };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        for (int dk = 0; dk <= 1; ++dk)
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di) {
+              const int a = node(i, j, k);
+              if (i + di < 0 || i + di >= n || j + dj < 0 || j + dj >= n || k + dk >= n) continue;
+              const int b = node(i + di, j + dj, k + dk);
+              if (b <= a) continue; // each pair once
+              Eigen::Matrix3d B = 0.2 * Eigen::Matrix3d::Ones();
+              B.diagonal() += Eigen::Vector3d(1.0 + 0.1 * (a % 3), 1.3, 0.8 + 0.05 * (b % 5));
+              for (int p = 0; p < 3; ++p)
+                for (int q = 0; q < 3; ++q) {
+                  t.emplace_back(3 * a + p, 3 * a + q, B(p, q));
+                  t.emplace_back(3 * b + p, 3 * b + q, B(p, q));
+                  t.emplace_back(3 * a + p, 3 * b + q, -B(p, q));
+                  t.emplace_back(3 * b + p, 3 * a + q, -B(p, q));
+                }
+            }
+  Eigen::SparseMatrix<double> K(3 * n * n * n, 3 * n * n * n);
+  K.setFromTriplets(t.begin(), t.end());
+  return K;
+}
+
+/// Every unknown of the lattice's nodes on the face k = 0 (a contact face).
+std::vector<int> lattice_bottom(int n) {
+  std::vector<int> c;
+  for (int d = 0; d < 3 * n * n; ++d)
+    c.push_back(d);
+  return c;
+}
+
+// The supernodal split on both dimensions' patterns: K positive definite (2D: the rectangle
+// clamped on its left edge, interface its bottom edge; 3D: the lattice with springs on its face
+// i = 0, interface its bottom face), S, the condensed load and the expansion against the dense
+// formulas, and the pair solving K x = f.
+TEST(Schur, CholmodSupernodalSplitMatchesTheDenseFormulas) {
+  const test::Grid g{9, 6};
+  std::vector<int> edge;
+  for (int i = 1; i <= g.nx; ++i)
+    for (int a = 0; a < 2; ++a)
+      edge.push_back(2 * (i - 1) + a);
+  Eigen::SparseMatrix<double> lattice = lattice_stiffness_3d(6);
+  for (int node = 0; node < 6 * 6 * 6; node += 6) // the nodes i = 0
+    for (int a = 0; a < 3; ++a)
+      lattice.coeffRef(3 * node + a, 3 * node + a) += 0.5;
+  const std::pair<Eigen::SparseMatrix<double>, std::vector<int>> cases[] = {
+      {test::clamped_stiffness(g), edge}, {lattice, lattice_bottom(6)}};
+  for (const auto& [K, c] : cases) {
+    CholmodSplitSolver split(K, c, SplitLayout::supernodal);
+    const SplitCheck check = expect_dense_formulas(split, K, c);
+    EXPECT_EQ((split.schur_complement() - split.schur_complement().transpose()).norm(), 0.0);
+    EXPECT_THROW(split.expand(check.u_c), Error); // one expand per reduce
+    const Eigen::VectorXd w = check.S.llt().solve(split.reduce(check.f));
+    EXPECT_LT((split.expand(w) - check.x).norm(), 1e-10 * check.x.norm());
+  }
+}
+
+// The 3D pattern goes to the supernodal split by itself (its rows are dense), also for a
+// semi-coercive K (the free lattice: K_cc's shift keeps the factorization positive definite):
+// S is the dense formula's, positive semi-definite with the translations as its kernel, and it
+// agrees with MUMPS's partial factorization; a singular K_ii is refused.
+TEST(Schur, SemiCoerciveThreeDimensionalPatternTakesTheSupernodalSplit) {
+  const int n = 5;
+  const Eigen::SparseMatrix<double> K = lattice_stiffness_3d(n);
+  ASSERT_TRUE(prefers_nested_dissection(K));
+  ASSERT_FALSE(prefers_nested_dissection(test::elasticity_stiffness({9, 6})));
+  const std::vector<int> c = lattice_bottom(n);
+  const int m = static_cast<int>(c.size());
+  const Eigen::MatrixXd S = dense_schur(K, c);
+  SchurComplement cholmod(K, c, "cholmod"), mumps(K, c, "mumps");
+  EXPECT_LT((cholmod.matrix() - S).norm(), 1e-12 * S.norm());
+  EXPECT_LT((mumps.matrix() - S).norm(), 1e-10 * S.norm());
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(m, 3); // the translations on the interface
+  for (int k = 0; k < m; ++k)
+    T(k, k % 3) = 1;
+  EXPECT_LT((cholmod.matrix() * T).norm(), 1e-12 * S.norm());
+
+  // A consistent load: the exact interface values give back x.
+  const Eigen::VectorXd x = test::manufactured(static_cast<int>(K.rows()));
+  const Eigen::VectorXd f = K * x;
+  Eigen::VectorXd x_c(m);
+  for (int k = 0; k < m; ++k)
+    x_c[k] = x[c[k]];
+  const Eigen::VectorXd gc = cholmod.condense(f);
+  EXPECT_LT((S * x_c - gc).norm(), 1e-10 * gc.norm());
+  EXPECT_LT((cholmod.expand(f, x_c) - x).norm() / x.norm(), 1e-10);
+
+  // An interior unknown coupled to nothing: K_ii singular, refused.
+  Eigen::SparseMatrix<double> loose = K;
+  loose.conservativeResize(K.rows() + 1, K.cols() + 1);
+  loose.makeCompressed();
+  EXPECT_THROW(CholmodSplitSolver(loose, c, SplitLayout::supernodal), FactorizationFailure);
 }
 
 } // namespace

@@ -6,7 +6,6 @@
 #include "solver/dense_cholesky.hpp"
 
 #include <Eigen/Cholesky>
-#include <Eigen/LU>
 #include <algorithm>
 #include <numeric>
 
@@ -356,8 +355,7 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
       }
       ++tail_factorizations_;
     }
-    const Eigen::VectorXd x =
-        coupled ? Eigen::VectorXd(tail_lu_.solve(rhs)) : Eigen::VectorXd(tail_llt_.solve(rhs));
+    const Eigen::VectorXd x = coupled ? tail_lu_.solve(rhs) : Eigen::VectorXd(tail_llt_.solve(rhs));
     SIG_VERIFY(x.allFinite(), "the contact step matrix is singular");
     for (int a = 0; a < nu; ++a)
       z_tail[free[a]] = x[a];

@@ -1,6 +1,12 @@
 #include "solver/dense_cholesky.hpp"
 
+#include <limits>
+
 extern "C" void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+extern "C" void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv,
+                        int* info);
+extern "C" void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a,
+                        const int* lda, const int* ipiv, double* b, const int* ldb, int* info);
 
 namespace sig {
 
@@ -11,6 +17,30 @@ bool cholesky_in_place(Eigen::MatrixXd& A) {
   int info = 0;
   dpotrf_("L", &n, A.data(), &lda, &info);
   return info == 0;
+}
+
+void DenseLu::compute(const Eigen::MatrixXd& A) {
+  lapack_ = A.rows() >= lapack_min_rows;
+  if (!lapack_) {
+    small_.compute(A);
+    return;
+  }
+  factors_ = A;
+  const int n = static_cast<int>(A.rows());
+  pivots_.resize(static_cast<size_t>(n));
+  int info = 0;
+  dgetrf_(&n, &n, factors_.data(), &n, pivots_.data(), &info);
+  singular_ = info != 0;
+}
+
+Eigen::VectorXd DenseLu::solve(const Eigen::VectorXd& b) const {
+  if (!lapack_) return small_.solve(b);
+  Eigen::VectorXd x = b;
+  if (singular_) return x.setConstant(std::numeric_limits<double>::quiet_NaN());
+  const int n = static_cast<int>(x.size()), one = 1;
+  int info = 0;
+  dgetrs_("N", &n, &one, factors_.data(), &n, pivots_.data(), x.data(), &n, &info);
+  return x;
 }
 
 } // namespace sig

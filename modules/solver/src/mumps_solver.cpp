@@ -24,11 +24,8 @@ constexpr int max_workspace_retries = 6;
 // factorization + solve as fast (33 ms; 200 ms for 17 % more flops); nested dissection's
 // smaller fill pays beyond a few 1e5 unknowns.
 constexpr int amd_max_unknowns = 200000;
-// ... and only on rows of a 2D P1 mesh (about 14 entries: 7 nodes x 2); a 3D P1 row has about 45
-// (15 nodes x 3), and on the 3D half ball of 158280 unknowns AMD's fill made MUMPS's analysis +
-// factorization 84 s against CHOLMOD-METIS's 23 s (drivers/bench-hertz3d.sh, issue 26): denser
-// rows take the automatic choice (nested dissection) at any size.
-constexpr double amd_max_entries_per_row = 30;
+// ... and only on rows of a 2D P1 mesh: denser rows (3D) take the automatic choice (nested
+// dissection) at any size (nested_dissection_entries_per_row, solver/linear_solver.hpp).
 constexpr int ordering_amd = 0;
 constexpr int ordering_automatic = 7;
 
@@ -255,8 +252,8 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
     s.id.mblock = 100;
     s.id.nblock = 100;
   }
-  const bool amd =
-      A.rows() <= amd_max_unknowns && entries <= amd_max_entries_per_row * double(A.rows());
+  const bool amd = A.rows() <= amd_max_unknowns &&
+                   entries <= nested_dissection_entries_per_row * double(A.rows());
   s.icntl(7) = amd ? ordering_amd : ordering_automatic;
   const Stopwatch clock;
   s.call(job_analyze);

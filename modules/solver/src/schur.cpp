@@ -100,23 +100,30 @@ SchurComplement::SchurComplement(const Eigen::SparseMatrix<double>& K,
     }
   const int ni = n - m;
 
-  // CHOLMOD on a positive definite K: the whole factor, the interface last (cholmod_split.hpp).
+  // CHOLMOD: the whole factor, the interface last (cholmod_split.hpp), on a positive definite K
+  //  (simplicial, the 2D march) or on rows of 3D fill (supernodal, K_cc shifted: K_ii alone need
+  //  be positive definite), where the block solves below cost several factorizations.
   const BackendTraits traits = backend_traits(backend_);
   SIG_VERIFY(!rank_rows || traits.partial_schur,
              "a solve over several ranks (mpirun) factorizes with MUMPS: SOLVER linear=mumps, not "
                  << backend_);
-  if (whole_positive_definite && traits.split_schur && kind == MatrixKind::spd) {
+  const bool nested = prefers_nested_dissection(K);
+  if (traits.split_schur && kind == MatrixKind::spd && (whole_positive_definite || nested)) {
     try {
       const Stopwatch factor_clock;
       Eigen::SparseMatrix<double> compressed = K;
       compressed.makeCompressed();
-      split_ = std::make_unique<CholmodSplitSolver>(compressed, interface_);
+      split_ = std::make_unique<CholmodSplitSolver>(
+          compressed, interface_, nested ? SplitLayout::supernodal : SplitLayout::simplicial);
       S_ = split_->schur_complement();
       seconds_factorize_ = factor_clock.seconds();
       return;
     } catch (const Error& e) {
-      log_warning(std::string("the whole step matrix could not be factorized (") + e.what() +
-                  "): its interior is factorized apart");
+      // Supernodal: K_ii is not positive definite, which the interior path below reports in its
+      // own words (the stage then names the part held by nothing), so no warning first.
+      if (!nested || dynamic_cast<const FactorizationFailure*>(&e) == nullptr)
+        log_warning(std::string("the matrix could not be factorized whole, its interface last (") +
+                    e.what() + "): its interior is factorized apart");
       split_.reset();
     }
   }

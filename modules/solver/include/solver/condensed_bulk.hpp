@@ -24,6 +24,7 @@
 // makes a step with too few contact nodes to hold the rigid modes well posed (the Hertz
 // problem's first iterate has one), and vanishes at convergence, where dw = 0.
 #include "solver/contact_bulk.hpp"
+#include "solver/dense_cholesky.hpp"
 
 #include <Eigen/Dense>
 
@@ -109,7 +110,7 @@ private:
   Eigen::MatrixXd tail_matrix_;
   bool tail_coupled_ = false;
   Eigen::LLT<Eigen::MatrixXd> tail_llt_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> tail_lu_;
+  DenseLu tail_lu_;
   int tail_factorizations_ = 0;
 
   void order_nodes(const std::vector<int>& nodes);

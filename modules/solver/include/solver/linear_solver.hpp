@@ -74,6 +74,18 @@ struct BackendTraits {
   MatrixKind symmetric_kind() const { return cholesky ? MatrixKind::spd : MatrixKind::symmetric; }
 };
 
+/// Rows of more than this many entries on average take nested dissection orders (and the
+/// supernodal Schur split, solver/schur.hpp): a 2D P1 row has about 14 entries (7 nodes x 2), a
+/// 3D P1 row about 45 (15 nodes x 3). On 2D meshes minimum degree orders are as good and
+/// cheaper; on the 3D half ball of 158280 unknowns AMD's fill made MUMPS's analysis +
+/// factorization 84 s against CHOLMOD-METIS's 23 s (drivers/bench-hertz3d.sh, issue 26).
+constexpr double nested_dissection_entries_per_row = 30;
+
+/// Whether A's rows are denser than nested_dissection_entries_per_row on average.
+inline bool prefers_nested_dissection(const Eigen::SparseMatrix<double>& A) {
+  return double(A.nonZeros()) > nested_dissection_entries_per_row * double(A.rows());
+}
+
 /// The traits of the backend `name` (as make_linear_solver); sig::Error listing the choices for
 /// an unknown name.
 BackendTraits backend_traits(const std::string& name);

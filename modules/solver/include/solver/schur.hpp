@@ -9,7 +9,8 @@
 //
 // K may be singular (a semi-coercive problem such as Hertz keeps rigid modes) as long as K_ii,
 // the bulk with the interface clamped, is positive definite: S is then positive semi-definite
-// with the rigid modes restricted to c as its kernel. K itself is never factorized.
+// with the rigid modes restricted to c as its kernel. K itself is factorized only by the CHOLMOD
+// split below, whose supernodal layout shifts K_cc so that K_ii alone need be positive definite.
 #include "solver/linear_solver.hpp"
 
 #include <memory>
@@ -35,9 +36,12 @@ public:
   /// and solve for the columns of K_ic in blocks. kind describes K_ii (spd for a clamped bulk).
   /// `whole_positive_definite`: the caller knows K itself positive definite (the whole body
   /// held by Dirichlet conditions); with "cholmod" K is then factorized whole, the interface
-  /// ordered last (solver/cholmod_split.hpp), S read off the factor and a condense/expand pair
-  /// costs one forward-backward substitution instead of two interior solves. If that
-  /// factorization fails the interior path above is taken. `rank_rows`: K holds only this
+  /// ordered last (solver/cholmod_split.hpp, simplicial), S read off the factor and a
+  /// condense/expand pair costs one forward-backward substitution instead of two interior
+  /// solves. With "cholmod" on rows of 3D fill (prefers_nested_dissection, solver/
+  /// linear_solver.hpp) K is factorized so whatever this flag (supernodal, K_cc shifted): the
+  /// block solves cost several factorizations there. If that factorization fails the interior
+  /// path above is taken. `rank_rows`: K holds only this
   /// rank's rows of an mpirun job (solver/mpi_session.hpp), which "mumps" factorizes with the
   /// other ranks' (MumpsSolver's rank_rows); loads are then the whole ones, on every rank.
   SchurComplement(const Eigen::SparseMatrix<double>& K, std::vector<int> interface_dofs,
