@@ -212,14 +212,7 @@ adapted=$out/adapted
 mkdir -p "$adapted"
 deck_variant "$template" "$adapted/rail.dat" --set MESH.nx=$adapt_nx --set MESH.ny=$adapt_ny \
   --set TIME.output_every=5 --set OUTPUT.vtk=no
-"$root/drivers/adapt.sh" "$adapted/rail.dat" -o "$adapted" --steps "$adapt_steps" --theta 0.5 \
-  >"$adapted/adapt.log" 2>&1 || { tail -20 "$adapted/adapt.log" >&2; die "adapt.sh failed"; }
-progress_step "adapted ($adapt_steps steps)"
-overkill_references "$adapted" "$adapt_steps" "$adapted/rail.dat" "$adapted/rail.dat"
-for ((k = 0; k < adapt_steps; k++)); do
-  error_json "adapted/step$k" adapted/overkill2
-done
-error_json adapted/overkill1 adapted/overkill2
+adapted_study "$adapted" "$adapted/rail.dat" "$adapt_steps"
 
 # estimated_run NAME NX NY: the adapted study's deck on the uniform NX x NY mesh in adapted/NAME,
 # marched and estimated.
