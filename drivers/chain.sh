@@ -12,10 +12,14 @@
 # (core/provenance.hpp) and `sig-dump --stale` compares that with the deck (core/stale.hpp): no
 # hashing here. --all runs every stage.
 #
-# --np P runs sig-solve (a small-strain contact deck with linear=mumps) or sig-march (a march in
-# velocity, backward-euler or quasistatic, with linear=mumps) as P ranks under mpirun: each rank
-# holds its part of K (README "Distributed solve"); the other stages run as one process. As root it sets OpenMPI's allow-run-as-root variables; --oversubscribe lets P exceed
-# the cores (one BLAS thread per rank; mpirun_ranks, lib/environment.sh).
+# --np P runs sig-assemble, and sig-solve (a small-strain contact deck with linear=mumps) or
+# sig-march (a march in velocity, backward-euler or quasistatic, with linear=mumps), as P ranks
+# under mpirun: each rank assembles the rows of its part of K into its part case.tae.r<rank> and
+# reads them back (README "Distributed solve"); the other stages run as one process. A case
+# assembled on another number of ranks (or by one process, for --np P >= 2, and the other way
+# round) is assembled again, and the stages after it run. As root it sets OpenMPI's
+# allow-run-as-root variables; --oversubscribe lets P exceed the cores (one BLAS thread per rank;
+# mpirun_ranks, lib/environment.sh).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -49,7 +53,8 @@ done
 
 # stage NAME: one stage of the chain, sig-solve or sig-march under mpirun with --np.
 stage() {
-  if { [ "$1" = solve ] || [ "$1" = march ]; } && [ "$np" -gt 0 ]; then
+  if { [ "$1" = solve ] || [ "$1" = march ] || { [ "$1" = assemble ] && [ "$np" -gt 1 ]; }; } &&
+    [ "$np" -gt 0 ]; then
     mpirun_ranks "$np" "$bin/sig-$1" "$deck" "${options[@]}"
   else
     "$bin/sig-$1" "$deck" "${options[@]}"
@@ -67,8 +72,19 @@ if [ "$all" -eq 1 ] || ! stale=$("$bin/sig-dump" --stale "$deck" "$outdir" 2>/de
   done
   exit 0
 fi
+# The parts of the case's TAE (sig-assemble removes those its index does not name): P of them
+# for --np P >= 2, none else.
+parts=$(find "$outdir" -maxdepth 1 -name 'case.tae.r[0-9]*' 2> /dev/null | wc -l || true)
+[ "$np" -gt 1 ] && wanted=$np || wanted=0
+rerun=0 # a stage ran that the staleness above did not foresee: every later stage runs too
 for stage in $("$bin/sig-dump" --chain "$deck"); do
   why=$(grep -m1 "^$stage: " <<<"$stale" || true)
+  if [ -z "$why" ] && [ "$stage" = assemble ] && [ "$parts" -ne "$wanted" ]; then
+    why="$stage: case.tae has $parts parts (one per rank of its assembly), this run wants $wanted"
+    rerun=1
+  elif [ -z "$why" ] && [ "$rerun" -eq 1 ]; then
+    why="$stage: sig-assemble ran again"
+  fi
   if [ -z "$why" ]; then
     echo "chain.sh: sig-$stage is up to date"
     continue

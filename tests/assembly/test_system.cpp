@@ -2,6 +2,7 @@
 // references, and the TAE file round trip.
 #include "assembly/loads.hpp"
 #include "assembly/system.hpp"
+#include "assembly/tae_parts.hpp"
 #include "core/datafile.hpp"
 #include "core/ds.hpp"
 #include "core/ds_stream.hpp"
@@ -324,6 +325,87 @@ TEST(Tae, MarchRowsOfTwoRanksSumToTheWhole) {
   EXPECT_EQ(solve.M.size(), 0);
   EXPECT_EQ(solve.V.size(), 0);
   EXPECT_TRUE(solve.memory.empty() && solve.time_loads.empty());
+}
+
+// Whether `body` throws a sig::Error whose message holds `text`.
+template <class F> void error_containing(F&& body, const std::string& text) {
+  try {
+    body();
+    ADD_FAILURE() << "no error; expected one saying '" << text << "'";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
+}
+
+// A distributed assembly (mpirun sig-assemble): each rank assembles its rows on the cells that
+// reach them and writes its part; a rank of the solve or the march reads from its part what it
+// would stream off the whole TAE, bit for bit. The index holds the whole body's vectors, and a
+// reader refuses a job of another size, a part of another run or rank and a missing part.
+TEST(TaeParts, EachRankReadsOfItsPartWhatTheWholeTaeGives) {
+  const Mesh mesh = test::square_mesh(6, 4, 1.0, 0.2, 2);
+  const std::string deck = "MATERIAL law=kelvin-voigt E=2 nu=0.3 eta1=0.25 eta2=0.5 rho=3\n"
+                           "MEMORY region=1 E=1 nu=0.3 beta=10\nMEMORY E=3 nu=0.2 beta=0.5\n"
+                           "TRACTION ref=3 f=0,-10 ramp=1\nTRACTION ref=2 f=1,0\n"
+                           "BODYFORCE f=0.5,-2\nDIRICHLET ref=4 ux=0 uy=0\n";
+  const Datafile datafile = Datafile::parse(deck, "case.dat");
+  const MaterialTable table = material_table_from_cards(datafile, mesh);
+  const LinearSystem s = assemble_system(mesh, table, datafile);
+  const testing::ScratchFolder dir;
+  std::filesystem::create_directories(dir / "whole");
+  std::filesystem::create_directories(dir / "parts");
+  const auto whole = dir / "whole" / "case.tae", index = dir / "parts" / "case.tae";
+  write_tae(whole, s, "whole");
+  const int n = s.num_dofs();
+  std::vector<std::vector<char>> owned(2, std::vector<char>(static_cast<std::size_t>(n)));
+  for (int dof = 0; dof < n; ++dof) // whole nodes, as rows_of_rank gives them
+    owned[dof / 2 % 3 == 0][static_cast<std::size_t>(dof)] = 1;
+  const TaeParts parts{2, "0123abcd"};
+  for (int rank = 0; rank < 2; ++rank) {
+    const LinearSystem rows = assemble_system(mesh, table, datafile, &owned[rank]);
+    EXPECT_LT(rows.K.nonZeros(), s.K.nonZeros());
+    write_tae_part(index, rank, parts, rows, "part");
+  }
+  write_tae_index(index, parts, s, "index");
+  for (const bool march : {false, true})
+    for (int rank = 0; rank < 2; ++rank) {
+      const LinearSystem a = read_tae_part(index, parts, rank, 2, owned[rank], march);
+      const LinearSystem b = read_tae_rows(whole, owned[rank], march);
+      EXPECT_TRUE(a.rank_rows);
+      for (const auto& [x, y] : {std::pair{&a.K, &b.K}, {&a.M, &b.M}, {&a.V, &b.V}}) {
+        EXPECT_EQ(x->nonZeros(), y->nonZeros());
+        EXPECT_EQ((*x - *y).norm(), 0.0);
+      }
+      ASSERT_EQ(a.memory.size(), b.memory.size());
+      for (std::size_t j = 0; j < a.memory.size(); ++j)
+        EXPECT_EQ((a.memory[j].K - b.memory[j].K).norm(), 0.0);
+      EXPECT_EQ(a.f, b.f);
+      EXPECT_EQ(a.M_lumped, b.M_lumped);
+      EXPECT_EQ(a.time_loads.rate, b.time_loads.rate);
+      EXPECT_EQ(a.dirichlet_dofs, b.dirichlet_dofs);
+    }
+  // The index: the parts, the whole body's loads; no matrix for a process alone.
+  ASSERT_TRUE(read_tae_index(index).has_value());
+  EXPECT_EQ(read_tae_index(index)->run, parts.run);
+  EXPECT_FALSE(read_tae_index(whole).has_value());
+  EXPECT_EQ(read_ds(index, "TAE").reals("f"), read_ds(whole, "TAE").reals("f"));
+  error_containing([&] { read_tae(index); }, "mpirun -np 2");
+  // Mismatches, each naming the file.
+  error_containing([&] { read_tae_part(index, parts, 0, 3, owned[0], false); }, "this job has 3");
+  error_containing(
+      [&] {
+        read_tae_part(index, TaeParts{2, "other"}, 0, 2, owned[0], false);
+      },
+      "a part of another run");
+  error_containing([&] { read_tae_part(index, parts, 0, 2, owned[1], false); },
+                   "not this rank's rows");
+  std::filesystem::copy_file(tae_part_path(index, 1), tae_part_path(index, 0),
+                             std::filesystem::copy_options::overwrite_existing);
+  error_containing([&] { read_tae_part(index, parts, 0, 2, owned[0], false); },
+                   "the part of rank 1 of 2");
+  remove_tae_parts(index, 1);
+  EXPECT_TRUE(std::filesystem::exists(tae_part_path(index, 0)));
+  error_containing([&] { read_tae_part(index, parts, 1, 2, owned[1], false); },
+                   "case.tae.r1: missing");
 }
 
 TEST(Tae, NoMassWithoutDensity) {

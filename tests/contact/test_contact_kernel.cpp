@@ -362,6 +362,21 @@ TEST(ContactKernel, TheConeApexOnTheWallSticks) {
     expect_kink_side(compliance, apex, r, kQn, 1.0, "compliance apex, r " + std::to_string(r));
   }
   EXPECT_FALSE(contact_kernel(compliance, {-0.1, 0.0, 0.0, 0.0}, 1, 1).stick);
+  // mu1 and mu2 (8.3) at rest on a compliance: their coefficient at q_n = 0 is the flat side's 0,
+  // so s and ds/dq_n are both 0 there, but a press meets the deeper side's (mu1 rising from 0,
+  // s = mu0 cn q_n^2 / g; mu2 from 2 mu0): s rises, and the apex sticks.
+  for (const FrictionLaw f : {FrictionLaw::mu1, FrictionLaw::mu2}) {
+    const ContactLaw law = law_of(NormalLaw::compliance_unilateral, f);
+    for (double r : kAugmentations) {
+      const NodeVariables apex{0.0, 0.0, 0.0, 0.0};
+      const ContactKernel k = contact_kernel(law, apex, r, r);
+      EXPECT_EQ(k.bound, 0.0);
+      EXPECT_EQ(k.d_bound[kQn], 0.0);
+      EXPECT_TRUE(k.stick) << to_string(f) << ", r " << r;
+      expect_kink_side(law, apex, r, kQn, 1.0, to_string(f) + " apex, r " + std::to_string(r));
+    }
+    EXPECT_FALSE(contact_kernel(law, {-0.1, 0.0, 0.0, 0.0}, 1, 1).stick);
+  }
 }
 
 TEST(ContactKernel, HeldComponentsAreABilateralWallAndAStick) {

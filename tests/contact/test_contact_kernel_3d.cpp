@@ -306,6 +306,16 @@ TEST(ContactKernel3d, TheConeApexOnTheWallSticks) {
   EXPECT_FALSE(off.stick);
   EXPECT_EQ(off.slip, Eigen::Vector2d::Zero());
   EXPECT_EQ(off.tangential, Eigen::Vector2d::Zero());
+  // mu1 and mu2 at rest on a compliance: s = 0 with ds/dq_n = 0, but a press raises s (2D's
+  // test): the apex sticks, its slip imposed in both tangents.
+  for (const FrictionLaw f : {FrictionLaw::mu1, FrictionLaw::mu2}) {
+    const ContactLaw law = law_of(NormalLaw::compliance_unilateral, f);
+    const Variables3 rest{0.0, Eigen::Vector2d::Zero(), 0.0, Eigen::Vector2d::Zero()};
+    const Kernel3 k = contact_kernel(law, rest, 1, 1);
+    EXPECT_EQ(k.bound, 0.0);
+    EXPECT_TRUE(k.stick) << to_string(f);
+    EXPECT_EQ(k.d_force.bottomRows<2>().middleCols<2>(Col::q_t), Eigen::Matrix2d::Identity());
+  }
 }
 
 TEST_P(EveryLaw3d, AHeldTangentialComponentSticksAndTheOtherKeepsTheLawOfItsLine) {

@@ -9,7 +9,8 @@
 #  - Coulomb mu = 0.12 (pdas, alm) and Tresca s = 1.1 q: some nodes slip, each with |T| = s (mu N,
 #    or s times its area) along its slip, the others without slip, the sums as above; Tresca
 #    s = 3 q: every node sticks;
-#  - Tresca s = 0.9 q: the load exceeds what friction holds, the solve reports the drift;
+#  - Tresca s = 0.9 q: the load exceeds what friction holds, the solve reports the drift (and
+#    the hint that its default gamma is far off the problem's scale);
 #  - rollers ux = 0 on the sides: the edge nodes' held x1 and their x2 slip on its line;
 #  - nonmonotone friction (the convexification loop) with some nodes slipping at mu(|slip|) N,
 #    and mu2 (of the penetration) on a compliant layer holding what mu0 alone would not.
@@ -88,6 +89,10 @@ checks=$((checks + 1))
 run tresca_drift 's/law=coulomb mu=0.5/law=tresca threshold=0.9e5/' || true
 grep -q "did not converge: drift" "$work/tresca_drift.log" ||
   fail "Tresca below the load: no drift reported ($(grep -m1 -i 'warn\|error' "$work/tresca_drift.log"))"
+# Beside the failure, the hint that the deck's PDAS parameter (the default 100, a deck in Pa and m)
+# is far off the contact nodes' scale (their normal stiffness over their weight, ~3e12 Pa/m).
+grep -q "tresca_drift.dat:16: SOLVER gamma=100 (the default) is .*e-11 times the contact nodes' natural scale" \
+  "$work/tresca_drift.log" || fail "no hint of gamma's scale beside the failed solve"
 
 # Nonmonotone friction (1.39), the convexification loop on the cone: a = 0.13 > q / p = 0.1 >
 # b = 0.05, so the nodes that slip lose their hold and some slip, the others stick; each slipping

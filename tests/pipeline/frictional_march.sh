@@ -11,7 +11,7 @@
 #  - case.hist has the kept tangential pressures and sig-post shows them;
 #  - FRICTION law=coulomb mu=0 gives the frictionless march's energies (to 1e-12 of E0): the
 #    slips among the unknowns change nothing without a bound;
-#  - law=nonmonotone, whose convexification only the backward-Euler march runs, is refused naming
+#  - law=nonmonotone, whose convexification only the marches in velocity run, is refused naming
 #    the FRICTION card's field law.
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"

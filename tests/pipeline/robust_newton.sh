@@ -10,7 +10,7 @@
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 
-block() { # block FILE TRACTION METHOD [CONTACT_OVERRIDE]
+block() { # block FILE TRACTION METHOD [CONTACT_OVERRIDE [FRICTION_OVERRIDE]]
   cat >"$1" <<EOF
 TITLE block held by friction alone
 # Units: GPa and m. No Dirichlet condition and no INITIAL card.
@@ -18,7 +18,7 @@ MESH generator=rectangle lx=2 ly=1 nx=16 ny=8
 MATERIAL law=hooke E=100 nu=0.3 plane=strain
 TRACTION ref=2 f=$2
 ${4:-CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=signorini}
-FRICTION ref=3 law=coulomb mu=0.3
+${5:-FRICTION ref=3 law=coulomb mu=0.3}
 SOLVER method=$3 gamma=100 r=100 c=0.01 eps=1e-10 maxit=100
 OUTPUT vtk=yes
 EOF
@@ -26,25 +26,35 @@ EOF
 
 # The same block on a compliant foundation (compliance, and a compliant layer over a wall):
 # at rest every node is at q_n = 0, the compliance's kink, where Coulomb's bound mu cn [q_n]_+ is
-# 0 but rises with a press (the cone's apex, held on its stick side).
+# 0 but rises with a press (the cone's apex, held on its stick side). On the layer, friction of
+# the penetration (8.3) with asperities of depth g: the block sinks q_n = p / cn = 0.005 = g / 4,
+# where mu1 mu=1 gives 0.25 and mu2 mu=0.25 gives 0.44, both above Q / P = 0.2; at rest their
+# coefficient is 0, but a press raises the bound (mu1's to second order), so the apex sticks too.
 compliance="CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=compliance cn=200"
 layer="CONTACT ref=3 obstacle=plane point=0,0 normal=0,1 law=compliance-unilateral cn=200 g=0.02"
-for variant in "pdas" "alm" "projection" "pdas|$compliance" "alm|$compliance" "pdas|$layer"; do
-  IFS='|' read -r method contact <<<"$variant"
-  dir=$work/held_${method}_${#contact}
-  block "$dir.dat" 0.2,-1 "$method" "$contact"
+mu1="FRICTION ref=3 law=mu1 mu=1"
+mu2="FRICTION ref=3 law=mu2 mu=0.25"
+for variant in "pdas" "alm" "projection" "pdas|$compliance" "alm|$compliance" "pdas|$layer" \
+  "pdas|$layer|$mu1" "alm|$layer|$mu2"; do
+  IFS='|' read -r method contact friction <<<"$variant"
+  dir=$work/held_${method}_${#contact}_${#friction}
+  block "$dir.dat" 0.2,-1 "$method" "$contact" "$friction"
   SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || { tail -5 "$dir.log"; die "$method: the chain failed"; }
   grep -q "converged in" "$dir.log" || { grep sig-solve "$dir.log"; die "$method: the block held by friction did not converge from rest"; }
-  /usr/bin/python3 - "$dir/contact.csv" <<'PY' || die "$method: not an equilibrium of the block"
+  /usr/bin/python3 - "$dir/contact.csv" "${friction:-law=coulomb}" <<'PY' || die "$method: not an equilibrium of the block"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
+law = sys.argv[2].split("law=")[1].split()[0]
+def mu(r):  # (8.3) at the node's penetration, the asperities of depth g = 0.02
+    crushed = min(max(-float(r["gap"]), 0.0) / 0.02, 1.0)
+    return {"coulomb": 0.3, "mu1": crushed, "mu2": 0.25 * (2 - crushed)}[law]
 N = sum(float(r["multiplier"]) for r in rows)
 T = sum(float(r["tangential_multiplier"]) for r in rows)
 assert abs(N - 2.0) < 1e-8 and abs(T - 0.4) < 1e-8, (N, T)  # P = 2 x 1, Q = 2 x 0.2
 assert all(r["converged"] == "1" for r in rows)
-assert all(abs(float(r["tangential_multiplier"])) <= 0.3 * float(r["multiplier"]) + 1e-12 for r in rows)
+assert all(abs(float(r["tangential_multiplier"])) <= mu(r) * float(r["multiplier"]) + 1e-12 for r in rows)
 PY
-  echo "robust_newton: $method${contact:+ (${contact#*law=})}: the block held by friction converges from rest ($(grep -o 'converged in [0-9]* iterations' "$dir.log"))"
+  echo "robust_newton: $method${contact:+ (${contact#*law=}${friction:+, ${friction#*law=}})}: the block held by friction converges from rest ($(grep -o 'converged in [0-9]* iterations' "$dir.log"))"
 done
 
 dir=$work/slides

@@ -30,7 +30,7 @@ expect march 's/law=damped-unilateral cn=10 g=0.01/law=signorini/' "'law'" "velo
 expect march 's/exclude=1,4/exclude=1,4 strategy=ipm/' "'strategy'"
 expect march 's/^TIME .*/& mass=lumped/' "'mass'" "inertia"
 expect march '$a INITIAL v=0,1' "'v'" "w_0"
-expect march 's/^FRICTION .*/FRICTION ref=3 law=nonmonotone a=0.3 b=0.2 alpha=1/' "'law'"
+expect march 's/^FRICTION .*/FRICTION ref=3 law=nonmonotone a=0.3 b=0.2 alpha=1/' "'of'" "of=slip-rate"
 expect march 's/scheme=quasistatic/scheme=midpoint/' "'law'"
 expect assemble 's/ramp=1/ramp=0/' "'ramp'" "> 0"
 

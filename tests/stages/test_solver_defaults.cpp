@@ -9,6 +9,7 @@
 #include "solver/contact_method.hpp"
 #include "solver/contact_newton.hpp"
 #include "solver/solver_card.hpp"
+#include "stages/augmentation_scale.hpp"
 
 #include <gtest/gtest.h>
 
@@ -88,6 +89,49 @@ TEST(SolverDefaults, EpsHelpNamesEachStagesDefault) {
   const std::string march = "sig-march, default " + text(ContactStrategyParameters{}.eps);
   EXPECT_NE(help.find(solve), std::string::npos) << help << "\nlacks: " << solve;
   EXPECT_NE(help.find(march), std::string::npos) << help << "\nlacks: " << march;
+}
+
+} // namespace
+} // namespace sig
+
+namespace sig {
+namespace {
+
+/// Two contact nodes (0 and 1) of normal (0, 1) and weight 0.5 on K = diag(k): their natural
+/// scale is k / 0.5.
+struct TwoNodes {
+  ContactElements contact;
+  Eigen::SparseMatrix<double> K;
+  explicit TwoNodes(double k) : K(4, 4) {
+    contact.node = {0, 1};
+    contact.normal = {Eigen::Vector2d(0, 1), Eigen::Vector2d(0, 1)};
+    contact.weight = Eigen::VectorXd::Constant(2, 0.5);
+    for (int i = 0; i < 4; ++i)
+      K.insert(i, i) = k;
+  }
+};
+
+TEST(AugmentationScale, TheHintNamesTheCardAndTheScaleOnlyFarOffIt) {
+  const TwoNodes si(1e12); // a deck in Pa and m: natural scale 2e12
+  EXPECT_DOUBLE_EQ(*natural_contact_scale(si.K, si.contact), 2e12);
+  const Datafile defaults = Datafile::parse("SOLVER method=pdas\n", "si.dat");
+  const std::string hint = augmentation_scale_hint(defaults, "pdas", si.K, si.contact, false);
+  EXPECT_NE(hint.find("si.dat:1: SOLVER gamma=100 (the default) is 5.0e-11 times"),
+            std::string::npos)
+      << hint;
+  EXPECT_NE(hint.find("try gamma=2e+12"), std::string::npos) << hint;
+  // Within 1e-4 .. 1e6 of the scale, no hint; far above it only a static solve hints (a
+  // march's step matrix is stiffer than K).
+  const Datafile near = Datafile::parse("SOLVER method=alm r=1e9\n", "near.dat");
+  EXPECT_EQ(augmentation_scale_hint(near, "alm", si.K, si.contact, false), "");
+  const TwoNodes soft(1e-6);
+  EXPECT_NE(augmentation_scale_hint(defaults, "pdas", soft.K, soft.contact, false), "");
+  EXPECT_EQ(augmentation_scale_hint(defaults, "pdas", soft.K, soft.contact, true), "");
+  // The projection's parameter c is a length per pressure: 1 / c is compared.
+  const Datafile projection = Datafile::parse("SOLVER method=projection c=5e-13\n", "c.dat");
+  EXPECT_EQ(augmentation_scale_hint(projection, "projection", si.K, si.contact, false), "");
+  // penalty's r is the foundation (the model), never hinted at.
+  EXPECT_EQ(augmentation_scale_hint(defaults, "penalty", si.K, si.contact, false), "");
 }
 
 } // namespace

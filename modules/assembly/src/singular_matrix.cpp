@@ -1,11 +1,14 @@
 #include "assembly/singular_matrix.hpp"
 
 #include "assembly/rigid_motion.hpp"
+#include "assembly/system.hpp"
+#include "assembly/tae_parts.hpp"
 #include "mesh/nopo.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace sig {
@@ -107,6 +110,11 @@ std::string explain_failed_factorization(const Mesh& mesh, const LinearSystem& s
 std::string explain_failed_factorization(const std::filesystem::path& outdir, const Holds* held,
                                          bool inertia, const std::string& library) {
   const std::filesystem::path tae = outdir / "case.tae";
+  // The parts of a distributed assembly are each rank's own: the diagnosis needs the whole.
+  if (const std::optional<TaeParts> parts = read_tae_index(tae))
+    return "the factorization over the " + std::to_string(parts->ranks) +
+           " parts of a distributed assembly failed (" + library + ")" +
+           ": run sig-assemble and this stage in one process to have the cause named";
   const LinearSystem system = read_tae(tae);
   return explain_failed_factorization(read_nopo(outdir / "case.nopo"), system,
                                       held ? *held : holds_of(system.dirichlet_dofs),

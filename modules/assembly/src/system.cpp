@@ -183,22 +183,80 @@ void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vecto
   }
 }
 
+const Card* dirichlet_card_of(const Mesh& mesh, const Datafile& datafile, int dof) {
+  const int node = dof / mesh.dim, component = dof % mesh.dim;
+  const char* fields[3] = {"ux", "uy", "uz"};
+  for (const Card* card : datafile.all("DIRICHLET")) {
+    if (!card->has(fields[component])) continue;
+    for (int ref : card_references(*card, mesh, RefSupport::edges_or_vertices)) {
+      const std::vector<int> nodes = mesh.nodes_with_ref(ref);
+      if (std::find(nodes.begin(), nodes.end(), node) != nodes.end()) return card;
+    }
+  }
+  return nullptr;
+}
+
 Eigen::VectorXd LinearSystem::load_at(double t) const {
   if (time_loads.empty()) return f;
   return f + time_loads.change(t, num_dofs());
 }
 
-LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
-                             const Datafile& datafile) {
+namespace {
+
+/// The cells with a node of the rows `owned` marks, in the mesh's order (the nodes all kept):
+/// every cell that adds to those rows, so that each of their entries sums the same terms in the
+/// same order as on the whole mesh.
+Mesh cells_of_rows(const Mesh& mesh, const std::vector<char>& owned) {
+  Mesh part;
+  part.dim = mesh.dim;
+  part.nodes = mesh.nodes;
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    const Simplex& cell = mesh.cells[static_cast<std::size_t>(t)];
+    if (std::none_of(cell.begin(), cell.end(), [&](int node) {
+          return owned[static_cast<std::size_t>(mesh.dim * node)] != 0;
+        }))
+      continue;
+    part.cells.push_back(cell);
+    part.subdomain.push_back(mesh.subdomain[static_cast<std::size_t>(t)]);
+  }
+  return part;
+}
+
+/// The rows `owned` marks of A with every entry its pattern gives them (explicit zeros kept),
+/// the other rows empty.
+Eigen::SparseMatrix<double> rows_only(const Eigen::SparseMatrix<double>& A,
+                                      const std::vector<char>& owned) {
+  if (A.size() == 0) return A;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> rows = A;
+  rows.prune([&](Eigen::Index row, Eigen::Index, double) {
+    return owned[static_cast<std::size_t>(row)] != 0;
+  });
+  return Eigen::SparseMatrix<double>(rows);
+}
+
+} // namespace
+
+LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table, const Datafile& datafile,
+                             const std::vector<char>* owned) {
   const Stopwatch clock;
   LinearSystem system;
-  const SparsityPattern pattern(mesh);
-  system.K = assemble_stiffness(mesh, table, pattern);
-  if (table.has_mass()) system.M = assemble_mass(mesh, table, pattern);
+  // The matrices of the rows held on the cells that reach them; the vectors of the whole body.
+  const Mesh part = owned != nullptr ? cells_of_rows(mesh, *owned) : Mesh{};
+  const Mesh& cells = owned != nullptr ? part : mesh;
+  const SparsityPattern pattern(cells);
+  system.K = assemble_stiffness(cells, table, pattern);
+  if (table.has_mass()) system.M = assemble_mass(cells, table, pattern);
   system.M_lumped = assemble_lumped_mass(mesh, table);
   if (table.has_viscosity()) {
-    system.V = assemble_viscosity(mesh, table, pattern);
-    system.memory = assemble_memory(mesh, table, pattern);
+    system.V = assemble_viscosity(cells, table, pattern);
+    system.memory = assemble_memory(cells, table, pattern);
+  }
+  if (owned != nullptr) {
+    system.K = rows_only(system.K, *owned);
+    system.M = rows_only(system.M, *owned);
+    system.V = rows_only(system.V, *owned);
+    for (MemoryStiffness& term : system.memory)
+      term.K = rows_only(term.K, *owned);
   }
   system.f = mesh.dim == 3 ? assemble_loads_3d(mesh, datafile, &system.time_loads)
                            : assemble_loads(mesh, table, datafile, &system.time_loads);

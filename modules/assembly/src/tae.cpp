@@ -1,6 +1,7 @@
 // The DS "TAE" of sig-assemble (MODULEF's element arrays, here already assembled): the matrices
 // in 1-based compressed row storage, as a Fortran or MODULEF reader expects them.
 #include "assembly/system.hpp"
+#include "assembly/tae_parts.hpp"
 
 #include "core/ds.hpp"
 #include "core/ds_stream.hpp"
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <span>
 #include <sstream>
@@ -213,11 +215,11 @@ void read_dirichlet(const std::filesystem::path& path, const Ds& ds, std::int64_
 
 } // namespace
 
-void write_tae(const std::filesystem::path& path, const LinearSystem& system,
-               const std::string& title) {
+namespace {
+
+/// K's 1-based CSR and the values of every matrix on its pattern (M, V, the memory terms).
+void put_matrices(Ds& ds, const LinearSystem& system) {
   const RowMatrix K = system.K;
-  Ds ds("TAE", title, "sig-assemble");
-  ds.put_int("ndof", system.num_dofs());
   ds.put(one_based("K_rowptr", K.outerIndexPtr(), K.outerIndexPtr() + K.rows() + 1));
   ds.put(one_based("K_col", K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros()));
   ds.put("K_val", values_in(K));
@@ -244,6 +246,10 @@ void write_tae(const std::filesystem::path& path, const LinearSystem& system,
     ds.put("memory_val", values,
            {static_cast<std::int64_t>(beta.size()), static_cast<std::int64_t>(K.nonZeros())});
   }
+}
+
+/// The vectors of the whole body: loads, lumped mass, Dirichlet conditions, time loads.
+void put_vectors(Ds& ds, const LinearSystem& system) {
   const Eigen::VectorXd& rate = system.time_loads.rate;
   if (rate.size() > 0) ds.put("f_rate", std::span<const double>(rate.data(), rate.size()));
   ds.put("M_lumped", std::span<const double>(system.M_lumped.data(), system.M_lumped.size()));
@@ -254,11 +260,27 @@ void write_tae(const std::filesystem::path& path, const LinearSystem& system,
          std::span<const double>(system.dirichlet_values.data(), system.dirichlet_values.size()));
   ds.put_scalar("time_assemble", system.assemble_seconds);
   put_moving_loads(ds, system.time_loads);
+}
+
+} // namespace
+
+void write_tae(const std::filesystem::path& path, const LinearSystem& system,
+               const std::string& title) {
+  Ds ds("TAE", title, "sig-assemble");
+  ds.put_int("ndof", system.num_dofs());
+  put_matrices(ds, system);
+  put_vectors(ds, system);
   write_ds(path, ds);
 }
 
 LinearSystem read_tae(const std::filesystem::path& path) {
   const Ds ds = read_ds(path, "TAE");
+  SIG_VERIFY(!ds.has("parts"), path.string()
+                                   << ": the index of an assembly on " << ds.integer("parts")
+                                   << " ranks, its matrices in the parts "
+                                   << tae_part_path(path, 0).string()
+                                   << " ...: run this stage as mpirun -np " << ds.integer("parts")
+                                   << ", or rerun sig-assemble in one process");
   const std::int64_t n = ds.integer("ndof");
   SIG_VERIFY(n >= 0, path.string() << ": negative ndof");
   const auto rowptr = ds.ints("K_rowptr");
@@ -347,10 +369,10 @@ Eigen::VectorXd on_rows(const std::vector<double>& whole, const std::vector<char
   return v;
 }
 
-} // namespace
-
-LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<char>& owned,
-                           bool march) {
+/// read_tae_rows of a TAE (`part` false) or of a rank's part of one (true: kind TAEP, not an
+/// input of the case of its own, every entry on a row of `owned` and every such row there).
+LinearSystem read_rows(const std::filesystem::path& path, const std::vector<char>& owned,
+                       bool march, bool part) {
   std::vector<std::int64_t> rowptr; // whole (ndof + 1 indices): the structure, not the values
   RowEntries<std::int64_t> col(rowptr, owned);
   std::map<std::string, RowEntries<double>> values; // K_val, and M_val ... for a march
@@ -383,7 +405,8 @@ LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<
     return whole_row_array(name) &&
            (march || name == "ndof" || name == "f" || name.starts_with("dirichlet_"));
   };
-  const Ds ds = read_ds_streamed(path, "TAE", wanted, streamed, take);
+  const Ds ds = part ? read_ds_record_streamed(path, "TAEP", wanted, streamed, take)
+                     : read_ds_streamed(path, "TAE", wanted, streamed, take);
   const std::int64_t n = ds.integer("ndof");
   SIG_VERIFY(n == static_cast<std::int64_t>(owned.size()),
              path.string() << ": ndof = " << n << ", the partition has " << owned.size()
@@ -400,6 +423,14 @@ LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<
                                                << ": array 'K_rowptr' decreases at row " << i + 1);
     const std::int64_t count = owned[static_cast<std::size_t>(i)] ? rowptr[i + 1] - rowptr[i] : 0;
     local_rowptr[i + 1] = local_rowptr[i] + count;
+  }
+  if (part) {
+    bool every_row = true;
+    for (std::int64_t i = 0; i < n; ++i)
+      every_row = every_row && (!owned[static_cast<std::size_t>(i)] || rowptr[i + 1] > rowptr[i]);
+    SIG_VERIFY(every_row && static_cast<std::int64_t>(col.kept().size()) == col.entries(),
+               path.string() << ": its rows are not this rank's rows of the mesh's partition (a "
+                                "part of another partition: rerun sig-assemble under mpirun)");
   }
   // Every matrix of the file on K's pattern: its rows' entries, checked as K's.
   const auto rows_of = [&](const char* name, std::vector<double> kept) {
@@ -450,6 +481,91 @@ LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<
   system.M_lumped = on_rows(lumped, owned);
   system.time_loads = get_time_loads(path, ds, n);
   return system;
+}
+
+} // namespace
+
+LinearSystem read_tae_rows(const std::filesystem::path& path, const std::vector<char>& owned,
+                           bool march) {
+  return read_rows(path, owned, march, /*part=*/false);
+}
+
+std::filesystem::path tae_part_path(const std::filesystem::path& tae, int rank) {
+  return tae.string() + ".r" + std::to_string(rank);
+}
+
+void write_tae_part(const std::filesystem::path& tae, int rank, const TaeParts& parts,
+                    const LinearSystem& rows, const std::string& title,
+                    const std::function<void()>& before_rename) {
+  Ds ds("TAEP", title, "sig-assemble");
+  ds.put_int("part_rank", rank);
+  ds.put_int("part_ranks", parts.ranks);
+  ds.put_text("part_run", parts.run);
+  ds.put_int("ndof", rows.num_dofs());
+  put_matrices(ds, rows);
+  put_vectors(ds, rows);
+  write_ds(tae_part_path(tae, rank), ds, before_rename);
+}
+
+void write_tae_index(const std::filesystem::path& tae, const TaeParts& parts,
+                     const LinearSystem& system, const std::string& title) {
+  Ds ds("TAE", title, "sig-assemble");
+  ds.put_int("ndof", system.num_dofs());
+  ds.put_int("parts", parts.ranks);
+  ds.put_text("part_run", parts.run);
+  // The parts by name: a case whose part is gone is stale (core/stale.hpp).
+  std::string files;
+  for (int rank = 0; rank < parts.ranks; ++rank)
+    files += tae_part_path(tae, rank).filename().string() + "\n";
+  ds.put_text("files", files);
+  put_vectors(ds, system);
+  write_ds(tae, ds);
+}
+
+void remove_tae_parts(const std::filesystem::path& tae, int first) {
+  const std::string prefix = tae.filename().string() + ".r";
+  const std::filesystem::path folder = tae.parent_path().empty() ? "." : tae.parent_path();
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix) || name.size() == prefix.size()) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6) continue;
+    if (std::stoi(digits) >= first) std::filesystem::remove(entry.path());
+  }
+}
+
+std::optional<TaeParts> read_tae_index(const std::filesystem::path& tae) {
+  const Ds ds = read_ds(
+      tae, "TAE", [](const std::string& name) { return name == "parts" || name == "part_run"; });
+  if (!ds.has("parts")) return std::nullopt;
+  const std::int64_t ranks = ds.integer("parts");
+  SIG_VERIFY(ranks >= 2 && ranks <= std::numeric_limits<int>::max(),
+             tae.string() << ": array 'parts' = " << ranks << " is not a number of ranks >= 2");
+  return TaeParts{static_cast<int>(ranks), ds.text("part_run")};
+}
+
+LinearSystem read_tae_part(const std::filesystem::path& tae, const TaeParts& parts, int rank,
+                           int ranks, const std::vector<char>& owned, bool march) {
+  const std::string rerun = "rerun mpirun -np " + std::to_string(ranks) + " sig-assemble";
+  SIG_VERIFY(parts.ranks == ranks, tae.string() << ": the index of an assembly on " << parts.ranks
+                                                << " ranks, and this job has " << ranks
+                                                << ": run it as mpirun -np " << parts.ranks
+                                                << ", or " << rerun);
+  const std::filesystem::path path = tae_part_path(tae, rank);
+  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": missing, the part of rank " << rank
+                                                          << " of the assembly " << tae.string()
+                                                          << " indexes: " << rerun);
+  // The stamp first: a part of another assembly is named as such, not by its rows.
+  const Ds stamp = read_ds_record(
+      path, "TAEP", [](const std::string& name) { return name.starts_with("part_"); });
+  const std::int64_t its_rank = stamp.integer("part_rank"), its_ranks = stamp.integer("part_ranks");
+  const std::string its_run = stamp.text("part_run");
+  SIG_VERIFY(its_rank == rank && its_ranks == ranks && its_run == parts.run,
+             path.string() << ": the part of rank " << its_rank << " of " << its_ranks
+                           << " of the assembly " << its_run << ", but " << tae.string()
+                           << " indexes the assembly " << parts.run << " on " << parts.ranks
+                           << " ranks (a part of another run): " << rerun);
+  return read_rows(path, owned, march, /*part=*/true);
 }
 
 } // namespace sig

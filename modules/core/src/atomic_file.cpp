@@ -111,7 +111,7 @@ void AtomicFile::write(const void* data, std::size_t size) {
   }
 }
 
-void AtomicFile::commit() {
+void AtomicFile::commit(const std::function<void()>& before_rename) {
   SIG_VERIFY(file_ != nullptr, target_.string() << ": committed twice");
   const bool flushed =
       std::fflush(file_) == 0 && (syncs_deferred() || ::fsync(::fileno(file_)) == 0);
@@ -124,6 +124,14 @@ void AtomicFile::commit() {
     const std::string why = reason();
     std::filesystem::remove(temporary_, ignored);
     throw Error(target_.string() + ": cannot flush " + temporary_.string() + ": " + why);
+  }
+  if (before_rename) {
+    try {
+      before_rename();
+    } catch (...) {
+      std::filesystem::remove(temporary_, ignored);
+      throw;
+    }
   }
   if (std::rename(temporary_.c_str(), target_.c_str()) != 0) {
     const std::string why = reason();

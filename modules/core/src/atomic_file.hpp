@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 
 namespace sig {
 
@@ -18,7 +19,10 @@ public:
 
   void write(const void* data, std::size_t size);
   /// Flush, fsync (unless deferred: core/ds.hpp), close and rename over the target.
-  void commit();
+  /// `before_rename`, when given, runs with the temporary complete and closed; if it throws, the
+  /// temporary is removed and the target left as it was (a rank of an mpirun job waits there
+  /// for the others to have written theirs).
+  void commit(const std::function<void()>& before_rename = {});
 
 private:
   std::filesystem::path target_, temporary_;

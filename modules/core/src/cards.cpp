@@ -210,7 +210,7 @@ const std::vector<CardSpec>& card_schema() {
            {"alpha", "nonmonotone: decay of mu per unit slip, >= 0"},
            {"of",
             "nonmonotone: slip (the tangential displacement from the reference, ch. 4) | "
-            "slip-rate (the tangential velocity, ch. 6)",
+            "slip-rate (the tangential velocity: the marches in velocity, ch. 5 and 6)",
             "slip"},
        }},
       {"SOLVER",
@@ -245,7 +245,8 @@ const std::vector<CardSpec>& card_schema() {
       {"CONVEXIFICATION",
        false,
        "the convexification loop (4.110)-(4.112) of FRICTION law=nonmonotone in a static solve "
-       "(sig-solve), or in every step of a march (sig-march scheme=backward-euler, of=slip-rate): "
+       "(sig-solve), or in every step of a march in velocity (sig-march scheme=backward-euler or "
+       "quasistatic, of=slip-rate): "
        "mu frozen per node at the previous iterate's slip (rate), each convex problem solved by "
        "the SOLVER method",
        {

@@ -288,7 +288,8 @@ std::optional<DsArray> read_array(DsReader& in, std::uint32_t index, std::uint64
 }
 } // namespace
 
-void write_ds(const std::filesystem::path& path, const Ds& ds) {
+void write_ds(const std::filesystem::path& path, const Ds& ds,
+              const std::function<void()>& before_rename) {
   const PhaseTimer timer("write");
   check_writable(path, ds);
   // Inside a stage the DS records the inputs it was built from, replacing what it may hold.
@@ -322,7 +323,7 @@ void write_ds(const std::filesystem::path& path, const Ds& ds) {
   for (const DsArray* a : arrays)
     out.write_array(*a);
   out.raw(trailer, sizeof trailer);
-  file.commit();
+  file.commit(before_rename);
 }
 
 namespace {
@@ -382,18 +383,21 @@ Ds read_ds_record(const std::filesystem::path& path, const std::string& expected
 
 Ds read_ds_record(const std::filesystem::path& path, const std::string& expected_kind,
                   const DsSelection& wanted) {
+  return read_ds_record_streamed(path, expected_kind, wanted, {}, {});
+}
+
+Ds read_ds_record_streamed(const std::filesystem::path& path, const std::string& expected_kind,
+                           const DsSelection& wanted, const DsSelection& streamed,
+                           const DsPieces& take) {
   const PhaseTimer timer("read");
   SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
   DsReader in(path);
-  return read_all(in, expected_kind, {wanted, {}, {}});
+  return read_all(in, expected_kind, {wanted, streamed, take});
 }
 
 Ds read_ds_streamed(const std::filesystem::path& path, const std::string& expected_kind,
                     const DsSelection& wanted, const DsSelection& streamed, const DsPieces& take) {
-  const PhaseTimer timer("read");
-  SIG_VERIFY(std::filesystem::exists(path), path.string() << ": DS file not found");
-  DsReader in(path);
-  Ds ds = read_all(in, expected_kind, {wanted, streamed, take});
+  Ds ds = read_ds_record_streamed(path, expected_kind, wanted, streamed, take);
   note_case_input(ds.header.kind, path, ds.fingerprint,
                   ds.has(provenance_array) ? parse_provenance(ds.text(provenance_array), ds.source)
                                            : Provenance{});

@@ -17,7 +17,7 @@ const std::vector<StageCards>& stage_table() {
        "TAE"},
       {"solve",
        {"TITLE", "SOLVER", "LOADSTEPS", "CONVEXIFICATION", "CONTACT", "FRICTION", "INITIAL",
-        "TRACTION", "PRESSURE", "BODYFORCE"},
+        "TRACTION", "PRESSURE", "BODYFORCE", "DIRICHLET"},
        "b",
        "B"},
       {"march",

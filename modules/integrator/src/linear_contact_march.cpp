@@ -88,9 +88,12 @@ StepRecord LinearContactMarch::start() const {
   if (scheme_.has_energy()) r.energy = scheme_.energy(contact_);
   if (contact_ != nullptr) {
     const int m = contact_->size();
+    // The layout of the steps' tangential values (solver/contact_bulk.hpp): d - 1 a node with
+    // friction, one without.
+    const int tangents = bulk_->has_tangential() ? bulk_->tangents() : 1;
     ContactRecord& c = r.contact;
-    c.normal_force = c.tangential_force = c.normal_velocity = c.tangential_velocity =
-        Eigen::VectorXd::Zero(m);
+    c.normal_force = c.normal_velocity = Eigen::VectorXd::Zero(m);
+    c.tangential_force = c.tangential_velocity = Eigen::VectorXd::Zero(tangents * m);
     c.normal_status.assign(m, NormalStatus::free);
     c.friction_status.assign(m, FrictionStatus::none);
   }

@@ -12,7 +12,8 @@
 // <stem>.pvd with one <stem>_NNNN.vtu per converged load step, time = load factor, instead of
 // the single state; summary.json and contact.csv are those of the final state as above.
 // A dynamic case (TIME card) reads case.hist instead of case.b and writes <stem>.pvd with one
-// <stem>_NNNN.vtu per state kept by sig-march (displacement, velocity, stress) and nothing else.
+// <stem>_NNNN.vtu per state kept by sig-march (displacement, velocity, stress) and a summary.json
+// of how it ran (title, scheme, ranks, ordering).
 // A solution holding NaN or inf is refused (Ds::reals), and so is a field that overflows on its
 // way to the .vtu (the VTK writer checks every field): a picture of garbage helps nobody.
 #include "post/stage_mains.hpp"
@@ -92,7 +93,7 @@ int post_main(int argc, char** argv) {
       .writes = {"OUTDIR/<name>.pvd and <name>_NNNN.vtu (unless OUTPUT vtk=no; one .vtu per load "
                  "step or kept time step)",
                  "OUTDIR/summary.json (method, convergence, sizes, histories, times, energies, "
-                 "Hertz comparison)",
+                 "Hertz comparison; of a march: its scheme, ranks and ordering)",
                  "OUTDIR/contact.csv (one row per contact node; contact cases)",
                  "OUTDIR/case.post (the files above and what they were made from: the inputs "
                  "and the deck's cards, for drivers/chain.sh)"},
@@ -123,6 +124,15 @@ int post_main(int argc, char** argv) {
                  args.outdir, stem, mesh, materials, hist,
                  {{"title", datafile.title()}, {"scheme", hist.text("scheme")}}, compression))
           written.push_back(file);
+      // How the march ran, where a user looks (its numbers are in energy.csv and case.hist).
+      sig::Json summary = sig::Json::object();
+      summary.set("title", datafile.title());
+      summary.set("scheme", hist.text("scheme"));
+      summary.set("ranks", hist.has("ranks") ? static_cast<long>(hist.integer("ranks")) : 1L);
+      summary.set("ordering", hist.has("ordering") ? hist.text("ordering") : std::string());
+      const auto summary_path = args.outdir / "summary.json";
+      sig::write_file_atomically(summary_path, summary.dump() + "\n");
+      written.push_back(summary_path);
       record_outputs(args, datafile, written);
       return;
     }

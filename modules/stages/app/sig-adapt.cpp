@@ -16,7 +16,6 @@
 // and refine), wall_s (the step's chain and estimate), refine_wall_s, and elapsed_s: the wall
 // clock from US (microseconds since the epoch, the caller's start of the loop; default: this
 // process's start) to the end of the step's estimate, so the process's own start counts.
-#include "assembly/stage_main.hpp"
 #include "contact/stage_main.hpp"
 #include "core/datafile.hpp"
 #include "core/ds.hpp"

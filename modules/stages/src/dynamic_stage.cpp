@@ -14,9 +14,9 @@
 #include "material/mili.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nopo.hpp"
-#include "solver/convexification.hpp"
 #include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
+#include "stages/convexification_step.hpp"
 #include "stages/march_inputs.hpp"
 #include "stages/march_stage.hpp"
 #include "stages/march_tables.hpp"
@@ -58,15 +58,6 @@ void refuse_other_models(const Datafile& datafile, const TimeParameters& time) {
                      "scheme=quasistatic); the dynamic march of ch. 6 has none");
 }
 
-/// Per step 0 .. the last, the values the HIST and steps.csv add (HistoryInfo::step_columns):
-/// the convexification's counts of each step (step 0: none), the seconds of the scheme's products
-/// K u_n, M w_n that the next right side reads (inside the step's clock; step 0: 0, formed with
-/// the scheme).
-struct StepRecords {
-  std::vector<double> outer{0}, outer_converged{1}, cycle{0};
-  std::vector<double> products{0};
-};
-
 } // namespace
 
 void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
@@ -81,8 +72,6 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   // 2. Mesh, laws, the assembled system (K, M, V, loads in time; under mpirun this rank's rows of
   //    the matrices, stages/rank_rows.hpp), the initial state.
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
-  refuse_in_3d(mesh, datafile.require("TIME"), "scheme",
-               "the backward-Euler march in velocity (scheme=backward-euler)");
   for (const SubdomainMaterial& m : read_mili(args.ds_path("mili")).entries)
     if (m.hyperelastic)
       datafile.all("MATERIAL")
@@ -119,55 +108,26 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   solver.parameters = scheme.velocity_parameters(solver.parameters);
 
   // 4. The step solver: the one Newton driver, or the convexification loop around it.
-  StepRecords records;
-  StepSolver step_solver;
-  std::unique_ptr<ContactMethod> method;
-  if (contact && needs_convexification(contact->setting.law)) {
-    method = make_contact_method(solver.parameters);
-    const ContactNewtonOptions inner = newton_options(solver.parameters);
-    const ConvexificationOptions options = solver.convexification;
-    step_solver = [&, inner, options](ContactBulk& bulk, const ContactSetting& setting,
-                                      ContactIterate& iterate) {
-      // mu(0) of the previous step's slip rate: the bulk restarts from its velocity.
-      ContactSetting start = setting;
-      if (options.start == ConvexificationStart::given) {
-        const Eigen::VectorXd rate = bulk.slip().cwiseAbs();
-        for (int p = 0; p < start.size(); ++p)
-          start.law[p].mu = friction_coefficient(start.law[p], rate[p]);
-      }
-      const int n = static_cast<int>(records.outer.size()); // this step: one record per step before
-      const Eigen::VectorXd origin = scheme.normal_origin(n, *contact);
-      ConvexificationMeasures measures;
-      measures.displacement = [&origin](const ContactBulk& b) {
-        Eigen::VectorXd v(2 * origin.size());
-        v << b.penetration() + origin, b.slip();
-        return v;
-      };
-      ConvexificationResult r = convexify(bulk, start, *method, inner, options, measures, iterate);
-      records.outer.push_back(r.outer_iterations());
-      records.outer_converged.push_back(r.converged ? 1 : 0);
-      records.cycle.push_back(r.cycle);
-      ContactNewtonResult result = std::move(r.last);
-      result.converged = r.converged;
-      result.failure = r.failure;
-      result.history = std::move(r.inner_history);
-      return result;
-    };
-  }
+  ConvexificationRecords convexification;
+  const StepSolver step_solver =
+      convexification_step(scheme, contact ? &*contact : nullptr, solver, convexification);
   LinearContactMarch march(scheme, contact ? &*contact : nullptr, solver.parameters, solver.backend,
                            step_solver);
 
-  // 5. March, with a progress line.
+  // 5. March, with a progress line. Per step 0 .. the last, the seconds of the scheme's products
+  //    K u_n, M w_n that the next right side reads (inside the step's clock; step 0: 0, formed
+  //    with the scheme), a column of case.hist and steps.csv.
+  std::vector<double> products{0};
   const std::string label =
       "backward-euler" + (contact ? " + " + solver.parameters.method : std::string());
   const MarchHistory history =
       march_with_progress(march, time, label, [&](const StepRecord& s, const DynamicState&) {
-        records.products.push_back(scheme.products_seconds());
+        products.push_back(scheme.products_seconds());
         char detail[96];
         std::snprintf(detail, sizeof detail, "t = %.6g  E = %.6g  Newton %d", s.time,
                       s.energy.total + s.energy.interface, s.iterations);
         return std::string(detail) +
-               (step_solver ? "  outer " + std::to_string(int(records.outer.back())) : "");
+               (step_solver ? "  outer " + std::to_string(int(convexification.outer.back())) : "");
       });
   const auto [iterations, most] = newton_iterations(history);
 
@@ -177,21 +137,12 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
   HistoryInfo info = velocity_history_info(time, solver, march, elements ? &*elements : nullptr);
   info.seconds = history.seconds;
   info.mass = to_string(time.mass);
-  records.products.resize(history.steps.size(), 0.0);
-  info.step_columns = {{"step_seconds_products", records.products}};
-  if (records.outer.size() > 1) {
-    info.step_columns.push_back({"outer_iterations", records.outer});
-    info.step_columns.push_back({"outer_converged", records.outer_converged});
-    info.step_columns.push_back({"status_cycle", records.cycle});
-  }
+  products.resize(history.steps.size(), 0.0);
+  info.step_columns = {{"step_seconds_products", products}};
+  add_convexification_columns(convexification, info);
   write_hist(args.ds_path("hist"), history, reduced, info, datafile.title());
   const auto csv_path = args.outdir / "steps.csv";
   write_file_atomically(csv_path, steps_csv(history, info));
-  double outer_total = 0, outer_most = 0;
-  for (double n : records.outer) {
-    outer_total += n;
-    outer_most = std::max(outer_most, n);
-  }
   std::printf("sig-march: %s (%s, mass %s), %d free dofs, %d contact nodes, %zu/%d steps of k = "
               "%g, factorizations: %d sparse + %d dense, Newton iterations %d (at most %d a "
               "step), convexification %.0f (at most %.0f a step), E0 = %.9g, E = %.9g, "
@@ -199,7 +150,8 @@ void run_backward_euler_march(const StageArgs& args, const Datafile& datafile,
               label.c_str(), solver_words(solver.backend, info.ordering, info.ranks).c_str(),
               to_string(time.mass).c_str(), reduced.num_free(), contact ? contact->size() : 0,
               history.steps.size() - 1, time.steps, time.k, march.sparse_factorizations(),
-              march.dense_factorizations(), iterations, most, outer_total, outer_most,
+              march.dense_factorizations(), iterations, most, convexification.total(),
+              convexification.most(),
               history.steps.front().energy.total + history.steps.front().energy.interface,
               history.steps.back().energy.total + history.steps.back().energy.interface,
               march.seconds_factorize(), history.seconds,

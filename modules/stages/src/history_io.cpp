@@ -57,16 +57,19 @@ void put_energy(Ds& ds, const MarchHistory& history, bool contact) {
   }
 }
 
-/// Array `name` {rows, p}: `values` of each row, of p values.
+/// Array `name` {rows, p}, or {rows, p, c} with c > 1 components a node: `values` of each row,
+/// of c p values (node i's at c i .. c i + c - 1).
 void put_rows(Ds& ds, const std::string& name, const std::vector<const Eigen::VectorXd*>& rows,
-              std::int64_t p) {
+              std::int64_t p, std::int64_t c = 1) {
   std::vector<double> values;
   for (const Eigen::VectorXd* row : rows) {
-    SIG_VERIFY(row->size() == p, "HIST: a " << name << " of " << row->size() << " values for " << p
-                                            << " contact nodes");
+    SIG_VERIFY(row->size() == c * p, "HIST: a " << name << " of " << row->size() << " values for "
+                                                << p << " contact nodes of " << c << " components");
     values.insert(values.end(), row->data(), row->data() + row->size());
   }
-  ds.put(name, values, {static_cast<std::int64_t>(rows.size()), p});
+  std::vector<std::int64_t> shape{static_cast<std::int64_t>(rows.size()), p};
+  if (c > 1) shape.push_back(c);
+  ds.put(name, values, shape);
 }
 
 /// Per node the magnitude of the tangential force T (flat, d - 1 components a node): itself in
@@ -103,14 +106,19 @@ void put_kept_pressures(Ds& ds, const MarchHistory& history, const HistoryInfo& 
 void put_contact_per_step(Ds& ds, const MarchHistory& history, const HistoryInfo& info) {
   const auto p = static_cast<std::int64_t>(info.contact_nodes.size());
   const auto rows = static_cast<std::int64_t>(history.steps.size());
-  const auto column = [&](const char* name, Eigen::VectorXd ContactRecord::*field) {
+  // The tangential values have d - 1 components a node with friction (ContactRecord), the
+  // layout of the first row: {rows, p} in 2D and frictionless, {rows, p, 2} in 3D with friction.
+  const std::int64_t tangents =
+      p > 0 && rows > 0 ? history.steps.front().contact.tangential_force.size() / p : 1;
+  const auto column = [&](const char* name, Eigen::VectorXd ContactRecord::*field,
+                          std::int64_t components) {
     std::vector<const Eigen::VectorXd*> values;
     for (const StepRecord& s : history.steps)
       values.push_back(&(s.contact.*field));
-    put_rows(ds, name, values, p);
+    put_rows(ds, name, values, p, components);
   };
-  column("velocity_n", &ContactRecord::normal_velocity);
-  column("velocity_t", &ContactRecord::tangential_velocity);
+  column("velocity_n", &ContactRecord::normal_velocity, 1);
+  column("velocity_t", &ContactRecord::tangential_velocity, tangents);
   std::vector<double> displacement(static_cast<std::size_t>(rows * p), 0.0);
   std::vector<std::int64_t> normal_status, friction_status;
   for (std::int64_t s = 0; s < rows; ++s) {
@@ -127,8 +135,8 @@ void put_contact_per_step(Ds& ds, const MarchHistory& history, const HistoryInfo
     }
   }
   ds.put("displacement_n", displacement, {rows, p});
-  column("force_n", &ContactRecord::normal_force);
-  column("force_t", &ContactRecord::tangential_force);
+  column("force_n", &ContactRecord::normal_force, 1);
+  column("force_t", &ContactRecord::tangential_force, tangents);
   ds.put("normal_status", normal_status, {rows, p});
   ds.put("friction_status", friction_status, {rows, p});
 }

@@ -145,11 +145,6 @@ ContactBoundary contact_boundary(const MarchContactZone& zone, const Mesh& mesh,
   return b;
 }
 
-void refuse_in_3d(const Mesh& mesh, const Card& card, const std::string& field,
-                  const std::string& what) {
-  if (mesh.dim == 3) card.fail(field, what + " is 2D only for now (issue 28): the mesh is 3D");
-}
-
 VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced) {
   VelocityContact c;
   for (int p = 0; p < elements.size(); ++p) {

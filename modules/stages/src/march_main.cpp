@@ -16,9 +16,8 @@
 // consistent, lumped or emm) and the hyperelastic march (Gonzalez's or the midpoint stress)
 // with every strategy and the friction laws (coulomb, tresca, mu1, mu2: the slip over a step a
 // vector of the node's tangent plane, two slips a node, the force in the disc of radius s, the
-// Coulomb cone's section), and the quasistatic Kelvin-Voigt march with its normal laws in
-// velocity; friction in the quasistatic march and the backward-Euler march refuse a 3D mesh on
-// their card (issue 28).
+// Coulomb cone's section), and the marches in velocity (quasistatic Kelvin-Voigt, backward
+// Euler) with their laws and friction of the slip rate (two components a node).
 //
 // Reads OUTDIR/case.nopo and case.tae (sig-assemble wrote the mass when a MATERIAL has rho > 0),
 // with a CONTACT card also case.cont (sig-contact), and writes OUTDIR/case.hist (DS HIST,
@@ -62,6 +61,7 @@
 #include "mesh/nopo.hpp"
 #include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
+#include "stages/augmentation_scale.hpp"
 #include "stages/contact_card.hpp"
 #include "stages/dynamic_stage.hpp"
 #include "stages/finite_strain_march.hpp"
@@ -103,8 +103,8 @@ int march_main(int argc, char** argv) {
                  "0. A progress line shows the step, time steps per second and the time left. "
                  "On a 3D mesh: the linear schemes (midpoint, Newmark; consistent, lumped or EMM "
                  "mass) and the hyperelastic march with every strategy and friction law (the "
-                 "Coulomb cone, two slips a node), the quasistatic Kelvin-Voigt march "
-                 "frictionless (issue 28); "
+                 "Coulomb cone, two slips a node), the quasistatic and backward-Euler marches "
+                 "in velocity with their friction laws (two slip rates a node); "
                  "SOLVER candidate_gap= condenses only the contact nodes near the obstacle. "
                  "Under mpirun -np P the marches in velocity (backward-euler, quasistatic; "
                  "SOLVER linear=mumps) factorize their step matrix by MUMPS over the ranks, each "
@@ -194,10 +194,11 @@ int march_main(int argc, char** argv) {
     sig::ContactStrategyParameters strategy_parameters;
     if (const sig::Card* friction = sig::friction_card_with_law(datafile);
         friction && friction->choice("law", sig::friction_law_choices) == "nonmonotone")
-      friction->fail("law", "law=nonmonotone needs its convexification loop in every step, which "
-                            "only the backward-Euler march runs (TIME scheme=backward-euler): "
-                            "coulomb, tresca, mu1 or mu2 with scheme=" +
-                                time.scheme);
+      friction->fail(
+          "law", "law=nonmonotone needs its convexification loop in every step, which "
+                 "only the marches in velocity run (TIME scheme=backward-euler or quasistatic): "
+                 "coulomb, tresca, mu1 or mu2 with scheme=" +
+                     time.scheme);
     if (contact != nullptr) {
       strategy_info = sig::contact_history_info(*contact);
       strategy_parameters = sig::contact_strategy_parameters(*contact, solver_card);
@@ -227,6 +228,9 @@ int march_main(int argc, char** argv) {
       zone = sig::march_contact_zone(sig::read_cont(args.ds_path("cont"), mesh), system,
                                      solver_card, hyperelastic);
     const sig::ContactElements* elements = zone ? &zone->condensed : nullptr;
+    // Beside a stop: every strategy's Newton is PDAS's, with SOLVER gamma=.
+    const std::string scale_hint =
+        elements ? sig::augmentation_scale_hint(datafile, "pdas", system.K, *elements, true) : "";
     const Eigen::SparseMatrix<double> mass =
         sig::mass_matrix(system, time.mass, mesh, elements ? elements->node : std::vector<int>{});
     std::unique_ptr<sig::ContactStrategy> strategy;
@@ -308,6 +312,7 @@ int march_main(int argc, char** argv) {
                 history.outputs.size(), e0, drift, penetration, seconds,
                 history.converged ? "" : " (STOPPED: Newton failed)");
     std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
+    if (!history.converged && !scale_hint.empty()) sig::log_warning(scale_hint);
   });
 }
 

@@ -15,6 +15,7 @@
 #include "mesh/nopo.hpp"
 #include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
+#include "stages/convexification_step.hpp"
 #include "stages/march_inputs.hpp"
 #include "stages/march_stage.hpp"
 #include "stages/march_tables.hpp"
@@ -44,9 +45,10 @@ void refuse_other_models(const Datafile& datafile) {
                                "law=damped-unilateral cn= g=");
   }
   if (const Card* friction = datafile.find("FRICTION"))
-    if (friction->choice("law", friction_law_choices) == "nonmonotone")
-      friction->fail("law", "law=nonmonotone needs a convexification loop in every step, which "
-                            "the quasistatic march does not run (yet): coulomb or tresca");
+    if (friction->choice("law", friction_law_choices) == "nonmonotone" &&
+        friction->choice("of", slip_measure_choices) != "slip-rate")
+      friction->fail("of", "the quasistatic march's tangential variable is the slip rate w_t: "
+                           "give of=slip-rate");
   for (const Card* initial : datafile.all("INITIAL"))
     if (initial->has("v"))
       initial->fail("v", "the quasistatic march has no initial velocity: its first velocity "
@@ -64,11 +66,9 @@ QuasistaticCase read_quasistatic_case(const StageArgs& args, const Datafile& dat
 
   // 2. Mesh, laws, assembled system (elastic K, viscous V, memory terms, loads in time; under
   //    mpirun this rank's rows of the matrices, stages/rank_rows.hpp).
+  // 2D and 3D on one code path: a 3D node's slip rate has two components, along its tangents t1
+  // and t2, and its friction force lies in the Coulomb cone's disc (contact/contact_kernel.hpp).
   const Mesh mesh = read_nopo(args.ds_path("nopo"));
-  // 3D: the march and its normal laws in velocity on the one code path (issue 28); the slip rate
-  // of a 3D node has two tangents, which the friction laws in velocity do not take yet.
-  if (const Card* friction = friction_card_with_law(datafile))
-    refuse_in_3d(mesh, *friction, "law", "friction in the quasistatic march (its slip rates)");
   for (const SubdomainMaterial& m : read_mili(args.ds_path("mili")).entries)
     if (m.hyperelastic)
       datafile.all("MATERIAL")
@@ -103,8 +103,12 @@ void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
   const std::optional<VelocityContact>& contact = c.contact;
   // 1. The scheme and the march: the step matrix factorized and condensed here, once.
   QuasistaticKelvinVoigt scheme(viscoelastic_problem(c.system, c.reduced), time.k, c.u0);
-  LinearContactMarch march(scheme, contact ? &*contact : nullptr, solver.parameters,
-                           solver.backend);
+  // The step solver: the one Newton driver, or the convexification loop of a nonmonotone law.
+  ConvexificationRecords convexification;
+  const StepSolver step_solver =
+      convexification_step(scheme, contact ? &*contact : nullptr, solver, convexification);
+  LinearContactMarch march(scheme, contact ? &*contact : nullptr, solver.parameters, solver.backend,
+                           step_solver);
 
   // 2. March, with a progress line.
   const std::string label = "quasistatic" + (has_contact ? " + " + solver.parameters.method : "");
@@ -120,16 +124,22 @@ void run_quasistatic_march(const StageArgs& args, const Datafile& datafile,
   if (!writes_outputs()) return;
   HistoryInfo info = velocity_history_info(time, solver, march, elements ? &*elements : nullptr);
   info.seconds = history.seconds;
+  add_convexification_columns(convexification, info);
   write_hist(args.ds_path("hist"), history, c.reduced, info, datafile.title());
   const auto csv_path = args.outdir / "steps.csv";
   write_file_atomically(csv_path, steps_csv(history, info));
+  // The loop's counts where it ran: the summary of 2D decks without it stays as it was.
+  char outer[96] = "";
+  if (step_solver)
+    std::snprintf(outer, sizeof outer, ", convexification %.0f (at most %.0f a step)",
+                  convexification.total(), convexification.most());
   std::printf("sig-march: %s (%s), %d free dofs, %d contact nodes, %zu/%d steps of k = %g, "
-              "factorizations: %d sparse + %d dense, Newton iterations %d (at most %d a step), "
+              "factorizations: %d sparse + %d dense, Newton iterations %d (at most %d a step)%s, "
               "factorize %.3f s, march %.3f s%s\n",
               label.c_str(), solver_words(solver.backend, info.ordering, info.ranks).c_str(),
               c.reduced.num_free(), contact ? contact->size() : 0, history.steps.size() - 1,
               time.steps, time.k, march.sparse_factorizations(), march.dense_factorizations(),
-              iterations, most, march.seconds_factorize(), history.seconds,
+              iterations, most, outer, march.seconds_factorize(), history.seconds,
               history.converged ? "" : " (STOPPED: Newton failed)");
   std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
 }

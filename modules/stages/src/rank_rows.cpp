@@ -2,6 +2,7 @@
 
 #include "assembly/dirichlet.hpp"
 #include "assembly/system.hpp"
+#include "assembly/tae_parts.hpp"
 #include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "core/stage.hpp"
@@ -11,6 +12,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <optional>
 
 namespace sig {
 
@@ -52,7 +54,10 @@ std::vector<char> rows_of_rank(const Mesh& mesh) {
 
 LinearSystem read_tae_of_rank(const std::filesystem::path& path, const Mesh& mesh, bool march) {
   if (!mpi::launched()) return read_tae(path);
-  return read_tae_rows(path, rows_of_rank(mesh), march);
+  const std::vector<char> owned = rows_of_rank(mesh);
+  if (const std::optional<TaeParts> parts = read_tae_index(path))
+    return read_tae_part(path, *parts, mpi::rank(), mpi::size(), owned, march);
+  return read_tae_rows(path, owned, march);
 }
 
 ReducedSystem reduce_on_ranks(const LinearSystem& system,

@@ -36,6 +36,7 @@
 #include "mesh/nopo.hpp"
 #include "solver/mpi_session.hpp"
 #include "solver/solver_card.hpp"
+#include "stages/augmentation_scale.hpp"
 #include "stages/finite_strain_stage.hpp"
 #include "stages/rank_rows.hpp"
 #include "stages/solution_ds.hpp"
@@ -118,6 +119,9 @@ int solve_main(int argc, char** argv) {
     const sig::LinearSystem system = sig::read_tae_of_rank(args.ds_path("tae"), mesh);
     std::optional<sig::ContactElements> contact;
     if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
+    // Beside a failure: the method's parameter far off the problem's scale, if it is.
+    const std::string scale_hint =
+        contact ? sig::augmentation_scale_hint(datafile, method, system.K, *contact, false) : "";
     if (mesh.dim == 3) {
       // A 3D deck: sig-contact refused the friction laws other than Tresca and Coulomb (issue 26);
       // a hyperelastic one is solved frictionless (the finite-strain bulk in d = 3, issue 28).
@@ -190,6 +194,7 @@ int solve_main(int argc, char** argv) {
       for (std::size_t k = 0; k < s.steps.size(); ++k)
         if (!s.steps[k].converged)
           std::cout << "sig-solve: Nv, load step " << k + 1 << ": " << s.steps[k].failure << "\n";
+      if (!s.converged() && !scale_hint.empty()) sig::log_warning(scale_hint);
       return;
     }
 
@@ -209,6 +214,7 @@ int solve_main(int argc, char** argv) {
       SIG_VERIFY(!(loop && distributed),
                  datafile.path << ": the convexification loop of law=nonmonotone runs in one "
                                   "process: run it without mpirun");
+      sig::verify_held_contact_components(mesh, datafile, system, *contact, method);
       Eigen::VectorXd start;
       if (!datafile.all("INITIAL").empty()) start = sig::initial_fields(datafile, mesh).u;
       if (std::isfinite(parameters.candidate_gap))
@@ -240,6 +246,7 @@ int solve_main(int argc, char** argv) {
     std::cout << ", solve " << solution.seconds["solve"] << " s -> " << args.ds_path("b").string()
               << "\n";
     if (!solution.converged) std::cout << "sig-solve: Nv, " << solution.failure << "\n";
+    if (!solution.converged && !scale_hint.empty()) sig::log_warning(scale_hint);
   });
 }
 

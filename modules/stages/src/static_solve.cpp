@@ -2,6 +2,7 @@
 
 #include "assembly/dirichlet.hpp"
 #include "assembly/strain.hpp"
+#include "core/datafile.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/condensed_contact.hpp"
@@ -31,22 +32,68 @@ std::vector<int> contact_first_dofs(const ReducedSystem& reduced, const ContactE
   return first;
 }
 
-/// The tangent k of a contact node's frame along the mesh axis `component` (|t_k . e_c| >=
-/// aligned), or -1 if none is: a roller's held axis must be one of the node's tangents.
-int held_tangent_of(const ContactFrame& frame, int component, double aligned) {
+} // namespace
+
+HeldAxis held_axis(const ContactElements& contact, int p, int component) {
+  // |e_c . n| or |e_c . t_k| within round-off of 1: the axis is that one of the frame.
+  constexpr double kAligned = 1 - 1e-12;
+  const ContactFrame frame = contact.frame(p);
+  HeldAxis axis;
+  axis.along_normal = contact.normal[p][component];
+  if (std::abs(axis.along_normal) >= kAligned) {
+    axis.kind = HeldAxis::Kind::normal;
+    return axis;
+  }
   for (int k = 0; k + 1 < frame.cols(); ++k)
-    if (std::abs(frame(component, k)) >= aligned) return k;
-  return -1;
+    if (std::abs(frame(component, k)) >= kAligned) {
+      axis.kind = HeldAxis::Kind::tangent;
+      axis.tangent = k;
+      axis.along_tangent = frame(component, k);
+      return axis;
+    }
+  return axis;
 }
 
-} // namespace
+std::string oblique_hold_problem(const ContactElements& contact, int p, int component) {
+  std::ostringstream what;
+  what << "holds u" << component + 1 << " of contact node " << p + 1 << " (mesh node "
+       << contact.node[p] + 1 << "), which is neither the obstacle's normal "
+       << coordinates(contact.normal[p]) << " nor "
+       << (contact.dim == 2 ? "its tangent" : "one of the node's tangents")
+       << " there; hold only those components of a contact node, or take the node out of the "
+          "contact zone (CONTACT exclude=REF)";
+  return what.str();
+}
+
+void verify_held_contact_components(const Mesh& mesh, const Datafile& datafile,
+                                    const LinearSystem& system, const ContactElements& contact,
+                                    const std::string& method) {
+  const int d = contact.dim;
+  for (int p = 0; p < contact.size(); ++p)
+    for (int component = 0; component < d; ++component) {
+      const int dof = d * contact.node[p] + component;
+      if (!std::binary_search(system.dirichlet_dofs.begin(), system.dirichlet_dofs.end(), dof))
+        continue;
+      const std::string field = std::string("u") + "xyz"[component];
+      if (held_axis(contact, p, component).kind == HeldAxis::Kind::oblique) {
+        if (const Card* card = dirichlet_card_of(mesh, datafile, dof))
+          card->fail(field, oblique_hold_problem(contact, p, component));
+        SIG_VERIFY(false, datafile.path << ": a DIRICHLET condition "
+                                        << oblique_hold_problem(contact, p, component));
+      }
+      if (const Card* card = method == "penalty" ? dirichlet_card_of(mesh, datafile, dof) : nullptr)
+        card->fail(field, "holds u" + std::to_string(component + 1) + " of contact node " +
+                              std::to_string(p + 1) +
+                              ", which the penalty method cannot impose (it has no multipliers): "
+                              "use SOLVER method=alm or pdas");
+    }
+}
 
 std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElements& contact) {
   std::vector<int> held;
   for (int p = 0; p < contact.size(); ++p) {
     ContactLaw& law = contact.law[p];
     const int d = contact.dim;
-    const ContactFrame frame = contact.frame(p);
     for (int component = 0; component < d; ++component) {
       const int dof = d * contact.node[p] + component;
       const auto at =
@@ -54,27 +101,20 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
       if (at == system.dirichlet_dofs.end() || *at != dof) continue;
       const double value = system.dirichlet_values[at - system.dirichlet_dofs.begin()];
       // The held axis e_c in the node's frame: u_n = -n . u, q_n = u_n - d, q_t = t . u.
-      const double along_n = contact.normal[p][component];
-      constexpr double kAligned = 1 - 1e-12;
-      if (std::abs(along_n) >= kAligned) {
+      const HeldAxis axis = held_axis(contact, p, component);
+      SIG_VERIFY(axis.kind != HeldAxis::Kind::oblique,
+                 "a DIRICHLET card " << oblique_hold_problem(contact, p, component));
+      if (axis.kind == HeldAxis::Kind::normal) {
         law.held_normal = true;
         law.normal = NormalLaw::signorini;
-        law.depth = -along_n * value - contact.gap[p];
+        law.depth = -axis.along_normal * value - contact.gap[p];
         log_warning("contact node " + std::to_string(p + 1) + " (mesh node " +
                     std::to_string(contact.node[p] + 1) +
                     ") has its normal component held by a DIRICHLET card: it is out of the "
                     "contact set, its normal force the condition's reaction");
-      } else if (const int k = held_tangent_of(frame, component, kAligned); k >= 0) {
-        law.held_tangent[k] = true;
-        law.held_slip[k] = frame(component, k) * value;
       } else {
-        SIG_VERIFY(false, "contact node "
-                              << p + 1 << " (mesh node " << contact.node[p] + 1
-                              << "): a DIRICHLET card holds u" << component + 1 << ", which is "
-                              << "neither the obstacle's normal " << coordinates(contact.normal[p])
-                              << " nor " << (d == 2 ? "its tangent" : "one of the node's tangents")
-                              << " there; hold only those components of a contact node, or take "
-                                 "the node out of the contact zone (CONTACT exclude=REF)");
+        law.held_tangent[axis.tangent] = true;
+        law.held_slip[axis.tangent] = axis.along_tangent * value;
       }
       held.push_back(dof);
     }

@@ -17,6 +17,7 @@
 
 namespace sig {
 
+class Card;
 class Datafile;
 struct Mesh;
 struct MaterialTable;
@@ -70,11 +71,16 @@ Eigen::VectorXd assemble_lumped_mass(const Mesh& mesh, const MaterialTable& tabl
 /// give two values (on the second card's field, naming the first card's line).
 void dirichlet_from_cards(const Mesh& mesh, const Datafile& datafile, std::vector<int>& dofs,
                           Eigen::VectorXd& values);
+/// The first DIRICHLET card of `datafile` that holds `dof` (d node + component), or nullptr:
+/// the card a later stage names when it cannot honour that condition.
+const Card* dirichlet_card_of(const Mesh& mesh, const Datafile& datafile, int dof);
 
 /// Everything from the mesh, the MILI table and the DIRICHLET, TRACTION, PRESSURE, BODYFORCE
-/// and MOVINGLOAD cards.
-LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table,
-                             const Datafile& datafile);
+/// and MOVINGLOAD cards. With `owned` (per dof, a rank's rows: stages/rank_rows.hpp) the
+/// matrices hold those rows only, assembled on the cells that reach them (the others empty; the
+/// values those of the whole assembly, bit for bit), the vectors stay the whole body's.
+LinearSystem assemble_system(const Mesh& mesh, const MaterialTable& table, const Datafile& datafile,
+                             const std::vector<char>* owned = nullptr);
 
 /// DS "TAE": ndof; K_rowptr, K_col (1-based CSR of the full symmetric matrix), K_val; M_val
 /// (same pattern, only if M is not empty); M_lumped; f; dirichlet_dof (1-based);

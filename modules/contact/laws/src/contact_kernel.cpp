@@ -47,10 +47,10 @@ template <int n> double magnitude(const Eigen::Matrix<double, n, 1>& z) {
   return z.norm();
 }
 
-/// The node sits at the apex of the cone where a press would raise the bound, ds/dq_n > 0: on an
-/// active wall under Coulomb, or at a compliance's kink q_n = 0 (header: the stick side).
+/// The node sits at the apex of the cone where a press would raise the bound: on an active wall
+/// under Coulomb, or at a compliance's kink q_n = 0 (header: the stick side).
 template <int d> bool at_apex(const ContactKernelIn<d>& k) {
-  return k.bound == 0 && k.d_bound(KernelColumns<d>::q_n) > 0;
+  return k.bound == 0 && k.press_raises_bound;
 }
 
 /// The tangential rows of a 3D node with a held component (ContactLaw::held_tangent): the held
@@ -128,7 +128,10 @@ ContactKernelIn<d> evaluate(const ContactLaw& law, const NodeVariablesIn<d>& x, 
     const double q_mu = deeper ? x.q_n : law.previous;
     const double mu = penetration_friction(law, q_mu);
     const double d_mu = deeper ? d_penetration_friction(law, q_mu) : 0.0;
-    if (law.bound == FrictionBound::normal) {
+    const bool whole = law.bound == FrictionBound::normal;
+    const double pressure = whole ? k.normal : k.compliance;
+    const double slope = whole ? k.d_force(0, Col::q_n) : k.compliance_slope;
+    if (whole) {
       k.bound = mu * k.normal;
       k.bound_slope = mu;
       k.d_bound = mu * k.d_force.row(0);
@@ -137,6 +140,13 @@ ContactKernelIn<d> evaluate(const ContactLaw& law, const NodeVariablesIn<d>& x, 
       k.bound = mu * k.compliance;
       k.d_bound(Col::q_n) = mu * k.compliance_slope + d_mu * k.compliance;
     }
+    // A press meets the coefficient of the deeper side (at q_n = 0 mu1's and mu2's, not the flat
+    // side's 0): s = mu N rises to first order, or to second where mu and N both start from 0
+    // (mu1 at rest on a compliance: s = mu0 cn q_n^2 / g).
+    const PressedFriction pressed = penetration_friction_pressed(law, q_mu);
+    const double d_mu_pressed = deeper ? pressed.slope : 0.0;
+    k.press_raises_bound =
+        pressed.mu * slope + d_mu_pressed * pressure > 0 || (d_mu_pressed > 0 && slope > 0);
     break;
   }
   }

@@ -161,6 +161,14 @@ double d_penetration_friction(const ContactLaw& law, double q_n) {
   return (law.friction == FrictionLaw::mu1 ? 1.0 : -1.0) * law.mu / law.depth;
 }
 
+PressedFriction penetration_friction_pressed(const ContactLaw& law, double q_n) {
+  if (q_n != 0 || !law.penetration_dependent())
+    return {penetration_friction(law, q_n), d_penetration_friction(law, q_n)};
+  const double slope = law.mu / law.depth;
+  return law.friction == FrictionLaw::mu1 ? PressedFriction{0.0, slope}
+                                          : PressedFriction{2.0 * law.mu, -slope};
+}
+
 std::optional<LawProblem> law_problem(const ContactLaw& law) {
   const auto problem = [](const char* field, const auto&... what) {
     std::ostringstream out;

@@ -107,7 +107,9 @@ private:
 /// Write to `path` atomically: a temporary file in the same folder, flushed, then renamed.
 /// Refuses (writing nothing) a Float64 array holding NaN or inf unless put with
 /// Finite::not_required. Inside a stage, adds the array "provenance" (core/provenance.hpp).
-void write_ds(const std::filesystem::path& path, const Ds& ds);
+/// `before_rename` as AtomicFile's (core/atomic_file.hpp): it runs with the temporary whole.
+void write_ds(const std::filesystem::path& path, const Ds& ds,
+              const std::function<void()>& before_rename = {});
 
 /// Read and check magic, version, every CRC and the trailer; if `expected_kind` is not empty the
 /// header type must match. Errors name the file and the array. Inside a stage, a DS of the case

@@ -25,4 +25,11 @@ inline constexpr std::size_t kDsPieceBytes = std::size_t{1} << 20;
 Ds read_ds_streamed(const std::filesystem::path& path, const std::string& expected_kind,
                     const DsSelection& wanted, const DsSelection& streamed, const DsPieces& take);
 
+/// read_ds_streamed without registering the DS as an input of the case (as read_ds_record): a
+/// rank's part of a distributed DS, which its reader checks against the index it registered
+/// (assembly/tae_parts.hpp), so that the case's files keep one file per kind.
+Ds read_ds_record_streamed(const std::filesystem::path& path, const std::string& expected_kind,
+                           const DsSelection& wanted, const DsSelection& streamed,
+                           const DsPieces& take);
+
 } // namespace sig

@@ -32,11 +32,11 @@
 //    card, the indicators' DS and, through it, the solution's cards. A change of any card up the
 //    adaptive loop makes the refined mesh and what was built on it stale. The coarse mesh is an
 //    input of a kind of its own (a level's, e.g. "NP1"), since one kind is one file in a case.
-//  - per-rank DS parts of a distributed run (case.tae.r3) are written by write_ds like any DS
-//    and record the deck's cards and their inputs; the partition (number of parts, the METIS
-//    cards) becomes one more card record, and each part is registered under its kind and rank,
-//    so that parts of two partitions, two meshes or two decks are refused like files of two
-//    cases.
+//  - the per-rank parts of a distributed assembly (case.tae.r3, assembly/tae_parts.hpp) are
+//    written by write_ds like any DS and record the deck's cards and their inputs, but a reader
+//    does not register them (read_ds_record_streamed): it registers their index, case.tae, and
+//    checks each part's stamp (rank, number of ranks, run) against the index, so that a case
+//    keeps one file per kind and parts of two runs or partitions are refused.
 //
 // Nothing to do in a stage main or a new DS: read_ds / write_ds / read_nopo / write_nopo do it.
 // A stage that reads files of another case (a reference solution) reads them from outside

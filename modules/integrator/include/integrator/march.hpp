@@ -33,7 +33,8 @@ struct ContactRecord {
   std::vector<NormalStatus> normal_status;
   std::vector<FrictionStatus> friction_status;
   /// The marches in velocity: the normal velocity towards the obstacle and the tangential
-  /// velocity along t = (n2, -n1) (empty in the other marches).
+  /// velocity (the slip rate; laid out as tangential_force: along t = (n2, -n1) in 2D, along t1
+  /// and t2 in 3D with friction) (empty in the other marches).
   Eigen::VectorXd normal_velocity, tangential_velocity;
 };
 

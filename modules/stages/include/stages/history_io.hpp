@@ -42,7 +42,9 @@
 //   contact per step  the marches in velocity, {rows, p} (row 0 zeros): velocity_n, velocity_t
 //                     (the normal velocity towards the obstacle and the tangential one),
 //                     displacement_n (sum of k velocity_n: the normal displacement since t = 0),
-//                     force_n, force_t (nodal forces), normal_status, friction_status
+//                     force_n, force_t (nodal forces), normal_status, friction_status; in 3D
+//                     with friction velocity_t and force_t are {rows, p, 2}, the components
+//                     along the node's tangents t1, t2 (contact_frame)
 //                     (contact/contact_status.hpp codes: free 0, RNI 1, CUV 2; none 0, S= 1,
 //                     S+ 2, S- 3)
 //   step columns      a march's own per-step values (HistoryInfo::step_columns: the

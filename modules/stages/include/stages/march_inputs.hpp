@@ -66,10 +66,6 @@ MarchContactZone march_contact_zone(ContactElements elements, const LinearSystem
 ContactBoundary contact_boundary(const MarchContactZone& zone, const Mesh& mesh,
                                  const ReducedSystem& reduced);
 
-/// InputError on `card`'s line and `field` when `mesh` is 3D: `what` is 2D only for now (issue 28).
-void refuse_in_3d(const Mesh& mesh, const Card& card, const std::string& field,
-                  const std::string& what);
-
 /// The contact elements of a CONT on the free dofs of `reduced`; sig::Error naming the node if
 /// one of them has a Dirichlet component.
 VelocityContact velocity_contact(const ContactElements& elements, const ReducedSystem& reduced);

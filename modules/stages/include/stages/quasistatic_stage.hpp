@@ -7,13 +7,17 @@
 //
 //   TIME scheme=quasistatic T= k= [output_every=1]
 //   CONTACT ... law=damped cn= | law=damped-unilateral cn= g= [exclude=]   (laws in velocity)
-//   FRICTION ref= law=coulomb mu= [bound=compliance] | law=tresca threshold=   (in velocity)
+//   FRICTION ref= law=coulomb mu= [bound=compliance] | law=tresca threshold= |
+//            law=nonmonotone a= b= alpha= of=slip-rate   (of the slip rate w_t: d - 1 components
+//            a node, the force in the Coulomb cone's disc in 3D)
+//   CONVEXIFICATION [eps=] [maxit=] [relaxation=] [start=]   (law=nonmonotone: the loop of
+//            stages/convexification_step.hpp in every step)
 //   SOLVER [linear=] [method=pdas|alm|penalty|projection] [gamma= r= c=] [eps=] [maxit=]
-//   INITIAL u=ux,uy [region=]     (u_0; the first velocity w_0 is 0)
+//   INITIAL u=ux,uy[,uz] [region=]     (u_0; the first velocity w_0 is 0)
 //
 // Refused, each on its card and field: a contact law that is not in velocity, strategy= or r= of
-// the dynamic strategies, a nonmonotone friction law (its convexification per step is a
-// StepSolver the march takes, not wired to the deck yet), INITIAL v=, a hyperelastic law.
+// the dynamic strategies, law=nonmonotone of=slip (the march's tangential variable is the slip
+// rate), INITIAL v=, a hyperelastic law.
 // Writes OUTDIR/case.hist (stages/history_io.hpp, with the per-step contact values of a march in
 // velocity) and OUTDIR/steps.csv (stages/march_tables.hpp). A step whose
 // contact Newton fails stops the march: the files hold the steps done, a warning is printed and

@@ -21,7 +21,9 @@ struct ReducedSystem;
 std::vector<char> rows_of_rank(const Mesh& mesh);
 
 /// The TAE at `path` as this process holds it: whole (read_tae) in a process mpirun did not
-/// start; a rank's rows of the mesh's partition (read_tae_rows of rows_of_rank) in one it did.
+/// start; a rank's rows of the mesh's partition (rows_of_rank) in one it did, streamed off a
+/// whole TAE (read_tae_rows) or read from the rank's part when `path` is the index of a
+/// distributed assembly (read_tae_part, assembly/tae_parts.hpp).
 /// `march`: with the march's matrices and time loads (read_tae_rows).
 LinearSystem read_tae_of_rank(const std::filesystem::path& path, const Mesh& mesh,
                               bool march = false);

@@ -21,9 +21,10 @@
 // Branches (the generalized derivative is the one of the branch, kinks as complementarity.hpp):
 // the wall is active (chi = 1) iff lambda + r_n (q_n - g) >= 0; the node sticks iff
 // |t + r_t q_t| <= s and either s > 0 or the node sits at the apex of the Coulomb cone where a
-// press would raise the bound, ds/dq_n > 0 (s = mu N = 0 on an active wall, chi = 1, or at a
-// compliance's kink q_n = 0, N = cn [q_n]_+: a node that just touches, as every node in contact
-// at rest does), otherwise it slips with sigma = sign(t + r_t q_t) (0 when that is 0: a node
+// press would raise the bound (s = mu N = 0 on an active wall, chi = 1, or at a compliance's kink
+// q_n = 0, N = cn [q_n]_+: a node that just touches, as every node in contact at rest does; the
+// press meets the deeper side's coefficient, so mu1's s = mu0 cn q_n^2 / g rises too, though its
+// ds/dq_n is 0 there), otherwise it slips with sigma = sign(t + r_t q_t) (0 when that is 0: a node
 // with s = 0 that does not move). The apex is a kink of the projection like |z| = s, and belongs to
 // the stick side as every kink belongs to contact: its slip element, T = 0, would hold nothing
 // sideways, and a body held by friction alone would start from a step that drifts.
@@ -95,6 +96,8 @@ template <int d> struct ContactKernelIn {
   double bound_slope = 0;
   /// Generalized derivative of s in (q_n, q_t, lambda, t)
   Row d_bound = Row::Zero();
+  /// A press would raise s from here: the apex rule's test (header), one-sided at the kinks
+  bool press_raises_bound = false;
 
   /// Generalized derivatives of (N, T) and of (C_n, C_t) in (q_n, q_t, lambda, t).
   Rows d_force = Rows::Zero();

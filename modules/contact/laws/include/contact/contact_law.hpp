@@ -187,6 +187,14 @@ double d_friction_coefficient(const ContactLaw& law, double r);
 /// nonmonotone (slope 0).
 double penetration_friction(const ContactLaw& law, double q_n);
 double d_penetration_friction(const ContactLaw& law, double q_n);
+/// The coefficient and its slope that a press from q_n meets: those above, but at the kink
+/// q_n = 0 the deeper side's (mu1: 0 rising by mu0 / g; mu2: 2 mu0 falling by mu0 / g), which the
+/// apex rule of contact_kernel.hpp asks of a node at rest.
+struct PressedFriction {
+  double mu;
+  double slope;
+};
+PressedFriction penetration_friction_pressed(const ContactLaw& law, double q_n);
 
 /// Some law of `laws` has friction (the problem then has tangential unknowns).
 inline bool any_friction(const std::vector<ContactLaw>& laws) {

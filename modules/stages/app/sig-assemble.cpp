@@ -1,6 +1,6 @@
 // sig-assemble: the stage's executable, its work in sig::assemble_main
-// (modules/assembly/src/assemble_main.cpp).
-#include "assembly/stage_main.hpp"
+// (modules/stages/src/assemble_main.cpp).
+#include "stages/stage_mains.hpp"
 
 int main(int argc, char** argv) {
   return sig::assemble_main(argc, argv);

@@ -1,9 +1,0 @@
-#pragma once
-// The stage's main as a function: its executable calls it, and so does the adaptive loop
-// (sig-adapt), which runs a step's stages in its own process, each writing its DS files.
-namespace sig {
-
-/// sig-assemble with this command line (argv[0] the program's name): its exit status.
-int assemble_main(int argc, char** argv);
-
-} // namespace sig
