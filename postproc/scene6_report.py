@@ -723,6 +723,10 @@ def section_adapted(scene):
     (checked: no worse per dof) and against the start mesh refined uniformly (shown), all at
     k = 0.01; the effectivities of every mesh of the study (checked)."""
     folder, info = scene.out / "adapted", scene.info
+    title = section("Adapted meshes against uniform ones (issue 29)")
+    if not (folder / "adapt.csv").is_file():
+        return title + ["Not run (no adapted/adapt.csv: an output of drivers/scene6.sh before "
+                        "the adapted study)."]
     steps = read_adapt_csv(folder)
     for s in steps:
         s.update(study_mesh(folder / f"step{s['step']}"))
@@ -783,7 +787,7 @@ def section_adapted(scene):
     peak = max(range(len(last["estimates"])), key=lambda i: last["estimates"][i])
     quarters = gamma3_per_quarter(folder / f"step{last['step']}")
     start_text = ", ".join(f"{r:.2f}" for _, r in sorted(start_ratios.items()))
-    return section("Adapted meshes against uniform ones (issue 29)") + [
+    return title + [
         f"`drivers/adapt.sh` from the {nx} x {ny} rail (cells {2 / nx:g} x {0.1 / ny:g} m; "
         f"Zienkiewicz-Zhu indicators, Dörfler theta 0.5, conforming bisection), "
         f"{len(steps)} steps, `adapted/`. *One mesh for the whole march*: the load and the "
