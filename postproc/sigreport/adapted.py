@@ -61,7 +61,7 @@ def corrected(error, reference_estimate):
 def per_dof_ratios(steps, ladder, eta_overkill, eta_uniform):
     """Each adapted mesh within the uniform ladder's dofs against the uniform error at its dofs
     (log-log interpolated on the ladder), both corrected by their references' own estimates:
-    [(step, ratio)]; a ratio <= 1 is "no worse per dof"."""
+    [(step, ratio)], each step its dict of `steps`; a ratio <= 1 is "no worse per dof"."""
     import numpy as np
     log_d = np.log([u["dofs"] for u in ladder])
     log_e = np.log([corrected(u["error"], eta_uniform) for u in ladder])
