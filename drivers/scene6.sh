@@ -18,16 +18,28 @@
 #   convergence/n<N>      h = k = 1/N with friction, N = 2 ... 128, and the reference N = 256
 #                         (Fig 6.5 by sig-error); pdas, and alm for speed against accuracy
 #   stability/n<n>_k<K>_a<alpha>   the map: mesh x k x alpha -> outer and Newton counts per step, Nv
-# --quick: figures at h = 1/32, N = 2 ... 16 against N = 32, a smaller map (about a minute).
+#   adapted/              issue 29, adapted against uniform meshes, every one at the deck's
+#                         k = 0.01 with states kept every 0.05 s and its estimate (case.est):
+#                         drivers/adapt.sh from the 16 x 2 rail (Dörfler theta 0.5; 6 steps, 4
+#                         with --quick), one mesh for the whole march (a triangle's indicator is
+#                         its largest over the kept times: the load and the contact zone sweep
+#                         the rail); overkill1/2, the last adapted mesh refined uniformly once and
+#                         twice (finer everywhere than every adapted mesh: they nest);
+#                         uniform/n<N>, the scene's N x N meshes (N = 8 ... 128 against 256;
+#                         --quick 8 ... 32 against 64); start/x<m>, the start mesh refined
+#                         uniformly, 16m x 2m (m = 1 ... 8 against 16; --quick 1 ... 4 against 8)
+# --quick: figures at h = 1/32, N = 2 ... 16 against N = 32, a smaller map and adapted study.
 #
 # Environment: SIG_BIN (default build/bin), PYTHON (default /usr/bin/python3).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/adapted.sh"
 
 usage() {
   cat <<EOF
 usage: drivers/scene6.sh [--quick] [-o OUTDIR]
-  --quick     figures at h = 1/32, Fig 6.5 for h = k = 1/2 ... 1/16 against 1/32, a smaller map
+  --quick     figures at h = 1/32, Fig 6.5 for h = k = 1/2 ... 1/16 against 1/32, a smaller map,
+              4 adapted steps
   -o OUTDIR   results folder (default out/scene6)
   -h, --help  this message
 Environment: SIG_BIN (stage executables, default build/bin), PYTHON (default /usr/bin/python3).
@@ -38,7 +50,7 @@ invocation="drivers/scene6.sh${*:+ $*}"
 template=$root/datafiles/scene6/rail.dat
 winkler_template=$root/datafiles/scene6/winkler.dat
 parse_quick_out out/scene6 "$@"
-require_stages mesh material contact assemble solve march post error
+require_stages mesh material contact assemble solve march post error estimate refine adapt
 [ -r "$template" ] || die "cannot read the deck $template"
 require_charts
 
@@ -51,6 +63,11 @@ if [ $quick -eq 1 ]; then
   stability_n=(16 32)
   stability_k=(8 32)
   stability_alpha=(20 2000)
+  adapt_steps=4
+  adapt_uniform_n=(8 16 32)
+  adapt_uniform_reference=64
+  adapt_start_m=(1 2 4)
+  adapt_start_reference=8
 else
   figure_n=64
   convergence_n=(2 4 8 16 32 64 128)
@@ -60,7 +77,17 @@ else
   stability_n=(16 64 128)
   stability_k=(8 32 128 512)
   stability_alpha=(2 20 200 2000 20000)
+  adapt_steps=6
+  adapt_uniform_n=(8 16 32 64 128)
+  adapt_uniform_reference=256
+  adapt_start_m=(1 2 4 8)
+  adapt_start_reference=16
 fi
+# [choice] the adapted study's start mesh: 16 x 2 cells of 0.125 x 0.05 m, two rows through the
+# thickness, edges of about the load's standard deviation (0.1 m). Not the scene's 16 x 16 (cells
+# of aspect 20): bisection only refines, so its 16 rows, more than the bending needs, would stay
+# in every adapted mesh (measured from 16 x 16: 1.1-1.2 times the uniform error per dof).
+adapt_nx=16 adapt_ny=2
 quasistatic_t=(0.2 0.4 0.6 0.8)
 # [choice] the viscosity of the labelled variant: eta1 = 0.001, eta2 = 0.002 GPa s: viscous stresses
 # of eta / (E tau) ~ 4e-4 of the elastic ones at the load's time scale tau = 0.05 s.
@@ -69,7 +96,7 @@ viscosity="eta1=0.001 eta2=0.002"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 rm -rf "$out/winkler" "$out/figs" "$out/quasistatic" "$out/viscosity" "$out/convergence" \
-  "$out/stability"
+  "$out/stability" "$out/adapted"
 {
   provenance
   echo "quick: $quick"
@@ -80,6 +107,12 @@ rm -rf "$out/winkler" "$out/figs" "$out/quasistatic" "$out/viscosity" "$out/conv
   echo "winkler_ny: $winkler_ny"
   echo "stability: n ${stability_n[*]}; k 1/${stability_k[*]}; alpha ${stability_alpha[*]}"
   echo "viscosity: $viscosity"
+  echo "adapt_steps: $adapt_steps"
+  echo "adapt_start: $adapt_nx $adapt_ny"
+  echo "adapt_uniform_n: ${adapt_uniform_n[*]}"
+  echo "adapt_uniform_reference: $adapt_uniform_reference"
+  echo "adapt_start_m: ${adapt_start_m[*]}"
+  echo "adapt_start_reference: $adapt_start_reference"
 } >"$out/command.txt"
 cp "$template" "$out/rail.template.dat"
 
@@ -112,7 +145,8 @@ frictionless=(--drop-card FRICTION --drop-card CONVEXIFICATION)
 inverse() { "$python" -c "print(repr(1 / $1))"; }
 
 runs=$((3 + 4 + ${#quasistatic_t[@]} + 1 + ${#convergence_n[@]} + 1 + ${#alm_n[@]} +
-  ${#stability_n[@]} * ${#stability_k[@]} * ${#stability_alpha[@]}))
+  ${#stability_n[@]} * ${#stability_k[@]} * ${#stability_alpha[@]} +
+  3 + ${#adapt_uniform_n[@]} + 1 + ${#adapt_start_m[@]} + 1)) # the loop, 2 overkills, 2 ladders
 progress_begin $runs
 start=$SECONDS
 
@@ -167,6 +201,38 @@ for n in "${stability_n[@]}"; do
         $(march_edits "$n" "$(inverse "$kk")" "$kk" no) --set FRICTION.alpha=$alpha
     done
   done
+done
+
+# 7. Adapted against uniform meshes (issue 29). Every mesh at the deck's k = 0.01, the references
+#    too: the errors are the space errors of one time discretization, what the estimator
+#    estimates (Fig 6.5 refines h and k together). States kept every 0.05 s (the load
+#    moves 0.1 m, one standard deviation, between two), so that the indicators' maximum over the
+#    kept times sees the load at every place, and sig-error's maximum over t is Fig 6.5's measure.
+adapted=$out/adapted
+mkdir -p "$adapted"
+deck_variant "$template" "$adapted/rail.dat" --set MESH.nx=$adapt_nx --set MESH.ny=$adapt_ny \
+  --set TIME.output_every=5 --set OUTPUT.vtk=no
+adapted_study "$adapted" "$adapted/rail.dat" "$adapt_steps"
+
+# estimated_run NAME NX NY: the adapted study's deck on the uniform NX x NY mesh in adapted/NAME,
+# marched and estimated.
+estimated_run() {
+  local dir=$adapted/$1
+  run "$dir" "$adapted/rail.dat" --set MESH.nx=$2 --set MESH.ny=$3
+  [ ! -e "$dir/case.hist" ] || run_stage estimate "$dir/rail.dat" "$dir" ||
+    failed+=("$dir (sig-estimate)")
+}
+for n in "${adapt_uniform_n[@]}" "$adapt_uniform_reference"; do
+  estimated_run "uniform/n$n" "$n" "$n"
+done
+for m in "${adapt_start_m[@]}" "$adapt_start_reference"; do
+  estimated_run "start/x$m" $((adapt_nx * m)) $((adapt_ny * m))
+done
+for n in "${adapt_uniform_n[@]}"; do
+  error_json "adapted/uniform/n$n" "adapted/uniform/n$adapt_uniform_reference"
+done
+for m in "${adapt_start_m[@]}"; do
+  error_json "adapted/start/x$m" "adapted/start/x$adapt_start_reference"
 done
 echo "scene6.sh: all runs done in $((SECONDS - start)) s"
 record_seconds $start

@@ -153,14 +153,7 @@ adapted=$out/adapted
 mkdir -p "$adapted"
 write_deck "$adapted/hertz.template.dat" 16 0 pdas 1e2
 deck_variant "$adapted/hertz.template.dat" "$adapted/hertz.dat" --set OUTPUT.vtk=no
-"$root/drivers/adapt.sh" "$adapted/hertz.dat" -o "$adapted" --steps "$adapt_steps" --theta 0.5 \
-  >"$adapted/adapt.log" 2>&1 || { tail -20 "$adapted/adapt.log" >&2; die "adapt.sh failed"; }
-progress_step "adapted ($adapt_steps steps)"
-overkill_references "$adapted" "$adapt_steps" "$adapted/hertz.dat" "$adapted/hertz.dat"
-for ((k = 0; k < adapt_steps; k++)); do
-  error_json "adapted/step$k" adapted/overkill2
-done
-error_json adapted/overkill1 adapted/overkill2
+adapted_study "$adapted" "$adapted/hertz.dat" "$adapt_steps"
 finest=${error_meshes[-1]}
 run_stage estimate "$out/error/N$finest/pdas_1e2/hertz.dat" "$out/error/N$finest/pdas_1e2" ||
   failed+=("$out/error/N$finest/pdas_1e2 (sig-estimate)")

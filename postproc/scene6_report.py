@@ -11,7 +11,9 @@ charts (PNG) and OUTDIR/scene.json:
     over the shared time levels, with the slope), the thesis's reference beside ours;
   - the checks of ALGORITHMS.md 3.6 (the Winkler strip, the quasi-static limit), the viscosity
     the thesis neglects, one factorization per march, the convexification per step;
-  - speed against accuracy and the stability map of the loop (mesh x k x alpha).
+  - speed against accuracy and the stability map of the loop (mesh x k x alpha);
+  - the meshes adapted to the whole march against uniform ones, all at k = 0.01 (issue 29):
+    errors against overkill references, effectivities, the ratio at equal dofs.
 """
 import functools
 import sys
@@ -22,6 +24,10 @@ from sigreport import (Checks, MapCell, MapPanel, March, Mesh, Point, ReportErro
                        Series, Table, find_pvd, fmt, load_thesis, loglog_slope, main_guard,
                        pyplot, read_command, read_deck, read_ds, save_figure,
                        speed_accuracy_chart, stability_map, within, write_report)
+from sigreport.adapted import (EFFECTIVITY_RANGE, adapted_figure, corrected,  # noqa: E402
+                               per_dof_ratios, read_adapt_csv)
+from sigreport.march import read_error  # noqa: E402
+from sigreport.table import markdown_table  # noqa: E402
 import winkler_strip  # noqa: E402
 
 HIST_ARRAYS = ["converged", "failure", "k", "T", "steps", "time_march", "time_factorize",
@@ -684,6 +690,148 @@ def section_beside_thesis(scene):
         "read (the same shapes; its mesh and step for Figs 6.2-6.4 are not stated)."]
 
 
+def study_mesh(folder, judged=True):
+    """A mesh of the adapted study: dofs, eta at t = T (estimate_T) and its maximum over the kept
+    times (estimate; case.est) and, when `judged`, sig-error's error at t = T (error_T) and its
+    maximum over the shared times (error; error.json against the mesh's reference)."""
+    path = folder / "case.est"
+    if not path.is_file():
+        raise ReportError(f"{path}: missing (sig-estimate)")
+    est = read_ds(path, arrays=["dofs", "estimate", "estimate_max", "estimates", "times"])
+    mesh = {"dofs": int(est.scalar("dofs")), "estimate_T": est.scalar("estimate"),
+            "estimate": est.scalar("estimate_max"), "estimates": est["estimates"],
+            "times": est["times"]}
+    if judged:
+        e = read_error(folder)
+        if e is None:
+            raise ReportError(f"{folder}/error.json: missing (sig-error)")
+        mesh.update({"error": e["max_error"], "error_T": e["error"],
+                     "effectivity": mesh["estimate"] / e["max_error"],
+                     "effectivity_T": mesh["estimate_T"] / e["error"]})
+    return mesh
+
+
+def gamma3_per_quarter(folder):
+    """The Gamma3 (x2 = 0) nodes of a mesh on each quarter of the rail."""
+    import numpy as np
+    xy = Mesh.read(folder / "case.nopo").xy
+    return np.histogram(xy[np.abs(xy[:, 1]) < 1e-12, 0], bins=[0, 0.5, 1, 1.5, 2 + 1e-9])[0]
+
+
+def section_adapted(scene):
+    """Issue 29: the meshes adapted to the whole march against the scene's uniform N x N meshes
+    (checked: no worse per dof) and against the start mesh refined uniformly (shown), all at
+    k = 0.01; the effectivities of every mesh of the study (checked)."""
+    folder, info = scene.out / "adapted", scene.info
+    title = section("Adapted meshes against uniform ones (issue 29)")
+    if not (folder / "adapt.csv").is_file():
+        return title + ["Not run (no adapted/adapt.csv: an output of drivers/scene6.sh before "
+                        "the adapted study)."]
+    steps = read_adapt_csv(folder)
+    for s in steps:
+        s.update(study_mesh(folder / f"step{s['step']}"))
+    overkill = study_mesh(folder / "overkill2", judged=False)
+    overkill1 = read_error(folder / "overkill1") or {}
+    u_ref, m_ref = info["adapt_uniform_reference"], info["adapt_start_reference"]
+    nx, ny = (int(v) for v in info["adapt_start"].split())
+    uniform = [dict(study_mesh(folder / f"uniform/n{n}"), name=f"{n} x {n}")
+               for n in info["adapt_uniform_n"].split()]
+    start = [dict(study_mesh(folder / f"start/x{m}"), name=f"{nx * int(m)} x {ny * int(m)}")
+             for m in info["adapt_start_m"].split()]
+    uniform_ref = study_mesh(folder / f"uniform/n{u_ref}", judged=False)
+    start_ref = study_mesh(folder / f"start/x{m_ref}", judged=False)
+    m_ref_name = f"{nx * int(m_ref)} x {ny * int(m_ref)}"
+
+    ratios = per_dof_ratios(steps, uniform, overkill["estimate"], uniform_ref["estimate"])
+    start_ratios = dict((s["step"], r) for s, r in
+                        per_dof_ratios(steps, start, overkill["estimate"], start_ref["estimate"]))
+    worst = max(ratios, key=lambda c: c[1]) if ratios else None
+    scene.checks.add(
+        "adapted meshes no worse per dof than the scene's uniform N x N meshes (issue 29): each "
+        "adapted mesh within their dofs, its error (max over t, against the overkill, + its "
+        f"estimate) at most theirs at its dofs (against {u_ref} x {u_ref}, + its estimate; "
+        "log-log interpolated)", None if worst is None else worst[1] <= 1.0,
+        ours="no adapted mesh within the uniform dofs" if worst is None else
+        f"largest ratio {worst[1]:.2f} (step {worst[0]['step']}, {worst[0]['dofs']} dofs) over "
+        f"steps {', '.join(str(s['step']) for s, _ in ratios)}", target="<= 1")
+    judged = steps + uniform + start
+    for key, when in (("effectivity", "maxima over the kept times"), ("effectivity_T", "t = T")):
+        values = [m[key] for m in judged]
+        scene.checks.add(
+            f"adapted study: effectivity (estimate / error, {when}) in [0.3, 3] on every mesh "
+            f"(the {len(steps)} adapted, the {len(uniform) + len(start)} uniform)",
+            all(EFFECTIVITY_RANGE[0] <= v <= EFFECTIVITY_RANGE[1] for v in values),
+            ours=f"{min(values):.2f} ... {max(values):.2f}", target="[0.3, 3]")
+
+    slope = loglog_slope([s["dofs"] for s in steps[1:]], [s["error"] for s in steps[1:]])
+    uniform_slope = loglog_slope([u["dofs"] for u in uniform], [u["error"] for u in uniform])
+    scene.charts["adapted"] = adapted_figure(
+        scene.out / "rail_adapted.png", steps, uniform, overkill["estimate"],
+        uniform_ref["estimate"], f"{u_ref} x {u_ref}", -slope,
+        "The rail, k = 0.01: max over t of the error, uniform and adapted meshes",
+        others=[(f"uniform {nx}m x {ny}m (the start mesh refined), against {m_ref_name}",
+                 start)])
+    rows = [[s["step"], s["dofs"], fmt(s["estimate"], 3), fmt(s["error"], 3),
+             fmt(corrected(s["error"], overkill["estimate"]), 3), f"{s['effectivity']:.2f}",
+             next((f"{r:.2f}" for c, r in ratios if c is s), ""),
+             f"{start_ratios[s['step']]:.2f}" if s["step"] in start_ratios else "",
+             fmt(s["estimate_T"], 3), fmt(s["error_T"], 3), f"{s['effectivity_T']:.2f}"]
+            for s in steps]
+    urows = [[family, u["name"], u["dofs"], fmt(u["estimate"], 3), fmt(u["error"], 3),
+              fmt(corrected(u["error"], ref["estimate"]), 3), f"{u['effectivity']:.2f}",
+              fmt(u["estimate_T"], 3), fmt(u["error_T"], 3), f"{u['effectivity_T']:.2f}"]
+             for family, ladder, ref in (("scene's", uniform, uniform_ref),
+                                         ("start refined", start, start_ref))
+             for u in ladder]
+    last = steps[-1]
+    peak = max(range(len(last["estimates"])), key=lambda i: last["estimates"][i])
+    quarters = gamma3_per_quarter(folder / f"step{last['step']}")
+    start_text = ", ".join(f"{r:.2f}" for _, r in sorted(start_ratios.items()))
+    return title + [
+        f"`drivers/adapt.sh` from the {nx} x {ny} rail (cells {2 / nx:g} x {0.1 / ny:g} m; "
+        f"Zienkiewicz-Zhu indicators, Dörfler theta 0.5, conforming bisection), "
+        f"{len(steps)} steps, `adapted/`. *One mesh for the whole march*: the load and the "
+        "contact zone under it sweep the rail (the pressure's bell follows c t, Fig 6.3), so a "
+        "marking at the last kept time alone would refine the right end, where the load is at "
+        "t = T; sig-estimate's indicator of a triangle is its largest eta_T over the kept times "
+        "t = 0, 0.05, ..., 1, and the meshes refine along the whole rail (the last one has "
+        f"{', '.join(str(q) for q in quarters)} Gamma3 nodes on the rail's four quarters; its "
+        f"eta peaks at t = {last['times'][peak]:g}, "
+        f"{last['estimates'][peak] / last['estimate_T']:.1f} times its value at t = T). *Time step*: the deck's k = 0.01 on every mesh, the "
+        "references too, so the errors are the space errors of one time discretization, what "
+        "the estimator estimates (Fig 6.5 above refines h and k together). *Error*: "
+        "sig-error's norm of V, ||eps(u_ref - P u_h)||_L2, its maximum over the shared kept "
+        "times (Fig 6.5's measure), against sig-estimate's estimate_max (the maximum of eta "
+        "over the kept times); the values at t = T beside. *References*, each finer everywhere "
+        "than every mesh it judges: the adapted meshes against the overkill (the last adapted "
+        f"mesh refined uniformly twice, {overkill['dofs']} dofs, its own estimate "
+        f"{fmt(overkill['estimate'], 3)}; the once-refined one differs from it by "
+        f"{fmt(overkill1.get('max_error'), 3)}), the scene's uniform N x N meshes against "
+        f"{u_ref} x {u_ref} ({uniform_ref['dofs']} dofs, estimate "
+        f"{fmt(uniform_ref['estimate'], 3)}), the start mesh refined uniformly against "
+        f"{m_ref_name} ({start_ref['dofs']} dofs, estimate {fmt(start_ref['estimate'], 3)}); "
+        "\"+ its estimate\" adds the reference's own estimate in quadrature, as the ratios do.",
+        "",
+        markdown_table(["step", "dofs", "estimate", "error vs overkill", "+ its estimate",
+                        "effectivity", "/ scene's uniform at these dofs",
+                        "/ start refined at these dofs", "estimate at T", "error at T",
+                        "effectivity at T"], rows),
+        "",
+        markdown_table(["uniform", "cells", "dofs", "estimate", "error vs its reference",
+                        "+ its estimate", "effectivity", "estimate at T", "error at T",
+                        "effectivity at T"], urows),
+        "",
+        f"![rail adapted]({scene.charts['adapted']})",
+        "",
+        f"Slopes against dofs (max over t): adapted {-slope:.3f} (steps 1-{last['step']}), the "
+        f"scene's uniform meshes {-uniform_slope:.3f}. Against the start mesh refined "
+        f"uniformly the ratios are {start_text or 'not computed (no step within its dofs)'} "
+        "(shown, not checked): the load visits every place, so the meshes adapted to the whole "
+        "march are nearly uniform along the rail, and what they gain over the scene's meshes "
+        "is the cells' shape (the scene's 2h x 0.1h cells put N rows through the thickness, "
+        "more than the bending needs), not where the cells sit."]
+
+
 def key_table(scene):
     """The scene index's key table: Fig 6.5's errors."""
     key = Table(["h = k", "max over t of ||u - u_hk||_V", "march (s)"],
@@ -701,7 +849,7 @@ def main():
     md = section_head(scene) + section_winkler(scene) + section_figs62_63(scene) + \
         section_fig64(scene) + section_quasistatic(scene) + section_viscosity(scene) + \
         section_fig65(scene) + section_loop(scene) + section_speed(scene) + \
-        section_stability(scene) + section_beside_thesis(scene)
+        section_stability(scene) + section_adapted(scene) + section_beside_thesis(scene)
     checks = scene.checks
     md += section("Checks") + [checks.table().markdown(), "", checks.summary()]
     write_report(scene.out, "\n".join(md) + "\n", "6", "Scene 6: viscoelastodynamic rail under a "

@@ -23,7 +23,7 @@ from sigreport import (Checks, Deck, Point, ReportError, Series, Table, fmt, loa
                        read_command, read_error, read_summary, run_cell, save_figure,
                        solve_seconds, speed_accuracy_chart, write_report)
 from sigreport.adapted import (EFFECTIVITY_RANGE, adapted_figure, corrected, est_value,
-                               read_adapt_csv)
+                               per_dof_ratios, read_adapt_csv)
 
 plt = pyplot()
 
@@ -670,13 +670,7 @@ def section_adapted(out, error_meshes, checks):
     png = adapted_figure(out / "hertz_adapted.png", steps, ladder, eta_overkill, eta_uniform,
                          f"N = {finest}", slope, "Hertz half disc: uniform and adapted meshes")
     # Each adapted mesh within the uniform dofs against the uniform error at its dofs.
-    log_d = np.log([u["dofs"] for u in ladder])
-    log_e = np.log([corrected(u["error"], eta_uniform) for u in ladder])
-    compared = []
-    for s in steps:
-        if ladder[0]["dofs"] <= s["dofs"] <= ladder[-1]["dofs"]:
-            uniform_at = math.exp(np.interp(math.log(s["dofs"]), log_d, log_e))
-            compared.append((s, corrected(s["error"], eta_overkill) / uniform_at))
+    compared = per_dof_ratios(steps, ladder, eta_overkill, eta_uniform)
     worst = max(compared, key=lambda c: c[1]) if compared else None
     checks.add("adapted meshes no worse per dof than the uniform ones (issue 29): each adapted "
                "mesh within the uniform dofs, its error (against the overkill, + its estimate) "

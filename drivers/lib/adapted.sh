@@ -1,7 +1,8 @@
 # Sourced by the scene drivers (after scene.sh) for their adapted convergence studies (issue 29,
-# scenes 4 and 5): the overkill references of an adaptive loop, the finest uniform mesh's chain
-# timed as the loop's steps are, and the errors against the overkill. They use $out, $bin, $root,
-# die, progress_step, run_stage and error_json of scene.sh, and the caller's array `failed`.
+# scenes 4, 5, 6 and 7a): the loop with its overkill references and errors, the finest uniform
+# mesh's chain timed as the loop's steps are, and the errors against the overkill. They use $out,
+# $bin, $root, die, progress_step, run_stage and error_json of scene.sh, and the caller's array
+# `failed`.
 
 # logged LOG COMMAND...: COMMAND's output appended to LOG, shown and fatal when it fails.
 logged() {
@@ -33,6 +34,22 @@ overkill_references() {
     from_dir=$adapted/$name from_deck=$adapted/$name.dat
     progress_step "${adapted#"$out"/}/$name"
   done
+}
+
+# adapted_study ADAPTED DECK STEPS: drivers/adapt.sh on DECK into ADAPTED (a folder under $out;
+# STEPS steps, Dörfler theta 0.5), its overkill references (overkill_references, on DECK), and
+# the error of every step and of overkill1 against overkill2 (error.json).
+adapted_study() {
+  local adapted=$1 deck=$2 steps=$3 k
+  local name=${adapted#"$out"/}
+  "$root/drivers/adapt.sh" "$deck" -o "$adapted" --steps "$steps" --theta 0.5 \
+    >"$adapted/adapt.log" 2>&1 || { tail -20 "$adapted/adapt.log" >&2; die "adapt.sh failed"; }
+  progress_step "$name ($steps steps)"
+  overkill_references "$adapted" "$steps" "$deck" "$deck"
+  for ((k = 0; k < steps; k++)); do
+    error_json "$name/step$k" "$name/overkill2"
+  done
+  error_json "$name/overkill1" "$name/overkill2"
 }
 
 # timed_chain DECK DIR: drivers/chain.sh on DECK into DIR (the finest uniform mesh judged, a

@@ -5,6 +5,7 @@ chart of the error against the dofs, uniform and adapted side by side.
     steps = read_adapt_csv(folder)            # [{step, dofs, estimate, estimate_s, refine_s, ...}]
     eta = est_value(folder)                   # sig-estimate's eta (case.est), None when absent
     corrected(error, eta)                     # the error against the exact solution, estimated
+    per_dof_ratios(steps, ladder, eta, eta_u) # adapted / uniform error at equal dofs, per step
     loop_cost(steps, last)                    # (stages' own seconds, wall seconds) to step last
     one_process_wall(uniform)                 # the uniform chain run in one process, or None
     adapted_figure(path, steps, ladder, ...)  # the PNG's name
@@ -57,6 +58,18 @@ def corrected(error, reference_estimate):
     return math.hypot(error, reference_estimate)
 
 
+def per_dof_ratios(steps, ladder, eta_overkill, eta_uniform):
+    """Each adapted mesh within the uniform ladder's dofs against the uniform error at its dofs
+    (log-log interpolated on the ladder), both corrected by their references' own estimates:
+    [(step, ratio)], each step its dict of `steps`; a ratio <= 1 is "no worse per dof"."""
+    import numpy as np
+    log_d = np.log([u["dofs"] for u in ladder])
+    log_e = np.log([corrected(u["error"], eta_uniform) for u in ladder])
+    return [(s, corrected(s["error"], eta_overkill) /
+             math.exp(np.interp(math.log(s["dofs"]), log_d, log_e)))
+            for s in steps if ladder[0]["dofs"] <= s["dofs"] <= ladder[-1]["dofs"]]
+
+
 def loop_cost(steps, last):
     """The adaptive loop's cost up to step `last` (its estimate included, its refinement not):
     the stages' own times (solve + estimate + refine) and the loop's wall clock, elapsed_s: from
@@ -84,10 +97,12 @@ def one_process_text(one_process, wall):
             f"estimate included) takes {one_process:.2f} s: {wall / one_process:.2f} of it")
 
 
-def adapted_figure(path, steps, ladder, eta_overkill, eta_uniform, ref, slope, title):
+def adapted_figure(path, steps, ladder, eta_overkill, eta_uniform, ref, slope, title,
+                   others=()):
     """Error against dofs: the adapted meshes against the overkill reference, the uniform ones
     against their reference `ref` (a label, "n = 512"), each also with its reference's estimated
-    error added in quadrature."""
+    error added in quadrature; `others`, (label, ladder) pairs, more uniform families (their
+    errors as measured)."""
     fig, ax = pyplot().subplots(figsize=(6.4, 4.8))
     ad = [s["dofs"] for s in steps]
     un = [u["dofs"] for u in ladder]
@@ -99,6 +114,9 @@ def adapted_figure(path, steps, ladder, eta_overkill, eta_uniform, ref, slope, t
               label=f"uniform, against {ref}")
     ax.loglog(un, [corrected(u["error"], eta_uniform) for u in ladder], "s:", color="C3",
               alpha=0.5, ms=3, label=f"uniform, + {ref}'s own estimate")
+    for i, (label, other) in enumerate(others):
+        ax.loglog([u["dofs"] for u in other], [u["error"] for u in other], "^-",
+                  color=f"C{i + 1}", label=label)
     x0, y0 = ad[-1], steps[-1]["error"]
     ax.loglog([ad[0], x0], [y0 * (ad[0] / x0) ** -0.5, y0], "k--", lw=0.8, label="dofs^(-1/2)")
     ax.set_xlabel("dofs (-)")
