@@ -187,7 +187,7 @@ TEST(Provenance, ADsRecordsTheCardsOfItsStageAndOfItsInputs) {
   const Provenance b = parse_provenance(read_ds(dir / "case.b").text("provenance"), "b");
   EXPECT_EQ(keywords(b), (std::vector<std::string>{"CONTACT", "FRICTION", "SOLVER", "LOADSTEPS",
                                                    "CONVEXIFICATION", "INITIAL", "TRACTION",
-                                                   "PRESSURE", "BODYFORCE"}));
+                                                   "PRESSURE", "BODYFORCE", "DIRICHLET"}));
   EXPECT_EQ(b.inputs.size(), 1u); // CONT
 }
 
