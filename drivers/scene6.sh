@@ -193,12 +193,18 @@ for dir in "$out"/convergence/*; do
     2>"$dir/error.log" || failed+=("$dir (sig-error)")
 done
 
-# 6. The stability map of the loop: mesh x k x alpha.
+# 6. The stability map of the loop: mesh x k x alpha. SOLVER maxit=50 a step (sig-march's default
+#    in the midpoint marches; the marches in velocity take sig-solve's 100): at k = 1/512 the
+#    deck's budget, 512 steps x 100 x CONVEXIFICATION maxit 200 = 1.024e7 Newton iterations, is
+#    above the 1e7 a run may take and sig-march refuses it. The map's convex solves take about
+#    two Newton iterations each (at most 377 in a step of 185 convex solves: n = 16, k = 1/128,
+#    alpha = 2); a step that would need 50 in one is Nv on the map, shown, never silent.
 for n in "${stability_n[@]}"; do
   for kk in "${stability_k[@]}"; do
     for alpha in "${stability_alpha[@]}"; do
       run "$out/stability/n${n}_k${kk}_a$alpha" "$template" \
-        $(march_edits "$n" "$(inverse "$kk")" "$kk" no) --set FRICTION.alpha=$alpha
+        $(march_edits "$n" "$(inverse "$kk")" "$kk" no) --set FRICTION.alpha=$alpha \
+        --set SOLVER.maxit=50
     done
   done
 done
