@@ -225,9 +225,11 @@ const std::vector<CardSpec>& card_schema() {
            {"c", "parameter of the iterative projection method (7.16), > 0", "100"},
            {"eps", "tolerance of stopping test (iv): relative increment and residual, > 0: of "
                    "the solve (sig-solve, default 1e-05), of each Newton phase of a time step "
-                   "(sig-march, default 1e-10)"},
+                   "(sig-march, default 1e-10; the marches in velocity, TIME "
+                   "scheme=backward-euler or quasistatic, take sig-solve's 1e-05)"},
            {"maxit", "maximum number of nonlinear iterations: of the solve (sig-solve, default "
-                     "100), of each Newton phase of a time step (sig-march, default 50)"},
+                     "100), of each Newton phase of a time step (sig-march, default 50; the "
+                     "marches in velocity take sig-solve's 100)"},
            {"search",
             "auto | yes | no: globalization of the contact Newton (modules/solver/NEWTON.md): "
             "auto and yes (the same) take steps that a merit and a cycle guard accept, for "
