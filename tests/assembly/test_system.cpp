@@ -372,8 +372,9 @@ TEST(TaeParts, EachRankReadsOfItsPartWhatTheWholeTaeGives) {
       const LinearSystem b = read_tae_rows(whole, owned[rank], march);
       EXPECT_TRUE(a.rank_rows);
       for (const auto& [x, y] : {std::pair{&a.K, &b.K}, {&a.M, &b.M}, {&a.V, &b.V}}) {
+        EXPECT_EQ(x->rows(), y->rows());
         EXPECT_EQ(x->nonZeros(), y->nonZeros());
-        EXPECT_EQ((*x - *y).norm(), 0.0);
+        if (x->size() > 0) EXPECT_EQ((*x - *y).norm(), 0.0); // a solve reads no M, V: 0 x 0
       }
       ASSERT_EQ(a.memory.size(), b.memory.size());
       for (std::size_t j = 0; j < a.memory.size(); ++j)
