@@ -1,6 +1,7 @@
 #include "stages/augmentation_scale.hpp"
 
 #include "core/datafile.hpp"
+#include "core/log.hpp"
 #include "solver/contact_method.hpp"
 
 #include <algorithm>
@@ -54,6 +55,15 @@ std::string augmentation_scale_hint(const Datafile& datafile, const std::string&
   const std::string place =
       solver ? solver->file + ":" + std::to_string(solver->line) + ": " : datafile.path + ": ";
   return place + words;
+}
+
+void hint_augmentation_scale(const Datafile& datafile, const std::string& method,
+                             const Eigen::SparseMatrix<double>& stiffness,
+                             const ContactElements& contact, bool lower_only) {
+  if (const std::string words =
+          augmentation_scale_hint(datafile, method, stiffness, contact, lower_only);
+      !words.empty())
+    log_warning(words);
 }
 
 } // namespace sig

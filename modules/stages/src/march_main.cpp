@@ -228,9 +228,6 @@ int march_main(int argc, char** argv) {
       zone = sig::march_contact_zone(sig::read_cont(args.ds_path("cont"), mesh), system,
                                      solver_card, hyperelastic);
     const sig::ContactElements* elements = zone ? &zone->condensed : nullptr;
-    // Beside a stop: every strategy's Newton is PDAS's, with SOLVER gamma=.
-    const std::string scale_hint =
-        elements ? sig::augmentation_scale_hint(datafile, "pdas", system.K, *elements, true) : "";
     const Eigen::SparseMatrix<double> mass =
         sig::mass_matrix(system, time.mass, mesh, elements ? elements->node : std::vector<int>{});
     std::unique_ptr<sig::ContactStrategy> strategy;
@@ -312,7 +309,9 @@ int march_main(int argc, char** argv) {
                 history.outputs.size(), e0, drift, penetration, seconds,
                 history.converged ? "" : " (STOPPED: Newton failed)");
     std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
-    if (!history.converged && !scale_hint.empty()) sig::log_warning(scale_hint);
+    // Beside a stop: every strategy's Newton is PDAS's, with SOLVER gamma=.
+    if (!history.converged && elements)
+      sig::hint_augmentation_scale(datafile, "pdas", system.K, *elements, true);
   });
 }
 

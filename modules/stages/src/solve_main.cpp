@@ -119,9 +119,6 @@ int solve_main(int argc, char** argv) {
     const sig::LinearSystem system = sig::read_tae_of_rank(args.ds_path("tae"), mesh);
     std::optional<sig::ContactElements> contact;
     if (has_contact) contact = sig::read_cont(args.ds_path("cont"), mesh);
-    // Beside a failure: the method's parameter far off the problem's scale, if it is.
-    const std::string scale_hint =
-        contact ? sig::augmentation_scale_hint(datafile, method, system.K, *contact, false) : "";
     if (mesh.dim == 3) {
       // A 3D deck: sig-contact refused the friction laws other than Tresca and Coulomb (issue 26);
       // a hyperelastic one is solved frictionless (the finite-strain bulk in d = 3, issue 28).
@@ -194,7 +191,8 @@ int solve_main(int argc, char** argv) {
       for (std::size_t k = 0; k < s.steps.size(); ++k)
         if (!s.steps[k].converged)
           std::cout << "sig-solve: Nv, load step " << k + 1 << ": " << s.steps[k].failure << "\n";
-      if (!s.converged() && !scale_hint.empty()) sig::log_warning(scale_hint);
+      if (!s.converged() && contact) // beside a failure: the parameter far off the scale?
+        sig::hint_augmentation_scale(datafile, method, system.K, *contact, false);
       return;
     }
 
@@ -246,7 +244,8 @@ int solve_main(int argc, char** argv) {
     std::cout << ", solve " << solution.seconds["solve"] << " s -> " << args.ds_path("b").string()
               << "\n";
     if (!solution.converged) std::cout << "sig-solve: Nv, " << solution.failure << "\n";
-    if (!solution.converged && !scale_hint.empty()) sig::log_warning(scale_hint);
+    if (!solution.converged && contact)
+      sig::hint_augmentation_scale(datafile, method, system.K, *contact, false);
   });
 }
 

@@ -34,17 +34,18 @@ std::vector<int> contact_first_dofs(const ReducedSystem& reduced, const ContactE
 
 } // namespace
 
-HeldAxis held_axis(const ContactElements& contact, int p, int component) {
-  // |e_c . n| or |e_c . t_k| within round-off of 1: the axis is that one of the frame.
+HeldAxis held_axis(const ContactFrame& frame, int component) {
+  // |e_c . n| or |e_c . t_k| within round-off of 1: the axis is that one of the frame, whose
+  // last column is -n.
   constexpr double kAligned = 1 - 1e-12;
-  const ContactFrame frame = contact.frame(p);
+  const int normal = static_cast<int>(frame.cols()) - 1;
   HeldAxis axis;
-  axis.along_normal = contact.normal[p][component];
+  axis.along_normal = -frame(component, normal);
   if (std::abs(axis.along_normal) >= kAligned) {
     axis.kind = HeldAxis::Kind::normal;
     return axis;
   }
-  for (int k = 0; k + 1 < frame.cols(); ++k)
+  for (int k = 0; k < normal; ++k)
     if (std::abs(frame(component, k)) >= kAligned) {
       axis.kind = HeldAxis::Kind::tangent;
       axis.tangent = k;
@@ -69,13 +70,14 @@ void verify_held_contact_components(const Mesh& mesh, const Datafile& datafile,
                                     const LinearSystem& system, const ContactElements& contact,
                                     const std::string& method) {
   const int d = contact.dim;
-  for (int p = 0; p < contact.size(); ++p)
+  for (int p = 0; p < contact.size(); ++p) {
+    const ContactFrame frame = contact.frame(p);
     for (int component = 0; component < d; ++component) {
       const int dof = d * contact.node[p] + component;
       if (!std::binary_search(system.dirichlet_dofs.begin(), system.dirichlet_dofs.end(), dof))
         continue;
       const std::string field = std::string("u") + "xyz"[component];
-      if (held_axis(contact, p, component).kind == HeldAxis::Kind::oblique) {
+      if (held_axis(frame, component).kind == HeldAxis::Kind::oblique) {
         if (const Card* card = dirichlet_card_of(mesh, datafile, dof))
           card->fail(field, oblique_hold_problem(contact, p, component));
         SIG_VERIFY(false, datafile.path << ": a DIRICHLET condition "
@@ -87,6 +89,7 @@ void verify_held_contact_components(const Mesh& mesh, const Datafile& datafile,
                               ", which the penalty method cannot impose (it has no multipliers): "
                               "use SOLVER method=alm or pdas");
     }
+  }
 }
 
 std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElements& contact) {
@@ -94,6 +97,7 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
   for (int p = 0; p < contact.size(); ++p) {
     ContactLaw& law = contact.law[p];
     const int d = contact.dim;
+    const ContactFrame frame = contact.frame(p);
     for (int component = 0; component < d; ++component) {
       const int dof = d * contact.node[p] + component;
       const auto at =
@@ -101,7 +105,7 @@ std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElemen
       if (at == system.dirichlet_dofs.end() || *at != dof) continue;
       const double value = system.dirichlet_values[at - system.dirichlet_dofs.begin()];
       // The held axis e_c in the node's frame: u_n = -n . u, q_n = u_n - d, q_t = t . u.
-      const HeldAxis axis = held_axis(contact, p, component);
+      const HeldAxis axis = held_axis(frame, component);
       SIG_VERIFY(axis.kind != HeldAxis::Kind::oblique,
                  "a DIRICHLET card " << oblique_hold_problem(contact, p, component));
       if (axis.kind == HeldAxis::Kind::normal) {

@@ -28,4 +28,9 @@ std::string augmentation_scale_hint(const Datafile& datafile, const std::string&
                                     const Eigen::SparseMatrix<double>& stiffness,
                                     const ContactElements& contact, bool lower_only);
 
+/// augmentation_scale_hint's words logged as a warning, if any: called beside a failure.
+void hint_augmentation_scale(const Datafile& datafile, const std::string& method,
+                             const Eigen::SparseMatrix<double>& stiffness,
+                             const ContactElements& contact, bool lower_only);
+
 } // namespace sig

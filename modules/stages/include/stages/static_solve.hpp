@@ -62,16 +62,16 @@ StaticSolution solve_linear_elasticity(const LinearSystem& system, const std::st
 /// its tangents (contact_frame: in 3D an axis of the tangent plane that is not t1 or t2).
 std::vector<int> hold_on_contact_nodes(const LinearSystem& system, ContactElements& contact);
 
-/// Where the mesh axis `component` sits in contact node p's frame: along its normal (a held
-/// component takes the node out of contact), along its tangent `tangent` (a held slip), or
-/// neither (an axis that mixes them: refused).
+/// Where the mesh axis `component` sits in a contact node's frame (contact_frame: its tangents
+/// and -n as columns): along its normal (a held component takes the node out of contact), along
+/// its tangent `tangent` (a held slip), or neither (an axis that mixes them: refused).
 struct HeldAxis {
   enum class Kind { normal, tangent, oblique } kind = Kind::oblique;
   int tangent = -1;         ///< k of t_k when kind == tangent
   double along_normal = 0;  ///< e_c . n
   double along_tangent = 0; ///< e_c . t_k when kind == tangent
 };
-HeldAxis held_axis(const ContactElements& contact, int p, int component);
+HeldAxis held_axis(const ContactFrame& frame, int component);
 /// The words of the refusal of an oblique held axis, after "a DIRICHLET card ".
 std::string oblique_hold_problem(const ContactElements& contact, int p, int component);
 
