@@ -21,6 +21,22 @@ bool has_hyperelastic_law(const MaterialTable& table) {
   return false;
 }
 
+FiniteStrainProblem finite_strain_problem(const Mesh& mesh, const MaterialTable& table,
+                                          const LinearSystem& system,
+                                          const ContactElements* contact,
+                                          std::unique_ptr<Obstacle>& obstacle) {
+  if (contact != nullptr && contact->size() > 0) obstacle = make_obstacle(contact->obstacle);
+  FiniteStrainProblem problem;
+  problem.mesh = &mesh;
+  problem.materials = &table;
+  problem.dirichlet_dofs = system.dirichlet_dofs;
+  problem.dirichlet_values = system.dirichlet_values;
+  problem.load = system.f;
+  problem.contact = contact;
+  problem.obstacle = obstacle.get();
+  return problem;
+}
+
 FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const MaterialTable& table,
                                                   const LinearSystem& system,
                                                   const ContactElements* contact,
@@ -30,16 +46,7 @@ FiniteStrainStageResult solve_finite_strain_stage(const Mesh& mesh, const Materi
                                                  << " has law=hooke: a large-deformation solve "
                                                     "needs a hyperelastic law everywhere");
   std::unique_ptr<Obstacle> obstacle;
-  if (contact != nullptr && contact->size() > 0) obstacle = make_obstacle(contact->obstacle);
-
-  FiniteStrainProblem problem;
-  problem.mesh = &mesh;
-  problem.materials = &table;
-  problem.dirichlet_dofs = system.dirichlet_dofs;
-  problem.dirichlet_values = system.dirichlet_values;
-  problem.load = system.f;
-  problem.contact = contact;
-  problem.obstacle = obstacle.get();
+  const FiniteStrainProblem problem = finite_strain_problem(mesh, table, system, contact, obstacle);
 
   FiniteStrainStageResult result;
   result.dim = mesh.dim;

@@ -248,15 +248,8 @@ int march_main(int argc, char** argv) {
     if (hyperelastic) {
       // On the full dofs, the Dirichlet values held: the history is restricted afterwards.
       std::unique_ptr<sig::Obstacle> obstacle;
-      if (elements && elements->size() > 0) obstacle = sig::make_obstacle(elements->obstacle);
-      sig::FiniteStrainProblem problem;
-      problem.mesh = &mesh;
-      problem.materials = &materials;
-      problem.dirichlet_dofs = system.dirichlet_dofs;
-      problem.dirichlet_values = system.dirichlet_values;
-      problem.load = system.f;
-      problem.contact = elements;
-      problem.obstacle = obstacle.get();
+      sig::FiniteStrainProblem problem =
+          sig::finite_strain_problem(mesh, materials, system, elements, obstacle);
       problem.mass = &mass;
       problem.time_step = time.k;
       problem.stress = time.stress;

@@ -13,6 +13,7 @@
 #include "stages/finite_strain_contact.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
 namespace sig {
@@ -37,6 +38,15 @@ struct FiniteStrainStageResult {
 
 /// True if some sub-domain of `table` has a hyperelastic law.
 bool has_hyperelastic_law(const MaterialTable& table);
+
+/// The problem of the stages' files: `system`'s Dirichlet dofs, values and loads on `mesh` with
+/// the laws of `table` and the contact elements `contact` (null: none), against `obstacle`,
+/// made here from the contact's when it has nodes and kept alive by the caller. A march adds its
+/// mass, time step and stress.
+FiniteStrainProblem finite_strain_problem(const Mesh& mesh, const MaterialTable& table,
+                                          const LinearSystem& system,
+                                          const ContactElements* contact,
+                                          std::unique_ptr<Obstacle>& obstacle);
 
 /// Load-stepped Newton for the data of `system` (Dirichlet dofs and values, loads f), with the
 /// contact elements `contact` (may be null: no contact). sig::Error as in
