@@ -21,6 +21,9 @@ constexpr int kMaxHalvings = 12;
 constexpr double kUnheld = 1e-3;
 /// A residual this many times the first one: divergence.
 constexpr double kDivergence = 1e12;
+/// det(I - A) of a 3D slip below which its step fixes the slip direction
+/// (tangential_conditions_3d): sqrt(u), u the unit round-off.
+const double kFixedDirectionEdge = std::sqrt(std::numeric_limits<double>::epsilon());
 
 /// The contact state at the bulk's iterate.
 struct ContactPoint {
@@ -368,8 +371,7 @@ void Driver<d>::tangential_conditions_3d(int p, const Kernel& k, const Tan& q_t,
     // errs by about det: the direction is fixed below det = sqrt(u), where the two balance (the
     // backward-Euler pad of datafiles/scene3d/creep_slip.dat slipping to rest stalled at 1e-9 of
     // the force with eps = 1e-10 when only det <= 1e-12 was fixed).
-    const double edge = std::sqrt(std::numeric_limits<double>::epsilon());
-    const bool fixed_direction = std::abs(I_A.determinant()) <= edge;
+    const bool fixed_direction = std::abs(I_A.determinant()) <= kFixedDirectionEdge;
     const Block M = fixed_direction ? Block::Identity() : Block(I_A.inverse());
     const Tan x_t = t / w; // the multiplier as a pressure, as the kernel's
     stiffness = fixed_direction ? Block::Zero() : Block(w * M * B);
