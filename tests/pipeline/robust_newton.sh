@@ -5,7 +5,8 @@
 # the same block pushed beyond its friction bound (traction (0.5, -1): Q = 1 > mu P = 0.6) has no
 # equilibrium, and every output a user opens says so: sig-solve's Nv line, case.b's
 # failure_reason, summary.json's failure "drift" with its size, contact.csv's converged column
-# (0 on every row), the .vtu's field data converged = 0; a CONTACT card whose obstacle faces
+# (0 on every row), the .vtu's field data converged = 0 (in 3D, where no step shows the drift,
+# the failure says every node slips at its bound); a CONTACT card whose obstacle faces
 # Gamma3 from inside the body is warned about.
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
@@ -76,6 +77,20 @@ reader.Update()
 assert reader.GetOutput().GetFieldData().GetArray("converged").GetValue(0) == 0
 PY
 echo "robust_newton: the block beyond its friction bound is a drift in every output"
+
+# The 3D pulled block under mu1 (datafiles/scene3d/block_friction.dat on a compliant layer):
+# mu = 0.09 gives mu1 = 0.09 q_n / g = 0.045 at the block's penetration q_n = p / cn = 1e-6 = g / 2,
+# below Q / P = 1e5 / 1e6 = 0.1 (and mu1 <= 0.09 at any depth): no equilibrium. Each
+# step is held by the slip directions' curvature, so no unheld step shows the drift; the failure
+# says that every node slips at its bound and what that means.
+dir=$work/slides3d
+sed -e 's/law=signorini/law=compliance-unilateral cn=1e12 g=2e-6/' -e 's/law=coulomb mu=0.5/law=mu1 mu=0.09/' \
+  datafiles/scene3d/block_friction.dat >"$dir.dat"
+grep -q "law=mu1 mu=0.09" "$dir.dat" || die "the 3D variant of block_friction.dat was not made (its cards changed?)"
+SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || true
+grep -q "sig-solve: Nv, .*every node with a friction bound slips at it.*no equilibrium" "$dir.log" ||
+  { grep sig-solve "$dir.log"; die "3D block beyond its friction bound: the failure does not say every node slips"; }
+echo "robust_newton: the 3D block beyond its friction bound fails naming the slip at every node"
 
 dir=$work/facing
 block "$dir.dat" 0.2,-1 pdas "CONTACT ref=3 obstacle=plane point=0,2 normal=0,-1 law=signorini"

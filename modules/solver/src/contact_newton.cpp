@@ -781,6 +781,15 @@ template <int d> void Driver<d>::finish(const ContactPoint& now) {
     else
       fail(NewtonFailure::iteration_limit, "no convergence within the iteration limit");
   }
+  // Every node that bears a friction bound slipping at it, with the residual stuck: the body
+  // may be loaded beyond what friction holds, a drift that the steps do not show as one where a
+  // slip direction's curvature holds each step (the 3D block under mu1 below its load's ratio).
+  if (!result_.converged && friction_ && !result_.history.empty() &&
+      result_.reason != NewtonFailure::drift && result_.reason != NewtonFailure::divergence &&
+      result_.history.back().stick == 0 && result_.history.back().slip > 0)
+    result_.failure += "; every node with a friction bound slips at it: if the tangential load "
+                       "exceeds what friction can hold, there is no equilibrium (check the load "
+                       "against the friction bound)";
   result_.normal_force.resize(m_);
   result_.tangential_force.resize((d - 1) * m_);
   for (int p = 0; p < m_; ++p) {
