@@ -92,6 +92,22 @@ grep -q "sig-solve: Nv, .*every node with a friction bound slips at it.*no equil
   { grep sig-solve "$dir.log"; die "3D block beyond its friction bound: the failure does not say every node slips"; }
 echo "robust_newton: the 3D block beyond its friction bound fails naming the slip at every node"
 
+# Penalty's stiff tangential springs on the Tresca half disc (datafiles/friction/hertz_coulomb.dat
+# with Tresca's threshold 1, N = 64, from rest; r = 38201 = 100 E / h, the robustness map's point):
+# once every node slips, the unheld step that reverses the slip crosses each node's stick window
+# |q_t| <= s / r (1e-5 of the step) between the step's geometric samples; found at the slip's
+# closest approach to 0, the body is held there and the solve converges, where it was called a
+# drift (an equilibrium exists: Q = 6.4 < the bound, 1 on each of Gamma3's 25 units of length).
+dir=$work/stiff_penalty
+sed -e 's/N=256/N=64/' -e 's/law=coulomb mu=0.4/law=tresca threshold=1/' -e '/^INITIAL/d' \
+  -e 's/^SOLVER method=pdas gamma=100/SOLVER method=penalty r=38201/' datafiles/friction/hertz_coulomb.dat >"$dir.dat"
+grep -q "law=tresca threshold=1" "$dir.dat" && grep -q "method=penalty r=38201" "$dir.dat" ||
+  die "the Tresca variant of hertz_coulomb.dat was not made (its cards changed?)"
+SIG_BIN=$bin drivers/chain.sh "$dir.dat" -o "$dir" >"$dir.log" 2>&1 || true
+grep -q "sig-solve: penalty .* converged in" "$dir.log" ||
+  { grep sig-solve "$dir.log"; die "stiff penalty on the Tresca half disc: not converged"; }
+echo "robust_newton: penalty r = 100 E / h on the Tresca half disc converges from rest ($(grep -o 'converged in [0-9]* iterations' "$dir.log"))"
+
 dir=$work/facing
 block "$dir.dat" 0.2,-1 pdas "CONTACT ref=3 obstacle=plane point=0,2 normal=0,-1 law=signorini"
 "$bin/sig-mesh" "$dir.dat" -o "$dir" >/dev/null

@@ -648,7 +648,11 @@ double Driver<d>::monotone_length(const ContactPoint& now, const Step& step, Con
 /// alpha (exact on a linear bulk), per node the first alpha in (2^-60, 1] at which its kernel
 /// differs from the one it had at 2^-60 by `departs(at_start, at_alpha)` (nodes that never do
 /// are left out; with `only_first`, only crossings before the least found so far). Geometric
-/// samples up from 2^-60 (an unheld step is long), then bisection.
+/// samples up from 2^-60 (an unheld step is long), then bisection. With `only_first` (where a
+/// node first holds), also the sample where the node's slip passes closest to 0: a stick window
+/// narrower than the samples' spacing (the penalty's |q_t| <= s / r at a large r, crossed in
+/// the middle of a step that reverses the slip) lies around it, and missing it took a held
+/// body for a drift (the Tresca half disc with penalty at r >= 30 E / h).
 template <int d>
 template <class Departs>
 std::vector<double> Driver<d>::crossings(const ContactPoint& from, const ContactPoint& to,
@@ -670,6 +674,20 @@ std::vector<double> Driver<d>::crossings(const ContactPoint& from, const Contact
       const double a = std::ldexp(1.0, -j);
       if (a >= first) break;
       (departs(start, at(p, a)) ? above : below) = a;
+    }
+    if (only_first && friction_) {
+      const Tan q0 = tangent_at<d>(from.q_t, p), dq = Tan(tangent_at<d>(to.q_t, p) - q0);
+      const double dq2 = squared(dq);
+      // argmin |q0 + a dq|: a = -q0.dq / |dq|^2, the dot product from the squared norms.
+      const double closest = dq2 > 0 ? -(squared(Tan(q0 + dq)) - squared(q0) - dq2) / (2 * dq2) : 0;
+      // Below the first departing sample (and the first crossing found), the power of 2 under
+      // it was sampled and did not depart: the bisection's lower end.
+      const double limit = std::min(above < 0 ? 1.0 : above, first);
+      const double under = std::ldexp(1.0, std::ilogb(closest));
+      if (closest > std::ldexp(1.0, -kFirst) && closest < limit && departs(start, at(p, closest))) {
+        below = under;
+        above = closest;
+      }
     }
     if (above < 0) continue;
     for (int i = 0; i < 60; ++i) {
