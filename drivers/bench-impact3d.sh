@@ -59,19 +59,11 @@ build_base "$out/base/ball_impact.dat" "$out/base" "the half ball (h = $h, gradi
   mesh material assemble
 point=$(deck_value "$template" CONTACT point) || die "no CONTACT point= in $template"
 
-# case -> "CONTACT fields|mass" (drivers/scene3d_impact.sh's strategies); no-contact has none.
-declare -A fields=(
-  [no-contact]="|consistent"
-  [signorini]="strategy=signorini|consistent"
-  [compliance]="strategy=compliance r=1e12|consistent"
-  [specific-penalty]="strategy=specific-penalty r=1e12|consistent"
-  [emm]="strategy=signorini|emm"
-  [two-step]="strategy=two-step|consistent"
-  [two-step-increment]="strategy=two-step persistency=increment|consistent"
-  [ipm]="strategy=ipm r=1e12 g=5e-4|consistent"
-  [ipm-emm]="strategy=ipm r=1e12 g=5e-4|emm"
-)
-cases=(no-contact signorini compliance specific-penalty emm two-step two-step-increment ipm ipm-emm)
+# case -> "CONTACT fields|mass": drivers/scene3d_impact.sh's strategies; no-contact has none.
+source "$root/drivers/lib/impact3d.sh"
+declare -A fields=([no-contact]="|consistent")
+for name in "${impact3d_methods[@]}"; do fields[$name]=${impact3d_fields[$name]}; done
+cases=(no-contact "${impact3d_methods[@]}")
 for name in "${cases[@]}"; do
   dir=$out/runs/$name
   mkdir -p "$dir"
