@@ -25,7 +25,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/scene.sh"
 usage() {
   cat <<USAGE
 usage: drivers/scene3d_crush.sh [--quick] [--steps S] [--no-getfem] [-o OUTDIR]
-  --quick       the deck's mesh only (a few seconds)
+  --quick       the deck's mesh only (about 17 s)
   --steps S     the several-step runs' load steps (default 5; the one-step runs always)
   --no-getfem   skip the GetFEM comparison
   -o OUTDIR     results folder (default out/scene3d_crush)
