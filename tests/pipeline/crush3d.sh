@@ -8,7 +8,7 @@
 # Dirichlet data and load steps). Checked on its summary.json:
 #  - every run converges, ours and GetFEM's;
 #  - our reaction on the top equals the sum of the contact forces to 1e-8 (measured 1e-14), and
-#    one and five load steps end at the same reaction (the crush has one equilibrium; 2e-14);
+#    one and five load steps end at the same reaction (the same equilibrium; 2e-14);
 #  - the penalty's compliant foundation gives way: its press force is below the exact methods'
 #    by more than 1e-6 and less than 1e-3 of it (measured 6.5e-5 at r = 1e4);
 #  - against GetFEM: pdas, alm and projection give its reaction at every load step to 1e-6
