@@ -64,18 +64,8 @@ if [ $quick -eq 1 ]; then
 else
   meshes=("0.25 0.3" "0.14 0.2" "0.1 0.15" "0.07 0.1")
 fi
-methods=(signorini compliance specific-penalty emm two-step two-step-increment ipm ipm-emm)
-# method -> "CONTACT fields|mass"
-declare -A fields=(
-  [signorini]="strategy=signorini|consistent"
-  [compliance]="strategy=compliance r=1e12|consistent"
-  [specific-penalty]="strategy=specific-penalty r=1e12|consistent"
-  [emm]="strategy=signorini|emm"
-  [two-step]="strategy=two-step|consistent"
-  [two-step-increment]="strategy=two-step persistency=increment|consistent"
-  [ipm]="strategy=ipm r=1e12 g=5e-4|consistent"
-  [ipm-emm]="strategy=ipm r=1e12 g=5e-4|emm"
-)
+source "$root/drivers/lib/impact3d.sh"
+methods=("${impact3d_methods[@]}")
 
 # The plane of the template (only its strategy fields change per method).
 point=$(deck_value "$template" CONTACT point) || die "no CONTACT point= in $template"
@@ -96,7 +86,7 @@ for mesh in "${meshes[@]}"; do
     dir=$out/m$k/$method
     mkdir -p "$dir"
     link_ds ../base "$dir" nopo mili tae
-    f=${fields[$method]}
+    f=${impact3d_fields[$method]}
     contact="CONTACT ref=3 obstacle=plane point=$point normal=0,0,1 ${f%|*}"
     deck_variant "$base/ball_impact.dat" "$dir/ball_impact.dat" --replace-card CONTACT "$contact" \
       --set TIME.mass="${f#*|}"
@@ -129,7 +119,7 @@ for method in "${methods[@]}"; do
   dir=$out/2d/$method
   mkdir -p "$dir"
   link_ds ../base "$dir" nopo mili tae
-  f=${fields[$method]}
+  f=${impact3d_fields[$method]}
   deck_variant "$base/ball.dat" "$dir/ball.dat" --set TIME.mass="${f#*|}" --replace-card CONTACT \
     "CONTACT ref=3 obstacle=plane point=0,$y2d normal=0,1 ${f%|*}"
   { run_stage contact "$dir/ball.dat" "$dir" && run_timed march "$dir/ball.dat" "$dir"; } ||

@@ -33,7 +33,8 @@ ROOT = Path(__file__).resolve().parent.parent
 CHART_TITLES = {"speed_accuracy": "speed against accuracy", "stability": "stability"}
 # The scene folders whose notes, datafiles/<name>/README.md, are named otherwise.
 NOTES_FOLDERS = {"friction_hertz": "friction", "scene3d_hertz": "scene3d",
-                 "scene3d_cattaneo": "scene3d", "scene3d_impact": "scene3d"}
+                 "scene3d_cattaneo": "scene3d", "scene3d_impact": "scene3d",
+                 "scene3d_crush": "scene3d"}
 
 
 class Scene:
