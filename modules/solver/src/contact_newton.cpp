@@ -649,10 +649,13 @@ double Driver<d>::monotone_length(const ContactPoint& now, const Step& step, Con
 /// differs from the one it had at 2^-60 by `departs(at_start, at_alpha)` (nodes that never do
 /// are left out; with `only_first`, only crossings before the least found so far). Geometric
 /// samples up from 2^-60 (an unheld step is long), then bisection. With `only_first` (where a
-/// node first holds), also the sample where the node's slip passes closest to 0: a stick window
-/// narrower than the samples' spacing (the penalty's |q_t| <= s / r at a large r, crossed in
-/// the middle of a step that reverses the slip) lies around it, and missing it took a held
-/// body for a drift (the Tresca half disc with penalty at r >= 30 E / h).
+/// node first holds) and penalty, also the sample where the node's slip passes closest to 0:
+/// penalty's stick window |q_t| <= s / r, narrower than the samples' spacing at a large r and
+/// crossed in the middle of a step that reverses the slip, lies around it, and missing it took a
+/// held body for a drift (the Tresca half disc at r >= 30 E / h). A method with multipliers
+/// sticks where |t / w + r q_t| <= s, its multiplier moving with the step: sampling its slip's
+/// closest approach there cut the Tresca half disc's unheld steps elsewhere and made 9 points of
+/// its map cycle (drivers/robustness.sh, m64 from the scene's start).
 template <int d>
 template <class Departs>
 std::vector<double> Driver<d>::crossings(const ContactPoint& from, const ContactPoint& to,
@@ -675,7 +678,7 @@ std::vector<double> Driver<d>::crossings(const ContactPoint& from, const Contact
       if (a >= first) break;
       (departs(start, at(p, a)) ? above : below) = a;
     }
-    if (only_first && friction_) {
+    if (only_first && friction_ && !method_.has_multipliers()) {
       const Tan q0 = tangent_at<d>(from.q_t, p), dq = Tan(tangent_at<d>(to.q_t, p) - q0);
       const double dq2 = squared(dq);
       // argmin |q0 + a dq|: a = -q0.dq / |dq|^2, the dot product from the squared norms.
