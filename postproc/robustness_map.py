@@ -219,8 +219,10 @@ THEORY = """\
   at factor 1e-2, rho = 0.990 and about 2300 iterations for eps = 1e-10, beyond maxit. The
   thesis's Nv for c <= 10 on the ring (Table 7.1) is the same contraction.
 - **Penalty**: its r is a model parameter (the penetration is p / r), not an algorithm's; at a
-  large r the piecewise-linear springs are stiff and full Newton steps on them cycle between
-  spring states (the map names it), at a small r the body sinks into the foundation by p / r.
+  large r the piecewise-linear springs are stiff: a node sticks only while |q_t| <= s / r, a
+  window the steps cross in a fraction 1 / r of their length, and the Newton's path between
+  spring states grows long (the map names where it stops), at a small r the body sinks into
+  the foundation by p / r.
 - **Non-monotone friction (scene 4's ball and square)**: mu(|u_t|) falls with the slip, the
   problem is not monotone and the convexification loop (4.110)-(4.112) converges only where
   the fixed point contracts (ALGORITHMS.md 1.3: p0 m_mu + mu0 L_p < alpha0); a failure there is
