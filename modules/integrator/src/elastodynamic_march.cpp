@@ -29,13 +29,14 @@ std::string watched_entry(const ContactBoundary& boundary, const Eigen::VectorXd
 } // namespace
 
 ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, DynamicState initial)
-    : scheme_(scheme), state_(std::move(initial)) {
+    : scheme_(scheme), state_(std::move(initial)), products_(scheme_.products(state_)) {
   scheme_.factorize(); // here, not in the first step: a failure before the march starts
 }
 
 ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBoundary& boundary,
                                        const ContactStrategy& strategy, DynamicState initial)
-    : scheme_(scheme), boundary_(&boundary), strategy_(&strategy), state_(std::move(initial)) {
+    : scheme_(scheme), boundary_(&boundary), strategy_(&strategy), state_(std::move(initial)),
+      products_(scheme_.products(state_)) {
   SIG_VERIFY(boundary.size() > 0, "march: a contact boundary without nodes");
   SIG_VERIFY(boundary.B.cols() == scheme.problem().num_dofs(),
              "march: the contact boundary has " << boundary.B.cols() << " dofs, the problem "
@@ -66,7 +67,7 @@ ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBo
 StepRecord ElastodynamicSteps::start() const {
   StepRecord r;
   r.time = state_.time;
-  r.energy = scheme_.energy(state_);
+  r.energy = scheme_.energy(state_, products_);
   if (boundary_ != nullptr) {
     // No secant law before the first step: no interface energy.
     r.energy.max_penetration = std::max(q_now_.maxCoeff(), 0.0);
@@ -86,12 +87,13 @@ StepRecord ElastodynamicSteps::step(int) {
   r.iterations = 1;
   const Eigen::VectorXd f_bar = scheme_.step_load(state_.time);
   DynamicState next;
+  TimeScheme::StateProducts next_products;
   if (boundary_ != nullptr) {
     const ContactBoundary& boundary = *boundary_;
     const int p = boundary.size();
     // 1. The step without contact force, on the components: w_free = S_c^{-1} g (the forward
     //    half of the step's solve).
-    const Eigen::VectorXd g = condensed_->condense(scheme_.step_right_side(state_, f_bar));
+    const Eigen::VectorXd g = condensed_->condense(scheme_.step_right_side(products_, f_bar));
     const Eigen::VectorXd w_free = condensed_->solve(g);
 
     // 2. The strategy's forces at the end of the step, on the step condensed onto the normal
@@ -142,17 +144,21 @@ StepRecord ElastodynamicSteps::step(int) {
                                      ? Eigen::VectorXd(Eigen::VectorXd::Zero(p))
                                      : Eigen::VectorXd(x_next.tail(slips) - x_now_.tail(slips));
     r.work.load = f_bar.dot(next.u - state_.u);
-    r.energy = scheme_.energy(next);
+    next_products = scheme_.products(next);
+    r.energy = scheme_.energy(next, next_products);
     add_contact_step(r.energy, r.work, forces.normal_force, forces.tangential_force, q_now_, q_next,
                      slip, interface_energy(forces.law, boundary.setting.weight, q_next));
     x_now_ = x_next;
     q_now_ = q_next;
   } else {
-    next = scheme_.advance(state_, f_bar);
+    next = scheme_.after_increment(
+        state_, scheme_.solve_step_operator(scheme_.step_right_side(products_, f_bar)));
     r.work.load = f_bar.dot(next.u - state_.u);
-    r.energy = scheme_.energy(next);
+    next_products = scheme_.products(next);
+    r.energy = scheme_.energy(next, next_products);
   }
   state_ = std::move(next);
+  products_ = std::move(next_products);
   return r;
 }
 

@@ -33,14 +33,17 @@ TimeScheme::~TimeScheme() = default;
 // (4 / k^2) M u_n term, whose rounding, once differenced into v_{n+1} = (2 / k) d - v_n, grows
 // with the distance the body has travelled.
 DynamicState TimeScheme::advance(const DynamicState& state, const Eigen::VectorXd& f_bar) const {
-  return after_increment(state, solve_step_operator(step_right_side(state, f_bar)));
+  return after_increment(state, solve_step_operator(step_right_side(products(state), f_bar)));
 }
 
-Eigen::VectorXd TimeScheme::step_right_side(const DynamicState& state,
-                                            const Eigen::VectorXd& f_bar) const {
+TimeScheme::StateProducts TimeScheme::products(const DynamicState& state) const {
   check_state(state);
-  return 2.0 * f_bar - 2.0 * product(problem_.K, state.u) +
-         (4.0 / time_step()) * product(problem_.M, state.v);
+  return {product(problem_.K, state.u), product(problem_.M, state.v)};
+}
+
+Eigen::VectorXd TimeScheme::step_right_side(const StateProducts& state,
+                                            const Eigen::VectorXd& f_bar) const {
+  return 2.0 * f_bar - 2.0 * state.Ku + (4.0 / time_step()) * state.Mv;
 }
 
 DynamicState TimeScheme::after_increment(const DynamicState& state,
@@ -53,11 +56,10 @@ DynamicState TimeScheme::after_increment(const DynamicState& state,
   return next;
 }
 
-EnergyRecord TimeScheme::energy(const DynamicState& state) const {
-  check_state(state);
+EnergyRecord TimeScheme::energy(const DynamicState& state, const StateProducts& products) const {
   EnergyRecord r;
-  r.kinetic = 0.5 * state.v.dot(product(problem_.M, state.v));
-  r.elastic = 0.5 * state.u.dot(product(problem_.K, state.u));
+  r.kinetic = 0.5 * state.v.dot(products.Mv);
+  r.elastic = 0.5 * state.u.dot(products.Ku);
   r.total = r.kinetic + r.elastic;
   return r;
 }

@@ -184,7 +184,7 @@ int march_main(int argc, char** argv) {
                              "built from the whole mass's moments and checked positive definite "
                              "as a whole (run sig-march without mpirun, or take mass=consistent "
                              "or lumped)");
-    const std::string default_backend = hyperelastic || distributed ? "mumps" : "cholmod";
+    const std::string default_backend = hyperelastic ? "mumps" : "cholmod";
     const std::string backend =
         solver_card
             ? solver_card->choice("linear", {"cholmod", "umfpack", "mumps"}, default_backend)
@@ -280,7 +280,8 @@ int march_main(int argc, char** argv) {
       for (sig::DynamicState& s : history.outputs)
         s = sig::DynamicState{s.time, reduced.restrict(s.u), reduced.restrict(s.v)};
     } else {
-      // The scheme's step operator K + (4 / k^2) M is factorized here, once.
+      // The scheme's step operator K + (4 / k^2) M, factorized once by the march (with contact,
+      // its contact components the Schur complement: integrator/dynamic_contact.hpp).
       sig::Elastodynamics problem = sig::reduced_elastodynamics(reduced, mass);
       problem.rank_rows = system.rank_rows;
       auto scheme = sig::make_time_scheme(time.scheme, std::move(problem), time.k, backend);

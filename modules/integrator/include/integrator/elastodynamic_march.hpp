@@ -31,6 +31,7 @@
 // strategy's iterations (1, the linear solve, without contact).
 #include "integrator/dynamic_contact.hpp"
 #include "integrator/march.hpp"
+#include "integrator/time_scheme.hpp"
 
 #include <optional>
 #include <string>
@@ -65,8 +66,9 @@ private:
   /// p .. d p - 1 with friction: the slips, d - 1 a node (3D: along t1, t2, node i's at p + 2 i)
   std::vector<int> tangential_dof_;
   DynamicState state_;
-  Eigen::VectorXd x_now_; ///< the condensed components of the state (G u)
-  Eigen::VectorXd q_now_; ///< the penetrations of the state
+  TimeScheme::StateProducts products_; ///< of state_: its energy, the next step's right side
+  Eigen::VectorXd x_now_;              ///< the condensed components of the state (G u)
+  Eigen::VectorXd q_now_;              ///< the penetrations of the state
 };
 
 /// Without contact: `steps` steps of `scheme` from `initial`, the work of the loads accumulating

@@ -50,14 +50,21 @@ public:
   ///     (K + (4 / k^2) M) d = 2 f_bar - 2 K u_n + (4 / k) M v_n,  v_{n+1} = (2 / k) d - v_n
   /// (derivations in midpoint.cpp and newmark.cpp); they differ only in f_bar.
   DynamicState advance(const DynamicState& state, const Eigen::VectorXd& f_bar) const;
+  /// K u and M v of a state, summed over the ranks: what its energy and the right side of the
+  /// step from it read (a march forms them once a step).
+  struct StateProducts {
+    Eigen::VectorXd Ku, Mv;
+  };
+  StateProducts products(const DynamicState& state) const;
   /// The right side 2 f_bar - 2 K u_n + (4 / k) M v_n of the increment's equation (whole, on
-  /// every rank).
-  Eigen::VectorXd step_right_side(const DynamicState& state, const Eigen::VectorXd& f_bar) const;
+  /// every rank), from the products of the state.
+  Eigen::VectorXd step_right_side(const StateProducts& state, const Eigen::VectorXd& f_bar) const;
   /// The state at state.time + k of the increment d: u_n + d, (2 / k) d - v_n.
   DynamicState after_increment(const DynamicState& state, const Eigen::VectorXd& d) const;
-  /// 1/2 v.M v + 1/2 u.K u of a state (energy.hpp's energy_of, the products summed over the
-  /// ranks).
-  EnergyRecord energy(const DynamicState& state) const;
+  /// 1/2 v.M v + 1/2 u.K u of a state and its products (energy.hpp's energy_of, the products
+  /// summed over the ranks).
+  EnergyRecord energy(const DynamicState& state, const StateProducts& products) const;
+  EnergyRecord energy(const DynamicState& state) const { return energy(state, products(state)); }
   /// The load f_bar the scheme applies over [t, t + k]: the discrete energy changes by
   /// f_bar . (u_{n+1} - u_n) over the step (the work of the external forces).
   virtual Eigen::VectorXd step_load(double t) const = 0;
