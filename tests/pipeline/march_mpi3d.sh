@@ -14,7 +14,9 @@
 #           through the impact (T = 0.004), P = 2, 4
 #   ball    scene 8a's ball (2D) in the window of drivers/scene8a.sh --quick: midpoint +
 #           Signorini, consistent mass, through the impact and the rebound, P = 2
-# About 20 s (4 ranks on 2 cores: a march's collective calls wait for the cores).
+#   newmark the same ball by Newmark with the lumped mass (a rank's diagonal off its rows
+#           empty), P = 2
+# About 25 s (4 ranks on 2 cores: a march's collective calls wait for the cores).
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 source "$root/drivers/lib/deck.sh"
@@ -75,6 +77,9 @@ deck_variant "$root/datafiles/scene8a/ball.dat" "$ball" --set CONTACT.point=0,14
   --set TIME.mass=consistent --set OUTPUT.vtk=no
 echo "SOLVER linear=mumps" >>"$ball"
 same_answers ball "$ball" 2
+newmark=$work/newmark.dat
+deck_variant "$ball" "$newmark" --set TIME.scheme=newmark --set TIME.mass=lumped
+same_answers newmark "$newmark" 2
 
 # A hyperelastic body marches in one process: refused under mpirun on MATERIAL law=, before any
 # file is written.
@@ -90,4 +95,4 @@ mpirun --oversubscribe -np 2 "$bin/sig-march" "$hyper" -o "$work/hyper" >"$work/
   grep -qF "a hyperelastic body marches in one process" "$work/hyper.log" &&
   [ ! -e "$work/hyper/case.hist" ] ||
   fail "law=svk under mpirun: not refused on MATERIAL law= (exit $status): $(cat "$work/hyper.log")"
-finish "the 3D marches in velocity, the 3D frictional impact and scene 8a's impact give one process's answers as 1, 2 and 4 ranks; a hyperelastic march refused under mpirun"
+finish "the 3D marches in velocity, the 3D frictional impact and scene 8a's impact (midpoint, Newmark) give one process's answers as 1, 2 and 4 ranks; a hyperelastic march refused under mpirun"

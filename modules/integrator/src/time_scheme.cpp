@@ -20,8 +20,13 @@ TimeScheme::TimeScheme(Elastodynamics problem, double k, const std::string& line
              "K is " << problem_.K.rows() << " x " << problem_.K.cols() << ", M is "
                      << problem_.M.rows() << " x " << problem_.M.cols()
                      << ": both must be square and of the same size");
+  // Stored zeros carry nothing (the consistent mass on the stiffness's pattern, the EMM's rows
+  // of Gamma3, a rank's lumped mass off its rows): without them a product with M costs less and
+  // a rank's step operator has only its rows, its node blocks whole (solver/nodal_frames.hpp).
+  problem_.M.prune(0.0);
   S_ = problem_.K + (4.0 / (k_ * k_)) * problem_.M;
-  // The backend's name is checked here, before any step.
+  // The backend's name is checked here, before any step: an unknown one lists the choices.
+  backend_traits(linear_solver_);
   SIG_VERIFY(!problem_.rank_rows || linear_solver_ == "mumps",
              "the step operator of rank rows is factorized by MUMPS over the ranks, not by "
                  << linear_solver_);

@@ -11,8 +11,7 @@
 //     S d = 2 f_bar - 2 K u_n + (4 / k) M v_n - 2 G^T lambda,   S = K + (4 / k^2) M,
 // so the components' increment w = G d obeys, with S_c the Schur complement of S (turned into
 // the nodes' contact frames) onto the components and g = the condensed right side,
-//     S_c w = g - 2 lambda,   i.e.   A (w - w_free) + lambda = 0,  A = S_c / 2,  w_free = S_c^{-1}
-//     g
+//     S_c w = g - 2 lambda,  i.e.  A (w - w_free) + lambda = 0,  A = S_c / 2,  w_free = S_c^-1 g
 // (C = G S^{-1} G^T = S_c^{-1}): a small problem on the p contact nodes (p, or d p with friction),
 // whatever the contact law. S is factorized once with the components as its Schur complement
 // (solver/contact_condensation.hpp: the machinery of the marches in velocity; under mpirun MUMPS
