@@ -13,7 +13,8 @@
 # hashing here. --all runs every stage.
 #
 # --np P runs sig-assemble, and sig-solve (a small-strain contact deck with linear=mumps) or
-# sig-march (a march in velocity, backward-euler or quasistatic, with linear=mumps), as P ranks
+# sig-march (a linear body's march, midpoint, newmark, backward-euler or quasistatic, with
+# linear=mumps; not mass=emm), as P ranks
 # under mpirun: each rank assembles the rows of its part of K into its part case.tae.r<rank> and
 # reads them back (README "Distributed solve"); the other stages run as one process. A case
 # assembled on another number of ranks (or by one process, for --np P >= 2, and the other way

@@ -45,13 +45,19 @@ int lifted(int a) {
 }
 
 /// The 2D matrix A on the in-plane dofs of the 3D numbering, `out_of_plane` on the third
-/// component of each node (diagonal, uncoupled).
+/// component of each node (diagonal, uncoupled). Every component of a node coupled to every
+/// component of a node it couples with (stored zeros): the nodal pattern of an assembled matrix,
+/// which the contact condensation turns into the nodes' frames in place.
 Eigen::SparseMatrix<double> lift(const Eigen::SparseMatrix<double>& A, double out_of_plane) {
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index j = 0; j < A.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
-      entries.emplace_back(lifted(static_cast<int>(it.row())), lifted(static_cast<int>(it.col())),
-                           it.value());
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const auto a = static_cast<int>(it.row()), b = static_cast<int>(it.col());
+      entries.emplace_back(lifted(a), lifted(b), it.value());
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          entries.emplace_back(3 * (a / 2) + r, 3 * (b / 2) + c, 0.0);
+    }
   const auto nodes = A.rows() / 2;
   for (Eigen::Index i = 0; i < nodes; ++i)
     entries.emplace_back(3 * i + 1, 3 * i + 1, out_of_plane);
@@ -142,6 +148,10 @@ TEST_P(ObliqueDrop3d, IsThe2dMarchWhenThe3dBodyReducesToIt) {
         rows.emplace_back(2 * i + t, 3 * plane.nodes[static_cast<std::size_t>(i)] + c, frame(c, t));
   space.tangential.resize(2 * plane.size(), 3 * mesh.num_nodes());
   space.tangential.setFromTriplets(rows.begin(), rows.end());
+  for (int i = 0; i < plane.size(); ++i) { // the frames by which the step is condensed
+    space.first_dof[static_cast<std::size_t>(i)] = 3 * plane.nodes[static_cast<std::size_t>(i)];
+    space.frame[static_cast<std::size_t>(i)] = frame;
+  }
   const DynamicState initial3{0.0, lift(initial.u), lift(initial.v)};
 
   const Marched two = march_on(*scheme, plane, strategy, initial);

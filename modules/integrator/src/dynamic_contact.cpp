@@ -3,8 +3,8 @@
 #include "core/error.hpp"
 #include "integrator/elastodynamics.hpp"
 #include "integrator/time_scheme.hpp"
+#include "solver/contact_condensation.hpp"
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -38,21 +38,59 @@ Eigen::SparseMatrix<double> stacked(const Eigen::SparseMatrix<double>& top,
 
 } // namespace
 
-CondensedContact condense_contact(const TimeScheme& scheme, const ContactBoundary& boundary) {
-  CondensedContact c;
-  c.G = boundary.setting.has_friction() ? stacked(boundary.B, boundary.tangential) : boundary.B;
-  const Eigen::MatrixXd Gt = Eigen::MatrixXd(c.G.transpose());
-  c.Z = scheme.solve_step_operator(Gt);
-  Eigen::MatrixXd C = c.G * c.Z;
-  C = 0.5 * (C + C.transpose()).eval();
-  const Eigen::LLT<Eigen::MatrixXd> cholesky(2.0 * C);
-  SIG_VERIFY(cholesky.info() == Eigen::Success, "the step operator condensed on the "
-                                                    << boundary.size()
-                                                    << " contact nodes is not positive definite "
-                                                       "(a node in two contact elements?)");
-  c.A = cholesky.solve(Eigen::MatrixXd::Identity(C.rows(), C.cols()));
-  c.A = 0.5 * (c.A + c.A.transpose()).eval();
-  return c;
+CondensedContact::CondensedContact(const TimeScheme& scheme, const ContactBoundary& boundary) {
+  const int p = boundary.size();
+  SIG_VERIFY(std::ssize(boundary.first_dof) == p && std::ssize(boundary.frame) == p,
+             "contact boundary: " << boundary.first_dof.size() << " first dofs and "
+                                  << boundary.frame.size() << " frames for " << p << " nodes");
+  const bool friction = boundary.setting.has_friction();
+  G_ = friction ? stacked(boundary.B, boundary.tangential) : boundary.B;
+  // S is positive definite (the mass holds every rigid motion): CHOLMOD factorizes it whole.
+  condensation_ = std::make_unique<ContactCondensation>(
+      scheme.step_operator(), boundary.first_dof, boundary.frame, friction, scheme.linear_solver(),
+      true, scheme.rank_rows());
+  // G's row of node i's normal is i, of its slips p + (d - 1) i + k: where the condensation
+  // keeps them.
+  position_ = condensation_->normal_unknowns();
+  const std::vector<int>& slips = condensation_->tangential_unknowns();
+  position_.insert(position_.end(), slips.begin(), slips.end());
+  const auto m = std::ssize(position_);
+  SIG_VERIFY(m == G_.rows(), "contact boundary: " << G_.rows() << " components for " << m
+                                                  << " unknowns of the condensation");
+  const Eigen::MatrixXd& condensed = condensation_->schur();
+  Eigen::MatrixXd Sc(m, m);
+  for (Eigen::Index a = 0; a < m; ++a)
+    for (Eigen::Index b = 0; b < m; ++b)
+      Sc(a, b) = condensed(position_[a], position_[b]);
+  Sc = 0.5 * (Sc + Sc.transpose()).eval();
+  schur_.compute(Sc);
+  SIG_VERIFY(schur_.info() == Eigen::Success, "the step operator condensed on the "
+                                                  << p
+                                                  << " contact nodes is not positive definite");
+  A_ = 0.5 * Sc;
+}
+
+CondensedContact::~CondensedContact() = default;
+CondensedContact::CondensedContact(CondensedContact&&) noexcept = default;
+CondensedContact& CondensedContact::operator=(CondensedContact&&) noexcept = default;
+
+Eigen::VectorXd CondensedContact::condense(const Eigen::VectorXd& b) {
+  const Eigen::VectorXd condensed = condensation_->condense(b);
+  Eigen::VectorXd g(std::ssize(position_));
+  for (Eigen::Index a = 0; a < g.size(); ++a)
+    g[a] = condensed[position_[a]];
+  return g;
+}
+
+Eigen::VectorXd CondensedContact::increment(const Eigen::VectorXd& w) {
+  Eigen::VectorXd unknowns(w.size());
+  for (Eigen::Index a = 0; a < w.size(); ++a)
+    unknowns[position_[a]] = w[a];
+  return condensation_->expand(unknowns);
+}
+
+std::string CondensedContact::ordering() const {
+  return condensation_->ordering();
 }
 
 } // namespace sig

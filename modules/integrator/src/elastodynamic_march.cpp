@@ -29,11 +29,14 @@ std::string watched_entry(const ContactBoundary& boundary, const Eigen::VectorXd
 } // namespace
 
 ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, DynamicState initial)
-    : scheme_(scheme), state_(std::move(initial)) {}
+    : scheme_(scheme), state_(std::move(initial)), products_(scheme_.products(state_)) {
+  scheme_.factorize(); // here, not in the first step: a failure before the march starts
+}
 
 ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBoundary& boundary,
                                        const ContactStrategy& strategy, DynamicState initial)
-    : scheme_(scheme), boundary_(&boundary), strategy_(&strategy), state_(std::move(initial)) {
+    : scheme_(scheme), boundary_(&boundary), strategy_(&strategy), state_(std::move(initial)),
+      products_(scheme_.products(state_)) {
   SIG_VERIFY(boundary.size() > 0, "march: a contact boundary without nodes");
   SIG_VERIFY(boundary.B.cols() == scheme.problem().num_dofs(),
              "march: the contact boundary has " << boundary.B.cols() << " dofs, the problem "
@@ -49,22 +52,22 @@ ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBo
                  (boundary.watched.rows() == 0 || boundary.watched.cols() == boundary.B.cols()),
              "march: " << boundary.watched.rows() << " x " << boundary.watched.cols()
                        << " watched rows for " << boundary.watched_gap.size() << " gaps");
-  condensed_ = condense_contact(scheme, boundary);
+  condensed_.emplace(scheme, boundary);
   const int p = boundary.size();
   normal_dof_.resize(p);
   std::iota(normal_dof_.begin(), normal_dof_.end(), 0);
-  if (condensed_.G.rows() > p) {
-    tangential_dof_.resize(condensed_.G.rows() - p); // d - 1 per node, node i's at (d - 1) i
+  if (condensed_->G().rows() > p) {
+    tangential_dof_.resize(condensed_->G().rows() - p); // d - 1 per node, node i's at (d - 1) i
     std::iota(tangential_dof_.begin(), tangential_dof_.end(), p);
   }
-  x_now_ = condensed_.G * state_.u;
+  x_now_ = condensed_->G() * state_.u;
   q_now_ = x_now_.head(p) - boundary.geometric_gap;
 }
 
 StepRecord ElastodynamicSteps::start() const {
   StepRecord r;
   r.time = state_.time;
-  r.energy = energy_of(scheme_.problem(), state_);
+  r.energy = scheme_.energy(state_, products_);
   if (boundary_ != nullptr) {
     // No secant law before the first step: no interface energy.
     r.energy.max_penetration = std::max(q_now_.maxCoeff(), 0.0);
@@ -82,25 +85,28 @@ StepRecord ElastodynamicSteps::step(int) {
   StepRecord r;
   r.time = state_.time + k;
   r.iterations = 1;
-  // 1. The step without contact force.
   const Eigen::VectorXd f_bar = scheme_.step_load(state_.time);
-  DynamicState next = scheme_.advance(state_, f_bar);
+  DynamicState next;
+  TimeScheme::StateProducts next_products;
   if (boundary_ != nullptr) {
     const ContactBoundary& boundary = *boundary_;
     const int p = boundary.size();
-    const Eigen::VectorXd x_free = condensed_.G * next.u;
+    // 1. The step without contact force, on the components: w_free = S_c^{-1} g (the forward
+    //    half of the step's solve).
+    const Eigen::VectorXd g = condensed_->condense(scheme_.step_right_side(products_, f_bar));
+    const Eigen::VectorXd w_free = condensed_->solve(g);
 
     // 2. The strategy's forces at the end of the step, on the step condensed onto the normal
     //    displacements and the slips (dynamic_contact.hpp) written for the increment
-    //    w = x - x_now: A w + lambda = A (x_free - x_now), q_n = w_n - (d - x_now,n), the slip
+    //    w = x - x_now: A w + lambda = A w_free = g / 2, q_n = w_n - (d - x_now,n), the slip
     //    w_t the tangential displacement over the step; starting from the free step.
     CondensedProblem problem;
-    problem.S = condensed_.A;
-    problem.f = condensed_.A * (x_free - x_now_);
+    problem.S = condensed_->A();
+    problem.f = 0.5 * g;
     problem.normal_dof = normal_dof_;
     problem.tangential_dof = tangential_dof_;
     problem.gap = boundary.geometric_gap - x_now_.head(p);
-    CondensedBulk bulk(std::move(problem), {}, x_free - x_now_);
+    CondensedBulk bulk(std::move(problem), {}, w_free);
     const ContactStepStart start{q_now_, boundary.B * state_.v, k};
     const ContactStepSolution forces = strategy_->solve(bulk, boundary.setting, start);
     r.iterations = forces.iterations;
@@ -114,41 +120,50 @@ StepRecord ElastodynamicSteps::step(int) {
       return r;
     }
 
-    // 3. Their response: d = d_free - 2 Z lambda. In free flight lambda = 0 and the free step is
-    //    the step.
+    // 3. Their response, exactly: w = S_c^{-1} (g - 2 lambda), and the increment of the whole
+    //    body with those components (the backward half). In free flight lambda = 0 and the free
+    //    step is the step.
     Eigen::VectorXd lambda = forces.normal_force;
     const auto slips = std::ssize(tangential_dof_);
     if (slips > 0) {
       lambda.resize(p + slips);
       lambda << forces.normal_force, forces.tangential_force;
     }
-    if ((lambda.array() != 0.0).any()) {
-      const Eigen::VectorXd correction = condensed_.Z * lambda;
-      next.u -= 2.0 * correction;
-      next.v -= (4.0 / k) * correction;
-    }
+    const Eigen::VectorXd w = (lambda.array() != 0.0).any()
+                                  ? Eigen::VectorXd(condensed_->solve(g - 2.0 * lambda))
+                                  : w_free;
+    next = scheme_.after_increment(state_, condensed_->increment(w));
     if (const std::string entered = watched_entry(boundary, next.u); !entered.empty()) {
       r.converged = false;
       r.failure = entered;
       return r;
     }
-    const Eigen::VectorXd x_next = condensed_.G * next.u;
+    const Eigen::VectorXd x_next = condensed_->G() * next.u;
     const Eigen::VectorXd q_next = x_next.head(p) - boundary.geometric_gap;
     const Eigen::VectorXd slip = slips == 0
                                      ? Eigen::VectorXd(Eigen::VectorXd::Zero(p))
                                      : Eigen::VectorXd(x_next.tail(slips) - x_now_.tail(slips));
     r.work.load = f_bar.dot(next.u - state_.u);
-    r.energy = energy_of(scheme_.problem(), next);
+    next_products = scheme_.products(next);
+    r.energy = scheme_.energy(next, next_products);
     add_contact_step(r.energy, r.work, forces.normal_force, forces.tangential_force, q_now_, q_next,
                      slip, interface_energy(forces.law, boundary.setting.weight, q_next));
     x_now_ = x_next;
     q_now_ = q_next;
   } else {
+    next = scheme_.after_increment(
+        state_, scheme_.solve_step_operator(scheme_.step_right_side(products_, f_bar)));
     r.work.load = f_bar.dot(next.u - state_.u);
-    r.energy = energy_of(scheme_.problem(), next);
+    next_products = scheme_.products(next);
+    r.energy = scheme_.energy(next, next_products);
   }
   state_ = std::move(next);
+  products_ = std::move(next_products);
   return r;
+}
+
+std::string ElastodynamicSteps::ordering() const {
+  return condensed_ ? condensed_->ordering() : scheme_.ordering();
 }
 
 MarchHistory march(const TimeScheme& scheme, const DynamicState& initial, int steps,

@@ -87,13 +87,17 @@ std::string ContactCondensation::ordering() const {
   return schur_->ordering();
 }
 
+const Eigen::MatrixXd& ContactCondensation::schur() const {
+  return schur_->matrix();
+}
+
 const MumpsStatistics* ContactCondensation::mumps_statistics() const {
   return schur_->mumps_statistics();
 }
 
 CondensedProblem ContactCondensation::problem(const Eigen::VectorXd& f) {
   CondensedProblem problem;
-  problem.S = schur_->matrix();
+  problem.S = schur();
   problem.f = condense(f);
   problem.gap = Eigen::VectorXd::Zero(contacts());
   problem.normal_dof = normal_dof_;

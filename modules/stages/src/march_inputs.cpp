@@ -91,6 +91,8 @@ ContactBoundary contact_boundary(const ContactElements& elements, const Mesh& me
   for (int i = 0; i < p; ++i) {
     const int first = reduced.contact_node_first_dof(elements.node[i], d);
     const ContactFrame frame = elements.frame(i);
+    b.first_dof.push_back(first);
+    b.frame.push_back(frame);
     for (int component = 0; component < d; ++component) {
       normal.emplace_back(i, first + component, -elements.normal[i][component]);
       for (int k = 0; k < d - 1; ++k)

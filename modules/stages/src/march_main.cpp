@@ -29,17 +29,21 @@
 // stages/finite_strain_march.hpp). A step whose Newton fails stops the march: the files hold the
 // steps done, HIST converged = 0, a warning is printed and the stage exits 0.
 //
-// Under `mpirun -np P` (the marches in velocity: TIME scheme=backward-euler or quasistatic, with
-// SOLVER linear=mumps) every rank holds the rows of the step matrix's operators (K, M, V, the
-// memory terms) of its nodes (a METIS partition, stages/rank_rows.hpp), read streaming off
-// case.tae, and MUMPS factorizes the step matrix over them once, keeping the contact unknowns as
-// its Schur complement on rank 0. Each step's right side is formed from every rank's rows (the
-// products summed over the ranks), the contact problem of the step (its Newton, and the
-// convexification loop of FRICTION law=nonmonotone) is solved on the complement every rank
-// receives, and rank 0 alone writes case.hist and steps.csv, which record the ranks, once every
-// rank is done. A rank that fails ends the job (MPI_Abort): no file is written. The midpoint and
-// Newmark schemes and the hyperelastic march (TIME scheme=midpoint) are refused under mpirun on
-// the TIME card.
+// Under `mpirun -np P` (the linear body's marches: midpoint and Newmark with every strategy and
+// friction law, and the marches in velocity, backward-euler and quasistatic; SOLVER
+// linear=mumps) every rank holds the rows of the step matrix's operators (K, M, V, the memory
+// terms) of its nodes (a METIS partition, stages/rank_rows.hpp), read streaming off case.tae or
+// its parts, and MUMPS factorizes the step matrix over them once, keeping the contact unknowns
+// as its Schur complement on rank 0 (integrator/dynamic_contact.hpp,
+// integrator/linear_contact_march.hpp: one condensation for both). Each step's right side is
+// formed from every rank's rows (the products summed over the ranks), the contact problem of
+// the step (the strategy's or the Newton's, and the convexification loop of FRICTION
+// law=nonmonotone) is solved on the complement every rank receives, and rank 0 alone writes
+// case.hist and energy.csv or steps.csv, which record the ranks, once every rank is done. A rank
+// that fails ends the job (MPI_Abort): no file is written. Refused under mpirun: a hyperelastic
+// body (MATERIAL law=: its Newton matrix is assembled again at every iteration from the whole
+// state, on one process) and mass=emm (TIME mass=: the Equivalent Mass Matrix is built from the
+// whole mass's moments and checked positive definite as a whole).
 #include "stages/stage_mains.hpp"
 
 #include "assembly/dirichlet.hpp"
@@ -106,9 +110,11 @@ int march_main(int argc, char** argv) {
                  "Coulomb cone, two slips a node), the quasistatic and backward-Euler marches "
                  "in velocity with their friction laws (two slip rates a node); "
                  "SOLVER candidate_gap= condenses only the contact nodes near the obstacle. "
-                 "Under mpirun -np P the marches in velocity (backward-euler, quasistatic; "
-                 "SOLVER linear=mumps) factorize their step matrix by MUMPS over the ranks, each "
-                 "holding the rows of its METIS part of the mesh.",
+                 "Under mpirun -np P the linear body's marches (midpoint, newmark, "
+                 "backward-euler, quasistatic; SOLVER linear=mumps) factorize their step matrix "
+                 "by MUMPS over the ranks, each holding the rows of its METIS part of the mesh, "
+                 "the contact unknowns its Schur complement; the hyperelastic march and "
+                 "mass=emm run in one process.",
       .reads = {"DATAFILE", "OUTDIR/case.nopo (sig-mesh)",
                 "OUTDIR/case.tae (sig-assemble; a MATERIAL with rho > 0 gives the mass)",
                 "OUTDIR/case.mili (sig-material: the laws, hyperelastic or not)",
@@ -142,14 +148,6 @@ int march_main(int argc, char** argv) {
          inertia = scheme.march != sig::MarchKind::quasistatic](const std::string& library) {
           return deck + ": " + sig::explain_failed_factorization(outdir, nullptr, inertia, library);
         });
-    // Under mpirun: the marches in velocity, whose step matrix MUMPS factorizes over the ranks.
-    if (distributed && scheme.march != sig::MarchKind::quasistatic &&
-        scheme.march != sig::MarchKind::viscoelastodynamics)
-      datafile.require("TIME").fail("scheme",
-                                    "scheme=" + time.scheme +
-                                        " marches in one process: under mpirun sig-march takes "
-                                        "the marches in velocity (scheme=backward-euler or "
-                                        "quasistatic); run it without mpirun");
     if (scheme.march == sig::MarchKind::quasistatic) {
       sig::run_quasistatic_march(args, datafile, time);
       return;
@@ -173,6 +171,19 @@ int march_main(int argc, char** argv) {
     if (hyperelastic && !scheme.large_deformation)
       time_card.fail("scheme",
                      "a hyperelastic body marches by the midpoint rule (scheme=midpoint)");
+    // Under mpirun: the linear body, its step matrix factorized by MUMPS over the ranks.
+    if (distributed && hyperelastic)
+      datafile.all("MATERIAL")
+          .front()
+          ->fail("law",
+                 "a hyperelastic body marches in one process: its Newton matrix is assembled "
+                 "again at every iteration from the whole state (run sig-march without mpirun, "
+                 "or give the body law=hooke)");
+    if (distributed && time.mass == sig::MassChoice::emm)
+      time_card.fail("mass", "mass=emm marches in one process: the Equivalent Mass Matrix is "
+                             "built from the whole mass's moments and checked positive definite "
+                             "as a whole (run sig-march without mpirun, or take mass=consistent "
+                             "or lumped)");
     const std::string default_backend = hyperelastic ? "mumps" : "cholmod";
     const std::string backend =
         solver_card
@@ -181,6 +192,7 @@ int march_main(int argc, char** argv) {
     // Gonzalez's tangent and a Coulomb coupling make the step matrix of a hyperelastic march
     // unsymmetric (finite_strain_bulk.cpp), which CHOLMOD cannot factorize: said on the card, not
     // by the linear solver.
+    if (distributed) sig::require_mumps_under_mpirun(datafile, backend);
     if (hyperelastic && backend == "cholmod") {
       const bool friction = sig::friction_card_with_law(datafile) != nullptr;
       if (time.stress == sig::AlgorithmicStress::gonzalez || friction)
@@ -204,9 +216,11 @@ int march_main(int argc, char** argv) {
       strategy_parameters = sig::contact_strategy_parameters(*contact, solver_card);
     }
 
-    // 2. Mesh and assembled system; a dynamic case needs a mass.
+    // 2. Mesh and assembled system (under mpirun this rank's rows of K and M,
+    //    stages/rank_rows.hpp); a dynamic case needs a mass.
     const sig::Mesh mesh = sig::read_nopo(args.ds_path("nopo"));
-    const sig::LinearSystem system = sig::read_tae(args.ds_path("tae"));
+    const sig::LinearSystem system =
+        sig::read_tae_of_rank(args.ds_path("tae"), mesh, /*march=*/true);
     if (system.M.nonZeros() == 0)
       throw sig::InputError(datafile.path, 0, "rho",
                             "every MATERIAL has density 0: a dynamic case (TIME card) needs a "
@@ -214,7 +228,7 @@ int march_main(int argc, char** argv) {
 
     // 3. Dirichlet elimination (constant imposed values, zero imposed velocity) and the initial
     //    state on the free dofs.
-    const sig::ReducedSystem reduced = sig::reduce(system);
+    const sig::ReducedSystem reduced = sig::reduce_on_ranks(system);
     const sig::InitialFields initial_full = sig::initial_fields(datafile, mesh);
     sig::DynamicState initial;
     initial.time = 0.0;
@@ -245,6 +259,7 @@ int march_main(int argc, char** argv) {
     };
     sig::Stopwatch clock;
     sig::MarchHistory history;
+    std::string ordering; // MUMPS's, of the linear body's step matrix
     if (hyperelastic) {
       // On the full dofs, the Dirichlet values held: the history is restricted afterwards.
       std::unique_ptr<sig::Obstacle> obstacle;
@@ -265,9 +280,11 @@ int march_main(int argc, char** argv) {
       for (sig::DynamicState& s : history.outputs)
         s = sig::DynamicState{s.time, reduced.restrict(s.u), reduced.restrict(s.v)};
     } else {
-      // The scheme's step operator K + (4 / k^2) M is factorized here, once.
-      auto scheme = sig::make_time_scheme(time.scheme, sig::reduced_elastodynamics(reduced, mass),
-                                          time.k, backend);
+      // The scheme's step operator K + (4 / k^2) M, factorized once by the march (with contact,
+      // its contact components the Schur complement: integrator/dynamic_contact.hpp).
+      sig::Elastodynamics problem = sig::reduced_elastodynamics(reduced, mass);
+      problem.rank_rows = system.rank_rows;
+      auto scheme = sig::make_time_scheme(time.scheme, std::move(problem), time.k, backend);
       std::optional<sig::ContactBoundary> boundary;
       if (zone) boundary = sig::contact_boundary(*zone, mesh, reduced);
       std::optional<sig::ElastodynamicSteps> steps;
@@ -276,14 +293,18 @@ int march_main(int argc, char** argv) {
       else
         steps.emplace(*scheme, initial);
       history = sig::march_with_progress(*steps, time, label, report);
+      ordering = steps->ordering();
     }
     const double seconds = clock.seconds();
+    if (!sig::writes_outputs()) return;
 
     // 6. Write case.hist and energy.csv (both atomic) and report the energy drift.
     sig::HistoryInfo info = sig::history_info(time, backend, elements);
     info.mass = sig::to_string(time.mass);
     if (hyperelastic) info.stress = sig::to_string(time.stress);
     info.seconds = seconds;
+    info.ordering = ordering;
+    info.ranks = sig::mpi::size();
     if (elements) info.strategy = strategy_info;
     sig::write_hist(args.ds_path("hist"), history, reduced, info, datafile.title());
     const auto csv_path = args.outdir / "energy.csv";
@@ -297,13 +318,14 @@ int march_main(int argc, char** argv) {
     }
     std::printf("sig-march: %s, mass %s (%s), %d free dofs, %zu/%d steps of k = %g, %zu states "
                 "kept, E0 = %.12g, max |E - W - Wc - E0| = %.3g, max penetration %.6g, %.3f s%s\n",
-                label.c_str(), sig::to_string(time.mass).c_str(), backend.c_str(),
-                reduced.num_free(), history.steps_done() - 1, time.steps, time.k,
-                history.outputs.size(), e0, drift, penetration, seconds,
-                history.converged ? "" : " (STOPPED: Newton failed)");
+                label.c_str(), sig::to_string(time.mass).c_str(),
+                sig::solver_words(backend, ordering, info.ranks).c_str(), reduced.num_free(),
+                history.steps_done() - 1, time.steps, time.k, history.outputs.size(), e0, drift,
+                penetration, seconds, history.converged ? "" : " (STOPPED: Newton failed)");
     std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
-    // Beside a stop: every strategy's Newton is PDAS's, with SOLVER gamma=.
-    if (!history.converged && elements)
+    // Beside a stop: every strategy's Newton is PDAS's, with SOLVER gamma= (from the whole K:
+    // not under mpirun).
+    if (!history.converged && elements && !distributed)
       sig::hint_augmentation_scale(datafile, "pdas", system.K, *elements, true);
   });
 }

@@ -9,24 +9,32 @@
 // t_i . u_i with friction (3D: two rows a node, t1_i . u_i and t2_i . u_i). The step of
 // TimeScheme::advance, multiplied by 2 as it is written there, becomes
 //     S d = 2 f_bar - 2 K u_n + (4 / k) M v_n - 2 G^T lambda,   S = K + (4 / k^2) M,
-// so d = d_free - 2 Z lambda with Z = S^{-1} G^T, and the components at t_{n+1},
-// x = G (u_n + d), obey
-//     x = x_free - 2 C lambda,  C = G Z,   i.e.   A (x - x_free) + lambda = 0,  A = (2 C)^{-1}:
-// a small problem on the p contact nodes (p, or d p with friction), whatever the contact law. S is
-// factorized once (by the scheme), Z takes p (d p) solves once, and a step costs one sparse solve
-// plus dense work of that size. The work of the contact forces over the step is
+// so the components' increment w = G d obeys, with S_c the Schur complement of S (turned into
+// the nodes' contact frames) onto the components and g = the condensed right side,
+//     S_c w = g - 2 lambda,  i.e.  A (w - w_free) + lambda = 0,  A = S_c / 2,  w_free = S_c^-1 g
+// (C = G S^{-1} G^T = S_c^{-1}): a small problem on the p contact nodes (p, or d p with friction),
+// whatever the contact law. S is factorized once with the components as its Schur complement
+// (solver/contact_condensation.hpp: the machinery of the marches in velocity; under mpirun MUMPS
+// over the ranks' rows, the complement on rank 0 and sent to every rank), S_c densely once more,
+// and a step is one sparse solve split around the contact problem: g (the forward half), then,
+// the forces found, w exactly from them and d with G d = w (the backward half). The work of the
+// contact forces over the step is
 // -lambda . (x_{n+1} - x_n): -N . (q_{n+1} - q_n) - T . slip, the slip being the increment of the
 // tangential displacement over the step, and the midpoint rule's discrete energy obeys
 // E_{n+1} - E_n = f_bar . (u_{n+1} - u_n) - lambda . (x_{n+1} - x_n).
+#include "contact/contact_law.hpp"
 #include "solver/contact_newton.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <memory>
 #include <vector>
 
 namespace sig {
 
+class ContactCondensation;
 class TimeScheme;
 
 struct ContactBoundary {
@@ -42,6 +50,11 @@ struct ContactBoundary {
   /// The CONT laws (their wall depth g) and weights (tributary length x thickness: pressure =
   /// force / weight).
   ContactSetting setting;
+  /// Per node: the first of its d consecutive free dofs and its contact frame (tangents, then
+  /// -n: the columns of B's and the tangential operator's rows), by which the step operator is
+  /// condensed.
+  std::vector<int> first_dof;
+  std::vector<ContactFrame> frame;
 
   /// The contact nodes left out of the condensation (a candidate zone, SOLVER candidate_gap=),
   /// watched only: their u_n rows (free dofs) and gaps d. They carry no force; a step that
@@ -55,17 +68,39 @@ struct ContactBoundary {
   Eigen::VectorXd penetration(const Eigen::VectorXd& x) const;
 };
 
-/// G, Z and A of the header comment, for the step operator of `scheme`.
-struct CondensedContact {
+/// G, A and S_c of the header comment for the step operator of `scheme`, in G's order (the
+/// normal displacements first), and the step operator's factorization they come from.
+class CondensedContact {
+public:
+  /// S factorized with the components of `boundary` as its Schur complement (the slips among
+  /// them when a law has friction), by the scheme's backend, over the ranks where the scheme
+  /// holds rank rows. sig::Error if a node is in two contact elements, or the body with its
+  /// contact components held cannot be factorized.
+  CondensedContact(const TimeScheme& scheme, const ContactBoundary& boundary);
+  ~CondensedContact();
+  CondensedContact(CondensedContact&&) noexcept;
+  CondensedContact& operator=(CondensedContact&&) noexcept;
+
   /// The components: B (frictionless), or B over the tangential operator (friction): m = p or
   /// d p rows, the normal displacements first.
-  Eigen::SparseMatrix<double> G;
-  Eigen::MatrixXd Z; ///< S^{-1} G^T, free dofs x m
-  Eigen::MatrixXd A; ///< (2 G S^{-1} G^T)^{-1}, m x m, symmetric positive definite
+  const Eigen::SparseMatrix<double>& G() const { return G_; }
+  /// S_c / 2, m x m, symmetric positive definite.
+  const Eigen::MatrixXd& A() const { return A_; }
+  /// g: the condensed right side b (free dofs, whole), remembered for increment().
+  Eigen::VectorXd condense(const Eigen::VectorXd& b);
+  /// S_c^{-1} r (r of size m).
+  Eigen::VectorXd solve(const Eigen::VectorXd& r) const { return schur_.solve(r); }
+  /// The increment d (free dofs) of the last condense()'s right side whose components are w.
+  Eigen::VectorXd increment(const Eigen::VectorXd& w);
+  /// MUMPS's ordering of S (empty with another backend).
+  std::string ordering() const;
+
+private:
+  Eigen::SparseMatrix<double> G_;
+  std::unique_ptr<ContactCondensation> condensation_;
+  std::vector<int> position_; ///< per row of G: its place among the condensation's unknowns
+  Eigen::MatrixXd A_;
+  Eigen::LLT<Eigen::MatrixXd> schur_; ///< of S_c, in G's order
 };
-/// m solves with the scheme's factor, the slips among the components when a law of the
-/// boundary has friction; sig::Error if G S^{-1} G^T is not positive definite (two elements on
-/// one node).
-CondensedContact condense_contact(const TimeScheme& scheme, const ContactBoundary& boundary);
 
 } // namespace sig

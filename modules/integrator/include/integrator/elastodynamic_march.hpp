@@ -3,12 +3,17 @@
 // TimeScheme (midpoint, Newmark), without or with node-to-rigid contact. With contact each step
 // is the scheme's step plus the end-of-step contact forces of a strategy
 // (integrator/contact_strategy.hpp), on the condensed problem of integrator/dynamic_contact.hpp:
-//   1. the free step d_free = S^{-1} (2 f_bar - 2 K u_n + (4 / k) M v_n) (one sparse solve);
-//   2. the strategy's forces lambda on the step condensed onto the components x = G u of the p
-//      contact nodes, their normal displacements and, when a law has friction, their slips (a
-//      CondensedBulk of the one contact driver, p or d p unknowns), from x_n and
-//      x_free = G (u_n + d_free);
-//   3. d = d_free - 2 Z lambda, v_{n+1} = (2 / k) d - v_n (dense, Z kept from the start).
+//   1. the free step on the components x = G u of the p contact nodes, their normal
+//      displacements and, when a law has friction, their slips: the right side
+//      2 f_bar - 2 K u_n + (4 / k) M v_n condensed onto them (the forward half of a sparse
+//      solve with S factorized once, the components its Schur complement S_c);
+//   2. the strategy's forces lambda on that condensed step (a CondensedBulk of the one contact
+//      driver, p or d p unknowns), from x_n and the free step;
+//   3. the components' increment from lambda, exactly, and the whole body's increment d with
+//      them (the backward half), v_{n+1} = (2 / k) d - v_n.
+// Under mpirun the scheme holds this rank's rows of K and M (Elastodynamics::rank_rows): MUMPS
+// factorizes S over the ranks, its complement on rank 0 sent to every rank, and every rank runs
+// the same steps on the whole vectors.
 // Friction is that of the hyperelastic march (stages/finite_strain_march.hpp, ALGORITHMS.md 4.3):
 // each strategy's phases carry the CONT friction law (Tresca, Coulomb with the whole normal
 // force, mu1 / mu2 of the penetration), the slip of a node over a step being the increment of
@@ -26,6 +31,10 @@
 // strategy's iterations (1, the linear solve, without contact).
 #include "integrator/dynamic_contact.hpp"
 #include "integrator/march.hpp"
+#include "integrator/time_scheme.hpp"
+
+#include <optional>
+#include <string>
 
 namespace sig {
 
@@ -45,18 +54,21 @@ public:
   StepRecord start() const override;
   StepRecord step(int n) override;
   DynamicState state() const override { return state_; }
+  /// MUMPS's ordering of the step operator (empty with another backend).
+  std::string ordering() const;
 
 private:
   const TimeScheme& scheme_;
   const ContactBoundary* boundary_ = nullptr;
   const ContactStrategy* strategy_ = nullptr;
-  CondensedContact condensed_;
-  std::vector<int> normal_dof_; ///< 0 .. p - 1: the normal displacements
+  std::optional<CondensedContact> condensed_; ///< with contact
+  std::vector<int> normal_dof_;               ///< 0 .. p - 1: the normal displacements
   /// p .. d p - 1 with friction: the slips, d - 1 a node (3D: along t1, t2, node i's at p + 2 i)
   std::vector<int> tangential_dof_;
   DynamicState state_;
-  Eigen::VectorXd x_now_; ///< the condensed components of the state (G u)
-  Eigen::VectorXd q_now_; ///< the penetrations of the state
+  TimeScheme::StateProducts products_; ///< of state_: its energy, the next step's right side
+  Eigen::VectorXd x_now_;              ///< the condensed components of the state (G u)
+  Eigen::VectorXd q_now_;              ///< the penetrations of the state
 };
 
 /// Without contact: `steps` steps of `scheme` from `initial`, the work of the loads accumulating

@@ -22,6 +22,10 @@ struct Elastodynamics {
   Eigen::SparseMatrix<double> K; ///< stiffness on the free dofs, symmetric
   Eigen::SparseMatrix<double> M; ///< mass on the free dofs, symmetric positive (semi)definite
   LoadHistory load;              ///< f(t); empty = no load
+  /// K and M hold only this rank's rows of an mpirun job (the other rows empty; f(t) whole):
+  /// the schemes sum their products over the ranks and MUMPS factorizes their step operator
+  /// over them (integrator/time_scheme.hpp).
+  bool rank_rows = false;
 
   int num_dofs() const { return static_cast<int>(K.rows()); }
   /// f(t), or zero without a load.

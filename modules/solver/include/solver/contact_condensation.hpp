@@ -49,6 +49,12 @@ public:
 
   int contacts() const { return static_cast<int>(frames_of_nodes_.size()); }
   bool tangential() const { return !tangential_dof_.empty(); }
+  /// Per contact node, the place of its normal unknown among the condensed unknowns; of its
+  /// slips (d - 1 a node, node p's at (d - 1) p + k), empty without friction.
+  const std::vector<int>& normal_unknowns() const { return normal_dof_; }
+  const std::vector<int>& tangential_unknowns() const { return tangential_dof_; }
+  /// The Schur complement onto the condensed unknowns (problem()'s S, without a load).
+  const Eigen::MatrixXd& schur() const;
 
   /// The small problem of the load f (free dofs): the Schur complement, condense(f), the
   /// unknowns of each node, origins (gap) 0 and the proximal weight of the static solve
