@@ -6,17 +6,18 @@
 # unknowns its Schur complement): every array of case.hist within 1e-8 of its largest value, the
 # statuses and the Newton counts identical, case.hist records P ranks.
 #   creep   datafiles/scene3d/creep_slip.dat: the quasistatic Kelvin-Voigt pad, Coulomb friction of
-#           the slip rate (two components a node), P = 1, 2, 4
-#   be      the same pad marched by backward Euler with a compliance (tests/pipeline/creep_slip.sh's
-#           variant), P = 2
+#           the slip rate (two components a node), P = 2
 #   oblique datafiles/scene3d/oblique_impact.dat on the --quick mesh (scene3d_impact.sh): midpoint
 #           + IPM with Coulomb friction (the slip a vector of the tangent plane), consistent mass,
-#           through the impact (T = 0.004), P = 2, 4
+#           through the impact (T = 0.004), P = 2
 #   ball    scene 8a's ball (2D) in the window of drivers/scene8a.sh --quick: midpoint +
 #           Signorini, consistent mass, through the impact and the rebound, P = 2
 #   newmark the same ball by Newmark with the lumped mass (a rank's diagonal off its rows
 #           empty), P = 2
-# About 25 s (4 ranks on 2 cores: a march's collective calls wait for the cores).
+# P = 2 only, and the pad's backward-Euler march (2D: march_mpi.sh) left out, for the CI's budget
+# (with them and 4 ranks oversubscribed on 2 cores the test took 66 s in a loaded ctest -j2; P = 1
+# and 4 gave the same answers by hand: creep 1.6e-13, oblique 2.3e-12, backward Euler 2.5e-12 at 2,
+# stop 43's closing note).
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 source "$root/drivers/lib/deck.sh"
@@ -57,19 +58,12 @@ sys.exit(0 if a["ranks"] == [int(sys.argv[1])] and a["converged"] == [1] else 1)
 cp "$root/datafiles/scene3d/creep_slip.msh" "$root/datafiles/scene8a/ball.msh" "$work/"
 creep=$work/creep.dat
 deck_variant "$root/datafiles/scene3d/creep_slip.dat" "$creep" --set SOLVER.linear=mumps
-same_answers creep "$creep" 1 2 4
-
-# Backward Euler: Newton's eps 1e-10, not the deck's 1e-12, at which the last step's count
-# depends on round-off (3 or 4 iterations, the answers within 2e-12 either way).
-be=$work/be.dat
-sed -e 's/law=damped cn=10/law=compliance cn=1000/' -e 's/eta2=10$/eta2=10 rho=1/' \
-  -e 's/^TIME .*/TIME scheme=backward-euler T=3 k=0.5/' -e 's/eps=1e-12/eps=1e-10/' "$creep" >"$be"
-same_answers be "$be" 2
+same_answers creep "$creep" 2
 
 oblique=$work/oblique.dat
 deck_variant "$root/datafiles/scene3d/oblique_impact.dat" "$oblique" --set MESH.h=0.25 \
   --set MESH.grading=0.3 --set TIME.mass=consistent --set TIME.T=0.004 --set SOLVER.linear=mumps
-same_answers oblique "$oblique" 2 4
+same_answers oblique "$oblique" 2
 
 ball=$work/ball.dat
 deck_variant "$root/datafiles/scene8a/ball.dat" "$ball" --set CONTACT.point=0,14.5 \
@@ -95,4 +89,4 @@ mpirun --oversubscribe -np 2 "$bin/sig-march" "$hyper" -o "$work/hyper" >"$work/
   grep -qF "a hyperelastic body marches in one process" "$work/hyper.log" &&
   [ ! -e "$work/hyper/case.hist" ] ||
   fail "law=svk under mpirun: not refused on MATERIAL law= (exit $status): $(cat "$work/hyper.log")"
-finish "the 3D marches in velocity, the 3D frictional impact and scene 8a's impact (midpoint, Newmark) give one process's answers as 1, 2 and 4 ranks; a hyperelastic march refused under mpirun"
+finish "the 3D marches in velocity, the 3D frictional impact and scene 8a's impact (midpoint, Newmark) give one process's answers as 2 ranks; a hyperelastic march refused under mpirun"
