@@ -32,6 +32,7 @@
 # matters). The reference of --reference is then a march that keeps the last time too.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
+help_from_header "$@"
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${SIG_BIN:-$root/build/bin}
 usage="usage: drivers/adapt.sh DATAFILE [-o OUTDIR] [--steps K] [--dofs N] [--theta T] [--reference DIR]"

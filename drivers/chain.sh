@@ -23,6 +23,7 @@
 # mpirun_ranks, lib/environment.sh).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
+help_from_header "$@"
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${SIG_BIN:-$root/build/bin}
 if [ $# -lt 1 ]; then

@@ -4,6 +4,8 @@
 # postproc/scene_index.py) and say where the report, the ParaView files and the index are.
 # --all: every scene's quick variant instead (drivers/scenes.sh) and the index of them all.
 set -euo pipefail
+source "$(dirname "$0")/lib/environment.sh"
+help_from_header "$@"
 case ${1:-} in
   "" | --all) ;;
   *)

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Sourced by run.sh and test.sh: install what is missing (Debian packages), configure and build.
+# drivers/setup.sh: sourced by run.sh and test.sh (or run alone): install what is missing (Debian packages), configure and build.
 # Idempotent: with everything installed and built it only checks and returns in seconds.
 # Sets SIG_ROOT, SIG_BUILD and SIG_BIN.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
+[ "${BASH_SOURCE[0]}" != "$0" ] || help_from_header "$@" # run, not sourced
 SIG_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 SIG_BUILD=${SIG_BUILD:-$SIG_ROOT/build}
 SIG_BIN=$SIG_BUILD/bin

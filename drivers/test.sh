@@ -7,6 +7,8 @@
 # libraries are compiled once for both, and clang compiles the sanitizers faster than gcc. Without
 # them it is a gcc build and fuzzing is skipped.
 set -euo pipefail
+source "$(dirname "$0")/lib/environment.sh"
+help_from_header "$@"
 source "$(dirname "$0")/setup.sh"
 cd "$SIG_ROOT"
 jobs=$(nproc 2>/dev/null || echo 2)

@@ -8,6 +8,17 @@ if [ -f "$(dirname "${BASH_SOURCE[0]}")/installed.sh" ]; then
   source "$(dirname "${BASH_SOURCE[0]}")/installed.sh"
 fi
 
+# help_from_header "$@": a driver given -h or --help as its first argument prints its header
+# comment (what it does, its usage) and exits 0, before any set-up, build or run.
+help_from_header() {
+  case ${1:-} in
+    -h | --help)
+      sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p;}' "$0"
+      exit 0
+      ;;
+  esac
+}
+
 # mpirun_ranks P COMMAND...: COMMAND as the P ranks of an mpirun job (README "Distributed
 # solve"). As root it sets OpenMPI's allow-run-as-root variables; --oversubscribe lets P exceed
 # the cores (one BLAS thread per rank, above), and then a rank that waits in MPI yields its core
