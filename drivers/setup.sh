@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # drivers/setup.sh: sourced by run.sh and test.sh (or run alone): install what is missing
-# (Debian packages), configure and build. Idempotent: with everything installed and built it only checks and returns in seconds.
+# (Debian packages), configure and build. Idempotent: with everything installed and built it only
+# checks and returns in seconds.
 # Sets SIG_ROOT, SIG_BUILD and SIG_BIN.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/environment.sh"
