@@ -686,9 +686,8 @@ std::vector<double> Driver<d>::crossings(const ContactPoint& from, const Contact
       // Below the first departing sample (and the first crossing found), the power of 2 under
       // it was sampled and did not depart: the bisection's lower end.
       const double limit = std::min(above < 0 ? 1.0 : above, first);
-      const double under = std::ldexp(1.0, std::ilogb(closest));
       if (closest > std::ldexp(1.0, -kFirst) && closest < limit && departs(start, at(p, closest))) {
-        below = under;
+        below = std::ldexp(1.0, std::ilogb(closest));
         above = closest;
       }
     }
@@ -802,9 +801,9 @@ template <int d> void Driver<d>::finish(const ContactPoint& now) {
     else
       fail(NewtonFailure::iteration_limit, "no convergence within the iteration limit");
   }
-  // Every node that bears a friction bound slipping at it, with the residual stuck: the body
-  // may be loaded beyond what friction holds, a drift that the steps do not show as one where a
-  // slip direction's curvature holds each step (the 3D block under mu1 below its load's ratio).
+  // A solve that fails with every node that bears a friction bound slipping at it: the body may
+  // be loaded beyond what friction holds, a drift that the steps do not show as one where a slip
+  // direction's curvature holds each step (the 3D block under mu1 below its load's ratio).
   if (!result_.converged && friction_ && !result_.history.empty() &&
       result_.reason != NewtonFailure::drift && result_.reason != NewtonFailure::divergence &&
       result_.history.back().stick == 0 && result_.history.back().slip > 0)
