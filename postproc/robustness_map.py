@@ -220,7 +220,7 @@ THEORY = """\
   thesis's Nv for c <= 10 on the ring (Table 7.1) is the same contraction.
 - **Penalty**: its r is a model parameter (the penetration is p / r), not an algorithm's; at a
   large r the piecewise-linear springs are stiff: a node sticks only while |q_t| <= s / r, a
-  window the steps cross in a fraction 1 / r of their length, and the Newton's path between
+  window a step crosses in a fraction of order s / (r |dq_t|) of its length, and the path between
   spring states grows long (the map names where it stops), at a small r the body sinks into
   the foundation by p / r.
 - **Non-monotone friction (scene 4's ball and square)**: mu(|u_t|) falls with the slip, the

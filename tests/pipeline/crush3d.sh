@@ -12,7 +12,9 @@
 #  - the penalty's compliant foundation gives way: its press force is below the exact methods'
 #    by more than 1e-6 and less than 1e-3 of it (measured 6.5e-5 at r = 1e4);
 #  - against GetFEM: pdas, alm and projection give its reaction at every load step to 1e-6
-#    (measured 1.3e-13 at worst) with the same number of nodes in contact.
+#    (measured 1.3e-13 at worst) with the same number of nodes in contact;
+#  - pressed by 0.6 R in one step, the small-strain start (whose tangent CHOLMOD cannot factorize)
+#    falls back to rest, says so, and converges to -0.753888 to 1e-6.
 # Without python3-getfem our checks run, then the test skips the comparison. 9.4 s in ctest
 # (loaded machine, load average 8), 1.5 to 4 of them GetFEM's.
 set -euo pipefail
@@ -74,7 +76,8 @@ finish("crush3d")
 PY
 # Pressed by 0.6 of the radius in one step, the small-strain start overshoots to a state whose
 # tangent is not positive definite (CHOLMOD refuses it): the step starts again from rest, says so,
-# and reaches the reaction the five load steps reach (-0.753888, helper's runs).
+# and reaches the reaction the five load steps reach (-0.753888: drivers/scene3d_crush.sh's
+# deck at uz=-0.6 in LOADSTEPS n=5).
 deep=$work/deep
 mkdir -p "$deep"
 cp "$root/datafiles/scene3d/crush.msh" "$deep/"

@@ -14,10 +14,11 @@
 #           Signorini, consistent mass, through the impact and the rebound, P = 2
 #   newmark the same ball by Newmark with the lumped mass (a rank's diagonal off its rows
 #           empty), P = 2
-# P = 2 only, and the pad's backward-Euler march (2D: march_mpi.sh) left out, for the CI's budget
-# (with them and 4 ranks oversubscribed on 2 cores the test took 66 s in a loaded ctest -j2; P = 1
-# and 4 gave the same answers by hand: creep 1.6e-13, oblique 2.3e-12, backward Euler 2.5e-12 at 2,
-# stop 43's closing note).
+# P = 2 only, and the pad's backward-Euler march (2D: march_mpi.sh) left out, for the CI's budget:
+# with them and 4 ranks oversubscribed on 2 cores the test took 66 s in a loaded ctest -j2 and
+# 108 s alone at load 10, now 10 s alone at load 7. P = 1 and 4 gave the same answers when
+# measured by hand (b129b06's runs: creep 1.6e-13 at P = 1, 2, 4; oblique 2.3e-12 at 4; backward
+# Euler 2.5e-12 at 2).
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 source "$root/drivers/lib/deck.sh"

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Requirement (issue 23): the one-step ring of scene 7b on a mesh not its own (N = 256, the held
-# arc x2 >= 19.5), from the deck's small-strain start and from rest, converges with pdas
-# (gamma = 1e3) and alm (r = 1e3) in at most 1.3 times the Newton iterations of GetFEM 5.4's nodal
-# Alart-Curnier brick on the same mesh from the same start (postproc/getfem_ring.py --start: 15
-# here from rest, 15 from its own small-strain start; both count the large-deformation
-# iterations only), and the vertical reaction on AB agrees with GetFEM's to 1e-6 relative. Before a contact solve's first
-# step was bounded by its stretch change (stages/finite_strain_bulk.cpp, kStretchTrust), pdas took 25
+# Requirement (issue 23): the one-step ring of scene 7b on a mesh not its own (N = 256, the held arc
+# x2 >= 19.5), from the deck's small-strain start and from rest, converges with pdas (gamma = 1e3)
+# and alm (r = 1e3) in at most 1.3 times the Newton iterations of GetFEM 5.4's nodal Alart-Curnier
+# brick on the same mesh from the same start (postproc/getfem_ring.py --start: 15 here from rest, 15
+# from its own small-strain start; both count the large-deformation iterations only), and the
+# vertical reaction on AB agrees with GetFEM's to 1e-6 relative. Before a contact solve's first step
+# was bounded by its stretch change (stages/finite_strain_bulk.cpp, kStretchTrust), pdas took 25
 # iterations from rest here: its first full step put 117 nodes through the wall where 23 end in
 # contact, and the patches' outer edges then came back one node per iteration
 # (modules/solver/NEWTON.md). Without python3-getfem only the GetFEM comparison is skipped: the
@@ -50,7 +50,8 @@ getfem_count() {
   fi
   deck pdas "$1" # GetFEM reads the mesh, material, held arc and eps from it
   "$python" postproc/getfem_ring.py --deck "$work/pdas_$1.dat" --repeat 1 --start "$1" \
-    --json "$work/getfem_$1.json" >"$work/getfem_$1.log" 2>&1 || { cat "$work/getfem_$1.log" >&2; die "postproc/getfem_ring.py --start $1 failed"; }
+    --json "$work/getfem_$1.json" >"$work/getfem_$1.log" 2>&1 ||
+    { cat "$work/getfem_$1.log" >&2; die "postproc/getfem_ring.py --start $1 failed"; }
   "$python" -c "import json, sys; s = json.load(open(sys.argv[1])); \
 print(s['newton_iterations'] if s['converged'] else 'Nv', repr(s['reaction_y']))" "$work/getfem_$1.json"
 }
@@ -59,7 +60,8 @@ print(s['newton_iterations'] if s['converged'] else 'Nv', repr(s['reaction_y']))
   echo "$test_name: no GetFEM ($python cannot import getfem): its counts taken as recorded; reactions not compared"
 declare -A gf_its gf_ry
 for start in small-strain rest; do
-  read -r gf_its[$start] gf_ry[$start] < <(getfem_count "$start")
+  getfem_count "$start" >"$work/getfem_count_$start.txt" || exit 1 # die in a subshell
+  read -r "gf_its[$start]" "gf_ry[$start]" <"$work/getfem_count_$start.txt"
   [ "${gf_its[$start]}" != Nv ] || die "GetFEM did not converge on the ring from $start"
 done
 

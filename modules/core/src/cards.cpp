@@ -275,7 +275,8 @@ const std::vector<CardSpec>& card_schema() {
             "first iterate of the first load step: small-strain (the small-strain solution of "
             "that step's problem, contact included: the linearization at rest solved exactly) or "
             "rest (u = 0); a small-strain start that fails (its solve, every fraction of it "
-            "inverting an element, or a tangent there that cannot be factorized) falls back to "
+            "inverting an element, or a tangent there that the backend cannot factorize) falls "
+            "back to "
             "rest, with a warning",
             "small-strain"},
        }},

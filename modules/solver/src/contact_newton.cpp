@@ -651,8 +651,9 @@ double Driver<d>::monotone_length(const ContactPoint& now, const Step& step, Con
 /// samples up from 2^-60 (an unheld step is long), then bisection. With `only_first` (where a
 /// node first holds) and penalty, also the sample where the node's slip passes closest to 0:
 /// penalty's stick window |q_t| <= s / r, narrower than the samples' spacing at a large r and
-/// crossed in the middle of a step that reverses the slip, lies around it, and missing it took a
-/// held body for a drift (the Tresca half disc at r >= 30 E / h). A method with multipliers
+/// crossed in the middle of a step that reverses the slip, lies around it (exactly for a constant
+/// bound, Tresca's; near it for Coulomb's, which moves with q_n), and missing it took a held body
+/// for a drift (the Tresca half disc at r >= 30 E / h). A method with multipliers
 /// sticks where |t / w + r q_t| <= s, its multiplier moving with the step: sampling its slip's
 /// closest approach there cut the Tresca half disc's unheld steps elsewhere and made 9 points of
 /// its map cycle (drivers/robustness.sh, m64 from the scene's start).
@@ -801,9 +802,10 @@ template <int d> void Driver<d>::finish(const ContactPoint& now) {
     else
       fail(NewtonFailure::iteration_limit, "no convergence within the iteration limit");
   }
-  // A solve that fails with every node that bears a friction bound slipping at it: the body may
-  // be loaded beyond what friction holds, a drift that the steps do not show as one where a slip
-  // direction's curvature holds each step (the 3D block under mu1 below its load's ratio).
+  // A solve that fails with every node that bears a friction bound slipping at it (the counts of
+  // the last accepted iteration): the body may be loaded beyond what friction holds. In 3D the
+  // slip directions' curvature holds each step, so no unheld step marks the drift (the 3D block
+  // under mu1 below its load's ratio). Not added to a drift, which says so, or a divergence.
   if (!result_.converged && friction_ && !result_.history.empty() &&
       result_.reason != NewtonFailure::drift && result_.reason != NewtonFailure::divergence &&
       result_.history.back().stick == 0 && result_.history.back().slip > 0)

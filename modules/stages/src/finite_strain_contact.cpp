@@ -52,10 +52,10 @@ FiniteStrainSolution solve_finite_strain_contact(const FiniteStrainProblem& prob
     const int evaluations = bulk.evaluations();
     ContactNewtonResult c =
         solve_contact(bulk, setting, *method, newton_options(options.contact), iterate);
-    // The small-strain start is a guess. Where the tangent there cannot be factorized (not
-    // positive definite: a state the linear crush overshoots to, unstable, not the solution's;
-    // the hollow ball of datafiles/scene3d/crush.dat pressed by 0.6 of its radius), the step
-    // starts again from rest, said as a fallback.
+    // The small-strain start is a guess. Where the backend cannot factorize the tangent there
+    // (CHOLMOD: not positive definite, a state the linear crush overshoots to, unstable, not the
+    // solution's; the hollow ball of datafiles/scene3d/crush.dat pressed by 0.6 of its radius),
+    // the step starts again from rest, said as a fallback.
     if (k == 1 && solution.start.fraction > 0 && !c.converged && c.history.empty() &&
         c.reason == NewtonFailure::singular_step) {
       solution.start.note =

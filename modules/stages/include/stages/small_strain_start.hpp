@@ -23,7 +23,8 @@ namespace sig {
 
 struct StartRecord {
   bool used = false;          ///< a small-strain start was asked for
-  bool converged = false;     ///< the small-strain solve converged (else: started from rest)
+  bool converged = false;     ///< the small-strain solve converged (else: started from rest; a
+                              ///< converged start may still fall back: fraction 0)
   int iterations = 0;         ///< its contact Newton iterations on the condensed problem
   double fraction = 0;        ///< theta of FiniteStrainBulk::start_from: 1 = the whole solution
   double seconds = 0;         ///< wall time of the start (factorization, condensation, solve)
