@@ -1,4 +1,4 @@
-// The LU of the coupled tail systems (solver/dense_cholesky.hpp): below lapack_min_rows Eigen's,
+// The LU of the coupled tail systems (solver/dense_cholesky.hpp): below blas_min_rows Eigen's,
 // from there on LAPACK's; both solve A x = b for a nonsymmetric matrix whose first pivot needs a
 // row interchange, and a singular one (a zero column) gives non-finite values (the caller's test).
 #include "solver/dense_cholesky.hpp"
@@ -23,7 +23,7 @@ Eigen::MatrixXd nonsymmetric(Eigen::Index n) {
 }
 
 TEST(DenseLu, SolvesOnBothSidesOfTheLapackThreshold) {
-  for (const Eigen::Index n : {Eigen::Index(40), DenseLu::lapack_min_rows + 3}) {
+  for (const Eigen::Index n : {Eigen::Index(40), blas_min_rows + 3}) {
     const Eigen::MatrixXd A = nonsymmetric(n);
     Eigen::VectorXd x(n);
     for (Eigen::Index k = 0; k < n; ++k)

@@ -142,24 +142,51 @@ void CondensedBulk::tail_schur(int start) {
   const int n = static_cast<int>(p_.f.size());
   const int tail = n - start;
   const int shift = tail_start_ - start; // > 0: longer
-  if (tail_start_ >= 0 && 4 * std::abs(shift) < tail) {
-    if (shift > 0) {
-      const int old_tail = n - tail_start_;
-      const Eigen::MatrixXd A = L_.block(start, start, shift, shift).triangularView<Eigen::Lower>();
-      const auto C = L_.block(tail_start_, start, old_tail, shift);
-      Eigen::MatrixXd H(tail, tail);
-      H.topLeftCorner(shift, shift) = A * A.transpose();
-      H.bottomLeftCorner(old_tail, shift) = C * A.transpose();
-      H.topRightCorner(shift, old_tail) = H.bottomLeftCorner(old_tail, shift).transpose();
+  const bool incremental = tail_start_ >= 0 && 4 * std::abs(shift) < tail;
+  tail_start_ = start;
+  if (tail >= blas_min_rows) {
+    // The same products as rank-k updates of H's lower triangle (dsyrk): half the flops of
+    // Eigen's general products, in OpenBLAS's kernels. The longer tail's blocks are one update by
+    // the panel [A; C] of L's columns, H0 in the corner.
+    if (incremental && shift > 0) {
+      const int old_tail = tail - shift;
+      Eigen::MatrixXd H = Eigen::MatrixXd::Zero(tail, tail);
       H.bottomRightCorner(old_tail, old_tail) = H_;
-      H.bottomRightCorner(old_tail, old_tail).noalias() += C * C.transpose();
+      Eigen::MatrixXd panel = L_.block(start, start, tail, shift);
+      panel.topRows(shift).triangularView<Eigen::StrictlyUpper>().setZero();
+      add_gram(H, 1.0, panel);
       H_ = std::move(H);
-    } else {
-      const auto C = L_.block(start, tail_start_, tail, -shift);
+    } else if (incremental) {
       Eigen::MatrixXd H = H_.bottomRightCorner(tail, tail);
-      H.noalias() -= C * C.transpose();
+      add_gram(H, -1.0, L_.block(start, start + shift, tail, -shift));
       H_ = std::move(H);
+    } else if (3 * start < tail) {
+      H_ = B_.bottomRightCorner(tail, tail);
+      add_gram(H_, -1.0, L_.bottomLeftCorner(tail, start));
+    } else {
+      Eigen::MatrixXd L22 = L_.bottomRightCorner(tail, tail);
+      L22.triangularView<Eigen::StrictlyUpper>().setZero();
+      H_ = Eigen::MatrixXd::Zero(tail, tail);
+      add_gram(H_, 1.0, L22);
     }
+    return;
+  }
+  if (incremental && shift > 0) {
+    const int old_tail = tail - shift;
+    const Eigen::MatrixXd A = L_.block(start, start, shift, shift).triangularView<Eigen::Lower>();
+    const auto C = L_.block(start + shift, start, old_tail, shift);
+    Eigen::MatrixXd H(tail, tail);
+    H.topLeftCorner(shift, shift) = A * A.transpose();
+    H.bottomLeftCorner(old_tail, shift) = C * A.transpose();
+    H.topRightCorner(shift, old_tail) = H.bottomLeftCorner(old_tail, shift).transpose();
+    H.bottomRightCorner(old_tail, old_tail) = H_;
+    H.bottomRightCorner(old_tail, old_tail).noalias() += C * C.transpose();
+    H_ = std::move(H);
+  } else if (incremental) {
+    const auto C = L_.block(start, start + shift, tail, -shift);
+    Eigen::MatrixXd H = H_.bottomRightCorner(tail, tail);
+    H.noalias() -= C * C.transpose();
+    H_ = std::move(H);
   } else if (3 * start < tail) {
     H_ = B_.bottomRightCorner(tail, tail);
     H_.noalias() -= L_.bottomLeftCorner(tail, start) * L_.bottomLeftCorner(tail, start).transpose();
@@ -167,7 +194,6 @@ void CondensedBulk::tail_schur(int start) {
     const Eigen::MatrixXd L22 = L_.bottomRightCorner(tail, tail).triangularView<Eigen::Lower>();
     H_ = L22.triangularView<Eigen::Lower>() * L22.transpose();
   }
-  tail_start_ = start;
 }
 
 bool CondensedBulk::is_default(int node, const NodeConditions& c) const {

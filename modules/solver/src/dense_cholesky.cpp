@@ -1,5 +1,9 @@
 #include "solver/dense_cholesky.hpp"
 
+#include "core/error.hpp"
+
+#include <cblas.h>
+
 #include <limits>
 
 extern "C" void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
@@ -9,6 +13,20 @@ extern "C" void dgetrs_(const char* trans, const int* n, const int* nrhs, const 
                         const int* lda, const int* ipiv, double* b, const int* ldb, int* info);
 
 namespace sig {
+
+void add_gram(Eigen::Ref<Eigen::MatrixXd> H, double alpha,
+              const Eigen::Ref<const Eigen::MatrixXd>& P) {
+  SIG_VERIFY(H.rows() == H.cols() && P.rows() == H.rows(),
+             "add_gram: H is " << H.rows() << " x " << H.cols() << ", P has " << P.rows()
+                               << " rows");
+  const int n = static_cast<int>(H.rows()), k = static_cast<int>(P.cols());
+  if (n == 0) return;
+  if (k > 0)
+    cblas_dsyrk(CblasColMajor, CblasLower, CblasNoTrans, n, k, alpha, P.data(),
+                static_cast<int>(P.outerStride()), 1.0, H.data(),
+                static_cast<int>(H.outerStride()));
+  H.triangularView<Eigen::StrictlyUpper>() = H.transpose();
+}
 
 bool cholesky_in_place(Eigen::MatrixXd& A) {
   const int n = static_cast<int>(A.rows());
@@ -20,7 +38,7 @@ bool cholesky_in_place(Eigen::MatrixXd& A) {
 }
 
 void DenseLu::compute(const Eigen::MatrixXd& A) {
-  lapack_ = A.rows() >= lapack_min_rows;
+  lapack_ = A.rows() >= blas_min_rows;
   if (!lapack_) {
     small_.compute(A);
     return;
