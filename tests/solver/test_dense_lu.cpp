@@ -1,5 +1,5 @@
-// The LU of the coupled tail systems (solver/dense_cholesky.hpp): below blas_min_rows Eigen's,
-// from there on LAPACK's; both solve A x = b for a nonsymmetric matrix whose first pivot needs a
+// The LU of the coupled tail systems (solver/dense_cholesky.hpp), Eigen's and LAPACK's (on the
+// row-major A's transpose): both solve A x = b for a nonsymmetric matrix whose first pivot needs a
 // row interchange, and a singular one (a zero column) gives non-finite values (the caller's test).
 #include "solver/dense_cholesky.hpp"
 
@@ -10,10 +10,10 @@
 namespace sig {
 namespace {
 
-Eigen::MatrixXd nonsymmetric(Eigen::Index n) {
+RowMatrixXd nonsymmetric(Eigen::Index n) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> value(-1.0, 1.0);
-  Eigen::MatrixXd A(n, n);
+  RowMatrixXd A(n, n);
   for (Eigen::Index j = 0; j < n; ++j)
     for (Eigen::Index i = 0; i < n; ++i)
       A(i, j) = value(random);
@@ -22,20 +22,21 @@ Eigen::MatrixXd nonsymmetric(Eigen::Index n) {
   return A;
 }
 
-TEST(DenseLu, SolvesOnBothSidesOfTheLapackThreshold) {
-  for (const Eigen::Index n : {Eigen::Index(40), blas_min_rows + 3}) {
-    const Eigen::MatrixXd A = nonsymmetric(n);
-    Eigen::VectorXd x(n);
-    for (Eigen::Index k = 0; k < n; ++k)
-      x[k] = std::sin(0.3 * double(k)) + 0.2;
-    DenseLu lu;
-    lu.compute(A);
-    EXPECT_LT((lu.solve(A * x) - x).norm(), 1e-10 * x.norm()) << n;
-    Eigen::MatrixXd singular = A;
-    singular.col(n - 1).setZero();
-    lu.compute(singular);
-    EXPECT_FALSE(lu.solve(A * x).allFinite()) << n;
-  }
+TEST(DenseLu, EigenAndLapackSolveTheNonsymmetricSystem) {
+  for (const Eigen::Index n : {Eigen::Index(40), blas_min_rows + 3})
+    for (const bool lapack : {false, true}) {
+      const RowMatrixXd A = nonsymmetric(n);
+      Eigen::VectorXd x(n);
+      for (Eigen::Index k = 0; k < n; ++k)
+        x[k] = std::sin(0.3 * double(k)) + 0.2;
+      DenseLu lu;
+      lu.compute(A, lapack);
+      EXPECT_LT((lu.solve(A * x) - x).norm(), 1e-10 * x.norm()) << n << " " << lapack;
+      RowMatrixXd singular = A;
+      singular.col(n - 1).setZero();
+      lu.compute(singular, lapack);
+      EXPECT_FALSE(lu.solve(A * x).allFinite()) << n << " " << lapack;
+    }
 }
 
 } // namespace

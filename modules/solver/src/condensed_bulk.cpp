@@ -320,14 +320,20 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
       free.push_back(i);
     }
   const int nu = static_cast<int>(free.size());
-  Eigen::MatrixXd A(nu, nu);
+  // H is exactly symmetric for a BLAS-sized tail (tail_schur): its row i read as its column,
+  // contiguous, as A's rows are.
+  const bool large = tail >= blas_min_rows;
+  const auto H_row = [&](int i) -> Eigen::RowVectorXd {
+    return large ? Eigen::RowVectorXd(H_.col(i).transpose()) : Eigen::RowVectorXd(H_.row(i));
+  };
+  RowMatrixXd A(nu, nu);
   Eigen::VectorXd rhs(nu);
   bool coupled = false;
   Eigen::RowVectorXd row(tail);
   for (int a = 0; a < nu; ++a) {
     const int i = free[a];
     const DofCondition& ci = condition(i);
-    row = H_.row(i);
+    row = H_row(i);
     row[i] += ci.stiffness - k0(i);
     double right = c[i] - ci.force + (ci.stiffness - k0(i)) * now(i);
     if (const double k12 = tangential_12(i); k12 != 0) {
@@ -348,7 +354,7 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
       const int nrow = normal_of(i);
       const DofCondition& cn = condition(nrow);
       if (cn.imposed) { // N = c_n - (H z)_n + D0_n (z_n - w_n), the reaction
-        row -= ci.coupling * H_.row(nrow);
+        row -= ci.coupling * H_row(nrow);
         right -= ci.coupling * (c[nrow] + k0(nrow) * cn.value);
       } else { // N = force + k (z_n - w_n)
         row[nrow] += ci.coupling * cn.stiffness;
@@ -377,7 +383,7 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
                    "the contact step matrix is not positive definite (" << nu << " free of " << tail
                                                                         << " tail unknowns)");
       } else {
-        tail_lu_.compute(tail_matrix_);
+        tail_lu_.compute(tail_matrix_, large);
       }
       ++tail_factorizations_;
     }

@@ -37,13 +37,14 @@ bool cholesky_in_place(Eigen::MatrixXd& A) {
   return info == 0;
 }
 
-void DenseLu::compute(const Eigen::MatrixXd& A) {
-  lapack_ = A.rows() >= blas_min_rows;
+void DenseLu::compute(const RowMatrixXd& A, bool lapack) {
+  lapack_ = lapack;
   if (!lapack_) {
     small_.compute(A);
     return;
   }
-  factors_ = A;
+  // The row-major A is A^T column-major: dgetrf factors A^T, solve() takes the transpose.
+  factors_ = Eigen::Map<const Eigen::MatrixXd>(A.data(), A.cols(), A.rows());
   const int n = static_cast<int>(A.rows());
   pivots_.resize(static_cast<size_t>(n));
   int info = 0;
@@ -57,7 +58,7 @@ Eigen::VectorXd DenseLu::solve(const Eigen::VectorXd& b) const {
   if (singular_) return x.setConstant(std::numeric_limits<double>::quiet_NaN());
   const int n = static_cast<int>(x.size()), one = 1;
   int info = 0;
-  dgetrs_("N", &n, &one, factors_.data(), &n, pivots_.data(), x.data(), &n, &info);
+  dgetrs_("T", &n, &one, factors_.data(), &n, pivots_.data(), x.data(), &n, &info);
   return x;
 }
 

@@ -26,15 +26,16 @@ void add_gram(Eigen::Ref<Eigen::MatrixXd> H, double alpha,
 /// false if A is not positive definite.
 bool cholesky_in_place(Eigen::MatrixXd& A);
 
-/// LU with partial pivoting of a square matrix: Eigen's PartialPivLU below `blas_min_rows` rows,
-/// LAPACK's dgetrf from there on. On the frictional 3D half ball (issue 26) the contact
-/// zone's tail system has 2000-3000 unknowns and is factorized at every Newton iteration, where
-/// Eigen's matrix kernels (its LU's among them) took about a quarter of the dense Newton's time
-/// (perf, 66366 dofs); smaller tails keep Eigen's (the DS files of scenes 7a and 7b --quick
-/// stayed bit for bit).
+/// Row-major: the tail systems are built a row at a time.
+using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+/// LU with partial pivoting of a square matrix: Eigen's PartialPivLU, or LAPACK's dgetrf on A's
+/// rows (A^T column-major, solved transposed) when the caller asks (a tail of `blas_min_rows`
+/// unknowns or more: the free unknowns of a 3D frictional tail are 700-1000 of its 1500-2000 at
+/// 28887 dofs, 2000-3000 at 66366, and Eigen's LU took a quarter of the dense Newton's time there).
 class DenseLu {
 public:
-  void compute(const Eigen::MatrixXd& A);
+  void compute(const RowMatrixXd& A, bool lapack);
   /// A^-1 b; non-finite entries if A is singular.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
