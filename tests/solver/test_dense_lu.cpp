@@ -1,6 +1,8 @@
-// The LU of the coupled tail systems (solver/dense_cholesky.hpp), Eigen's and LAPACK's (on the
-// row-major A's transpose): both solve A x = b for a nonsymmetric matrix whose first pivot needs a
-// row interchange, and a singular one (a zero column) gives non-finite values (the caller's test).
+// The dense kernels of solver/dense_cholesky.hpp. The LU of the coupled tail systems, Eigen's and
+// LAPACK's (on the row-major A's transpose): both solve A x = b for a nonsymmetric matrix whose
+// first pivot needs a row interchange, and a singular one (a zero column) gives non-finite values
+// (the caller's test). The Gram products of the tails' Schur complements: P P^T added and L L^T
+// of a triangle, against Eigen's products, exactly symmetric.
 #include "solver/dense_cholesky.hpp"
 
 #include <gtest/gtest.h>
@@ -37,6 +39,24 @@ TEST(DenseLu, EigenAndLapackSolveTheNonsymmetricSystem) {
       lu.compute(singular, lapack);
       EXPECT_FALSE(lu.solve(A * x).allFinite()) << n << " " << lapack;
     }
+}
+
+TEST(DenseGram, RankUpdateAndTriangularProductAreTheProducts) {
+  const int n = 70;
+  const RowMatrixXd random_square = nonsymmetric(n);
+  const Eigen::MatrixXd M = random_square; // column-major, nonsymmetric
+  const auto P = M.leftCols(9);
+  Eigen::MatrixXd H = M + M.transpose();
+  const Eigen::MatrixXd expected = H - 0.5 * P * P.transpose();
+  add_gram(H, -0.5, P);
+  EXPECT_LT((H - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff());
+  EXPECT_TRUE(H == H.transpose());
+  // L's strict upper triangle holds M's entries: unread.
+  const Eigen::MatrixXd lower = M.triangularView<Eigen::Lower>();
+  const Eigen::MatrixXd G = triangular_gram(M);
+  const Eigen::MatrixXd LLt = lower * lower.transpose();
+  EXPECT_LT((G - LLt).cwiseAbs().maxCoeff(), 1e-13 * LLt.cwiseAbs().maxCoeff());
+  EXPECT_TRUE(G == G.transpose());
 }
 
 } // namespace

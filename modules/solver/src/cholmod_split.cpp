@@ -154,8 +154,7 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   // 3. The trailing block L_cc, and S = L_cc L_cc^T (- sigma I).
   if (supernodal) {
     s.L_cc = trailing_block(*s.f.L, s.m);
-    S_ = Eigen::MatrixXd::Zero(s.m, s.m);
-    add_gram(S_, 1.0, s.L_cc);
+    S_ = triangular_gram(s.L_cc);
     S_.diagonal().array() -= sigma;
   } else {
     // L_cc is made the identity in the factor (its columns cut to their diagonal 1), so the

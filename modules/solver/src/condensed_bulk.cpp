@@ -164,10 +164,7 @@ void CondensedBulk::tail_schur(int start) {
       H_ = B_.bottomRightCorner(tail, tail);
       add_gram(H_, -1.0, L_.bottomLeftCorner(tail, start));
     } else {
-      Eigen::MatrixXd L22 = L_.bottomRightCorner(tail, tail);
-      L22.triangularView<Eigen::StrictlyUpper>().setZero();
-      H_ = Eigen::MatrixXd::Zero(tail, tail);
-      add_gram(H_, 1.0, L22);
+      H_ = triangular_gram(L_.bottomRightCorner(tail, tail));
     }
     return;
   }

@@ -7,6 +7,7 @@
 #include <limits>
 
 extern "C" void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+extern "C" void dlauum_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 extern "C" void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv,
                         int* info);
 extern "C" void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a,
@@ -26,6 +27,20 @@ void add_gram(Eigen::Ref<Eigen::MatrixXd> H, double alpha,
                 static_cast<int>(P.outerStride()), 1.0, H.data(),
                 static_cast<int>(H.outerStride()));
   H.triangularView<Eigen::StrictlyUpper>() = H.transpose();
+}
+
+Eigen::MatrixXd triangular_gram(const Eigen::Ref<const Eigen::MatrixXd>& L) {
+  SIG_VERIFY(L.rows() == L.cols(), "triangular_gram: L is " << L.rows() << " x " << L.cols());
+  const int n = static_cast<int>(L.rows());
+  if (n == 0) return {};
+  // With J the reversal, U = J L J is upper triangular and U U^T = J (L L^T) J.
+  Eigen::MatrixXd U = L.reverse();
+  int info = 0;
+  dlauum_("U", &n, U.data(), &n, &info);
+  SIG_VERIFY(info == 0, "dlauum failed: info " << info);
+  Eigen::MatrixXd G = U.reverse();
+  G.triangularView<Eigen::StrictlyUpper>() = G.transpose();
+  return G;
 }
 
 bool cholesky_in_place(Eigen::MatrixXd& A) {

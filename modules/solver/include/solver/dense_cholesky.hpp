@@ -3,7 +3,8 @@
 // and vectorized for the machine, where Eigen's kernels are built for SSE2 only): the Cholesky
 // factorization (dpotrf, three to four times Eigen's own LLT on the 1026 x 1026 matrices of the
 // Hertz problem at N = 512), the LU of the coupled (frictional) tail systems (dgetrf) and the
-// symmetric rank-k updates of the tails' Schur complements (dsyrk).
+// symmetric rank-k updates of the tails' Schur complements (dsyrk), the products L L^T of a
+// triangular factor (dlauum).
 #include <Eigen/Core>
 #include <Eigen/LU>
 
@@ -21,6 +22,11 @@ inline constexpr Eigen::Index blas_min_rows = 1024;
 /// it: H exactly symmetric, so that a row of H may be read as its column (contiguous).
 void add_gram(Eigen::Ref<Eigen::MatrixXd> H, double alpha,
               const Eigen::Ref<const Eigen::MatrixXd>& P);
+
+/// L L^T of the lower triangle of L (its strict upper triangle unread), exactly symmetric: LAPACK's
+/// dlauum (U U^T of an upper triangular U) on L's entries in reverse order, a third of the flops
+/// of dsyrk on L's square.
+Eigen::MatrixXd triangular_gram(const Eigen::Ref<const Eigen::MatrixXd>& L);
 
 /// A := L with A = L L^T, L in the lower triangle (the strict upper triangle left as it was);
 /// false if A is not positive definite.
