@@ -1,8 +1,8 @@
 // The dense kernels of solver/dense_cholesky.hpp. The LU of the coupled tail systems, Eigen's and
 // LAPACK's (on the row-major A's transpose): both solve A x = b for a nonsymmetric matrix whose
 // first pivot needs a row interchange, and a singular one (a zero column) gives non-finite values
-// (the caller's test). The Gram products of the tails' Schur complements: P P^T added and L L^T
-// of a triangle, against Eigen's products, exactly symmetric.
+// (the caller's test). The Gram products of the tails' Schur complements (P P^T added and L L^T
+// of a triangle, exactly symmetric) and the symmetric product S X, against Eigen's products.
 #include "solver/dense_cholesky.hpp"
 
 #include <gtest/gtest.h>
@@ -41,7 +41,7 @@ TEST(DenseLu, EigenAndLapackSolveTheNonsymmetricSystem) {
     }
 }
 
-TEST(DenseGram, RankUpdateAndTriangularProductAreTheProducts) {
+TEST(DenseProducts, RankUpdateTriangularAndSymmetricProductsAreTheProducts) {
   const int n = 70;
   const RowMatrixXd random_square = nonsymmetric(n);
   const Eigen::MatrixXd M = random_square; // column-major, nonsymmetric
@@ -57,6 +57,13 @@ TEST(DenseGram, RankUpdateAndTriangularProductAreTheProducts) {
   const Eigen::MatrixXd LLt = lower * lower.transpose();
   EXPECT_LT((G - LLt).cwiseAbs().maxCoeff(), 1e-13 * LLt.cwiseAbs().maxCoeff());
   EXPECT_TRUE(G == G.transpose());
+  // S's strict upper triangle unread: only S's lower triangle mirrored is multiplied.
+  const Eigen::MatrixXd S = lower + lower.transpose();
+  Eigen::MatrixXd upper_garbage = S;
+  upper_garbage.triangularView<Eigen::StrictlyUpper>().setConstant(1e30);
+  const Eigen::MatrixXd Y = symmetric_product(upper_garbage, P);
+  const Eigen::MatrixXd SP = S * P;
+  EXPECT_LT((Y - SP).cwiseAbs().maxCoeff(), 1e-13 * SP.cwiseAbs().maxCoeff());
 }
 
 } // namespace

@@ -421,10 +421,18 @@ StepSolution CondensedBulk::solve(const std::vector<NodeConditions>& conditions,
   last_normal_force_ = s.normal_force;
   // S w along the step, for the residuals of a line search: two symmetric products here (S w
   // afresh, so that round-off does not build up over the iterations, and S dw), then O(n) a
-  // trial.
-  Sw_.noalias() = p_.S.selfadjointView<Eigen::Lower>() * w_;
+  // trial. A BLAS-sized S is read once for both (dsymm), its traffic their cost.
+  if (n >= blas_min_rows) {
+    Eigen::MatrixXd X(n, 2);
+    X << w_, step_;
+    const Eigen::MatrixXd Y = symmetric_product(p_.S, X);
+    Sw_ = Y.col(0);
+    S_step_ = Y.col(1);
+  } else {
+    Sw_.noalias() = p_.S.selfadjointView<Eigen::Lower>() * w_;
+    S_step_.noalias() = p_.S.selfadjointView<Eigen::Lower>() * step_;
+  }
   Sw_base_ = Sw_;
-  S_step_.noalias() = p_.S.selfadjointView<Eigen::Lower>() * step_;
   return s;
 }
 

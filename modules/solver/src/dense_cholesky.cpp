@@ -29,6 +29,18 @@ void add_gram(Eigen::Ref<Eigen::MatrixXd> H, double alpha,
   H.triangularView<Eigen::StrictlyUpper>() = H.transpose();
 }
 
+Eigen::MatrixXd symmetric_product(const Eigen::MatrixXd& S, const Eigen::MatrixXd& X) {
+  SIG_VERIFY(S.rows() == S.cols() && X.rows() == S.rows(),
+             "symmetric_product: S is " << S.rows() << " x " << S.cols() << ", X has " << X.rows()
+                                        << " rows");
+  Eigen::MatrixXd Y(X.rows(), X.cols());
+  if (Y.size() == 0) return Y;
+  const int n = static_cast<int>(S.rows()), k = static_cast<int>(X.cols());
+  cblas_dsymm(CblasColMajor, CblasLeft, CblasLower, n, k, 1.0, S.data(), n, X.data(), n, 0.0,
+              Y.data(), n);
+  return Y;
+}
+
 Eigen::MatrixXd triangular_gram(const Eigen::Ref<const Eigen::MatrixXd>& L) {
   SIG_VERIFY(L.rows() == L.cols(), "triangular_gram: L is " << L.rows() << " x " << L.cols());
   const int n = static_cast<int>(L.rows());

@@ -23,6 +23,9 @@ inline constexpr Eigen::Index blas_min_rows = 1024;
 void add_gram(Eigen::Ref<Eigen::MatrixXd> H, double alpha,
               const Eigen::Ref<const Eigen::MatrixXd>& P);
 
+/// S X for a symmetric S of which the lower triangle is read (dsymm).
+Eigen::MatrixXd symmetric_product(const Eigen::MatrixXd& S, const Eigen::MatrixXd& X);
+
 /// L L^T of the lower triangle of L (its strict upper triangle unread), exactly symmetric: LAPACK's
 /// dlauum (U U^T of an upper triangular U) on L's entries in reverse order, a third of the flops
 /// of dsyrk on L's square.
