@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "frictional_problem.hpp"
 #include "solver/condensed_contact.hpp"
+#include "solver/dense_cholesky.hpp"
 
 #include <gtest/gtest.h>
 
@@ -559,6 +560,39 @@ void dense_step(const CondensedProblem& p, const std::vector<NodeConditions>& co
   }
 }
 
+/// Default conditions (springs k0) but on the nodes [first, last), which take the four kinds of
+/// frictional conditions in turn: stick on the wall, Coulomb slip on it, slip on a compliance,
+/// penalty stick.
+std::vector<NodeConditions> mixed_zone(const Eigen::VectorXd& k0, int first, int last,
+                                       std::mt19937& random) {
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<NodeConditions> conditions(k0.size());
+  for (int q = 0; q < static_cast<int>(k0.size()); ++q) {
+    conditions[q].normal.stiffness = k0[q];
+    if (q < first || q >= last) continue;
+    NodeConditions& c = conditions[q];
+    switch (q % 4) {
+    case 0: // on the wall, sticking
+      c.normal = {true, 0.01 * uniform(random), 0, 0, 0, 0};
+      c.tangential = {true, 0.01 * uniform(random), 0, 0, 0, 0};
+      break;
+    case 1: // on the wall, Coulomb slip
+      c.normal = {true, 0.01 * uniform(random), 0, 0, 0, 0};
+      c.tangential.coupling = 0.3;
+      break;
+    case 2: // compliance, Coulomb slip on it
+      c.normal = {false, 0, 0.2, 1.5, 0, 0};
+      c.tangential.force = -0.06;
+      c.tangential.cross = -0.45;
+      break;
+    default: // penalty stick
+      c.normal = {false, 0, 0.1, 2.0, 0, 0};
+      c.tangential = {false, 0, 0.05, 3.0, 0, 0};
+    }
+  }
+  return conditions;
+}
+
 TEST(CondensedBulk, EveryStepIsTheDenseStepWhateverTheTail) {
   // 40 nodes, ordered by decreasing gap (node q at place q); a contact zone that grows and
   // shrinks at the end of the order (the tail updated both ways), then jumps to its start (a
@@ -580,30 +614,7 @@ TEST(CondensedBulk, EveryStepIsTheDenseStepWhateverTheTail) {
   const int zones[][2] = {{30, 40}, {28, 40}, {25, 40}, {27, 40}, {31, 40}, {0, 3},
                           {0, 4},   {0, 2},   {0, 40},  {20, 24}, {21, 24}, {18, 26}};
   for (const auto& zone : zones) {
-    std::vector<NodeConditions> conditions(m);
-    for (int q = 0; q < m; ++q) {
-      conditions[q].normal.stiffness = k0[q];
-      if (q < zone[0] || q >= zone[1]) continue;
-      NodeConditions& c = conditions[q];
-      switch (q % 4) {
-      case 0: // on the wall, sticking
-        c.normal = {true, 0.01 * uniform(random), 0, 0, 0, 0};
-        c.tangential = {true, 0.01 * uniform(random), 0, 0, 0, 0};
-        break;
-      case 1: // on the wall, Coulomb slip
-        c.normal = {true, 0.01 * uniform(random), 0, 0, 0, 0};
-        c.tangential.coupling = 0.3;
-        break;
-      case 2: // compliance, Coulomb slip on it
-        c.normal = {false, 0, 0.2, 1.5, 0, 0};
-        c.tangential.force = -0.06;
-        c.tangential.cross = -0.45;
-        break;
-      default: // penalty stick
-        c.normal = {false, 0, 0.1, 2.0, 0, 0};
-        c.tangential = {false, 0, 0.05, 3.0, 0, 0};
-      }
-    }
+    const std::vector<NodeConditions> conditions = mixed_zone(k0, zone[0], zone[1], random);
     Eigen::VectorXd z, N, T;
     dense_step(fr.problem, conditions, bulk.displacement(), z, N, T);
     const StepSolution s = bulk.solve(conditions, Eigen::VectorXd::Zero(m));
@@ -617,6 +628,59 @@ TEST(CondensedBulk, EveryStepIsTheDenseStepWhateverTheTail) {
     }
   }
   EXPECT_GT(bulk.reorders(), 0) << "the sequence should make the bulk reorder";
+}
+
+/// The largest residual of the step equations (dense_step's) at z, N, T, relative to the
+/// largest term: equilibrium (S + eps) z + F = f + eps w, and per component z = w + value where
+/// imposed, F = force + k (z - w) + coupling N + cross (z_n - w_n) otherwise.
+double step_residual(const CondensedProblem& p, const std::vector<NodeConditions>& conditions,
+                     const Eigen::VectorXd& w, const Eigen::VectorXd& z, const Eigen::VectorXd& N,
+                     const Eigen::VectorXd& T) {
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(z.size());
+  double largest = (p.S * z).cwiseAbs().maxCoeff() + p.f.cwiseAbs().maxCoeff(), worst = 0;
+  for (int q = 0; q < static_cast<int>(conditions.size()); ++q) {
+    const int dof[2] = {p.normal_dof[q], p.tangential_dof[q]};
+    const double force[2] = {N[q], T[q]};
+    const DofCondition* c[2] = {&conditions[q].normal, &conditions[q].tangential};
+    for (int k = 0; k < 2; ++k) {
+      F[dof[k]] = force[k];
+      const double dz = z[dof[k]] - w[dof[k]];
+      worst =
+          std::max(worst, c[k]->imposed ? std::abs(dz - c[k]->value)
+                                        : std::abs(force[k] - c[k]->force - c[k]->stiffness * dz -
+                                                   c[k]->coupling * N[q] -
+                                                   c[k]->cross * (z[dof[0]] - w[dof[0]])));
+    }
+  }
+  const Eigen::VectorXd equilibrium = p.S * z + p.regularization * (z - w) + F - p.f;
+  return std::max(worst, equilibrium.cwiseAbs().maxCoeff()) / largest;
+}
+
+TEST(CondensedBulk, TailsOfBlasSizeSolveTheStep) {
+  // 700 nodes (1400 unknowns): the tails from 1020 to 1400 unknowns take every way of forming
+  // their Schur complement by BLAS (dense_cholesky.hpp's blas_min_rows = 1024): afresh as
+  // L22 L22^T and as B_tail - L21 L21^T, longer and shorter than the last, one longer than a
+  // tail formed below the threshold; and LAPACK's LU of the coupled systems.
+  const int m = 700;
+  ASSERT_LT(2 * (m - 190), blas_min_rows);
+  Frictional fr = frictional_problem(coulomb(0.3), m);
+  fr.problem.regularization = 1e-3;
+  for (int q = 0; q < m; ++q)
+    fr.problem.gap[q] = 0.01 * (m - q);
+  const Eigen::VectorXd k0 = Eigen::VectorXd::Zero(m);
+  CondensedBulk bulk(fr.problem, k0);
+  std::mt19937 random(5);
+  for (const int first : {176, 170, 180, 0, 100, 190, 180, 190, 10}) {
+    const std::vector<NodeConditions> conditions = mixed_zone(k0, first, m, random);
+    const Eigen::VectorXd w = bulk.displacement();
+    const StepSolution s = bulk.solve(conditions, Eigen::VectorXd::Zero(m));
+    ASSERT_TRUE(bulk.move(1.0));
+    EXPECT_LT(step_residual(fr.problem, conditions, w, bulk.displacement(), s.normal_force,
+                            s.tangential_force),
+              1e-12)
+        << "zone from node " << first;
+  }
+  EXPECT_EQ(bulk.reorders(), 0) << "each zone is a whole tail";
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 
 #include "cholmod_view.hpp"
 #include "core/error.hpp"
+#include "solver/dense_cholesky.hpp"
 #include "solver/linear_solver.hpp"
 
 #include <cholmod.h>
@@ -11,10 +12,6 @@
 #include <cmath>
 
 namespace sig {
-
-extern "C" void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k,
-                       const double* alpha, const double* a, const int* lda, const double* beta,
-                       double* c, const int* ldc);
 
 struct CholmodSplitSolver::State {
   CholmodFactor f;       ///< its b: the last forward substitution
@@ -157,11 +154,8 @@ CholmodSplitSolver::CholmodSplitSolver(const Eigen::SparseMatrix<double>& K,
   // 3. The trailing block L_cc, and S = L_cc L_cc^T (- sigma I).
   if (supernodal) {
     s.L_cc = trailing_block(*s.f.L, s.m);
-    S_.resize(s.m, s.m);
-    const double one = 1, zero = 0;
-    dsyrk_("L", "N", &s.m, &s.m, &one, s.L_cc.data(), &s.m, &zero, S_.data(), &s.m);
+    S_ = triangular_gram(s.L_cc);
     S_.diagonal().array() -= sigma;
-    S_.triangularView<Eigen::StrictlyUpper>() = S_.transpose();
   } else {
     // L_cc is made the identity in the factor (its columns cut to their diagonal 1), so the
     // substitutions skip it: the forward one leaves z_c = b_c - L_ci z_i, the condensed load

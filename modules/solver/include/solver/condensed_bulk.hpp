@@ -107,7 +107,7 @@ private:
   int factorizations_ = 0;
   /// The last tail system A of a step, kept with its factorization for the next step with the
   /// same A.
-  Eigen::MatrixXd tail_matrix_;
+  RowMatrixXd tail_matrix_;
   bool tail_coupled_ = false;
   Eigen::LLT<Eigen::MatrixXd> tail_llt_;
   DenseLu tail_lu_;
