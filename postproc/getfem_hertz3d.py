@@ -4,7 +4,7 @@ friction, and Cattaneo-Mindlin's tangential step; the GetFEM side of the 3D comp
 
     /usr/bin/python3 postproc/getfem_hertz3d.py [--msh FILE | --h H --grading G] [--R R] [--E E]
         [--nu NU] [--P P | --pressure p] [--clamp-top [--top-shift DX] [--top-drop DZ]] [--cylinder RC]
-        [--mu MU] [--tangential Q] [--eps EPS]
+        [--mu MU | --threshold S] [--tangential Q] [--eps EPS]
         [--version V] [--repeat K] [--json FILE] [--workdir DIR]
 
 What is solved:
@@ -25,6 +25,20 @@ What is solved:
     (GetFEM's advice), version 2 (symmetric Alart-Curnier except for the contact-friction
     coupling) by default; frictionless by default, Coulomb with --mu MU (the brick's lambda_t,
     two tangential nodal forces per node along GetFEM's tangents e_x, e_y);
+  - Tresca with --threshold S (with --clamp-top): GetFEM 5.4's nodal and basic contact bricks
+    take a friction coefficient only from Python (the C++ basic brick's Tresca version is not in
+    the interface), so the Tresca case is built as postproc/getfem_friction.py builds it in 2D,
+    from GetFEM's basic brick on an explicit model: the variable U = (u, z), z one extra unknown
+    per contact node; the stiffness K and load F of the elastic model (assembled once by GetFEM,
+    add_explicit_matrix / add_explicit_rhs); the clamp as constraints on U; a frictionless basic
+    brick for the plane (BN = -e_z rows, gap = z, alpha = M_ii / l as the obstacle brick computes
+    it); and a basic brick with Coulomb friction (coefficient 1) whose normal rows act on z alone
+    (z_i <= 0) with the constant force c_i = S w_i pushing z_i on its bound, its tangential rows
+    BT = e_x, e_y of the node's u: its normal multiplier is -c_i from the first iterate (started
+    there), so the friction ball has radius c_i on every node, in contact or not (the classical
+    Tresca model, as ours; w_i the node's tributary area, sig-contact's weight); the nodes of the
+    clamped top's rim are left out (our decks' CONTACT exclude=2: a clamped node held to stick
+    would repeat the clamp, and GetFEM's tangent is then singular);
   - rigid motions: the contact holds z and, with friction, x, y and the twist about z; what it
     does not hold is removed by weak constraints on the top face (add_constraint_with_multipliers,
     one row each, the integral over the top face Gamma_2):
@@ -128,6 +142,8 @@ def parse_args():
                         help="the obstacle is the rigid cylinder of radius RC and axis x through (0, 0, -RC), "
                              "touching z = 0 along the x axis, instead of the plane (frictionless only)")
     parser.add_argument("--mu", type=float, default=0.0, help="Coulomb coefficient (default 0: frictionless)")
+    parser.add_argument("--threshold", type=float, metavar="S",
+                        help="Tresca friction of bound S per unit area instead of Coulomb (needs --clamp-top)")
     parser.add_argument("--tangential", type=float, metavar="Q", help="second step: tangential load Q < mu P")
     parser.add_argument("--eps", type=float, default=1e-8, help="GetFEM's max_res (default 1e-8)")
     parser.add_argument("--version", type=int, default=2, choices=(1, 2), help="augmentation version (default 2)")
@@ -144,6 +160,9 @@ def parse_args():
         fail("--top-shift and --top-drop need --clamp-top")
     if args.clamp_top and args.tangential is not None:
         fail("--tangential needs the weak rigid-motion rows, not --clamp-top (the clamp would carry Q)")
+    if args.threshold is not None and (not args.threshold > 0 or args.mu != 0 or not args.clamp_top
+                                       or args.tangential is not None or args.cylinder is not None):
+        fail("--threshold S needs S > 0 and --clamp-top, without --mu, --tangential or --cylinder")
     if args.cylinder is not None and (args.cylinder <= 0 or args.mu != 0):
         fail("--cylinder RC needs RC > 0 and no friction")
     if args.tangential is not None and not 0 < args.tangential < args.mu * args.P:
@@ -238,6 +257,57 @@ def add_contact(md, mim, nbc, E, mu, version, cylinder=None):
     return ["lambda_n", "lambda_t"]
 
 
+def tresca_model(mfu, mim, pressure, args, nodes, start_shift):
+    """The explicit model of the module docstring (Tresca): returns (md, names, start)."""
+    base, _, _ = isotropic_elasticity(mim.linked_mesh(), args.E, args.nu, "IM_TETRAHEDRON(2)")
+    add_loads(base, mim, pressure)
+    base.assembly("build_all")  # K and F of the elastic model alone, at u = 0
+    K, F = base.tangent_matrix(), np.asarray(base.rhs()).ravel()
+    xdofs, xyz, weights = nodes
+    nbdof, nbc = mfu.nbdof(), len(xdofs)
+    size = nbdof + nbc
+    md = gf.Model("real")
+    md.add_variable("U", size)
+    Kx = gf.Spmat("empty", size, size)
+    Kx.assign(list(range(nbdof)), list(range(nbdof)), K)
+    md.add_explicit_matrix("U", "U", Kx, 1, 0)
+    dofs = np.sort(mfu.basic_dof_on_region(TOP))
+    value = (args.top_shift, 0.0, None if args.top_drop is None else -args.top_drop)
+    held = [(int(d), value[k % 3]) for k, d in enumerate(dofs) if value[k % 3] is not None]
+    B = gf.Spmat("empty", len(held), size)
+    for row, (dof, _) in enumerate(held):
+        B[row, dof] = 1.0
+    md.add_variable("clamp", len(held))
+    md.add_constraint_with_multipliers("U", "clamp", B, np.array([v for _, v in held]))
+    M = gf.asm_mass_matrix(mim, mfu, mfu, CURVED)
+    pts = mim.linked_mesh().pts()
+    alpha = np.array([M[int(i) + 2, int(i) + 2] for i in xdofs]) / np.max(np.max(pts, axis=1) - np.min(pts, axis=1))
+    md.add_initialized_data("alpha", alpha)
+    md.add_initialized_data("gap", xyz[2])
+    md.add_initialized_data("r", [args.E])
+    BN = gf.Spmat("empty", nbc, size)
+    BT = gf.Spmat("empty", 2 * nbc, size)
+    BZ = gf.Spmat("empty", nbc, size)
+    for j, x in enumerate(int(i) for i in xdofs):
+        BN[j, x + 2] = -1.0
+        BT[2 * j, x], BT[2 * j + 1, x + 1] = 1.0, 1.0
+        BZ[j, nbdof + j] = 1.0
+    md.add_variable("lambda_n", nbc)
+    md.add_basic_contact_brick("U", "lambda_n", "r", BN, "gap", "alpha", args.version)
+    md.add_variable("lambda_z", nbc)
+    md.add_variable("lambda_t", 2 * nbc)
+    md.add_initialized_data("one", [1.0])
+    md.add_initialized_data("zero", [0.0])
+    md.add_basic_contact_brick("U", "lambda_z", "lambda_t", "r", BZ, BT, "one", "zero", "alpha",
+                               args.version)
+    bound = args.threshold * weights  # |T_i| <= S w_i
+    md.add_explicit_rhs("U", np.concatenate([F, bound]))
+    start = {"U": np.zeros(size), "clamp": np.zeros(len(held)), "lambda_n": np.zeros(nbc),
+             "lambda_z": -bound, "lambda_t": np.zeros(2 * nbc)}
+    start["U"][2:nbdof:3] = start_shift
+    return md, ["U", "clamp", "lambda_n", "lambda_z", "lambda_t"], start
+
+
 def nodal_forces(md, nbc, frictional):
     """N (normal force pressing, >= 0) and the tangential force vectors T (3 x n) of the plane on
     the body: -lambda_n and lambda_t along GetFEM's tangents e_x, e_y (Gram-Schmidt on e1, e2
@@ -263,9 +333,9 @@ def run_step(md, start, args, label):
             "solve_seconds": seconds, "solve_seconds_median": statistics.median(seconds)}
 
 
-def contact_measures(N, T, xyz, weights, mu, a_hertz):
+def contact_measures(N, T, xyz, weights, mu, a_hertz, bound=None):
     """Contact radius, peak pressure (node on the axis), the mean pressure within a_hertz / 2,
-    statuses and stick radius."""
+    statuses and stick radius; with `bound` (Tresca's per node) the statuses by it."""
     r = np.hypot(xyz[0], xyz[1])
     centre = r < a_hertz / 2
     contact = N > CONTACT_TOL * N.max()
@@ -277,8 +347,9 @@ def contact_measures(N, T, xyz, weights, mu, a_hertz):
          "p_mean_centre": float(N[centre].sum() / weights[centre].sum()),
          "resultant": [float(T[0].sum()), float(T[1].sum()), float(N.sum())]}
     status = np.where(contact, "contact", "free").astype(object)
-    if mu > 0:
-        slipping = contact & (np.linalg.norm(T, axis=0) >= mu * N - SLIP_TOL * mu * N.max())
+    if mu > 0 or bound is not None:
+        limit = mu * N if bound is None else bound
+        slipping = contact & (np.linalg.norm(T, axis=0) >= limit - SLIP_TOL * limit.max())
         status[contact & ~slipping] = "stick"
         status[slipping] = "slip"
         stick = status == "stick"
@@ -337,9 +408,11 @@ def node_table(N, T, xyz, weights, status, m, u):
 def measure(md, mfu, mesh, nodes, args, H, Q):
     """Everything measured on the current solution of md."""
     xdofs, xyz, weights = nodes
-    N, T = nodal_forces(md, len(xdofs), args.mu > 0)
-    m, status = contact_measures(N, T, xyz, weights, args.mu, H["a"])
-    u = np.asarray(md.variable("u")).ravel()
+    tresca = args.threshold is not None
+    N, T = nodal_forces(md, len(xdofs), args.mu > 0 or tresca)
+    bound = args.threshold * weights if tresca else None
+    m, status = contact_measures(N, T, xyz, weights, args.mu, H["a"], bound)
+    u = np.asarray(md.variable("U" if tresca else "u")).ravel()[:mfu.nbdof()]
     at_centre = np.nonzero(np.linalg.norm(mfu.basic_dof_nodes() - np.array([[0], [0], [args.R]]), axis=0)
                            < 1e-9 * args.R)[0]
     if len(at_centre) != 3:
@@ -364,7 +437,16 @@ def main():
         pressure, args.P = args.pressure, args.pressure * top_area(mim)
         H = hertz(args.P, args.R, args.E, args.nu)
     add_loads(md, mim, pressure)
-    if args.clamp_top:
+    if args.threshold is not None:
+        # The curved face's nodes off the clamped top (our decks' CONTACT exclude=2): Tresca's
+        # bound holds every node, and a clamped node held to stick would repeat the clamp.
+        xdofs, xyz, weights = contact_nodes(mfu, mim)
+        top = set(int(d) for d in np.asarray(mfu.basic_dof_on_region(TOP)).ravel())
+        keep = np.array([int(d) not in top for d in xdofs])
+        nodes = (xdofs[keep], xyz[:, keep], weights[keep])
+        md, names, start = tresca_model(mfu, mim, pressure, args, nodes, -H["a"] ** 2 / (4 * args.R))
+        rows = []
+    elif args.clamp_top:
         rows = []
         clamp_top(md, mfu, args.top_shift, args.top_drop)
         holds = ["clamp"]
@@ -372,11 +454,12 @@ def main():
         rows = ["twist", "tilt_x", "tilt_y"] + (["mean_x", "mean_y"] if args.mu == 0 else [])
         add_rigid_constraints(md, mim, mfu, rows)
         holds = ["rigid"]
-    nodes = contact_nodes(mfu, mim)
-    multipliers = add_contact(md, mim, len(nodes[0]), args.E, args.mu, args.version, args.cylinder)
-    names = ["u"] + holds + multipliers
-    start = {name: np.zeros_like(np.atleast_1d(md.variable(name)), dtype=float) for name in names}
-    start["u"][2::3] = -H["a"] ** 2 / (4 * args.R)
+    if args.threshold is None:
+        nodes = contact_nodes(mfu, mim)
+        multipliers = add_contact(md, mim, len(nodes[0]), args.E, args.mu, args.version, args.cylinder)
+        names = ["u"] + holds + multipliers
+        start = {name: np.zeros_like(np.atleast_1d(md.variable(name)), dtype=float) for name in names}
+        start["u"][2::3] = -H["a"] ** 2 / (4 * args.R)
 
     steps = [run_step(md, start, args, "normal")]
     results = [measure(md, mfu, mesh, nodes, args, H, None)]
@@ -392,12 +475,14 @@ def main():
                         f"nodal contact brick with "
                         + ("z >= 0" if args.cylinder is None else f"the cylinder of radius {args.cylinder:g} and axis x under z = 0")
                         + f" version {args.version}, r = E, mu = {args.mu:g}, "
-                        f"max_res {args.eps:g}, lsolver auto, start u_z = -a^2/(4R), "
+                        + ("" if args.threshold is None else f"Tresca S = {args.threshold:g} (explicit model, basic bricks), ")
+                        + f"max_res {args.eps:g}, lsolver auto, start u_z = -a^2/(4R), "
                         + (f"top face's nodes held at u_x = {args.top_shift:g}, u_y = 0"
                            + ("" if args.top_drop is None else f", u_z = {-args.top_drop:g}") if args.clamp_top
                            else f"top-face constraints {rows}")),
         "pressure": pressure, "clamp_top": args.clamp_top, "top_shift": args.top_shift, "top_drop": args.top_drop,
-        "R": args.R, "E": args.E, "nu": args.nu, "P": args.P, "mu": args.mu, "Q": args.tangential,
+        "R": args.R, "E": args.E, "nu": args.nu, "P": args.P, "mu": args.mu, "threshold": args.threshold,
+        "Q": args.tangential,
         "mesh": mesh_text, "dofs": int(mfu.nbdof()), "points": int(mesh.nbpts()),
         "tetrahedra": int(mesh.nbcvs()), "contact_candidates": len(nodes[0]),
         "constraints": rows, "converged": all(s["converged"] for s in steps),
