@@ -47,8 +47,8 @@ for law in coulomb tresca; do
     --top-drop 0.07 --pressure $p "${option[@]}" --eps 1e-10 --repeat 1 --json "$work/getfem_$law.json" \
     >"$work/getfem_$law.log" 2>&1 || die "postproc/getfem_hertz3d.py ($law) failed: $(tail -3 "$work/getfem_$law.log")"
 
-for method in pdas alm; do
-  cat >"$work/${method}_$law.dat" <<DECK
+  for method in pdas alm; do
+    cat >"$work/${method}_$law.dat" <<DECK
 # The half ball of postproc/getfem_hertz3d.py (R = 8, E = 150, nu = 0.3, GPa-m), its top clamped
 # and moved by (0.02, 0, -0.07), on the plane x3 = 0 with friction $friction.
 TITLE half ball against GetFEM, $law
@@ -61,11 +61,11 @@ FRICTION ref=3 $friction
 SOLVER method=$method eps=1e-10
 OUTPUT vtk=no
 DECK
-  "$root/drivers/chain.sh" "$work/${method}_$law.dat" -o "$work/${method}_$law" >"$work/${method}_$law.log" 2>&1 ||
-    { tail -20 "$work/${method}_$law.log"; die "drivers/chain.sh ($method, $law) failed"; }
+    "$root/drivers/chain.sh" "$work/${method}_$law.dat" -o "$work/${method}_$law" >"$work/${method}_$law.log" 2>&1 ||
+      { tail -20 "$work/${method}_$law.log"; die "drivers/chain.sh ($method, $law) failed"; }
 
-  checks=$((checks + 1))
-  "$python" - "$work/${method}_$law/contact.csv" "$work/getfem_$law.json" $bound "$method" $law <<'PY' || fail "ours ($method, $law) against GetFEM"
+    checks=$((checks + 1))
+    "$python" - "$work/${method}_$law/contact.csv" "$work/getfem_$law.json" $bound "$method" $law <<'PY' || fail "ours ($method, $law) against GetFEM"
 import csv, math, sys
 from pipeline_checks import getfem_nodes_against
 bound, method, law = float(sys.argv[3]), sys.argv[4], sys.argv[5]
@@ -113,6 +113,6 @@ print(f"{method} against GetFEM ({law} {bound:g}): {matched} nodes (free {counts
       f"differ, {exempt} exempt")
 sys.exit(1 if problems else 0)
 PY
-done
+  done
 done
 finish "the frictional 3D solve (Coulomb and Tresca) is GetFEM's on the same mesh"
