@@ -110,6 +110,20 @@ def isotropic_elasticity(m, E, nu, integration):
     return md, mfu, mim
 
 
+def explicit_model(K, size):
+    """A GetFEM model of one variable "U" of `size` unknowns whose leading block is the matrix K
+    (an elastic model's tangent, GetFEM's Spmat) and the rest unknowns of their own (the extra
+    unknowns z of the Tresca construction): the basic contact bricks then act on U."""
+    import getfem as gf  # only the scripts that run GetFEM need it
+    nbdof = int(K.size()[0])
+    md = gf.Model("real")
+    md.add_variable("U", size)
+    Kx = gf.Spmat("empty", size, size)
+    Kx.assign(list(range(nbdof)), list(range(nbdof)), K)
+    md.add_explicit_matrix("U", "U", Kx, 1, 0)
+    return md
+
+
 def plane_strain_elasticity(m, E, nu, traction, region):
     """Our P1 plane-strain elasticity on the GetFEM mesh m: GetFEM's 2D isotropic linearized
     elasticity with the 3D Lame coefficients, the traction (a pair) on the boundary `region`.

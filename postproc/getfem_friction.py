@@ -71,9 +71,9 @@ from pathlib import Path
 
 import numpy as np
 
-from getfem_common import (deck_cards, getfem_version, import_half_disc, nopo_coordinates,
-                           parse_timed_args, plane_strain_elasticity, print_summary, snap_arc,
-                           timed_solves, tributary_lengths)
+from getfem_common import (deck_cards, explicit_model, getfem_version, import_half_disc,
+                           nopo_coordinates, parse_timed_args, plane_strain_elasticity,
+                           print_summary, snap_arc, timed_solves, tributary_lengths)
 
 try:
     import getfem as gf
@@ -232,11 +232,7 @@ def build_problem(d, r=None, version=2, brick="obstacle", workdir=None, nopo=Non
         # Explicit model U = (u, z): K and F of the elastic model.
         extra = nbc if law == "tresca" else 0
         size = nbdof + extra
-        md = gf.Model("real")
-        md.add_variable("U", size)
-        Kx = gf.Spmat("empty", size, size)
-        Kx.assign(list(range(nbdof)), list(range(nbdof)), K)
-        md.add_explicit_matrix("U", "U", Kx, 1, 0)
+        md = explicit_model(K, size)
         force = np.zeros(size)
         force[:nbdof] = F
         # alpha_i = M_ii / l as the rigid-obstacle brick computes it (homogenizes r only).

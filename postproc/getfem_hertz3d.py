@@ -102,8 +102,9 @@ from pathlib import Path
 import numpy as np
 
 from hertz3d_report import hertz  # Hertz's a, p0 and approach, as our report takes them
-from getfem_common import (getfem_version, gmsh_mesh, import_gmsh, isotropic_elasticity,
-                           parse_timed_args, print_summary, timed_solves, tributary_areas)
+from getfem_common import (explicit_model, getfem_version, gmsh_mesh, import_gmsh,
+                           isotropic_elasticity, parse_timed_args, print_summary, timed_solves,
+                           tributary_areas)
 
 try:
     import getfem as gf
@@ -266,11 +267,7 @@ def tresca_model(mfu, mim, pressure, args, nodes, start_shift):
     xdofs, xyz, weights = nodes
     nbdof, nbc = mfu.nbdof(), len(xdofs)
     size = nbdof + nbc
-    md = gf.Model("real")
-    md.add_variable("U", size)
-    Kx = gf.Spmat("empty", size, size)
-    Kx.assign(list(range(nbdof)), list(range(nbdof)), K)
-    md.add_explicit_matrix("U", "U", Kx, 1, 0)
+    md = explicit_model(K, size)
     dofs = np.sort(mfu.basic_dof_on_region(TOP))
     value = (args.top_shift, 0.0, None if args.top_drop is None else -args.top_drop)
     held = [(int(d), value[k % 3]) for k, d in enumerate(dofs) if value[k % 3] is not None]
