@@ -216,17 +216,20 @@ def add_rigid_constraints(md, mim, mfu, names):
     md.add_constraint_with_multipliers("u", "rigid", B, np.zeros(len(names)))
 
 
-def clamp_top(md, mfu, shift, drop):
+def clamp_top(md, mfu, shift, drop, variable="u", size=None):
     """u_x = shift, u_y = 0 (and u_z = -drop unless drop is None) at every node of the top face:
-    one row per dof through the multiplier variable "clamp" (its values are the nodal reactions)."""
+    one row per dof of `variable` (of `size` unknowns, the field's dofs first; default the field
+    u) through the multiplier variable "clamp" (its values are the nodal reactions). Returns the
+    number of rows."""
     dofs = np.sort(mfu.basic_dof_on_region(TOP))
     value = (shift, 0.0, None if drop is None else -drop)  # x, y, z per node
     held = [(int(d), value[k % 3]) for k, d in enumerate(dofs) if value[k % 3] is not None]
-    B = gf.Spmat("empty", len(held), mfu.nbdof())
+    B = gf.Spmat("empty", len(held), size or mfu.nbdof())
     for row, (dof, _) in enumerate(held):
         B[row, dof] = 1.0
     md.add_variable("clamp", len(held))
-    md.add_constraint_with_multipliers("u", "clamp", B, np.array([v for _, v in held]))
+    md.add_constraint_with_multipliers(variable, "clamp", B, np.array([v for _, v in held]))
+    return len(held)
 
 
 def contact_nodes(mfu, mim):
@@ -268,14 +271,7 @@ def tresca_model(mfu, mim, pressure, args, nodes, start_shift):
     nbdof, nbc = mfu.nbdof(), len(xdofs)
     size = nbdof + nbc
     md = explicit_model(K, size)
-    dofs = np.sort(mfu.basic_dof_on_region(TOP))
-    value = (args.top_shift, 0.0, None if args.top_drop is None else -args.top_drop)
-    held = [(int(d), value[k % 3]) for k, d in enumerate(dofs) if value[k % 3] is not None]
-    B = gf.Spmat("empty", len(held), size)
-    for row, (dof, _) in enumerate(held):
-        B[row, dof] = 1.0
-    md.add_variable("clamp", len(held))
-    md.add_constraint_with_multipliers("U", "clamp", B, np.array([v for _, v in held]))
+    held = clamp_top(md, mfu, args.top_shift, args.top_drop, "U", size)
     M = gf.asm_mass_matrix(mim, mfu, mfu, CURVED)
     pts = mim.linked_mesh().pts()
     alpha = np.array([M[int(i) + 2, int(i) + 2] for i in xdofs]) / np.max(np.max(pts, axis=1) - np.min(pts, axis=1))
@@ -299,7 +295,7 @@ def tresca_model(mfu, mim, pressure, args, nodes, start_shift):
                                args.version)
     bound = args.threshold * weights  # |T_i| <= S w_i
     md.add_explicit_rhs("U", np.concatenate([F, bound]))
-    start = {"U": np.zeros(size), "clamp": np.zeros(len(held)), "lambda_n": np.zeros(nbc),
+    start = {"U": np.zeros(size), "clamp": np.zeros(held), "lambda_n": np.zeros(nbc),
              "lambda_z": -bound, "lambda_t": np.zeros(2 * nbc)}
     start["U"][2:nbdof:3] = start_shift
     return md, ["U", "clamp", "lambda_n", "lambda_z", "lambda_t"], start
