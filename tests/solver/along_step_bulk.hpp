@@ -21,12 +21,14 @@ public:
   }
   void keep() override { kept_ = alpha_; }
   void restore() override { alpha_ = kept_; }
+  void checkpoint() override { checkpoint_ = alpha_; }
+  void rewind() override { alpha_ = checkpoint_; }
   double displacement_norm() const override { return 1; }
   double displacement_step() const override { return alpha_; }
   bool nonlinear() const override { return is_nonlinear; }
 
 protected:
-  double alpha_ = 0, kept_ = 0;
+  double alpha_ = 0, kept_ = 0, checkpoint_ = 0;
 };
 
 } // namespace sig::test

@@ -3,13 +3,15 @@
 // parameter), so a full step whose only fault is a node it leaves penetrating (the next test
 // puts that node on the wall) is taken whatever the augmentation, on a linear and on a
 // nonlinear bulk; a step that raises the residual more than tenfold over the recent iterates is
-// shortened until it does not. A scripted bulk whose residual is the Newton step's linear model
-// makes the full step exact for the system the step linearized.
+// shortened until it does not; a step that raised it and was not repaid within two more steps is
+// undone (the watchdog). A scripted bulk whose residual is the Newton step's linear model makes
+// the full step exact for the system the step linearized.
 #include "along_step_bulk.hpp"
 #include "solver/contact_newton.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
 namespace sig {
@@ -138,6 +140,85 @@ TEST(ContactNewtonSearch, AResidualAtRoundOffTakesTheFullStep) {
     EXPECT_EQ(r.step_length[0], 1.0) << method;
     EXPECT_DOUBLE_EQ(r.normal_force[0], RoundOffBulk::kReaction) << method;
   }
+}
+
+/// A path of three Newton steps, the bulk's state a position s along it (s = 0, 1, 2, 3 the
+/// iterates): node 0 far off the obstacle, node 1 off it by 0.01 at s = 0. The first step drives
+/// node 1 4 deep while the equilibrium residual falls from 1 to 0: the system it linearized (node
+/// 1 held off the wall) is solved, the merit rises to 4, under the ceiling. The next two steps
+/// (node 1 on the wall, its reaction 1) bring the merit to 3, then 2.5: never below 1, where the
+/// raise started.
+class UnrepaidBulk final : public test::AlongStepBulk {
+public:
+  std::vector<double> solved_at; ///< the positions each step started from
+
+  Eigen::VectorXd penetration() const override {
+    const double s = position();
+    return Eigen::Vector2d(-1.0, s <= 1 ? -0.01 + 4.01 * s : s <= 2 ? 4 - 4 * (s - 1) : 0.0);
+  }
+  double equilibrium_residual(const Eigen::VectorXd&, const Eigen::VectorXd&) const override {
+    const double s = position();
+    return s <= 1 ? 1 - s : s <= 2 ? 3 * (s - 1) : 3 - 0.5 * (s - 2);
+  }
+  double displacement_step() const override { return alpha_; }
+  StepSolution solve(const std::vector<NodeConditions>& conditions,
+                     const Eigen::VectorXd&) override {
+    base_ = position();
+    alpha_ = kept_ = 0;
+    solved_at.push_back(base_);
+    EXPECT_FALSE(conditions[0].normal.imposed);
+    StepSolution s;
+    s.normal_increment = Eigen::Vector2d(0.0, penetration_at(base_ + 1) - penetration_at(base_));
+    s.normal_force = Eigen::Vector2d(0.0, conditions[1].normal.imposed ? 1.0 : 0.0);
+    s.tangential_force = Eigen::VectorXd::Zero(2);
+    return s;
+  }
+  void checkpoint() override { checkpoint_ = position(); }
+  void rewind() override {
+    base_ = checkpoint_;
+    alpha_ = kept_ = 0;
+  }
+
+private:
+  double base_ = 0;
+  double position() const { return base_ + alpha_; }
+  double penetration_at(double s) {
+    const double keep = base_, a = alpha_;
+    base_ = s;
+    alpha_ = 0;
+    const double q = penetration()[1];
+    base_ = keep;
+    alpha_ = a;
+    return q;
+  }
+};
+
+TEST(ContactNewtonSearch, AStepNotRepaidWithinTwoMoreIsUndone) {
+  // The watchdog: after the raise to 4 and two steps that leave the merit above 1, the fourth
+  // iteration starts again from s = 0 (the solve's start, where the raise began), and its search
+  // may no longer raise the merit: the full step (merit 4) and its halvings down to 1/8 (node 1
+  // 0.49 deep, the merit 1.003) raise it, 1/16 is the first that does not (0.24 deep, the
+  // equilibrium residual 15/16).
+  UnrepaidBulk bulk;
+  ContactSolverParameters p;
+  p.method = "pdas";
+  const std::unique_ptr<ContactMethod> m = make_contact_method(p);
+  ContactSetting setting;
+  setting.law.assign(2, ContactLaw{});
+  setting.weight = Eigen::VectorXd::Ones(2);
+  ContactNewtonOptions options;
+  options.max_iterations = 4;
+  ContactIterate iterate;
+  const ContactNewtonResult r = solve_contact(bulk, setting, *m, options, iterate);
+  ASSERT_EQ(r.history.size(), 4u) << r.failure;
+  EXPECT_EQ(bulk.solved_at, (std::vector<double>{0.0, 1.0, 2.0, 0.0}));
+  EXPECT_NEAR(r.history[0].residual, 4.0, 1e-9);
+  EXPECT_NEAR(r.history[2].residual, 2.5, 1e-9);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(r.step_length[k], 1.0) << k;
+  EXPECT_EQ(r.history[3].kind, 5);
+  EXPECT_EQ(r.step_length[3], 1.0 / 16);
+  EXPECT_NEAR(r.history[3].residual, std::hypot(15.0 / 16, -0.01 + 4.01 / 16), 1e-12);
 }
 
 } // namespace

@@ -452,4 +452,15 @@ void CondensedBulk::restore() {
   Sw_ = kept_Sw_;
 }
 
+void CondensedBulk::checkpoint() {
+  checkpoint_w_ = w_;
+  checkpoint_Sw_ = Sw_;
+}
+
+void CondensedBulk::rewind() {
+  SIG_VERIFY(checkpoint_w_.size() == w_.size(), "condensed bulk: rewind without a checkpoint");
+  w_ = checkpoint_w_;
+  Sw_ = checkpoint_Sw_;
+}
+
 } // namespace sig

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace sig {
 
@@ -140,6 +141,20 @@ private:
   double ratio_ = 0;     ///< the last searched step's merit after over before
   double drift_ = 0;     ///< the length of the last unheld step that nothing held
   int drift_at_ = 0;     ///< its iteration
+  /// The watchdog (header): the driver's state at the iterate a relaxed step left with a higher
+  /// merit (the bulk's is its checkpoint), until the next step says whether it paid off.
+  struct Watch {
+    ContactPoint before;
+    ContactIterate iterate;
+    MeritMemory memory;
+    CycleGuard cycles;
+    double best;
+    int best_at;
+    Damping damping;
+    int left; ///< steps left to repay it
+  };
+  std::optional<Watch> watch_;
+  bool returned_ = false; ///< the step from a watchdog's return, which may not raise the merit
 
   double weight(int p) const { return s_.weight[p]; }
   /// A residual at round-off, below the merit's precision and the stopping test's tolerance:
@@ -213,6 +228,19 @@ private:
     cycles_ = CycleGuard(kCycleWindow);
     escapes_ = 0;
     return true;
+  }
+  /// Back to the iterate before a nonmonotone step that the next step did not repay (header).
+  void return_to(Watch& w, ContactPoint& now, ContactIterate& iterate) {
+    bulk_.rewind();
+    now = std::move(w.before);
+    iterate = std::move(w.iterate);
+    memory_ = std::move(w.memory);
+    cycles_ = std::move(w.cycles);
+    best_ = w.best;
+    best_at_ = w.best_at;
+    damping_ = w.damping;
+    bulk_.damp(damping_.factor());
+    returned_ = true;
   }
   void fail(NewtonFailure why, const std::string& detail) {
     result_.reason = why;
@@ -558,7 +586,8 @@ double Driver<d>::searched_length(const Test& test, const ContactPoint& now, con
     return held ? point(c.lambda, c.t, held, &origin).residual : c.residual;
   };
   const double current = merit(now);
-  const double ceiling = kRelaxation * memory_.reference();
+  // From a watchdog's return, the step that was not repaid may not raise the merit again.
+  const double ceiling = returned_ ? now.residual : kRelaxation * memory_.reference();
   if (monotone_) return monotone_length(now, step, next);
   // The fallback if no length passes: the largest admissible length below the ceiling (an
   // active-set change may raise the residual for a step), else the least residual.
@@ -841,6 +870,11 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
       }
       t = test(now, iterate, one_change_);
     }
+    // A relaxed step may start a watch (header): the bulk remembers where it starts.
+    const bool watchable = options_.globalize && method_.has_multipliers() && !monotone_ &&
+                           !one_change_ && !watch_ && !returned_;
+    if (watchable) bulk_.checkpoint();
+    const Damping damping = damping_;
     Step step;
     if (!solve(t, now, step)) break;
     ContactPoint next;
@@ -850,6 +884,11 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
       break;
     }
     bulk_.restore();
+    std::optional<Watch> started;
+    if (watchable && kind_ == 0 && next.residual > now.residual)
+      started = Watch{now, iterate, memory_, cycles_, best_, best_at_, damping, kWatchSteps};
+    if (returned_ && kind_ == 0) kind_ = 5;
+    returned_ = false;
     record(t, now, next, alpha);
     now = std::move(next);
     iterate.lambda = now.lambda;
@@ -868,6 +907,19 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
       break;
     }
     if (stopped(iteration, first_residual)) break;
+    // The watchdog (header): within kWatchSteps steps after a nonmonotone one the merit must
+    // fall below where that one started, else the solve returns there. Restricted steps (after
+    // a cycle or a stall) lower the merit from where they are, and end the watch.
+    if (monotone_ || one_change_) watch_.reset();
+    if (watch_) {
+      if (sufficient_decrease(now.residual, watch_->before.residual, watch_->before.residual, 1.0))
+        watch_.reset();
+      else if (--watch_->left == 0) {
+        return_to(*watch_, now, iterate);
+        watch_.reset();
+      }
+    }
+    if (started) watch_ = std::move(started);
   }
   finish(now);
   return std::move(result_);

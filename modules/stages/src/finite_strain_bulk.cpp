@@ -468,6 +468,15 @@ void FiniteStrainBulk::swap_states() {
   kept_.bulk.tangent.swap(now_tangent);
 }
 
+void FiniteStrainBulk::rewind() {
+  SIG_VERIFY(checkpoint_u_.size() == now_.u.size(), "finite strain bulk: rewind without a "
+                                                    "checkpoint");
+  now_.u = checkpoint_u_;
+  // The checkpoint was an accepted iterate, inside the law's domain.
+  SIG_VERIFY(evaluate(now_, true), "finite strain bulk: the checkpoint has an inverted element");
+  base_ = now_.u;
+}
+
 bool FiniteStrainBulk::move(double alpha) {
   now_.u = base_ + alpha * step_;
   return evaluate(now_, alpha == 1.0);

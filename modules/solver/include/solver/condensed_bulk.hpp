@@ -64,6 +64,8 @@ public:
   bool move(double alpha) override;
   void keep() override;
   void restore() override;
+  void checkpoint() override;
+  void rewind() override;
   double displacement_norm() const override { return w_.norm(); }
   double displacement_step() const override { return (w_ - base_).norm(); }
   bool nonlinear() const override { return false; }
@@ -102,6 +104,7 @@ private:
   Eigen::MatrixXd H_;   ///< L22 L22^T for tail_start_
   Eigen::VectorXd w_, base_, step_, kept_;
   Eigen::VectorXd Sw_, Sw_base_, S_step_, kept_Sw_; ///< S w_ and its pieces along the step
+  Eigen::VectorXd checkpoint_w_, checkpoint_Sw_;    ///< the watchdog's iterate (checkpoint())
   Eigen::VectorXd last_normal_force_;               ///< N of the last solve, per contact node
   int reorders_ = 0;
   int factorizations_ = 0;

@@ -110,6 +110,11 @@ public:
   /// undefined (a bulk may swap it into the kept slot) until the next move() or restore().
   virtual void keep() = 0;
   virtual void restore() = 0;
+  /// The watchdog's bookkeeping (contact_newton.hpp): checkpoint() remembers the present
+  /// iterate, rewind() makes the remembered one present again (the next solve() linearizes
+  /// there). The line search's kept iterate is left as it was.
+  virtual void checkpoint() = 0;
+  virtual void rewind() = 0;
 
   /// ||u|| at the iterate and ||u - u of the last solve||, for the increment test.
   virtual double displacement_norm() const = 0;

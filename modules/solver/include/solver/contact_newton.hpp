@@ -31,11 +31,18 @@
 //    times the largest merit of the last kMeritWindow iterates (the nonmonotone reference of
 //    Grippo, Lampariello and Lucidi: an active-set change may raise the residual for a step, not
 //    without bound); if no length passes, the largest admissible one below the ceiling, else the
-//    one of least residual. From an iterate at round-off (a residual below kMeritPrecision of
-//    the force scale and eps), a trial at round-off passes, relaxed or monotone: merits there
-//    cannot be ranked (NEWTON.md item 8). A trial outside the bulk's domain (an inverted
-//    element) or with a residual that is not finite is never taken; with full steps only
-//    (search=no) it is a divergence.
+//    one of least residual. The watchdog (R. M. Chamberlain, M. J. D. Powell, C. Lemarechal,
+//    H. C. Pedersen, "The watchdog technique for forcing convergence in algorithms for
+//    constrained optimization", Math. Programming Study 16, 1982; Nocedal and Wright,
+//    "Numerical Optimization", 2006, 15.6): a relaxed step that raised the merit must be repaid,
+//    the merit below the one it started from by Armijo's test, within kWatchSteps more steps;
+//    else the solve returns to the iterate it started from (the bulk's checkpoint, the
+//    multipliers, branches, merit memory, cycle guard and damping as they were) and searches
+//    that step again under a ceiling of the present merit. The iterations spent count. From an
+//    iterate at round-off (a residual below kMeritPrecision of the force scale and eps), a trial at
+//    round-off passes, relaxed or monotone: merits there cannot be ranked (NEWTON.md item 8). A
+//    trial outside the bulk's domain (an inverted element) or with a residual that is not finite is
+//    never taken; with full steps only (search=no) it is a divergence.
 //  - Unheld steps: where the active, stick and slip sets hold no rigid motion of the body (a body
 //    held by contact and friction alone, from rest, or with every node slipping one way), the
 //    step exists only through the bulk's proximal term (condensed_bulk.hpp) and its rigid part is
@@ -111,7 +118,8 @@ struct IterationRecord {
   double step = 0;      ///< E_k = ||x(k+1) - x(k)||, the measure of the thesis's Figs 7.14-7.16
   /// How the step was taken (header): 0 full or searched (relaxed), 1 an unheld step cut where a
   /// node first holds the body, 2 monotone, 3 one branch change (after a cycle), 4 an escape: no
-  /// length lowered the search's merit, the least (or the largest trusted) was taken
+  /// length lowered the search's merit, the least (or the largest trusted) was taken, 5 the step
+  /// from a watchdog's return (header), searched under a ceiling of the present merit
   std::int8_t kind = 0;
   /// The search's merit after the step over before it: the residual of the system the step
   /// linearized (relaxed, one change) or the residual itself (monotone); < 1 but for escapes

@@ -10,7 +10,8 @@
 //    merit of the last M iterates (MeritMemory), the reference of Grippo, Lampariello and Lucidi's
 //    nonmonotone search ("A nonmonotone line search technique for Newton's method", SIAM J.
 //    Numer. Anal. 23, 1986): an active-set change may raise the residual for a while, as the
-//    next test puts it right, but not without bound.
+//    next test puts it right, but not without bound. A raise must be repaid within kWatchSteps
+//    steps, else the driver returns to where it started (the watchdog, contact_newton.hpp).
 //  - Cycling: the semi-smooth Newton of a complementarity problem can return to a branch set
 //    (active set, stick and slip) it left without any progress (PDAS cycles on P-matrices that are
 //    not M-matrices; Coulomb friction is not even monotone). A branch set that repeats one of the
@@ -122,6 +123,9 @@ private:
 inline constexpr int kMeritWindow = 5;
 /// The factor C by which a relaxed step may raise the residual over the reference.
 inline constexpr double kRelaxation = 10;
+/// Steps after a relaxed step that raised the merit within which it must fall below the merit
+/// that step started from (the watchdog of contact_newton.hpp).
+inline constexpr int kWatchSteps = 2;
 /// Iterations a branch set is remembered for the cycle test.
 inline constexpr int kCycleWindow = 30;
 /// Monotone iterations in a row that may take a step that lowers nothing (an escape from a

@@ -97,6 +97,8 @@ public:
   bool move(double alpha) override;
   void keep() override { swap_states(); }
   void restore() override { swap_states(); }
+  void checkpoint() override { checkpoint_u_ = now_.u; }
+  void rewind() override;
   double displacement_norm() const override { return now_.u.norm(); }
   double displacement_step() const override { return (now_.u - base_).norm(); }
   bool nonlinear() const override { return true; }
@@ -139,6 +141,7 @@ private:
   double load_factor_ = 1;
   State now_, kept_;
   Eigen::VectorXd base_, step_;
+  Eigen::VectorXd checkpoint_u_; ///< the watchdog's iterate (checkpoint())
   int evaluations_ = 0;
   // Dynamics (problem_.mass): the mass on the pattern's layout, the step's start.
   Eigen::SparseMatrix<double> mass_;
