@@ -66,6 +66,8 @@ ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBo
   q_now_ = x_now_.head(p) - boundary.geometric_gap;
 }
 
+ElastodynamicSteps::~ElastodynamicSteps() = default;
+
 StepRecord ElastodynamicSteps::start() const {
   StepRecord r;
   r.time = state_.time;
@@ -110,14 +112,19 @@ StepRecord ElastodynamicSteps::step(int) {
     if (free_flight_) free = free_flight(g, w_free, gap, start);
     r.free_flight = free.has_value();
     if (!free) {
-      CondensedProblem problem;
-      problem.S = condensed_->A();
-      problem.f = 0.5 * g;
-      problem.normal_dof = normal_dof_;
-      problem.tangential_dof = tangential_dof_;
-      problem.gap = gap;
-      CondensedBulk bulk(std::move(problem), {}, w_free);
-      free = strategy_->solve(bulk, boundary.setting, start);
+      // One bulk for the march (A does not change): its dense factor is kept from step to step.
+      if (bulk_) {
+        bulk_->restart(0.5 * g, gap, w_free);
+      } else {
+        CondensedProblem problem;
+        problem.S = condensed_->A();
+        problem.f = 0.5 * g;
+        problem.normal_dof = normal_dof_;
+        problem.tangential_dof = tangential_dof_;
+        problem.gap = gap;
+        bulk_ = std::make_unique<CondensedBulk>(std::move(problem), Eigen::VectorXd{}, w_free);
+      }
+      free = strategy_->solve(*bulk_, boundary.setting, start);
     }
     const ContactStepSolution& forces = *free;
     r.iterations = forces.iterations;

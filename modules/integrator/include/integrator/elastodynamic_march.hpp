@@ -44,10 +44,13 @@
 #include "integrator/march.hpp"
 #include "integrator/time_scheme.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace sig {
+
+class CondensedBulk;
 
 class ElastodynamicSteps final : public MarchScheme {
 public:
@@ -59,6 +62,7 @@ public:
   ElastodynamicSteps(const TimeScheme& scheme, const ContactBoundary& boundary,
                      const ContactStrategy& strategy, DynamicState initial,
                      bool free_flight = true);
+  ~ElastodynamicSteps() override;
 
   MarchRecords records() const override { return {.energy = true, .balance = true}; }
   StepRecord start() const override;
@@ -80,6 +84,8 @@ private:
   Eigen::VectorXd x_now_;              ///< the condensed components of the state (G u)
   Eigen::VectorXd q_now_;              ///< the penetrations of the state
   bool free_flight_ = true;            ///< take free-flight steps without a contact problem
+  /// The contact problem's bulk, made at the first step that needs it, restarted at the next.
+  std::unique_ptr<CondensedBulk> bulk_;
 
   /// The strategy's free step when the free step w_free (components, of the condensed right side
   /// g; the gaps q_n = w_n - gap) is the step (header); empty otherwise.
