@@ -108,10 +108,10 @@ StepRecord ElastodynamicSteps::step(int) {
     //    the strategy would find on the bulk, without forming it.
     const ContactStepStart start{q_now_, boundary.B * state_.v, k};
     const Eigen::VectorXd gap = boundary.geometric_gap - x_now_.head(p);
-    std::optional<ContactStepSolution> free;
-    if (free_flight_) free = free_flight(g, w_free, gap, start);
-    r.free_flight = free.has_value();
-    if (!free) {
+    std::optional<ContactStepSolution> solution;
+    if (free_flight_) solution = free_flight(g, w_free, gap, start);
+    r.free_flight = solution.has_value();
+    if (!solution) {
       // One bulk for the march (A does not change): its dense factor is kept from step to step.
       if (bulk_) {
         bulk_->restart(0.5 * g, gap, w_free);
@@ -124,9 +124,9 @@ StepRecord ElastodynamicSteps::step(int) {
         problem.gap = gap;
         bulk_ = std::make_unique<CondensedBulk>(std::move(problem), Eigen::VectorXd{}, w_free);
       }
-      free = strategy_->solve(*bulk_, boundary.setting, start);
+      solution = strategy_->solve(*bulk_, boundary.setting, start);
     }
-    const ContactStepSolution& forces = *free;
+    const ContactStepSolution& forces = *solution;
     r.iterations = forces.iterations;
     r.contact = contact_record(forces);
     if (!forces.converged) {
@@ -180,10 +180,9 @@ StepRecord ElastodynamicSteps::step(int) {
   return r;
 }
 
-std::optional<ContactStepSolution> ElastodynamicSteps::free_flight(const Eigen::VectorXd& g,
-                                                                   const Eigen::VectorXd& w_free,
-                                                                   const Eigen::VectorXd& gap,
-                                                                   const ContactStepStart& start) {
+std::optional<ContactStepSolution>
+ElastodynamicSteps::free_flight(const Eigen::VectorXd& g, const Eigen::VectorXd& w_free,
+                                const Eigen::VectorXd& gap, const ContactStepStart& start) const {
   // CondensedBulk's penetration, slip and equilibrium residual at w_free, as predictor_solves_step
   // reads them: the same decision, on the same numbers.
   const int p = boundary_->size();

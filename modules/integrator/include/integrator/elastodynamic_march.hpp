@@ -92,7 +92,7 @@ private:
   std::optional<ContactStepSolution> free_flight(const Eigen::VectorXd& g,
                                                  const Eigen::VectorXd& w_free,
                                                  const Eigen::VectorXd& gap,
-                                                 const ContactStepStart& start);
+                                                 const ContactStepStart& start) const;
 };
 
 /// Without contact: `steps` steps of `scheme` from `initial`, the work of the loads accumulating
