@@ -79,6 +79,7 @@
 #include "stages/rank_rows.hpp"
 #include "stages/time_card.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
