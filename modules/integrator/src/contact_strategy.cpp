@@ -29,16 +29,44 @@ bool gives_force(const ContactLaw& law, double q_n, const Eigen::VectorXd& q_t, 
 
 } // namespace
 
+bool laws_give_force(const ContactSetting& setting, const Eigen::VectorXd& q_n,
+                     const Eigen::VectorXd& q_t, int tangents) {
+  for (int p = 0; p < setting.size(); ++p)
+    if (tangents == 2 ? gives_force<3>(setting.law[p], q_n[p], q_t, p)
+                      : gives_force<2>(setting.law[p], q_n[p], q_t, p))
+      return true;
+  return false;
+}
+
 bool predictor_solves_step(const ContactBulk& bulk, const ContactSetting& setting, double eps) {
   const Eigen::VectorXd q_n = bulk.penetration(), q_t = bulk.slip();
-  const bool plane = bulk.has_tangential() && bulk.tangents() == 2;
-  for (int p = 0; p < setting.size(); ++p)
-    if (plane ? gives_force<3>(setting.law[p], q_n[p], q_t, p)
-              : gives_force<2>(setting.law[p], q_n[p], q_t, p))
-      return false;
+  if (laws_give_force(setting, q_n, q_t, bulk.has_tangential() ? bulk.tangents() : 1)) return false;
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(setting.size());
   const Eigen::VectorXd no_tangential = Eigen::VectorXd::Zero(q_t.size());
   return bulk.equilibrium_residual(none, no_tangential) <= eps * bulk.force_scale();
+}
+
+std::optional<ContactStepSolution> ContactStrategy::free_flight(const ContactSetting& setting,
+                                                                const ContactStepStart& start,
+                                                                const Eigen::VectorXd& q_n,
+                                                                const Eigen::VectorXd& q_t,
+                                                                int tangents) const {
+  const ContactSetting first{first_laws(setting, start), setting.weight};
+  if (laws_give_force(first, q_n, q_t, tangents)) return std::nullopt;
+  return free_solution(first, q_t.size());
+}
+
+ContactStepSolution ContactStrategy::free_solution(const ContactSetting& first,
+                                                   Eigen::Index slips) {
+  const int m = first.size();
+  ContactStepSolution s;
+  s.normal_force = Eigen::VectorXd::Zero(m);
+  s.tangential_force = Eigen::VectorXd::Zero(slips); // d - 1 per node
+  s.normal_status.assign(m, NormalStatus::free);
+  s.friction_status.assign(m, FrictionStatus::none);
+  s.law = first.law;
+  s.converged = true;
+  return s;
 }
 
 ContactStepSolution ContactStrategy::solve(ContactBulk& bulk, const ContactSetting& setting,
@@ -49,16 +77,7 @@ ContactStepSolution ContactStrategy::solve(ContactBulk& bulk, const ContactSetti
              name() << ": the bulk has " << bulk.contacts() << " contact nodes, the laws " << m
                     << ", the step start " << start.penetration.size());
   const ContactSetting first{first_laws(setting, start), setting.weight};
-  if (predictor_solves_step(bulk, first, p_.eps)) {
-    ContactStepSolution s;
-    s.normal_force = Eigen::VectorXd::Zero(m);
-    s.tangential_force = Eigen::VectorXd::Zero(bulk.slip().size()); // d - 1 per node
-    s.normal_status.assign(m, NormalStatus::free);
-    s.friction_status.assign(m, FrictionStatus::none);
-    s.law = first.law;
-    s.converged = true;
-    return s;
-  }
+  if (predictor_solves_step(bulk, first, p_.eps)) return free_solution(first, bulk.slip().size());
   return phases(bulk, first, start);
 }
 

@@ -9,7 +9,8 @@
 //   FRICTION ref= law=coulomb mu= | tresca threshold= | mu1 mu= | mu2 mu=   (of the slip over
 //            each step; law=nonmonotone is the backward-Euler march's)
 //   SOLVER linear=cholmod|umfpack|mumps maxit=   (K + (4 / k^2) M factorized once; maxit: the
-//          strategy's Newton iterations per phase, default 50) [candidate_gap=]  (linear body:
+//          strategy's Newton iterations per phase, default 50) [candidate_gap=] [free_flight=]
+//          (linear body: free_flight=no forms the contact problem of every step; candidate_gap:
 //          only the contact nodes of initial gap at most this condensed, the others watched)
 //
 // The mesh is 2D or 3D: a 3D body marches the linear schemes (midpoint, Newmark; mass
@@ -78,6 +79,7 @@
 #include "stages/rank_rows.hpp"
 #include "stages/time_card.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -288,8 +290,10 @@ int march_main(int argc, char** argv) {
       std::optional<sig::ContactBoundary> boundary;
       if (zone) boundary = sig::contact_boundary(*zone, mesh, reduced);
       std::optional<sig::ElastodynamicSteps> steps;
+      const bool free_flight = solver_card == nullptr ||
+                               solver_card->choice("free_flight", {"yes", "no"}, "yes") == "yes";
       if (boundary)
-        steps.emplace(*scheme, *boundary, *strategy, initial);
+        steps.emplace(*scheme, *boundary, *strategy, initial, free_flight);
       else
         steps.emplace(*scheme, initial);
       history = sig::march_with_progress(*steps, time, label, report);
@@ -306,6 +310,15 @@ int march_main(int argc, char** argv) {
     info.ordering = ordering;
     info.ranks = sig::mpi::size();
     if (elements) info.strategy = strategy_info;
+    // A linear contact march's steps in free flight, 1 a step (0 at step 0: none taken).
+    int free_steps = 0;
+    if (elements && !hyperelastic) {
+      std::vector<double> free(history.steps.size(), 0.0);
+      for (std::size_t s = 0; s < history.steps.size(); ++s)
+        free[s] = history.steps[s].free_flight ? 1.0 : 0.0;
+      free_steps = static_cast<int>(std::count(free.begin(), free.end(), 1.0));
+      info.step_columns = {{"free_flight", std::move(free)}};
+    }
     sig::write_hist(args.ds_path("hist"), history, reduced, info, datafile.title());
     const auto csv_path = args.outdir / "energy.csv";
     sig::write_file_atomically(csv_path, sig::energy_csv(history));
@@ -316,12 +329,16 @@ int march_main(int argc, char** argv) {
       drift = std::max(drift, std::abs(r.total - r.external_work - r.contact_work - e0));
       penetration = std::max(penetration, r.max_penetration);
     }
-    std::printf("sig-march: %s, mass %s (%s), %d free dofs, %zu/%d steps of k = %g, %zu states "
-                "kept, E0 = %.12g, max |E - W - Wc - E0| = %.3g, max penetration %.6g, %.3f s%s\n",
-                label.c_str(), sig::to_string(time.mass).c_str(),
-                sig::solver_words(backend, ordering, info.ranks).c_str(), reduced.num_free(),
-                history.steps_done() - 1, time.steps, time.k, history.outputs.size(), e0, drift,
-                penetration, seconds, history.converged ? "" : " (STOPPED: Newton failed)");
+    const std::string free_words =
+        info.step_columns.empty() ? "" : ", free flight " + std::to_string(free_steps) + " steps";
+    std::printf(
+        "sig-march: %s, mass %s (%s), %d free dofs, %zu/%d steps of k = %g, %zu states "
+        "kept, E0 = %.12g, max |E - W - Wc - E0| = %.3g, max penetration %.6g, %.3f s%s%s\n",
+        label.c_str(), sig::to_string(time.mass).c_str(),
+        sig::solver_words(backend, ordering, info.ranks).c_str(), reduced.num_free(),
+        history.steps_done() - 1, time.steps, time.k, history.outputs.size(), e0, drift,
+        penetration, seconds, free_words.c_str(),
+        history.converged ? "" : " (STOPPED: Newton failed)");
     std::cout << args.ds_path("hist").string() << "\n" << csv_path.string() << "\n";
     // Beside a stop: every strategy's Newton is PDAS's, with SOLVER gamma= (from the whole K:
     // not under mpirun).
