@@ -3,9 +3,9 @@
 // parameter), so a full step whose only fault is a node it leaves penetrating (the next test
 // puts that node on the wall) is taken whatever the augmentation, on a linear and on a
 // nonlinear bulk; a step that raises the residual more than tenfold over the recent iterates is
-// shortened until it does not; a step that raised it and was not repaid within two more steps is
-// undone (the watchdog). A scripted bulk whose residual is the Newton step's linear model makes
-// the full step exact for the system the step linearized.
+// shortened until it does not; a step that raised it and was not repaid within kWatchSteps more
+// steps is undone (the watchdog). A scripted bulk whose residual is the Newton step's linear model
+// makes the full step exact for the system the step linearized.
 #include "along_step_bulk.hpp"
 #include "solver/contact_newton.hpp"
 
@@ -142,12 +142,12 @@ TEST(ContactNewtonSearch, AResidualAtRoundOffTakesTheFullStep) {
   }
 }
 
-/// A path of three Newton steps, the bulk's state a position s along it (s = 0, 1, 2, 3 the
-/// iterates): node 0 far off the obstacle, node 1 off it by 0.01 at s = 0. The first step drives
-/// node 1 4 deep while the equilibrium residual falls from 1 to 0: the system it linearized (node
-/// 1 held off the wall) is solved, the merit rises to 4, under the ceiling. The next two steps
-/// (node 1 on the wall, its reaction 1) bring the merit to 3, then 2.5: never below 1, where the
-/// raise started.
+/// A path of Newton steps, the bulk's state a position s along it (s = 0, 1, 2, ... the iterates):
+/// node 0 far off the obstacle, node 1 off it by 0.01 at s = 0. The first step drives node 1 4
+/// deep while the equilibrium residual falls from 1 to 0: the system it linearized (node 1 held
+/// off the wall) is solved, the merit rises to 4, under the ceiling. The next steps (node 1 on
+/// the wall, its reaction 1) bring the merit to 3, then down by 1/4 a step: above 1, where the
+/// raise started, until s = 10.
 class UnrepaidBulk final : public test::AlongStepBulk {
 public:
   std::vector<double> solved_at; ///< the positions each step started from
@@ -158,7 +158,7 @@ public:
   }
   double equilibrium_residual(const Eigen::VectorXd&, const Eigen::VectorXd&) const override {
     const double s = position();
-    return s <= 1 ? 1 - s : s <= 2 ? 3 * (s - 1) : 3 - 0.5 * (s - 2);
+    return s <= 1 ? 1 - s : s <= 2 ? 3 * (s - 1) : 3 - 0.25 * (s - 2);
   }
   double displacement_step() const override { return alpha_; }
   StepSolution solve(const std::vector<NodeConditions>& conditions,
@@ -193,12 +193,13 @@ private:
   }
 };
 
-TEST(ContactNewtonSearch, AStepNotRepaidWithinTwoMoreIsUndone) {
-  // The watchdog: after the raise to 4 and two steps that leave the merit above 1, the fourth
-  // iteration starts again from s = 0 (the solve's start, where the raise began), and its search
-  // may no longer raise the merit: the full step (merit 4) and its halvings down to 1/8 (node 1
-  // 0.49 deep, the merit 1.003) raise it, 1/16 is the first that does not (0.24 deep, the
-  // equilibrium residual 15/16).
+TEST(ContactNewtonSearch, AStepNotRepaidIsUndone) {
+  // The watchdog: after the raise to 4 and kWatchSteps steps that leave the merit above 1, the
+  // next iteration starts again from s = 0 (the solve's start, where the raise began), and its
+  // search may no longer raise the merit: the full step (merit 4) and its halvings down to 1/8
+  // (node 1 0.49 deep, the merit 1.003) raise it, 1/16 is the first that does not (0.24 deep,
+  // the equilibrium residual 15/16).
+  static_assert(kWatchSteps < 8, "the scripted path repays the raise at s = 10");
   UnrepaidBulk bulk;
   ContactSolverParameters p;
   p.method = "pdas";
@@ -207,18 +208,23 @@ TEST(ContactNewtonSearch, AStepNotRepaidWithinTwoMoreIsUndone) {
   setting.law.assign(2, ContactLaw{});
   setting.weight = Eigen::VectorXd::Ones(2);
   ContactNewtonOptions options;
-  options.max_iterations = 4;
+  options.max_iterations = kWatchSteps + 2;
   ContactIterate iterate;
   const ContactNewtonResult r = solve_contact(bulk, setting, *m, options, iterate);
-  ASSERT_EQ(r.history.size(), 4u) << r.failure;
-  EXPECT_EQ(bulk.solved_at, (std::vector<double>{0.0, 1.0, 2.0, 0.0}));
+  ASSERT_EQ(r.history.size(), std::size_t(kWatchSteps + 2)) << r.failure;
+  std::vector<double> expected;
+  for (int k = 0; k <= kWatchSteps; ++k)
+    expected.push_back(k);
+  expected.push_back(0.0);
+  EXPECT_EQ(bulk.solved_at, expected);
   EXPECT_NEAR(r.history[0].residual, 4.0, 1e-9);
-  EXPECT_NEAR(r.history[2].residual, 2.5, 1e-9);
-  for (int k = 0; k < 3; ++k)
+  EXPECT_NEAR(r.history[kWatchSteps].residual, 3 - 0.25 * (kWatchSteps - 1), 1e-9);
+  for (int k = 0; k <= kWatchSteps; ++k)
     EXPECT_EQ(r.step_length[k], 1.0) << k;
-  EXPECT_EQ(r.history[3].kind, 5);
-  EXPECT_EQ(r.step_length[3], 1.0 / 16);
-  EXPECT_NEAR(r.history[3].residual, std::hypot(15.0 / 16, -0.01 + 4.01 / 16), 1e-12);
+  const IterationRecord& back = r.history.back();
+  EXPECT_EQ(back.kind, 5);
+  EXPECT_EQ(r.step_length.back(), 1.0 / 16);
+  EXPECT_NEAR(back.residual, std::hypot(15.0 / 16, -0.01 + 4.01 / 16), 1e-12);
 }
 
 } // namespace

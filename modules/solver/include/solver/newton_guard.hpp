@@ -124,8 +124,9 @@ inline constexpr int kMeritWindow = 5;
 /// The factor C by which a relaxed step may raise the residual over the reference.
 inline constexpr double kRelaxation = 10;
 /// Steps after a relaxed step that raised the merit within which it must fall below the merit
-/// that step started from (the watchdog of contact_newton.hpp).
-inline constexpr int kWatchSteps = 2;
+/// that step started from (the watchdog of contact_newton.hpp): while that merit is still one
+/// of the kMeritWindow the nonmonotone reference remembers.
+inline constexpr int kWatchSteps = kMeritWindow - 1;
 /// Iterations a branch set is remembered for the cycle test.
 inline constexpr int kCycleWindow = 30;
 /// Monotone iterations in a row that may take a step that lowers nothing (an escape from a
