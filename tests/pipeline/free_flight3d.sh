@@ -62,7 +62,7 @@ PY
 for spec in "compliance|strategy=compliance r=1e12|consistent" "ipm-emm|strategy=ipm r=1e12 g=5e-4|emm"; do
   IFS='|' read -r name fields mass <<<"$spec"
   run "$name" "$plane $fields" "$mass"
-  run "$name-condensed" "$plane $fields" "$mass" 's|^SOLVER .*|SOLVER candidate_gap=0.12 free_flight=no|'
+  run "$name-condensed" "$plane $fields" "$mass" 's|^SOLVER .*|& free_flight=no|'
   same "$name"
 done
 

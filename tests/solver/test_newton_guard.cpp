@@ -117,6 +117,7 @@ TEST(NewtonGuard, FullStepsCycleAndTheGuardConverges) {
     EXPECT_GE(guarded.normal_force[i], -1e-14);
     EXPECT_LT(std::abs(w[i] * guarded.normal_force[i]), 1e-14);
   }
+  static_assert(kWatchSteps >= 4, "a shorter watch returns before the cycle is named");
   // After the cycle, one branch changes per iteration (Murty's rule). The cycle is named at its
   // fifth iteration (the active set 110 again), before the watchdog would return: its raise
   // (0.58 -> 10.4 at the second) has kWatchSteps = 4 steps to be repaid.

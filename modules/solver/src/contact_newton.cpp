@@ -142,7 +142,8 @@ private:
   double drift_ = 0;     ///< the length of the last unheld step that nothing held
   int drift_at_ = 0;     ///< its iteration
   /// The watchdog (header): the driver's state at the iterate a relaxed step left with a higher
-  /// merit (the bulk's is its checkpoint), until the next step says whether it paid off.
+  /// merit (the bulk's is its checkpoint), until a later step repays the raise or kWatchSteps
+  /// have not.
   struct Watch {
     ContactPoint before;
     ContactIterate iterate;
@@ -151,10 +152,14 @@ private:
     double best;
     int best_at;
     Damping damping;
+    double drift;
+    int drift_at;
     int left; ///< steps left to repay it
   };
   std::optional<Watch> watch_;
-  bool returned_ = false; ///< the step from a watchdog's return, which may not raise the merit
+  /// The step from a watchdog's return: searched under a ceiling of the present merit (if no
+  /// length stays under it, the least residual, as every search's fallback).
+  bool returned_ = false;
 
   double weight(int p) const { return s_.weight[p]; }
   /// A residual at round-off, below the merit's precision and the stopping test's tolerance:
@@ -229,7 +234,8 @@ private:
     escapes_ = 0;
     return true;
   }
-  /// Back to the iterate before a nonmonotone step that the next step did not repay (header).
+  /// Back to the iterate before a nonmonotone step that kWatchSteps steps did not repay (header):
+  /// an unheld step undone with it is no longer a drift.
   void return_to(Watch& w, ContactPoint& now, ContactIterate& iterate) {
     bulk_.rewind();
     now = std::move(w.before);
@@ -240,6 +246,8 @@ private:
     best_at_ = w.best_at;
     damping_ = w.damping;
     bulk_.damp(damping_.factor());
+    drift_ = w.drift;
+    drift_at_ = w.drift_at;
     returned_ = true;
   }
   void fail(NewtonFailure why, const std::string& detail) {
@@ -586,7 +594,7 @@ double Driver<d>::searched_length(const Test& test, const ContactPoint& now, con
     return held ? point(c.lambda, c.t, held, &origin).residual : c.residual;
   };
   const double current = merit(now);
-  // From a watchdog's return, the step that was not repaid may not raise the merit again.
+  // From a watchdog's return, the step that was not repaid is searched under the present merit.
   const double ceiling = returned_ ? now.residual : kRelaxation * memory_.reference();
   if (monotone_) return monotone_length(now, step, next);
   // The fallback if no length passes: the largest admissible length below the ceiling (an
@@ -886,7 +894,8 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
     bulk_.restore();
     std::optional<Watch> started;
     if (watchable && kind_ == 0 && next.residual > now.residual)
-      started = Watch{now, iterate, memory_, cycles_, best_, best_at_, damping, kWatchSteps};
+      started = Watch{now,      iterate, memory_, cycles_,   best_,
+                      best_at_, damping, drift_,  drift_at_, kWatchSteps};
     if (returned_ && kind_ == 0) kind_ = 5;
     returned_ = false;
     record(t, now, next, alpha);

@@ -16,9 +16,9 @@
 // strategy itself would return it at once (contact_strategy.hpp, predictor_solves_step) -- step 2
 // forms no contact problem and the free step is the step: the same decision on the same numbers,
 // so the march is the condensed one's exactly, and such a step costs the split solve (the two
-// halves around S_c^{-1} g: one forward-backward substitution) and a gap check. `free_flight` =
-// false forms the problem at every step (SOLVER free_flight=no: the check of
-// tests/pipeline/free_flight3d.sh). The plain factorization of S, whose solve is some 15 % cheaper
+// halves around S_c^{-1} g: one forward-backward substitution), a gap check and the product
+// A w_free of the equilibrium test. `free_flight` = false forms the problem at every step
+// (SOLVER free_flight=no: the check of tests/pipeline/free_flight3d.sh). The plain factorization of S, whose solve is some 15 % cheaper
 // than the split one on the 3D ball, is not made: it costs about 30 of its solves
 // (datafiles/scene3d/README.md, *Performance*).
 // Under mpirun the scheme holds this rank's rows of K and M (Elastodynamics::rank_rows): MUMPS
