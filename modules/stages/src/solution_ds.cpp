@@ -94,6 +94,7 @@ void put_mumps_statistics(Ds& ds, const MumpsStatistics& m) {
   const std::pair<const char*, double> totals[] = {{"flops", m.flops},
                                                    {"flops_estimate", m.flops_estimate},
                                                    {"factor_entries", m.factor_entries},
+                                                   {"factor_space", m.factor_space},
                                                    {"largest_front", m.largest_front},
                                                    {"delayed_pivots", m.delayed_pivots},
                                                    {"memory_max_mb", m.memory_max_mb},
