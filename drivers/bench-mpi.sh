@@ -22,9 +22,10 @@
 # average before and after the timed runs; a model of 16 to 256 processes from the np = 1 runs'
 # statistics and times (bench.md states it: a model, not a measurement).
 #
-# --analysis-only: after sig-assemble, MUMPS's analysis alone (sig-solve as one process with
+# --analysis-only: after sig-assemble, MUMPS's analysis alone at each rank count (sig-solve with
 # SIG_MUMPS_ANALYSIS, modules/solver/src/mumps_solver.cpp): its estimates of the factorization
-# (RINFOG(1) flops, INFOG(20) factor entries, INFOG(5) the largest front, INFOG(17) MB) and, with
+# (RINFOG(1) flops, INFOG(20) factor entries, INFOG(5) the largest front, INFOG(16) / INFOG(17)
+# the MB of the largest rank / of all: whether np = 2 fits where np = 1 does) and, with
 # --rate FLOPS (the elimination's flops per second at np = 1, from the bench.md of a full run on a
 # smaller mesh), the predicted np = 1 factorization seconds: a problem's size chosen before it
 # runs.
@@ -47,7 +48,7 @@ usage: drivers/bench-mpi.sh [-o OUTDIR] [--deck ball|hertz] [--h H] [--n N] [--g
                    0.02); hertz: MESH grading (default 0, the thesis's uniform mesh)
   --repeat K       rounds, medians reported (default 3)
   --ranks LIST     the numbers of ranks, comma separated, 1 first (default 1,2)
-  --analysis-only  MUMPS's analysis alone, one process: its estimates, no factorization
+  --analysis-only  MUMPS's analysis alone at each rank count: its estimates, no factorization
   --rate FLOPS     with --analysis-only: the elimination's flops per second at np = 1, for the
                    predicted factorization seconds
   -o OUTDIR        results folder (default out/bench-mpi)
@@ -132,14 +133,19 @@ done
 load_start=$(cut -d' ' -f1-3 /proc/loadavg)
 
 if [ "$analysis_only" -eq 1 ]; then
-  printf 'n\tschur\tordering\tseconds\tflops\tentries\tlargest_front\ttree_nodes\tmb_max\tmb_total\n' \
+  printf 'ranks\tn\tschur\tordering\tseconds\tflops\tentries\tlargest_front\ttree_nodes\tmb_max\tmb_total\n' \
     >"$out/analysis.tsv"
-  echo "bench-mpi.sh: MUMPS's analysis alone (load average $load_start)"
-  SIG_MUMPS_ANALYSIS=$out/analysis.tsv /usr/bin/time -f %M -o "$base/analysis.rss" \
-    "$bin/sig-solve" "$case" -o "$base" >"$base/analysis.log" 2>&1 ||
-    { cat "$base/analysis.log" >&2; die "the analysis failed (log: $base/analysis.log)"; }
-  [ "$(wc -l <"$out/analysis.tsv")" -eq 2 ] ||
-    die "sig-solve ran no MUMPS analysis, or more than one (log: $base/analysis.log)"
+  for np in "${rank_counts[@]}"; do
+    echo "bench-mpi.sh: MUMPS's analysis alone at np = $np (load average" \
+      "$(cut -d' ' -f1-3 /proc/loadavg))"
+    rm -f "$base/analysis.$np.tsv"
+    SIG_MUMPS_ANALYSIS=$base/analysis.$np.tsv mpirun_ranks "$np" "$bin/sig-solve" "$case" \
+      -o "$base" >"$base/analysis.$np.log" 2>&1 ||
+      { cat "$base/analysis.$np.log" >&2; die "the analysis failed (log: $base/analysis.$np.log)"; }
+    [ "$(wc -l <"$base/analysis.$np.tsv")" -eq 1 ] ||
+      die "sig-solve ran no MUMPS analysis, or more than one (log: $base/analysis.$np.log)"
+    printf '%s\t%s\n' "$np" "$(cat "$base/analysis.$np.tsv")" >>"$out/analysis.tsv"
+  done
 else
   for np in "${rank_counts[@]}"; do
     mkdir -p "$out/np$np"

@@ -61,22 +61,26 @@ def title_of(info):
 
 def analysis_report(out, info):
     with open(out / "analysis.tsv") as f:
-        a = next(csv.DictReader(f, delimiter="\t"))
-    flops, entries = float(a["flops"]), float(a["entries"])
+        rows = list(csv.DictReader(f, delimiter="\t"))
+    rate = float(info["rate"]) if info.get("rate") else None
     lines = header(info, title_of(info) + ", MUMPS's analysis alone") + [
         "", stages_text(out), "",
-        "MUMPS's estimates of the factorization at np = 1 (sig-solve with SIG_MUMPS_ANALYSIS: "
-        "the analysis, then the stage stops):", "",
-        "| unknowns | contact unknowns (Schur) | ordering | analysis s | flops RINFOG(1) | "
+        "MUMPS's estimates of the factorization (sig-solve with SIG_MUMPS_ANALYSIS: the "
+        "analysis, then the stage stops); the predicted factorization at np = 1 is the analysis "
+        "and RINFOG(1) at the rate given (--rate):", "",
+        "| ranks | unknowns | contact unknowns (Schur) | ordering | analysis s | flops RINFOG(1) | "
         "factor entries INFOG(20) | factors GB | largest front INFOG(5) | tree nodes INFOG(6) | "
-        "MB INFOG(17) | predicted factorization s |",
-        "|" + "---|" * 11]
-    rate = float(info["rate"]) if info.get("rate") else None
-    predicted = f"{float(a['seconds']) + flops / rate:.0f} (at {rate:.3g} flop/s)" if rate else "-"
-    lines.append(f"| {a['n']} | {a['schur']} | {ORDERINGS.get(int(a['ordering']), 'other')} | "
-                 f"{float(a['seconds']):.2f} | {flops:.3e} | {entries:.3e} | "
-                 f"{8 * entries / 1e9:.1f} | {a['largest_front']} | {a['tree_nodes']} | "
-                 f"{a['mb_total']} | {predicted} |")
+        "MB max / total INFOG(16) / INFOG(17) | predicted factorization s |",
+        "|" + "---|" * 12]
+    for a in rows:
+        flops, entries = float(a["flops"]), float(a["entries"])
+        predicted = (f"{float(a['seconds']) + flops / rate:.0f} (at {rate:.3g} flop/s)"
+                     if rate and a["ranks"] == "1" else "-")
+        lines.append(f"| {a['ranks']} | {a['n']} | {a['schur']} | "
+                     f"{ORDERINGS.get(int(a['ordering']), 'other')} | {float(a['seconds']):.2f} | "
+                     f"{flops:.3e} | {entries:.3e} | {8 * entries / 1e9:.1f} | "
+                     f"{a['largest_front']} | {a['tree_nodes']} | {a['mb_max']} / {a['mb_total']} | "
+                     f"{predicted} |")
     return lines
 
 
@@ -180,11 +184,14 @@ def runs_report(out, info):
               f"rank."]
 
     r, W, front_ranks, t_a, t_c, T, bound = model(m1, med[1])
+    nodes = m1.get("tree_nodes", 0)
+    fronts = (f"the tree's {nodes:.0f} fronts (INFOG(6); {m1['flops'] / nodes:.2g} flops a front on "
+              f"average)" if nodes else "the tree's fronts")
     lines += ["", "## A model of 16 to 256 processes (from the np = 1 statistics: a model, not a "
               "measurement)", "",
               f"r = {r:.3g} flop/s of one core (RINFOG(3) over the factorization less the "
               f"analysis), F = {m1['flops']:.3g} flops, the largest front L = "
-              f"{m1['largest_front']:.0f}: its dense elimination W = min(L^3/3, F) = {W:.3g} "
+              f"{m1['largest_front']:.0f} of {fronts}: its dense elimination W = min(L^3/3, F) = {W:.3g} "
               f"flops ({W / m1['flops']:.0%} of F) splits over at most L / {BLOCK_ROWS} = "
               f"{front_ranks:.0f} processes; t_a = {t_a:.2f} s of analysis on the host, t_c = "
               f"{t_c:.2f} s after the factorization (the contact Newton every rank runs whole); "

@@ -122,6 +122,7 @@ struct MumpsSolver::State {
     st.factor_entries = entry_count(infog(29));
     st.factor_space = entry_count(infog(9));
     st.largest_front = infog(11);
+    st.tree_nodes = infog(6);
     st.delayed_pivots = infog(13);
     st.memory_max_mb = infog(21);
     st.memory_total_mb = infog(22);

@@ -96,6 +96,7 @@ void put_mumps_statistics(Ds& ds, const MumpsStatistics& m) {
                                                    {"factor_entries", m.factor_entries},
                                                    {"factor_space", m.factor_space},
                                                    {"largest_front", m.largest_front},
+                                                   {"tree_nodes", m.tree_nodes},
                                                    {"delayed_pivots", m.delayed_pivots},
                                                    {"memory_max_mb", m.memory_max_mb},
                                                    {"memory_total_mb", m.memory_total_mb},
