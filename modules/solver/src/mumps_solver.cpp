@@ -182,7 +182,7 @@ struct MumpsSolver::State {
     if (rank_rows && mpi::rank() != 0) return;
     std::FILE* out = std::fopen(file, "a");
     SIG_VERIFY(out != nullptr, "SIG_MUMPS_ANALYSIS: cannot append to " << file);
-    std::fprintf(out, "%d\t%zu\t%d\t%.3f\t%.6e\t%.6e\t%d\t%d\t%d\t%d\n", id.n, schur_dofs.size(),
+    std::fprintf(out, "%d\t%zu\t%d\t%.3f\t%.17g\t%.17g\t%d\t%d\t%d\t%d\n", id.n, schur_dofs.size(),
                  infog(7), statistics.analysis_seconds, id.rinfog[0], entry_count(infog(20)),
                  infog(5), infog(6), infog(16), infog(17));
     std::fclose(out);
