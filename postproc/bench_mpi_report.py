@@ -202,7 +202,7 @@ def runs_report(out, info):
               "| P | T(P) s | speed-up T(1) / T(P) | efficiency | factor entries per process |",
               "|---|---|---|---|---|"]
     for P in (1,) + MODEL_RANKS:
-        lines.append(f"| {P} | {T(P):.1f} | {T(1) / T(P):.1f} | {T(1) / (P * T(P)):.2f} | "
+        lines.append(f"| {P} | {T(P):.3g} | {T(1) / T(P):.1f} | {T(1) / (P * T(P)):.2f} | "
                      f"{m1['factor_entries'] / P:.2e} |")
     lines += ["", "Raw runs: `runs.tsv` (ranks, run, wall s, peak RSS per rank KB, summary.json)."]
     return lines
