@@ -199,11 +199,13 @@ def runs_report(out, info):
               f"(P r) + W / (min(P, L / {BLOCK_ROWS}) r) + t_c + log2(P) 8 m^2 / B "
               f"(postproc/bench_mpi_report.py). Speed-up bound T(1) / (t_a + t_c + W / "
               f"(L / {BLOCK_ROWS} r)) = {bound:.1f}.", "",
-              "| P | T(P) s | speed-up T(1) / T(P) | efficiency | factor entries per process |",
-              "|---|---|---|---|---|"]
-    for P in (1,) + MODEL_RANKS:
+              "| P | T(P) s | speed-up T(1) / T(P) | efficiency | factor entries per process | "
+              "measured phases s (efficiency) |",
+              "|---|---|---|---|---|---|"]
+    for P in sorted(set(ranks) | set(MODEL_RANKS)):
+        measured = f"{med[P]['phases']:.3g} ({eff(P, 'phases'):.2f})" if P in med else "-"
         lines.append(f"| {P} | {T(P):.3g} | {T(1) / T(P):.1f} | {T(1) / (P * T(P)):.2f} | "
-                     f"{m1['factor_entries'] / P:.2e} |")
+                     f"{m1['factor_entries'] / P:.2e} | {measured} |")
     lines += ["", "Raw runs: `runs.tsv` (ranks, run, wall s, peak RSS per rank KB, summary.json)."]
     return lines
 
