@@ -2,11 +2,14 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/stage.hpp"
 #include "solver/mpi_session.hpp"
 
 #include <dmumps_c.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 namespace sig {
 
@@ -74,6 +77,15 @@ double entry_count(int value) {
   return value < 0 ? -1e6 * value : value;
 }
 
+// SIG_MUMPS_ANALYSIS=FILE: the analysis's estimates of the factorization, appended to FILE as one
+// tab-separated line, and the stage stopped there (exit 0, nothing written: StageExit passes the
+// contact zone's retries, which catch sig::Error). It sizes a benchmark's problem
+// (drivers/bench-mpi.sh --analysis-only) without the factorization of a problem that may not fit.
+const char* analysis_only_file() {
+  const char* file = std::getenv("SIG_MUMPS_ANALYSIS");
+  return file != nullptr && *file != '\0' ? file : nullptr;
+}
+
 } // namespace
 
 struct MumpsSolver::State {
@@ -108,7 +120,9 @@ struct MumpsSolver::State {
     st.flops = id.rinfog[2];
     st.flops_estimate = id.rinfog[0];
     st.factor_entries = entry_count(infog(29));
+    st.factor_space = entry_count(infog(9));
     st.largest_front = infog(11);
+    st.tree_nodes = infog(6);
     st.delayed_pivots = infog(13);
     st.memory_max_mb = infog(21);
     st.memory_total_mb = infog(22);
@@ -159,6 +173,19 @@ struct MumpsSolver::State {
     verify(what);
     share(phase == 1 ? redrhs.data() : reduced_rhs.data(),
           phase == 1 ? redrhs.size() : reduced_rhs.size());
+  }
+  /// The analysis's estimates (host's view, every rank's alike) appended to `file`: the order,
+  /// the Schur variables, the ordering (INFOG(7)), the seconds, RINFOG(1) flops, INFOG(20)
+  /// factor entries, INFOG(5) the largest front, INFOG(6) the tree's nodes, INFOG(16)/INFOG(17)
+  /// the in-core MB of the largest rank / of all.
+  void append_analysis_estimates(const char* file) const {
+    if (rank_rows && mpi::rank() != 0) return;
+    std::FILE* out = std::fopen(file, "a");
+    SIG_VERIFY(out != nullptr, "SIG_MUMPS_ANALYSIS: cannot append to " << file);
+    std::fprintf(out, "%d\t%zu\t%d\t%.3f\t%.17g\t%.17g\t%d\t%d\t%d\t%d\n", id.n, schur_dofs.size(),
+                 infog(7), statistics.analysis_seconds, id.rinfog[0], entry_count(infog(20)),
+                 infog(5), infog(6), infog(16), infog(17));
+    std::fclose(out);
   }
   void verify(const char* phase) const {
     SIG_VERIFY(infog(1) >= 0, "MUMPS: " << phase << " failed: INFOG(1) = " << infog(1)
@@ -259,6 +286,13 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
   s.call(job_analyze);
   s.statistics.analysis_seconds = clock.seconds();
   s.verify("analysis");
+  if (const char* file = analysis_only_file()) {
+    s.append_analysis_estimates(file);
+    log_info(std::string("MUMPS: stopped after the analysis, as SIG_MUMPS_ANALYSIS asks "
+                         "(estimates in ") +
+             file + ")");
+    throw StageExit{0};
+  }
   s.pattern = pattern_fingerprint(A);
   s.analyzed = true;
 }

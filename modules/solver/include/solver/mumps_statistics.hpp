@@ -10,7 +10,9 @@ struct MumpsStatistics {
   double flops = 0;           ///< RINFOG(3): flops of the elimination, all ranks
   double flops_estimate = 0;  ///< RINFOG(1): the analysis's estimate of them
   double factor_entries = 0;  ///< INFOG(29): entries of the factors, all ranks
+  double factor_space = 0;    ///< INFOG(9): reals allocated for the factors, all ranks
   double largest_front = 0;   ///< INFOG(11): order of the largest frontal matrix
+  double tree_nodes = 0;      ///< INFOG(6): nodes (fronts) of the elimination tree
   double delayed_pivots = 0;  ///< INFOG(13): eliminations postponed for stability
   double memory_max_mb = 0;   ///< INFOG(21): memory the factorization used on its largest rank
   double memory_total_mb = 0; ///< INFOG(22): ... summed over the ranks
