@@ -883,6 +883,8 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
                            !one_change_ && !watch_ && !returned_;
     if (watchable) bulk_.checkpoint();
     const Damping damping = damping_;
+    const double drift = drift_; // an unheld step searched as any other sets it
+    const int drift_at = drift_at_;
     Step step;
     if (!solve(t, now, step)) break;
     ContactPoint next;
@@ -894,8 +896,8 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
     bulk_.restore();
     std::optional<Watch> started;
     if (watchable && kind_ == 0 && next.residual > now.residual)
-      started = Watch{now,      iterate, memory_, cycles_,   best_,
-                      best_at_, damping, drift_,  drift_at_, kWatchSteps};
+      started = Watch{now,      iterate, memory_, cycles_,  best_,
+                      best_at_, damping, drift,   drift_at, kWatchSteps};
     if (returned_ && kind_ == 0) kind_ = 5;
     returned_ = false;
     record(t, now, next, alpha);

@@ -34,11 +34,12 @@
 //    one of least residual. The watchdog (R. M. Chamberlain, M. J. D. Powell, C. Lemarechal,
 //    H. C. Pedersen, "The watchdog technique for forcing convergence in algorithms for
 //    constrained optimization", Math. Programming Study 16, 1982; Nocedal and Wright,
-//    "Numerical Optimization", 2006, 15.6): a relaxed step that raised the merit must be repaid,
-//    the merit below the one it started from by Armijo's test, within kWatchSteps more steps;
-//    else the solve returns to the iterate it started from (the bulk's checkpoint, the
-//    multipliers, branches, merit memory, cycle guard and damping as they were) and searches
-//    that step again under a ceiling of the present merit. The iterations spent count. From an
+//    "Numerical Optimization", 2006, 15.6): a relaxed step that passed its test and raised the
+//    merit must be repaid, the merit below the one it started from by Armijo's test, within
+//    kWatchSteps more steps; else the solve returns to the iterate it started from (the bulk's
+//    checkpoint, the multipliers, branches, merit memory, cycle guard, damping and drift as they
+//    were) and searches that step again under a ceiling of the present merit. The iterations
+//    spent count; restricted steps (below) end a watch. From an
 //    iterate at round-off (a residual below kMeritPrecision of the force scale and eps), a trial at
 //    round-off passes, relaxed or monotone: merits there cannot be ranked (NEWTON.md item 8). A
 //    trial outside the bulk's domain (an inverted element) or with a residual that is not finite is
