@@ -6,6 +6,7 @@
 #include "solver/mpi_session.hpp"
 
 #include <dmumps_c.h>
+#include <metis.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -31,6 +32,58 @@ constexpr int amd_max_unknowns = 200000;
 // dissection) at any size (nested_dissection_entries_per_row, solver/linear_solver.hpp).
 constexpr int ordering_amd = 0;
 constexpr int ordering_automatic = 7;
+
+// ICNTL(7) = 1: the pivot order given in PERM_IN.
+constexpr int ordering_given = 1;
+
+/// METIS's nested dissection of the graph of A's interior (every variable but the Schur ones),
+/// the Schur variables after it, as MUMPS's PERM_IN (PERM_IN(i) = the position of variable i,
+/// 1-based). With a Schur complement MUMPS 5.5 takes AMD whatever ICNTL(7) asks of its own
+/// orderings (README, "Ordering"), whose fill on 3D rows is several times nested dissection's.
+std::vector<int> nested_dissection_order(const Eigen::SparseMatrix<double>& A,
+                                         const std::vector<int>& schur_dofs) {
+  const int n = static_cast<int>(A.rows());
+  std::vector<int> interior(static_cast<std::size_t>(n), -1); // variable -> interior vertex
+  std::vector<char> schur(static_cast<std::size_t>(n), 0);
+  for (int d : schur_dofs)
+    schur[static_cast<std::size_t>(d)] = 1;
+  int vertices = 0;
+  for (int i = 0; i < n; ++i)
+    if (!schur[static_cast<std::size_t>(i)]) interior[static_cast<std::size_t>(i)] = vertices++;
+  // The symmetric adjacency of the interior from whichever triangle A stores.
+  std::vector<std::vector<idx_t>> adjacency(static_cast<std::size_t>(vertices));
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const int a = interior[static_cast<std::size_t>(it.row())];
+      const int b = interior[static_cast<std::size_t>(j)];
+      if (a < 0 || b < 0 || a == b) continue;
+      adjacency[static_cast<std::size_t>(a)].push_back(b);
+      adjacency[static_cast<std::size_t>(b)].push_back(a);
+    }
+  std::vector<idx_t> xadj{0}, adjncy;
+  for (auto& row : adjacency) {
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    adjncy.insert(adjncy.end(), row.begin(), row.end());
+    xadj.push_back(static_cast<idx_t>(adjncy.size()));
+  }
+  idx_t nv = vertices;
+  std::vector<idx_t> perm(static_cast<std::size_t>(vertices)),
+      iperm(static_cast<std::size_t>(vertices));
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  SIG_VERIFY(vertices == 0 || METIS_NodeND(&nv, xadj.data(), adjncy.data(), nullptr, options,
+                                           perm.data(), iperm.data()) == METIS_OK,
+             "MUMPS: METIS_NodeND failed on " << vertices << " interior variables");
+  std::vector<int> position(static_cast<std::size_t>(n));
+  int next_schur = vertices;
+  for (int i = 0; i < n; ++i) {
+    const int v = interior[static_cast<std::size_t>(i)];
+    position[static_cast<std::size_t>(i)] =
+        1 + (v >= 0 ? static_cast<int>(iperm[static_cast<std::size_t>(v)]) : next_schur++);
+  }
+  return position;
+}
 
 int sym_of(MatrixKind kind) {
   switch (kind) {
@@ -94,6 +147,7 @@ struct MumpsSolver::State {
   bool rank_rows = false; ///< every rank of MPI_COMM_WORLD gives its rows (ICNTL(18) = 3)
   std::vector<int> schur_dofs;
   std::vector<int> listvar_schur; ///< 1-based copy handed to MUMPS
+  std::vector<int> perm_in;       ///< a given pivot order (ICNTL(7) = 1), 1-based positions
   std::vector<double> schur;      ///< m x m, column-major, filled by the factorization
   std::vector<int> irn, jcn;      ///< 1-based coordinates of the entries passed (lower for SYM > 0)
   std::vector<double> a;
@@ -282,6 +336,13 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
   const bool amd = A.rows() <= amd_max_unknowns &&
                    entries <= nested_dissection_entries_per_row * double(A.rows());
   s.icntl(7) = amd ? ordering_amd : ordering_automatic;
+  // In one process, with a Schur complement, on rows beyond AMD's: METIS's nested dissection
+  // given as PERM_IN (MUMPS would take AMD). Under mpirun the host lacks the other ranks' rows.
+  if (!amd && m > 0 && !s.rank_rows) {
+    s.perm_in = nested_dissection_order(A, s.schur_dofs);
+    s.id.perm_in = s.perm_in.data();
+    s.icntl(7) = ordering_given;
+  }
   const Stopwatch clock;
   s.call(job_analyze);
   s.statistics.analysis_seconds = clock.seconds();
@@ -398,6 +459,8 @@ std::string MumpsSolver::ordering() const {
   switch (state_->infog(7)) {
   case 0:
     return "amd";
+  case 1: // the order given in PERM_IN: ours is METIS's nested dissection
+    return "metis";
   case 2:
     return "amf";
   case 3:
