@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -146,10 +147,11 @@ TEST(ContactNewtonSearch, AResidualAtRoundOffTakesTheFullStep) {
 /// node 0 far off the obstacle, node 1 off it by 0.01 at s = 0. The first step drives node 1 4
 /// deep while the equilibrium residual falls from 1 to 0: the system it linearized (node 1 held
 /// off the wall) is solved, the merit rises to 4, under the ceiling. The next steps (node 1 on
-/// the wall, its reaction 1) bring the merit to 3, then down by 1/4 a step: above 1, where the
-/// raise started, until s = 10.
-class UnrepaidBulk final : public test::AlongStepBulk {
+/// the wall, its reaction 1) bring the merit to 3, then down by `descent` a step (1/4: above 1,
+/// where the raise started, until s = 10; the merit stops at 0).
+class RaisingBulk final : public test::AlongStepBulk {
 public:
+  double descent = 0.25;
   std::vector<double> solved_at; ///< the positions each step started from
 
   Eigen::VectorXd penetration() const override {
@@ -158,7 +160,7 @@ public:
   }
   double equilibrium_residual(const Eigen::VectorXd&, const Eigen::VectorXd&) const override {
     const double s = position();
-    return s <= 1 ? 1 - s : s <= 2 ? 3 * (s - 1) : 3 - 0.25 * (s - 2);
+    return s <= 1 ? 1 - s : s <= 2 ? 3 * (s - 1) : std::max(0.0, 3 - descent * (s - 2));
   }
   double displacement_step() const override { return alpha_; }
   StepSolution solve(const std::vector<NodeConditions>& conditions,
@@ -193,14 +195,8 @@ private:
   }
 };
 
-TEST(ContactNewtonSearch, AStepNotRepaidIsUndone) {
-  // The watchdog: after the raise to 4 and kWatchSteps steps that leave the merit above 1, the
-  // next iteration starts again from s = 0 (the solve's start, where the raise began), and its
-  // search may no longer raise the merit: the full step (merit 4) and its halvings down to 1/8
-  // (node 1 0.49 deep, the merit 1.003) raise it, 1/16 is the first that does not (0.24 deep,
-  // the equilibrium residual 15/16).
-  static_assert(kWatchSteps < 8, "the scripted path repays the raise at s = 10");
-  UnrepaidBulk bulk;
+/// PDAS on `bulk`, kWatchSteps + 2 iterations.
+ContactNewtonResult solve_raising(RaisingBulk& bulk) {
   ContactSolverParameters p;
   p.method = "pdas";
   const std::unique_ptr<ContactMethod> m = make_contact_method(p);
@@ -210,7 +206,18 @@ TEST(ContactNewtonSearch, AStepNotRepaidIsUndone) {
   ContactNewtonOptions options;
   options.max_iterations = kWatchSteps + 2;
   ContactIterate iterate;
-  const ContactNewtonResult r = solve_contact(bulk, setting, *m, options, iterate);
+  return solve_contact(bulk, setting, *m, options, iterate);
+}
+
+TEST(ContactNewtonSearch, AStepNotRepaidIsUndone) {
+  // The watchdog: after the raise to 4 and kWatchSteps steps that leave the merit above 1, the
+  // next iteration starts again from s = 0 (the solve's start, where the raise began), and its
+  // search may no longer raise the merit: the full step (merit 4) and its halvings down to 1/8
+  // (node 1 0.49 deep, the merit 1.003) raise it, 1/16 is the first that does not (0.24 deep,
+  // the equilibrium residual 15/16).
+  static_assert(kWatchSteps < 8, "the scripted path repays the raise at s = 10");
+  RaisingBulk bulk;
+  const ContactNewtonResult r = solve_raising(bulk);
   ASSERT_EQ(r.history.size(), std::size_t(kWatchSteps + 2)) << r.failure;
   std::vector<double> expected;
   for (int k = 0; k <= kWatchSteps; ++k)
@@ -225,6 +232,26 @@ TEST(ContactNewtonSearch, AStepNotRepaidIsUndone) {
   EXPECT_EQ(back.kind, 5);
   EXPECT_EQ(r.step_length.back(), 1.0 / 16);
   EXPECT_NEAR(back.residual, std::hypot(15.0 / 16, -0.01 + 4.01 / 16), 1e-12);
+}
+
+TEST(ContactNewtonSearch, AStepRepaidInTimeStands) {
+  // The same raise, repaid on the last step the watch allows: the merit 1/2 at s = kWatchSteps + 1
+  // (1.33 one step before, for kWatchSteps = 4), below the 1 where the raise started. Nothing is
+  // undone: every step starts where the last one ended, every one of full length.
+  RaisingBulk bulk;
+  bulk.descent = 2.5 / (kWatchSteps - 1);
+  const ContactNewtonResult r = solve_raising(bulk);
+  ASSERT_EQ(r.history.size(), std::size_t(kWatchSteps + 2)) << r.failure;
+  std::vector<double> expected;
+  for (int k = 0; k <= kWatchSteps + 1; ++k)
+    expected.push_back(k);
+  EXPECT_EQ(bulk.solved_at, expected);
+  EXPECT_GT(r.history[kWatchSteps - 1].residual, 1.0);
+  EXPECT_NEAR(r.history[kWatchSteps].residual, 0.5, 1e-12);
+  for (std::size_t k = 0; k < r.history.size(); ++k) {
+    EXPECT_NE(r.history[k].kind, 5) << k;
+    EXPECT_EQ(r.step_length[k], 1.0) << k;
+  }
 }
 
 } // namespace

@@ -101,6 +101,33 @@ ContactNewtonResult solve(const CondensedProblem& p, const Eigen::VectorXd& star
   return r;
 }
 
+TEST(NewtonGuard, ARewoundCondensedBulkIsAtItsCheckpoint) {
+  // The watchdog's return on a linear bulk: rewind() restores the iterate and S w together (the
+  // residual reads S w), so penetrations and residual are the checkpoint's bit for bit after two
+  // accepted steps beyond it, and a half step from there ends where the first one did.
+  CondensedBulk bulk(cycling_lcp(), {}, Eigen::Vector3d(0.1, -0.2, 0.3));
+  const std::vector<NodeConditions> free(3);
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(3);
+  const auto accept = [&](double alpha) {
+    bulk.solve(free, none);
+    EXPECT_TRUE(bulk.move(alpha));
+    bulk.keep();
+    bulk.restore();
+    return std::pair{Eigen::VectorXd(bulk.penetration()), bulk.equilibrium_residual(none, none)};
+  };
+  accept(0.5);
+  bulk.checkpoint();
+  const auto at_checkpoint =
+      std::pair{Eigen::VectorXd(bulk.penetration()), bulk.equilibrium_residual(none, none)};
+  const auto one_step = accept(0.5);
+  accept(0.25);
+  ASSERT_NE(bulk.equilibrium_residual(none, none), at_checkpoint.second);
+  bulk.rewind();
+  EXPECT_EQ(bulk.penetration(), at_checkpoint.first);
+  EXPECT_EQ(bulk.equilibrium_residual(none, none), at_checkpoint.second);
+  EXPECT_EQ(accept(0.5), one_step);
+}
+
 TEST(NewtonGuard, FullStepsCycleAndTheGuardConverges) {
   const CondensedProblem p = cycling_lcp();
   const Eigen::Vector3d start(0.48928141441003098, 1.2306882818271245, -1.3389344676934845);

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 
 namespace {
 
@@ -380,6 +381,37 @@ TEST(FiniteStrainContact, StepIsTrustedWhileNoStretchChangesByMoreThanAHalf) {
   EXPECT_EQ(bulk.trusted_length(), std::numeric_limits<double>::infinity()) << "before a solve";
   bulk.solve({}, Eigen::VectorXd());
   EXPECT_NEAR(bulk.trusted_length(), 0.5 / largest, 1e-10 / largest);
+}
+
+TEST(FiniteStrainContact, RewindMakesTheCheckpointPresentAgain) {
+  // The watchdog's return (solver/contact_newton.hpp): after two accepted Newton steps beyond a
+  // checkpoint, rewind() gives back the bulk that was there, its residual and its next step's
+  // iterate bit for bit (the state is evaluated again from the remembered u, whose first step
+  // was a half one: not a point the later steps pass through).
+  const sig::Mesh mesh = sig::rectangle(1.0, 0.5, 8, 4);
+  const sig::MaterialTable table = hyperelastic_material(mesh);
+  const FiniteStrainProblem problem = clamped_block(mesh, table, {0.3, 0.2});
+  sig::FiniteStrainBulk bulk(problem, "umfpack", 1e-8);
+  ASSERT_EQ(bulk.contacts(), 0);
+  const Eigen::VectorXd none;
+  const auto accept = [&](double alpha) {
+    bulk.solve({}, none);
+    EXPECT_TRUE(bulk.move(alpha));
+    bulk.keep();
+    bulk.restore();
+    return std::pair{bulk.equilibrium_residual(none, none), bulk.displacement_norm()};
+  };
+  accept(0.5);
+  bulk.checkpoint();
+  const auto at_checkpoint =
+      std::pair{bulk.equilibrium_residual(none, none), bulk.displacement_norm()};
+  const auto one_step = accept(1.0);
+  const auto two_steps = accept(1.0);
+  ASSERT_NE(two_steps, at_checkpoint);
+  bulk.rewind();
+  EXPECT_EQ(std::pair(bulk.equilibrium_residual(none, none), bulk.displacement_norm()),
+            at_checkpoint);
+  EXPECT_EQ(accept(1.0), one_step);
 }
 
 TEST(FiniteStrainContact, CurvedObstacleKeepsNewtonsRate) {
