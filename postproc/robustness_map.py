@@ -7,9 +7,10 @@ rest and from the scene's start; per point the iterations or the failure's name.
     /usr/bin/python3 postproc/robustness_map.py report OUT           OUT/report.md, maps, scene.json
 
 Natural scales (what a parameter is measured against): r and gamma, pressure per length, E / h
-with E Young's modulus (for Ciarlet-Geymonat's law its small-strain modulus) and h the median
-nodal weight of the contact boundary (its mesh size there: a node's weight is half its two
-Gamma3 edges); c, length per pressure, h / E. A point's parameter is factor x its natural scale.
+with E Young's modulus (for Ciarlet-Geymonat's law its small-strain modulus) and h the mesh size
+of the contact boundary from the median nodal weight w (in 2D h = w, half a node's two Gamma3
+edges; in 3D w is an area and h = sqrt(w)); c, length per pressure, h / E. A point's parameter
+is factor x its natural scale.
 
 The decks (datafiles/, each as it ships but for the SOLVER card and the start):
   hertz            scene 7a's half disc, frictionless Signorini (the deck's search=no dropped)
@@ -18,6 +19,10 @@ The decks (datafiles/, each as it ships but for the SOLVER card and the start):
   ball, square     scene 4's decks: compliance with a wall, non-monotone friction, convexification
   ring             scene 7b's Ciarlet-Geymonat ring in one load step
   ring14           the same in LOADSTEPS n=14
+  hertz3d          the 3D Hertz half ball (datafiles/scene3d/hertz_ball.dat), frictionless
+  coulomb3d        its Cattaneo-Mindlin shear (cattaneo_mindlin.dat), Coulomb mu = 0.3 with the
+                   cone: both on coarse half balls (pole size h = 0.25 and 0.15, grading 0.3),
+                   without candidate_gap (every Gamma3 node a contact node), from rest
 Starts: rest (no INITIAL card; the ring's LOADSTEPS start=rest) and the scene's own where it has
 one (the frictional decks' rigid shift (0, -h^2 / R), the ring's small-strain start).
 Each point is one sig-solve on the bulk stages of its deck, mesh and start, with the deck's eps
@@ -50,8 +55,9 @@ class DeckSpec:
     """A deck of the map: its template, the meshes (the MESH field and its values) and starts."""
 
     def __init__(self, name, template, mesh_field, meshes, starts, edit=None, quick_mesh=None,
-                 law="", methods=tuple(METHODS)):
+                 law="", methods=tuple(METHODS), dim=2):
         self.name, self.template, self.mesh_field = name, ROOT / template, mesh_field
+        self.dim = dim
         self.meshes, self.starts, self.edit = meshes, starts, edit
         self.quick_mesh, self.law, self.methods = quick_mesh, law, methods
 
@@ -71,6 +77,11 @@ class DeckSpec:
             d.remove_cards("INITIAL")
             d.add_card(f"INITIAL u=0,{-h * h / radius!r}")
         return d
+
+
+def coarse_half_ball(d):
+    d.set("MESH", grading="0.3")
+    d.drop("SOLVER", "candidate_gap")
 
 
 def tresca(d):
@@ -97,8 +108,13 @@ DECKS = [
              quick_mesh=64, law="Signorini, Ciarlet-Geymonat, one load step"),
     DeckSpec("ring14", "datafiles/scene7b/ring.dat", "N", [64, 128], ["rest", "scene"],
              edit=fourteen_steps, law="Signorini, Ciarlet-Geymonat, 14 load steps"),
+    DeckSpec("hertz3d", "datafiles/scene3d/hertz_ball.dat", "h", [0.25, 0.15], ["rest"],
+             edit=coarse_half_ball, quick_mesh=0.25, law="Signorini, 3D", dim=3),
+    DeckSpec("coulomb3d", "datafiles/scene3d/cattaneo_mindlin.dat", "h", [0.25, 0.15], ["rest"],
+             edit=coarse_half_ball, quick_mesh=0.25, law="Coulomb mu = 0.3, 3D (the cone)", dim=3),
 ]
-QUICK = {"hertz": ("rest",), "coulomb": ("rest",), "tresca": ("scene",), "ring": ("scene",)}
+QUICK = {"hertz": ("rest",), "coulomb": ("rest",), "tresca": ("scene",), "ring": ("scene",),
+         "coulomb3d": ("rest",)}
 QUICK_METHODS = ("pdas", "alm", "projection")
 
 
@@ -120,10 +136,11 @@ def young_modulus(deck):
     return deck.number("MATERIAL", "E")
 
 
-def natural_scale(deck, base):
-    """E / h (pressure per length), h the median nodal weight of case.cont."""
+def natural_scale(deck, base, dim):
+    """E / h (pressure per length), h from the median nodal weight w of case.cont: w in 2D (a
+    length), sqrt(w) in 3D (an area)."""
     weights = sorted(read_ds(base / "case.cont", ["weight"])["weight"])
-    return young_modulus(deck) / weights[len(weights) // 2]
+    return young_modulus(deck) / weights[len(weights) // 2] ** (1 / (dim - 1))
 
 
 def run_point(base, folder, deck, method, value):
@@ -163,16 +180,18 @@ def run(out, quick):
                 deck.write(base / "deck.dat")
                 for name in ("mesh", "material", "contact", "assemble"):
                     stage(name, base / "deck.dat", base)
-                scale = natural_scale(deck, base)
+                scale = natural_scale(deck, base, spec.dim)
                 for method in methods:
                     for factor in factors:
                         value = factor / scale if method == "projection" else factor * scale
                         folder = base.parent / f"{method}_{factor:.3g}"
                         result = run_point(base, folder, spec.deck(mesh, start), method, value)
                         points.append({"deck": spec.name, "law": spec.law, "mesh": mesh,
+                                       "mesh_field": spec.mesh_field,
                                        "start": start, "method": method, "factor": factor,
                                        "parameter": value, "natural": scale, **result})
-                        print(f"{spec.name} m{mesh} {start} {method} x{factor:.3g}: "
+                        print(f"{spec.name} {spec.mesh_field}{mesh} {start} {method} "
+                              f"x{factor:.3g}: "
                               f"{result['iterations'] if result['converged'] else result['failure']}",
                               flush=True)
     (out / "map.json").write_text(json.dumps({"quick": quick, "points": points}, indent=1) + "\n")
@@ -204,7 +223,9 @@ def panels_of(points, deck):
             else:
                 line.append(MapCell(SHORT.get(p["failure"], p["failure"]), "Nv"))
         cells.append(line)
-    return MapPanel(deck, [f"{m} N{n} {s}" for m, n, s in rows], [factor_label(f) for f in factors],
+    field = mine[0].get("mesh_field", "N")
+    return MapPanel(deck, [f"{m} {field}{n} {s}" for m, n, s in rows],
+                    [factor_label(f) for f in factors],
                     cells, xlabel="parameter / natural scale (-)", ylabel="method, mesh, start (-)")
 
 
@@ -234,13 +255,14 @@ THEORY = """\
 
 def checks_of(points):
     checks = Checks()
-    exact = ("hertz", "coulomb", "tresca", "ring", "ring14")
+    exact = ("hertz", "coulomb", "tresca", "ring", "ring14", "hertz3d", "coulomb3d")
     for deck in exact:
         mine = [p for p in points if p["deck"] == deck and p["method"] in ("pdas", "alm")]
         if not mine:
             continue
         failed = [p for p in mine if not p["converged"]]
-        where = ", ".join(f"{p['method']} N{p['mesh']} {p['start']} x{p['factor']:.3g}: "
+        where = ", ".join(f"{p['method']} {p.get('mesh_field', 'N')}{p['mesh']} {p['start']} "
+                          f"x{p['factor']:.3g}: "
                           f"{p['failure']}" for p in failed[:6])
         checks.add(f"{deck}: ALM and PDAS converge at every point", not failed,
                    ours=f"{len(mine) - len(failed)} of {len(mine)}" + (f" ({where})" if failed else ""),
