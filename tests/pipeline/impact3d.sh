@@ -7,11 +7,14 @@
 #    displacement T times it to 1e-10 (the linear and angular momentum exact; measured 1.7e-13),
 #    the energy E0 to 1e-12 relative;
 #  - the impact (the pole 5.25 mm above the plane at 10 m/s, k = 1e-4, T = 0.02): every strategy
-#    marches to T, the ball hits the plane and leaves it; the specific penalty keeps E + interface
-#    energy to 1e-10 of E0 (its identity (3.53); a linear body's balance is exact to round-off,
-#    measured 7e-14), two-step with persistency on the increment too (its (b) forces do no work,
-#    6e-14); IPM and IPM + EMM lose less than 0.05 % (measured 0.005 %, 0.006 %) and never
-#    penetrate beyond g = 5e-4 m (1 + 1e-8); Signorini's penetration is 0 to 1e-9 m (wall at 0);
+#    marches to T, the ball hits the plane and leaves it; case.hist's free_flight marks exactly
+#    the steps of no Newton iteration (the predictor was the step), every step before the impact
+#    and some after the take-off, none with a node in contact; the specific penalty keeps
+#    E + interface energy to 1e-10 of E0 (its identity (3.53); a linear body's balance is exact
+#    to round-off, measured 7e-14), two-step with persistency on the increment too (its (b)
+#    forces do no work, 6e-14); IPM and IPM + EMM lose less than 0.05 % (measured 0.005 %,
+#    0.006 %) and never penetrate beyond g = 5e-4 m (1 + 1e-8); Signorini's penetration is 0 to
+#    1e-9 m (wall at 0);
 #  - the contact time (k x the steps with a node in contact) within 15 % of Hertz's
 #    2.87 (m^2 / (R E*^2 v))^(1/5) for Signorini, two-step (increment), IPM and IPM + EMM
 #    (measured -10.8, -11.5, -10.2, -10.2 %): on this coarse mesh the P1 tetrahedra are stiffer
@@ -91,12 +94,13 @@ vtus=$(find "$work/ipm-emm" -name 'ball_*.vtu' | wc -l)
 "$bin/sig-dump" --json --values "$base/case.nopo" >"$work/nopo.json"
 
 checks=$((checks + 1))
-"$python" - "$work" "$TOL" <<'PY' || fail "the 3D impact's checks"
+"$python" - "$work" "$TOL" "$bin" <<'PY' || fail "the 3D impact's checks"
 import csv, json, math, sys
 import numpy as np
 from pipeline_checks import check, finish
+from same_history import arrays
 
-work, tol = sys.argv[1], float(sys.argv[2])
+work, tol, bin_dir = sys.argv[1], float(sys.argv[2]), sys.argv[3]
 
 # Free flight: the rigid field v0 + omega x (X - c) at every output, u = t v.
 # case.hist's states are on the free dofs: every dof here (no Dirichlet condition), 3 a node.
@@ -140,6 +144,15 @@ for method in ("signorini", "specific-penalty", "two-step-increment", "ipm", "ip
         "left": rows[-1]["active_nodes"] == 0 and len(contact) > 0,
         "newton": int(sum(r["newton_iterations"] for r in rows)),
     }
+    # case.hist's free_flight: the steps whose predictor was the step (no Newton iteration, no
+    # force), all before the impact, some after the take-off, none in contact.
+    marks = arrays(bin_dir, f"{work}/{method}/case.hist")["free_flight"]["values"]
+    touching = [s for s, r in enumerate(rows) if r["active_nodes"] > 0]
+    run["free"] = [s for s, m in enumerate(marks) if m]
+    run["predictor"] = [s for s, r in enumerate(rows) if s > 0 and r["newton_iterations"] == 0]
+    run["free_ok"] = (run["free"] == run["predictor"] and not set(run["free"]) & set(touching)
+                      and run["free"][:touching[0] - 1] == list(range(1, touching[0]))
+                      and run["free"][-1] > touching[-1]) if touching and run["free"] else False
     run["error"] = run["contact_time"] / hertz - 1
     runs[method] = run
     print(f"{method}: {run['steps']} steps, dE/E0 = {100 * run['change']:+.5f} %, "
@@ -149,6 +162,8 @@ for method in ("signorini", "specific-penalty", "two-step-increment", "ipm", "ip
 for method, run in runs.items():
     check(run["steps"] == 200, f"{method}: 200 steps ({run['steps']})")
     check(run["left"], f"{method}: the ball hits and leaves the plane")
+    check(run["free_ok"], f"{method}: {len(run['free'])} steps in free flight, every step before "
+          f"the impact and some after the take-off, those of no Newton iteration")
 for method in ("specific-penalty", "two-step-increment"):
     check(runs[method]["excursion"] <= 1e-10,
           f"{method}: E + interface energy kept to 1e-10 of E0 ({runs[method]['excursion']:.2e})")

@@ -243,12 +243,6 @@ const std::vector<CardSpec>& card_schema() {
             "starts again, so the solution is the one without it; linear march (sig-march): "
             "only those nodes condensed, the others watched, a step that brings one of them "
             "through the obstacle stopping the march; default every contact node"},
-           {"free_flight",
-            "yes | no: linear march with contact (sig-march, midpoint and newmark): yes takes a "
-            "step whose free step (no contact force) ends where no law of the strategy gives a "
-            "force without forming its contact problem, the strategy's own answer; no forms it "
-            "at every step (the same march, a check)",
-            "yes"},
        }},
       {"CONVEXIFICATION",
        false,

@@ -29,31 +29,16 @@ bool gives_force(const ContactLaw& law, double q_n, const Eigen::VectorXd& q_t, 
 
 } // namespace
 
-bool laws_give_force(const ContactSetting& setting, const Eigen::VectorXd& q_n,
-                     const Eigen::VectorXd& q_t, int tangents) {
-  for (int p = 0; p < setting.size(); ++p)
-    if (tangents == 2 ? gives_force<3>(setting.law[p], q_n[p], q_t, p)
-                      : gives_force<2>(setting.law[p], q_n[p], q_t, p))
-      return true;
-  return false;
-}
-
 bool predictor_solves_step(const ContactBulk& bulk, const ContactSetting& setting, double eps) {
   const Eigen::VectorXd q_n = bulk.penetration(), q_t = bulk.slip();
-  if (laws_give_force(setting, q_n, q_t, bulk.has_tangential() ? bulk.tangents() : 1)) return false;
+  const bool plane = bulk.has_tangential() && bulk.tangents() == 2;
+  for (int p = 0; p < setting.size(); ++p)
+    if (plane ? gives_force<3>(setting.law[p], q_n[p], q_t, p)
+              : gives_force<2>(setting.law[p], q_n[p], q_t, p))
+      return false;
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(setting.size());
   const Eigen::VectorXd no_tangential = Eigen::VectorXd::Zero(q_t.size());
   return bulk.equilibrium_residual(none, no_tangential) <= eps * bulk.force_scale();
-}
-
-std::optional<ContactStepSolution> ContactStrategy::free_flight(const ContactSetting& setting,
-                                                                const ContactStepStart& start,
-                                                                const Eigen::VectorXd& q_n,
-                                                                const Eigen::VectorXd& q_t,
-                                                                int tangents) const {
-  const ContactSetting first{first_laws(setting, start), setting.weight};
-  if (laws_give_force(first, q_n, q_t, tangents)) return std::nullopt;
-  return free_solution(first, q_t.size());
 }
 
 ContactStepSolution ContactStrategy::free_solution(const ContactSetting& first,

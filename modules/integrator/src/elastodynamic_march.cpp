@@ -35,10 +35,9 @@ ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, DynamicState in
 }
 
 ElastodynamicSteps::ElastodynamicSteps(const TimeScheme& scheme, const ContactBoundary& boundary,
-                                       const ContactStrategy& strategy, DynamicState initial,
-                                       bool free_flight)
+                                       const ContactStrategy& strategy, DynamicState initial)
     : scheme_(scheme), boundary_(&boundary), strategy_(&strategy), state_(std::move(initial)),
-      products_(scheme_.products(state_)), free_flight_(free_flight) {
+      products_(scheme_.products(state_)) {
   SIG_VERIFY(boundary.size() > 0, "march: a contact boundary without nodes");
   SIG_VERIFY(boundary.B.cols() == scheme.problem().num_dofs(),
              "march: the contact boundary has " << boundary.B.cols() << " dofs, the problem "
@@ -104,29 +103,23 @@ StepRecord ElastodynamicSteps::step(int) {
     //    displacements and the slips (dynamic_contact.hpp) written for the increment
     //    w = x - x_now: A w + lambda = A w_free = g / 2, q_n = w_n - (d - x_now,n), the slip
     //    w_t the tangential displacement over the step; starting from the free step. In free
-    //    flight (no law gives a force at the free step's end) the free step is the step, as
-    //    the strategy would find on the bulk, without forming it.
+    //    flight the strategy's first test finds the free step to be the step (no Newton
+    //    iteration, no force): the restarted bulk costs a product with A and that test.
     const ContactStepStart start{q_now_, boundary.B * state_.v, k};
     const Eigen::VectorXd gap = boundary.geometric_gap - x_now_.head(p);
-    std::optional<ContactStepSolution> solution;
-    if (free_flight_) solution = free_flight(g, w_free, gap, start);
-    r.free_flight = solution.has_value();
-    if (!solution) {
-      // One bulk for the march (A does not change): its dense factor is kept from step to step.
-      if (bulk_) {
-        bulk_->restart(0.5 * g, gap, w_free);
-      } else {
-        CondensedProblem problem;
-        problem.S = condensed_->A();
-        problem.f = 0.5 * g;
-        problem.normal_dof = normal_dof_;
-        problem.tangential_dof = tangential_dof_;
-        problem.gap = gap;
-        bulk_ = std::make_unique<CondensedBulk>(std::move(problem), Eigen::VectorXd{}, w_free);
-      }
-      solution = strategy_->solve(*bulk_, boundary.setting, start);
+    // One bulk for the march (A does not change): its dense factor is kept from step to step.
+    if (bulk_) {
+      bulk_->restart(0.5 * g, gap, w_free);
+    } else {
+      CondensedProblem problem;
+      problem.S = condensed_->A();
+      problem.f = 0.5 * g;
+      problem.normal_dof = normal_dof_;
+      problem.tangential_dof = tangential_dof_;
+      problem.gap = gap;
+      bulk_ = std::make_unique<CondensedBulk>(std::move(problem), Eigen::VectorXd{}, w_free);
     }
-    const ContactStepSolution& forces = *solution;
+    const ContactStepSolution forces = strategy_->solve(*bulk_, boundary.setting, start);
     r.iterations = forces.iterations;
     r.contact = contact_record(forces);
     if (!forces.converged) {
@@ -147,9 +140,10 @@ StepRecord ElastodynamicSteps::step(int) {
       lambda.resize(p + slips);
       lambda << forces.normal_force, forces.tangential_force;
     }
-    const Eigen::VectorXd w = (lambda.array() != 0.0).any()
-                                  ? Eigen::VectorXd(condensed_->solve(g - 2.0 * lambda))
-                                  : w_free;
+    const bool pushed = (lambda.array() != 0.0).any();
+    r.free_flight = forces.iterations == 0 && !pushed;
+    const Eigen::VectorXd w =
+        pushed ? Eigen::VectorXd(condensed_->solve(g - 2.0 * lambda)) : w_free;
     next = scheme_.after_increment(state_, condensed_->increment(w));
     if (const std::string entered = watched_entry(boundary, next.u); !entered.empty()) {
       r.converged = false;
@@ -178,25 +172,6 @@ StepRecord ElastodynamicSteps::step(int) {
   state_ = std::move(next);
   products_ = std::move(next_products);
   return r;
-}
-
-std::optional<ContactStepSolution>
-ElastodynamicSteps::free_flight(const Eigen::VectorXd& g, const Eigen::VectorXd& w_free,
-                                const Eigen::VectorXd& gap, const ContactStepStart& start) const {
-  // CondensedBulk's penetration, slip and equilibrium residual at w_free, as predictor_solves_step
-  // reads them: the same decision, on the same numbers.
-  const int p = boundary_->size();
-  const auto slips = std::ssize(tangential_dof_);
-  const Eigen::VectorXd q_n = w_free.head(p) - gap;
-  const Eigen::VectorXd q_t =
-      slips == 0 ? Eigen::VectorXd(Eigen::VectorXd::Zero(p)) : Eigen::VectorXd(w_free.tail(slips));
-  std::optional<ContactStepSolution> free =
-      strategy_->free_flight(boundary_->setting, start, q_n, q_t, slips == 0 ? 1 : slips / p);
-  if (!free) return free;
-  const Eigen::VectorXd f = 0.5 * g;
-  const double residual = (condensed_->A() * w_free - f).norm();
-  if (residual > strategy_->parameters().eps * std::max(f.norm(), 1e-300)) return std::nullopt;
-  return free;
 }
 
 std::string ElastodynamicSteps::ordering() const {

@@ -9,8 +9,7 @@
 //   FRICTION ref= law=coulomb mu= | tresca threshold= | mu1 mu= | mu2 mu=   (of the slip over
 //            each step; law=nonmonotone is the backward-Euler march's)
 //   SOLVER linear=cholmod|umfpack|mumps maxit=   (K + (4 / k^2) M factorized once; maxit: the
-//          strategy's Newton iterations per phase, default 50) [candidate_gap=] [free_flight=]
-//          (linear body: free_flight=no forms the contact problem of every step; candidate_gap:
+//          strategy's Newton iterations per phase, default 50) [candidate_gap=]  (linear body:
 //          only the contact nodes of initial gap at most this condensed, the others watched)
 //
 // The mesh is 2D or 3D: a 3D body marches the linear schemes (midpoint, Newmark; mass
@@ -290,10 +289,8 @@ int march_main(int argc, char** argv) {
       std::optional<sig::ContactBoundary> boundary;
       if (zone) boundary = sig::contact_boundary(*zone, mesh, reduced);
       std::optional<sig::ElastodynamicSteps> steps;
-      const bool free_flight = solver_card == nullptr ||
-                               solver_card->choice("free_flight", {"yes", "no"}, "yes") == "yes";
       if (boundary)
-        steps.emplace(*scheme, *boundary, *strategy, initial, free_flight);
+        steps.emplace(*scheme, *boundary, *strategy, initial);
       else
         steps.emplace(*scheme, initial);
       history = sig::march_with_progress(*steps, time, label, report);
@@ -310,7 +307,8 @@ int march_main(int argc, char** argv) {
     info.ordering = ordering;
     info.ranks = sig::mpi::size();
     if (elements) info.strategy = strategy_info;
-    // A linear contact march's steps in free flight, 1 a step (0 at step 0: none taken).
+    // A linear contact march's steps in free flight, 1 a step (0 at step 0: none taken): the
+    // predictor was the step, no Newton iteration and no force.
     int free_steps = 0;
     if (elements && !hyperelastic) {
       std::vector<double> free(history.steps.size(), 0.0);

@@ -43,11 +43,11 @@ void warn_unused_solver_fields(const Card* solver) {
   if (solver == nullptr) return;
   for (const auto& [name, value] : solver->fields)
     if (name != "linear" && name != "maxit" && name != "gamma" && name != "eps" &&
-        name != "candidate_gap" && name != "free_flight")
+        name != "candidate_gap")
       log_warning(solver->file + ":" + std::to_string(solver->line) + ": SOLVER " + name + "=" +
                   value +
-                  " is not used by sig-march (a TIME deck uses linear=, maxit=, gamma=, eps=, "
-                  "candidate_gap= and free_flight=): " +
+                  " is not used by sig-march (a TIME deck uses linear=, maxit=, gamma=, eps= and "
+                  "candidate_gap=): " +
                   "ignored");
 }
 

@@ -32,7 +32,6 @@
 #include <Eigen/Core>
 
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,14 +96,6 @@ public:
   /// One step on `bulk`, from the CONT laws and weights of `setting` (one per bulk contact node).
   ContactStepSolution solve(ContactBulk& bulk, const ContactSetting& setting,
                             const ContactStepStart& start) const;
-  /// The step without contact force, when the laws of the first phase give none at the free
-  /// step's end: its penetrations q_n and slips q_t (`tangents` per node, none without friction)
-  /// -- solve()'s answer on a bulk at that free step, whose equilibrium the caller has checked
-  /// (the free flight of integrator/elastodynamic_march.hpp). Empty when a law gives a force.
-  std::optional<ContactStepSolution> free_flight(const ContactSetting& setting,
-                                                 const ContactStepStart& start,
-                                                 const Eigen::VectorXd& q_n,
-                                                 const Eigen::VectorXd& q_t, int tangents) const;
   const ContactStrategyParameters& parameters() const { return p_; }
 
 protected:
@@ -150,11 +141,6 @@ ContactStrategyTraits contact_strategy_traits(const std::string& name);
 /// force from a penetration at the start). Free flight then costs no Newton iteration, and its
 /// states stay the scheme's exact ones.
 bool predictor_solves_step(const ContactBulk& bulk, const ContactSetting& setting, double eps);
-
-/// Whether a law of `setting` gives its node a force, without multipliers, at the penetrations
-/// q_n and slips q_t (`tangents` per node: 2 in 3D with friction, else 1 or none).
-bool laws_give_force(const ContactSetting& setting, const Eigen::VectorXd& q_n,
-                     const Eigen::VectorXd& q_t, int tangents);
 
 /// The forces and statuses of a step's solution as the march records them.
 ContactRecord contact_record(const ContactStepSolution& solution);

@@ -11,16 +11,13 @@
 //      driver, p or d p unknowns), from x_n and the free step;
 //   3. the components' increment from lambda, exactly, and the whole body's increment d with
 //      them (the backward half), v_{n+1} = (2 / k) d - v_n.
-// Free flight: when the strategy's first laws give no force at the free step's end (its gaps and
-// slips) and the free step is in equilibrium to the strategy's eps -- the test by which the
-// strategy itself would return it at once (contact_strategy.hpp, predictor_solves_step) -- step 2
-// forms no contact problem and the free step is the step: the same decision on the same numbers,
-// so the march is the condensed one's exactly, and such a step costs the split solve (the two
-// halves around S_c^{-1} g: one forward-backward substitution), a gap check and the product
-// A w_free of the equilibrium test. `free_flight` = false forms the problem at every step
-// (SOLVER free_flight=no: the check of tests/pipeline/free_flight3d.sh). The plain factorization of S, whose solve is some 15 % cheaper
-// than the split one on the 3D ball, is not made: it costs about 30 of its solves
-// (datafiles/scene3d/README.md, *Performance*).
+// Free flight: when the strategy's first laws give no force at the free step's end and the free
+// step is in equilibrium to the strategy's eps, the strategy's first test
+// (contact_strategy.hpp, predictor_solves_step) returns the free step as the step, no Newton
+// iteration, no force: such a step costs the split solve (the two halves around S_c^{-1} g:
+// one forward-backward substitution), the bulk's restart (a product with A) and that test. The
+// plain factorization of S, whose solve is some 15 % cheaper than the split one on the 3D ball,
+// is not made: it costs about 30 of its solves (datafiles/scene3d/README.md, *Performance*).
 // Under mpirun the scheme holds this rank's rows of K and M (Elastodynamics::rank_rows): MUMPS
 // factorizes S over the ranks, its complement on rank 0 sent to every rank, and every rank runs
 // the same steps on the whole vectors.
@@ -60,8 +57,7 @@ public:
   /// the step operator condensed onto the contact nodes once. sig::Error for inconsistent
   /// input.
   ElastodynamicSteps(const TimeScheme& scheme, const ContactBoundary& boundary,
-                     const ContactStrategy& strategy, DynamicState initial,
-                     bool free_flight = true);
+                     const ContactStrategy& strategy, DynamicState initial);
   ~ElastodynamicSteps() override;
 
   MarchRecords records() const override { return {.energy = true, .balance = true}; }
@@ -83,16 +79,8 @@ private:
   TimeScheme::StateProducts products_; ///< of state_: its energy, the next step's right side
   Eigen::VectorXd x_now_;              ///< the condensed components of the state (G u)
   Eigen::VectorXd q_now_;              ///< the penetrations of the state
-  bool free_flight_ = true;            ///< take free-flight steps without a contact problem
-  /// The contact problem's bulk, made at the first step that needs it, restarted at the next.
+  /// The contact problem's bulk, made at the first step, restarted at the next.
   std::unique_ptr<CondensedBulk> bulk_;
-
-  /// The strategy's free step when the free step w_free (components, of the condensed right side
-  /// g; the gaps q_n = w_n - gap) is the step (header); empty otherwise.
-  std::optional<ContactStepSolution> free_flight(const Eigen::VectorXd& g,
-                                                 const Eigen::VectorXd& w_free,
-                                                 const Eigen::VectorXd& gap,
-                                                 const ContactStepStart& start) const;
 };
 
 /// Without contact: `steps` steps of `scheme` from `initial`, the work of the loads accumulating

@@ -55,8 +55,8 @@ struct StepRecord {
   /// Newton iterations of the step (1 for a linear solve, 0 where the predictor was the step or
   /// at step 0).
   int iterations = 0;
-  /// A contact march's step in free flight: the step without contact force was the step, no
-  /// contact problem formed (integrator/elastodynamic_march.hpp).
+  /// A linear contact march's step in free flight: the predictor (the step without contact
+  /// force) was the step, no Newton iteration and no force (integrator/elastodynamic_march.hpp).
   bool free_flight = false;
   /// The energies after the step and the work done since step 0 (MarchRecords::energy,
   /// ::balance); a failed step repeats the last step done's.

@@ -48,7 +48,9 @@
 //                     (contact/contact_status.hpp codes: free 0, RNI 1, CUV 2; none 0, S= 1,
 //                     S+ 2, S- 3)
 //   step columns      a march's own per-step values (HistoryInfo::step_columns: the
-//                     convexification counts of the backward Euler), one value per row
+//                     convexification counts of the backward Euler; free_flight of a linear
+//                     contact march, 1 where the predictor was the step: no Newton iteration,
+//                     no force), one value per row
 // Readers of an older case.hist: the backward-Euler march wrote its interface energy as
 // compliance_energy and a total that included it; a march in velocity wrote no
 // tangential_pressure (sig-post then reads force_t / weight).
