@@ -2,12 +2,13 @@
 # Requirement (issue 27, the ordering under mpirun): on 3D rows with a Schur complement the ranks
 # give MUMPS the order one process gives it, METIS's nested dissection of the whole pattern
 # gathered on the host as PERM_IN (modules/solver/src/mumps_solver.cpp). A coarse half ball with
-# linear=mumps, PDAS on the condensed candidates, solved by sig-solve in one process and as 2
-# ranks (oversubscribed, each rank streaming its rows of the one case.tae): both name the ordering
+# linear=mumps, PDAS on the condensed candidates (tests/pipeline/data/mumps_ball.dat), its chain in
+# one process and with --np 2 (sig-assemble and sig-solve as 2 ranks, oversubscribed, each
+# assembling and holding the rows of its METIS part): both name the ordering
 # "metis" (case.b and the log line), MUMPS's analysis predicts the same flops (RINFOG(1)) and the
 # same largest front (INFOG(5)) from the same order, and every answer of case.b (displacements,
 # multipliers, statuses, iterations) equals one process's to 1e-10 of its largest value (the
-# Newton history's residuals to 1e-8).
+# Newton history's residuals to 1e-6, its counts identical).
 set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 require_command mpirun "drivers/setup.sh installs mpi-default-bin"
@@ -16,26 +17,11 @@ require_stages mesh material contact assemble solve dump
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
 export OMPI_MCA_mpi_yield_when_idle=1
 
-cat >"$work/ball.dat" <<'DECK'
-# A coarse half ball (R = 8, E = 150, nu = 0.3, GPa-m) pressed on the plane x3 = 0, MUMPS with
-# the candidates of small gap as its Schur complement.
-TITLE half ball, METIS's order over the ranks
-MESH generator=half_ball r=8 h=1
-MATERIAL law=hooke E=150 nu=0.3
-DIRICHLET ref=2 ux=0 uy=0
-TRACTION ref=2 f=0,0,-3
-CONTACT ref=3 obstacle=plane point=0,0,0 normal=0,0,1 law=signorini exclude=2
-SOLVER method=pdas candidate_gap=2 linear=mumps
-OUTPUT vtk=no
-DECK
+cp "$root/tests/pipeline/data/mumps_ball.dat" "$work/ball.dat"
 "$root/drivers/chain.sh" "$work/ball.dat" -o "$work/one" >"$work/one.log" 2>&1 ||
   { tail -20 "$work/one.log"; die "drivers/chain.sh ball.dat failed in one process"; }
-mkdir "$work/np2"
-for ds in nopo mili cont tae; do
-  ln -s "$work/one/case.$ds" "$work/np2/case.$ds"
-done
-mpirun --oversubscribe -np 2 "$bin/sig-solve" "$work/ball.dat" -o "$work/np2" \
-  >"$work/np2.log" 2>&1 || { tail -20 "$work/np2.log"; die "mpirun -np 2 sig-solve failed"; }
+"$root/drivers/chain.sh" "$work/ball.dat" -o "$work/np2" --np 2 >"$work/np2.log" 2>&1 ||
+  { tail -20 "$work/np2.log"; die "drivers/chain.sh ball.dat --np 2 failed"; }
 
 checks=$((checks + 1))
 grep -q "ordering metis, 2 ranks" "$work/np2.log" ||
@@ -57,13 +43,14 @@ for name, b, ranks in (("one process", one, 1), ("2 ranks", two, 2)):
 for key in ("mumps_flops_estimate", "mumps_largest_front"):
     if value(two, key) != value(one, key):
         problems.append(f"{key}: {value(two, key)} as 2 ranks, {value(one, key)} in one process")
-# The answers to 1e-10 of their largest value; the Newton history's reals to same_history's
-# 1e-8: a residual near convergence is round-off, summed over the ranks in another order.
+# The answers to 1e-10 of their largest value; the Newton history's reals to 1e-6: its residuals
+# are differences of large sums, added in another order over the ranks (measured 6e-9 here, 1.6e-8
+# on the medium ball of drivers/bench-mpi.sh), its counts identical.
 rows = [r for r in differences(bin, f"{work}/one/case.b", f"{work}/np2/case.b", 1e-10)
         if not r[0].startswith("mumps_")]
 for name, relative, ok in rows:
     history = name.startswith("history_") and relative is not None
-    if not (relative <= 1e-8 if history else ok):
+    if not (relative <= 1e-6 if history else ok):
         problems.append(f"{name} differs ({relative})")
 answers = [r for r in rows if not r[0].startswith("history_")]
 worst = max(answers, key=lambda r: r[1] or 0)
