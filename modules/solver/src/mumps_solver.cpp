@@ -241,10 +241,10 @@ struct MumpsSolver::State {
                  infog(5), infog(6), infog(16), infog(17));
     std::fclose(out);
   }
-  /// PERM_IN and ICNTL(7) = 1 from METIS's nested dissection of the entries passed. Over the
-  /// ranks the host orders the whole lower triangle, each rank's entries gathered (two ints an
-  /// entry: 8 bytes an entry of the lower triangle on the host, freed before the analysis); MUMPS
-  /// reads PERM_IN on the host alone.
+  /// PERM_IN and ICNTL(7) = 1 from METIS's nested dissection of the entries passed (the lower
+  /// triangle for SYM > 0). Over the ranks the host orders the whole, each rank's entries
+  /// gathered (two ints, 8 bytes an entry on the host, freed before the analysis); MUMPS reads
+  /// PERM_IN on the host alone.
   void give_nested_dissection_order() {
     if (rank_rows) {
       std::vector<int> rows = mpi::gather(irn), columns = mpi::gather(jcn);
@@ -353,7 +353,7 @@ void MumpsSolver::analyze(const Eigen::SparseMatrix<double>& A) {
   // With a Schur complement, on 3D rows: METIS's nested dissection given as PERM_IN (MUMPS would
   // take AMD), the same order in one process and over the ranks. On 2D rows AMD stays, even
   // beyond amd_max_unknowns: on the 2D Hertz of 1.5e6 unknowns METIS's order cut the flops by 3
-  // but took 10 s to compute, and the factorization took 33 s against AMD's 23 s (README,
+  // but took 10 s to compute, and the factorize phase took 33 s against AMD's 23 s (README,
   // "Ordering"); on the 3D ball of 1e5 unknowns it takes 0.7 s and saves 17 s.
   if (rows_3d && m > 0) s.give_nested_dissection_order();
   const Stopwatch clock;
