@@ -30,7 +30,8 @@ from pathlib import Path
 BLOCK_ROWS = 256    # rows of a type-2 front a process takes, at least (the model's grain)
 BANDWIDTH = 10e9    # bytes per second of the network (the complement's broadcast)
 MODEL_RANKS = (16, 32, 64, 128, 256)
-ORDERINGS = {0: "amd", 2: "amf", 3: "scotch", 4: "pord", 5: "metis", 6: "qamd"}
+# INFOG(7); 1 is the order given in PERM_IN, ours METIS's nested dissection (mumps_solver.cpp).
+ORDERINGS = {0: "amd", 1: "metis", 2: "amf", 3: "scotch", 4: "pord", 5: "metis", 6: "qamd"}
 
 
 def read_info(out):

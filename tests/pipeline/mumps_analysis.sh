@@ -12,18 +12,7 @@ set -euo pipefail
 source "$(dirname "$0")/lib/common.sh"
 require_command gmsh "the half ball generator meshes through gmsh"
 
-cat >"$work/ball.dat" <<'DECK'
-# A coarse half ball (R = 8, E = 150, nu = 0.3, GPa-m) pressed on the plane x3 = 0, MUMPS with
-# the candidates of small gap as its Schur complement.
-TITLE half ball, MUMPS's analysis
-MESH generator=half_ball r=8 h=1
-MATERIAL law=hooke E=150 nu=0.3
-DIRICHLET ref=2 ux=0 uy=0
-TRACTION ref=2 f=0,0,-3
-CONTACT ref=3 obstacle=plane point=0,0,0 normal=0,0,1 law=signorini exclude=2
-SOLVER method=pdas candidate_gap=2 linear=mumps
-OUTPUT vtk=no
-DECK
+cp "$root/tests/pipeline/data/mumps_ball.dat" "$work/ball.dat"
 "$root/drivers/chain.sh" "$work/ball.dat" -o "$work/full" >"$work/full.log" 2>&1 ||
   { tail -20 "$work/full.log"; die "drivers/chain.sh ball.dat failed"; }
 mkdir "$work/analysis"

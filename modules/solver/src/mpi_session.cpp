@@ -10,6 +10,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <system_error>
 // gcc says AddressSanitizer by a macro, clang (14) by __has_feature only.
@@ -133,6 +134,27 @@ void broadcast(double* values, int count) {
 
 void broadcast(int* values, int count) {
   MPI_Bcast(values, count, MPI_INT, 0, MPI_COMM_WORLD);
+}
+
+std::vector<int> gather(const std::vector<int>& values) {
+  // A rank that throws here ends the job (run_stage_on_ranks): the others never wait for it.
+  SIG_VERIFY(values.size() <= std::numeric_limits<int>::max(),
+             "MPI: a rank's " << values.size() << " values exceed an int's count");
+  const int count = static_cast<int>(values.size());
+  std::vector<int> counts(rank() == 0 ? static_cast<std::size_t>(size()) : 0);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::vector<int> offsets(counts.size(), 0);
+  long long total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    SIG_VERIFY(total + counts[r] <= std::numeric_limits<int>::max(),
+               "MPI: the ranks' values exceed an int's count on the host");
+    offsets[r] = static_cast<int>(total);
+    total += counts[r];
+  }
+  std::vector<int> whole(static_cast<std::size_t>(total));
+  MPI_Gatherv(values.data(), count, MPI_INT, whole.data(), counts.data(), offsets.data(), MPI_INT,
+              0, MPI_COMM_WORLD);
+  return whole;
 }
 
 void sum(double* values, int count) {

@@ -3,6 +3,8 @@
 // mpirun is one rank of a job; any other process is a plain one, which starts MPI as a singleton
 // only when it builds a MUMPS solver: the stages that never factorize with MUMPS never touch MPI.
 // MPI is finalized once, at exit. The header keeps <mpi.h> out of its users.
+#include <vector>
+
 namespace sig::mpi {
 
 /// The process was started by mpirun (OpenMPI's OMPI_COMM_WORLD_SIZE in its environment).
@@ -22,6 +24,9 @@ int world_fortran();
 /// Rank 0's `count` values, on every rank (MPI_Bcast over MPI_COMM_WORLD).
 void broadcast(double* values, int count);
 void broadcast(int* values, int count);
+/// Every rank's `values` one after the other in rank order, on rank 0 (MPI_Gatherv over
+/// MPI_COMM_WORLD); empty on the others. sig::Error when the whole exceeds an int's count.
+std::vector<int> gather(const std::vector<int>& values);
 /// The sum over the ranks of each of the `count` values, on every rank (MPI_Allreduce).
 void sum(double* values, int count);
 /// Ends every rank of the job with `code` (MPI_Abort): a rank that fails while the others wait

@@ -4,6 +4,9 @@
 // analysis 4-8x cheaper than nested dissection's for the same factorization time), MUMPS's
 // automatic choice above.
 //
+// With Schur variables on 3D rows it gives MUMPS METIS's nested dissection as PERM_IN (MUMPS
+// 5.5 takes AMD with a Schur complement), in one process and over the ranks alike.
+//
 // With Schur variables it performs MUMPS's partial factorization (ICNTL(19)): the interior
 // block K_ii is factorized and S = K_cc - K_ci K_ii^{-1} K_ic comes out of the same pass. Solves
 // then act on the interior problem only: x_i = K_ii^{-1} b_i and x_c = 0 (ICNTL(26) = 0); or a
