@@ -210,7 +210,8 @@ ContactNewtonResult solve_raising(RaisingBulk& bulk) {
 }
 
 TEST(ContactNewtonSearch, AStepNotRepaidIsUndone) {
-  // The watchdog: after the raise to 4 and kWatchSteps steps that leave the merit above 1, the
+  // The watchdog: after the raise to 4 and kWatchSteps steps that leave the merit above 1 and
+  // falling too slowly to repay it within kWatchSteps more, the
   // next iteration starts again from s = 0 (the solve's start, where the raise began), and its
   // search may no longer raise the merit: the full step (merit 4) and its halvings down to 1/8
   // (node 1 0.49 deep, the merit 1.003) raise it, 1/16 is the first that does not (0.24 deep,
@@ -232,6 +233,26 @@ TEST(ContactNewtonSearch, AStepNotRepaidIsUndone) {
   EXPECT_EQ(back.kind, 5);
   EXPECT_EQ(r.step_length.back(), 1.0 / 16);
   EXPECT_NEAR(back.residual, std::hypot(15.0 / 16, -0.01 + 4.01 / 16), 1e-12);
+}
+
+TEST(ContactNewtonSearch, ARaiseFallingFastGetsAStepMore) {
+  // The same raise, above 1 when the watch ends (1.2 at s = kWatchSteps + 1) but falling fast
+  // (the last step's rate would repay it within kWatchSteps more): one step more, which repays
+  // it (0.6): nothing undone. The unrepaid path's rate, 2.25 / 2.5, would not (2.25 x 0.9^4 > 1).
+  RaisingBulk bulk;
+  bulk.descent = 1.8 / (kWatchSteps - 1);
+  const double rate = 1.2 / (1.2 + bulk.descent);
+  ASSERT_LT(1.2 * std::pow(rate, kWatchSteps), 1.0) << "the path must promise the repayment";
+  const ContactNewtonResult r = solve_raising(bulk);
+  ASSERT_EQ(r.history.size(), std::size_t(kWatchSteps + 2)) << r.failure;
+  std::vector<double> expected;
+  for (int k = 0; k <= kWatchSteps + 1; ++k)
+    expected.push_back(k);
+  EXPECT_EQ(bulk.solved_at, expected);
+  EXPECT_NEAR(r.history[kWatchSteps].residual, 1.2, 1e-12);
+  EXPECT_NEAR(r.history[kWatchSteps + 1].residual, 1.2 - bulk.descent, 1e-12);
+  for (std::size_t k = 0; k < r.history.size(); ++k)
+    EXPECT_NE(r.history[k].kind, 5) << k;
 }
 
 TEST(ContactNewtonSearch, AStepRepaidInTimeStands) {

@@ -154,7 +154,8 @@ private:
     Damping damping;
     double drift;
     int drift_at;
-    int left; ///< steps left to repay it
+    int left;         ///< steps left to repay it
+    int extended = 0; ///< steps granted past kWatchSteps by the path's rate (run())
   };
   std::optional<Watch> watch_;
   /// The step from a watchdog's return: searched under a ceiling of the present merit (if no
@@ -901,6 +902,7 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
     if (returned_ && kind_ == 0) kind_ = 5;
     returned_ = false;
     record(t, now, next, alpha);
+    const double before_step = now.residual;
     now = std::move(next);
     iterate.lambda = now.lambda;
     iterate.t = now.t;
@@ -919,15 +921,26 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
     }
     if (stopped(iteration, first_residual)) break;
     // The watchdog (header): within kWatchSteps steps after a nonmonotone one the merit must
-    // fall below where that one started, else the solve returns there. Restricted steps (after
-    // a cycle or a stall) lower the merit from where they are, and end the watch.
+    // fall below where that one started, else the solve returns there, unless the last step
+    // contracted the merit fast enough to repay it within kWatchSteps more at that rate (a path
+    // converging linearly after a cold start's raise: one step more, then the same question, up
+    // to kWatchSteps more). Restricted steps (after a cycle or a stall) lower the merit from
+    // where they are, and end the watch.
     if (monotone_ || one_change_) watch_.reset();
     if (watch_) {
-      if (sufficient_decrease(now.residual, watch_->before.residual, watch_->before.residual, 1.0))
+      const double start = watch_->before.residual;
+      const double rate = now.residual / std::max(before_step, 1e-300);
+      if (sufficient_decrease(now.residual, start, start, 1.0)) {
         watch_.reset();
-      else if (--watch_->left == 0) {
-        return_to(*watch_, now, iterate);
-        watch_.reset();
+      } else if (--watch_->left == 0) {
+        if (watch_->extended < kWatchSteps && rate < 1 &&
+            sufficient_decrease(now.residual * std::pow(rate, kWatchSteps), start, start, 1.0)) {
+          ++watch_->extended;
+          watch_->left = 1;
+        } else {
+          return_to(*watch_, now, iterate);
+          watch_.reset();
+        }
       }
     }
     if (started) watch_ = std::move(started);

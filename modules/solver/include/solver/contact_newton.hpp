@@ -36,7 +36,10 @@
 //    constrained optimization", Math. Programming Study 16, 1982; Nocedal and Wright,
 //    "Numerical Optimization", 2006, 15.6): a relaxed step that passed its test and raised the
 //    merit must be repaid, the merit below the one it started from by Armijo's test, within
-//    kWatchSteps more steps; else the solve returns to the iterate it started from (the bulk's
+//    kWatchSteps more steps, or one step more each time the last step's contraction of the merit
+//    would repay it within kWatchSteps at that rate (at most kWatchSteps such steps: a cold
+//    start's raise on a path converging linearly); else the solve returns to the iterate it
+//    started from (the bulk's
 //    checkpoint, the multipliers, branches, merit memory, cycle guard, damping and drift as they
 //    were) and searches that step again under a ceiling of the present merit. The iterations
 //    spent count; restricted steps (below) end a watch. From an
