@@ -1,14 +1,13 @@
 #!/usr/bin/env bash
 # drivers/robustness.sh [--quick] [-o OUTDIR]: the robustness map of the contact Newton (issue 23,
-# postproc/robustness_map.py): every method on the Hertz deck (scene 7a), the frictional Hertz
-# deck with Coulomb and Tresca, scene 4's ball and square, scene 7b's ring in one and in 14
-# load steps, and in 3D the Hertz half ball, frictionless and sheared with Coulomb's cone (the
-# Cattaneo-Mindlin deck), the method's parameter over 1e-2 .. 1e4 times its natural scale (r, gamma: E / h;
-# c: h / E) in half decades, two meshes each, from rest and from the scene's start; per point the
-# Newton iterations or the failure's name. Then OUTDIR/report.md with one map per deck, the
-# checks (ALM and PDAS converge at every point of the Signorini, Tresca and Coulomb decks, 2D
-# and 3D) and
-# the theory's reason where a method or a law leaves what it covers.
+# postproc/robustness_map.py): every method on the Hertz deck (scene 7a), the frictional Hertz deck
+# with Coulomb and Tresca, scene 4's ball and square, scene 7b's ring in one and in 14 load steps,
+# and in 3D the Hertz half ball, frictionless and sheared with Coulomb's cone (the Cattaneo-Mindlin
+# deck), the method's parameter over 1e-2 .. 1e4 times its natural scale (r, gamma: E / h; c: h / E)
+# in half decades, two meshes each, from rest and from the scene's start; per point the Newton
+# iterations or the failure's name. Then OUTDIR/report.md with one map per deck, the checks (ALM and
+# PDAS converge at every point of the Signorini, Tresca and Coulomb decks, 2D and 3D) and the
+# theory's reason where a method or a law leaves what it covers.
 #
 #   full:    about 1350 solves
 #   --quick: the Hertz, Coulomb and Tresca decks, the ring and the 3D Coulomb ball, one mesh and

@@ -190,14 +190,18 @@ def run(out, quick):
                                        "mesh_field": spec.mesh_field,
                                        "start": start, "method": method, "factor": factor,
                                        "parameter": value, "natural": scale, **result})
-                        print(f"{spec.name} {spec.mesh_field}{mesh} {start} {method} "
-                              f"x{factor:.3g}: "
-                              f"{result['iterations'] if result['converged'] else result['failure']}",
-                              flush=True)
+                        outcome = result["iterations"] if result["converged"] else result["failure"]
+                        print(f"{spec.name} {mesh_label(points[-1])} {start} {method} "
+                              f"x{factor:.3g}: {outcome}", flush=True)
     (out / "map.json").write_text(json.dumps({"quick": quick, "points": points}, indent=1) + "\n")
 
 
 # --- The report -----------------------------------------------------------------------------
+
+
+def mesh_label(p):
+    """A point's mesh as its MESH field and value: N128, h0.25."""
+    return f"{p.get('mesh_field', 'N')}{p['mesh']}"
 
 
 def factor_label(f):
@@ -223,8 +227,8 @@ def panels_of(points, deck):
             else:
                 line.append(MapCell(SHORT.get(p["failure"], p["failure"]), "Nv"))
         cells.append(line)
-    field = mine[0].get("mesh_field", "N")
-    return MapPanel(deck, [f"{m} {field}{n} {s}" for m, n, s in rows],
+    label = {(p["method"], p["mesh"], p["start"]): mesh_label(p) for p in mine}
+    return MapPanel(deck, [f"{r[0]} {label[r]} {r[2]}" for r in rows],
                     [factor_label(f) for f in factors],
                     cells, xlabel="parameter / natural scale (-)", ylabel="method, mesh, start (-)")
 
@@ -261,8 +265,7 @@ def checks_of(points):
         if not mine:
             continue
         failed = [p for p in mine if not p["converged"]]
-        where = ", ".join(f"{p['method']} {p.get('mesh_field', 'N')}{p['mesh']} {p['start']} "
-                          f"x{p['factor']:.3g}: "
+        where = ", ".join(f"{p['method']} {mesh_label(p)} {p['start']} x{p['factor']:.3g}: "
                           f"{p['failure']}" for p in failed[:6])
         checks.add(f"{deck}: ALM and PDAS converge at every point", not failed,
                    ours=f"{len(mine) - len(failed)} of {len(mine)}" + (f" ({where})" if failed else ""),

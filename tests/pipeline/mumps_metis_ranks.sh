@@ -63,4 +63,5 @@ if problems:
     print("\n".join(problems))
     sys.exit(1)
 PY
-finish "as 2 ranks MUMPS takes one process's METIS order (PERM_IN gathered on the host) and gives its answers to 1e-10"
+finish "as 2 ranks MUMPS takes one process's METIS order (PERM_IN gathered on the host)" \
+  "and gives its answers to 1e-10"

@@ -4,15 +4,18 @@
 // puts that node on the wall) is taken whatever the augmentation, on a linear and on a
 // nonlinear bulk; a step that raises the residual more than tenfold over the recent iterates is
 // shortened until it does not; a step that raised it and was not repaid within kWatchSteps more
-// steps is undone (the watchdog). A scripted bulk whose residual is the Newton step's linear model
-// makes the full step exact for the system the step linearized.
+// steps (more while the path's rate promises it) is undone (the watchdog). A scripted bulk whose
+// residual is the Newton step's linear model makes the full step exact for the system the step
+// linearized.
 #include "along_step_bulk.hpp"
 #include "solver/contact_newton.hpp"
+#include "solver/newton_guard.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 
 namespace sig {
@@ -147,11 +150,11 @@ TEST(ContactNewtonSearch, AResidualAtRoundOffTakesTheFullStep) {
 /// node 0 far off the obstacle, node 1 off it by 0.01 at s = 0. The first step drives node 1 4
 /// deep while the equilibrium residual falls from 1 to 0: the system it linearized (node 1 held
 /// off the wall) is solved, the merit rises to 4, under the ceiling. The next steps (node 1 on
-/// the wall, its reaction 1) bring the merit to 3, then down by `descent` a step (1/4: above 1,
-/// where the raise started, until s = 10; the merit stops at 0).
+/// the wall, its reaction 1) bring the merit to 3 at s = 2, then along `after` (by default down
+/// by 1/4 a step: above 1, where the raise started, until s = 10).
 class RaisingBulk final : public test::AlongStepBulk {
 public:
-  double descent = 0.25;
+  std::function<double(double)> after = [](double s) { return 3 - 0.25 * (s - 2); };
   std::vector<double> solved_at; ///< the positions each step started from
 
   Eigen::VectorXd penetration() const override {
@@ -160,7 +163,7 @@ public:
   }
   double equilibrium_residual(const Eigen::VectorXd&, const Eigen::VectorXd&) const override {
     const double s = position();
-    return s <= 1 ? 1 - s : s <= 2 ? 3 * (s - 1) : std::max(0.0, 3 - descent * (s - 2));
+    return s <= 1 ? 1 - s : s <= 2 ? 3 * (s - 1) : after(s);
   }
   double displacement_step() const override { return alpha_; }
   StepSolution solve(const std::vector<NodeConditions>& conditions,
@@ -195,8 +198,8 @@ private:
   }
 };
 
-/// PDAS on `bulk`, kWatchSteps + 2 iterations.
-ContactNewtonResult solve_raising(RaisingBulk& bulk) {
+/// PDAS on `bulk`, `iterations` at most.
+ContactNewtonResult solve_raising(RaisingBulk& bulk, int iterations = kWatchSteps + 2) {
   ContactSolverParameters p;
   p.method = "pdas";
   const std::unique_ptr<ContactMethod> m = make_contact_method(p);
@@ -204,7 +207,7 @@ ContactNewtonResult solve_raising(RaisingBulk& bulk) {
   setting.law.assign(2, ContactLaw{});
   setting.weight = Eigen::VectorXd::Ones(2);
   ContactNewtonOptions options;
-  options.max_iterations = kWatchSteps + 2;
+  options.max_iterations = iterations;
   ContactIterate iterate;
   return solve_contact(bulk, setting, *m, options, iterate);
 }
@@ -235,38 +238,56 @@ TEST(ContactNewtonSearch, AStepNotRepaidIsUndone) {
   EXPECT_NEAR(back.residual, std::hypot(15.0 / 16, -0.01 + 4.01 / 16), 1e-12);
 }
 
+/// Positions 0, 1, ..., n - 1 (the steps of a solve that nothing undid), then `tail`.
+std::vector<double> positions(int n, std::vector<double> tail = {}) {
+  std::vector<double> p;
+  for (int k = 0; k < n; ++k)
+    p.push_back(k);
+  p.insert(p.end(), tail.begin(), tail.end());
+  return p;
+}
+
 TEST(ContactNewtonSearch, ARaiseFallingFastGetsAStepMore) {
   // The same raise, above 1 when the watch ends (1.2 at s = kWatchSteps + 1) but falling fast
   // (the last step's rate would repay it within kWatchSteps more): one step more, which repays
   // it (0.6): nothing undone. The unrepaid path's rate, 2.25 / 2.5, would not (2.25 x 0.9^4 > 1).
   RaisingBulk bulk;
-  bulk.descent = 1.8 / (kWatchSteps - 1);
-  const double rate = 1.2 / (1.2 + bulk.descent);
-  ASSERT_LT(1.2 * std::pow(rate, kWatchSteps), 1.0) << "the path must promise the repayment";
+  const double descent = 1.8 / (kWatchSteps - 1);
+  bulk.after = [descent](double s) { return std::max(0.0, 3 - descent * (s - 2)); };
+  ASSERT_TRUE(rate_repays(1.2, 1.2 + descent, 1.0)) << "the path must promise the repayment";
   const ContactNewtonResult r = solve_raising(bulk);
   ASSERT_EQ(r.history.size(), std::size_t(kWatchSteps + 2)) << r.failure;
-  std::vector<double> expected;
-  for (int k = 0; k <= kWatchSteps + 1; ++k)
-    expected.push_back(k);
-  EXPECT_EQ(bulk.solved_at, expected);
+  EXPECT_EQ(bulk.solved_at, positions(kWatchSteps + 2));
   EXPECT_NEAR(r.history[kWatchSteps].residual, 1.2, 1e-12);
-  EXPECT_NEAR(r.history[kWatchSteps + 1].residual, 1.2 - bulk.descent, 1e-12);
+  EXPECT_NEAR(r.history[kWatchSteps + 1].residual, 1.2 - descent, 1e-12);
   for (std::size_t k = 0; k < r.history.size(); ++k)
     EXPECT_NE(r.history[k].kind, 5) << k;
 }
 
-TEST(ContactNewtonSearch, AStepRepaidInTimeStands) {
-  // The same raise, repaid on the last step the watch allows: the merit 1/2 at s = kWatchSteps + 1
-  // (1.33 one step before, for kWatchSteps = 4), below the 1 where the raise started. Nothing is
-  // undone: every step starts where the last one ended, every one of full length.
+TEST(ContactNewtonSearch, ARaiseThatLevelsOffIsUndoneAfterTheLastExtension) {
+  // The merit 1 + 2^(3 - s) after s = 2 never repays the raise, yet each step's rate promises
+  // it: kWatchSteps extensions, then the return to s = 0, 2 kWatchSteps steps after the raise.
   RaisingBulk bulk;
-  bulk.descent = 2.5 / (kWatchSteps - 1);
+  bulk.after = [](double s) { return 1 + std::pow(2.0, 3 - s); };
+  const ContactNewtonResult r = solve_raising(bulk, 2 * kWatchSteps + 2);
+  ASSERT_EQ(r.history.size(), std::size_t(2 * kWatchSteps + 2)) << r.failure;
+  EXPECT_EQ(bulk.solved_at, positions(2 * kWatchSteps + 1, {0.0}));
+  for (int k = 0; k + 1 < 2 * kWatchSteps + 1; ++k)
+    EXPECT_NE(r.history[k].kind, 5) << k;
+  EXPECT_EQ(r.history.back().kind, 5);
+}
+
+TEST(ContactNewtonSearch, AStepRepaidInTimeStands) {
+  // The same raise, crawling down (3 - (s - 2) / 10: too slowly for the rate to promise
+  // anything) until the last step the watch allows drops it to 1/2: nothing undone, every step
+  // starts where the last one ended, every one of full length. A watch one step shorter would
+  // have returned.
+  RaisingBulk bulk;
+  bulk.after = [](double s) { return s < kWatchSteps + 1 ? 3 - 0.1 * (s - 2) : 0.5; };
+  ASSERT_FALSE(rate_repays(bulk.after(kWatchSteps), bulk.after(kWatchSteps - 1), 1.0));
   const ContactNewtonResult r = solve_raising(bulk);
   ASSERT_EQ(r.history.size(), std::size_t(kWatchSteps + 2)) << r.failure;
-  std::vector<double> expected;
-  for (int k = 0; k <= kWatchSteps + 1; ++k)
-    expected.push_back(k);
-  EXPECT_EQ(bulk.solved_at, expected);
+  EXPECT_EQ(bulk.solved_at, positions(kWatchSteps + 2));
   EXPECT_GT(r.history[kWatchSteps - 1].residual, 1.0);
   EXPECT_NEAR(r.history[kWatchSteps].residual, 0.5, 1e-12);
   for (std::size_t k = 0; k < r.history.size(); ++k) {

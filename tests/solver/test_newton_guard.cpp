@@ -53,6 +53,18 @@ TEST(NewtonGuard, ArmijoAsksForTheSlopesFraction) {
   EXPECT_TRUE(sufficient_decrease(1.0, 2.0, 1.0, 1.0)); // a relaxed reference allows a rise
 }
 
+TEST(NewtonGuard, ARateRepaysWhenKWatchStepsMoreAtItReachArmijo) {
+  // Halving: kWatchSteps more halvings take 1 to 2^-kWatchSteps, which repays a start just above
+  // it and not one at it (Armijo asks for a little less); no rate that does not fall, none from a
+  // merit of 0.
+  const double reached = std::pow(0.5, kWatchSteps);
+  EXPECT_TRUE(rate_repays(1.0, 2.0, 1.001 * reached));
+  EXPECT_FALSE(rate_repays(1.0, 2.0, reached));
+  EXPECT_FALSE(rate_repays(1.0, 1.0, 1e6));
+  EXPECT_FALSE(rate_repays(1.2, 1.0, 1e6));
+  EXPECT_FALSE(rate_repays(1.0, 0.0, 1e6));
+}
+
 TEST(NewtonGuard, ARepeatWithoutProgressIsACycleButNotNewtonsOwnRepeat) {
   const KernelBranch on{true, false, 0}, off{false, false, 0};
   CycleGuard guard(10);

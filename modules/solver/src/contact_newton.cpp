@@ -143,7 +143,7 @@ private:
   int drift_at_ = 0;     ///< its iteration
   /// The watchdog (header): the driver's state at the iterate a relaxed step left with a higher
   /// merit (the bulk's is its checkpoint), until a later step repays the raise or kWatchSteps
-  /// have not.
+  /// (and the extensions the path's rate earns) have not.
   struct Watch {
     ContactPoint before;
     ContactIterate iterate;
@@ -235,7 +235,7 @@ private:
     escapes_ = 0;
     return true;
   }
-  /// Back to the iterate before a nonmonotone step that kWatchSteps steps did not repay (header):
+  /// Back to the iterate before a nonmonotone step that the watch's steps did not repay (header):
   /// an unheld step undone with it is no longer a drift.
   void return_to(Watch& w, ContactPoint& now, ContactIterate& iterate) {
     bulk_.rewind();
@@ -921,20 +921,17 @@ template <int d> ContactNewtonResult Driver<d>::run(ContactIterate& iterate) {
     }
     if (stopped(iteration, first_residual)) break;
     // The watchdog (header): within kWatchSteps steps after a nonmonotone one the merit must
-    // fall below where that one started, else the solve returns there, unless the last step
-    // contracted the merit fast enough to repay it within kWatchSteps more at that rate (a path
-    // converging linearly after a cold start's raise: one step more, then the same question, up
-    // to kWatchSteps more). Restricted steps (after a cycle or a stall) lower the merit from
-    // where they are, and end the watch.
+    // fall below where that one started, else the solve returns there, unless the path's rate
+    // promises the repayment (one step more, then the same question, kWatchSteps at most).
+    // Restricted steps (after a cycle or a stall) lower the merit from where they are, and end
+    // the watch.
     if (monotone_ || one_change_) watch_.reset();
     if (watch_) {
       const double start = watch_->before.residual;
-      const double rate = now.residual / std::max(before_step, 1e-300);
       if (sufficient_decrease(now.residual, start, start, 1.0)) {
         watch_.reset();
       } else if (--watch_->left == 0) {
-        if (watch_->extended < kWatchSteps && rate < 1 &&
-            sufficient_decrease(now.residual * std::pow(rate, kWatchSteps), start, start, 1.0)) {
+        if (watch_->extended < kWatchSteps && rate_repays(now.residual, before_step, start)) {
           ++watch_->extended;
           watch_->left = 1;
         } else {

@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sig {
 
@@ -44,6 +45,11 @@ double MeritMemory::reference() const {
 
 bool sufficient_decrease(double trial, double reference, double current, double alpha) {
   return trial * trial <= reference * reference - 2 * kArmijo * alpha * current * current;
+}
+
+bool rate_repays(double now, double before, double start) {
+  const double rate = now / std::max(before, 1e-300);
+  return rate < 1 && sufficient_decrease(now * std::pow(rate, kWatchSteps), start, start, 1.0);
 }
 
 CycleGuard::CycleGuard(int window) : window_(window) {}

@@ -11,7 +11,8 @@
 //    nonmonotone search ("A nonmonotone line search technique for Newton's method", SIAM J.
 //    Numer. Anal. 23, 1986): an active-set change may raise the residual for a while, as the
 //    next test puts it right, but not without bound. A raise must be repaid within kWatchSteps
-//    steps, else the driver returns to where it started (the watchdog, contact_newton.hpp).
+//    steps (2 kWatchSteps at most on a path whose rate promises it), else the driver returns to
+//    where it started (the watchdog, contact_newton.hpp).
 //  - Cycling: the semi-smooth Newton of a complementarity problem can return to a branch set
 //    (active set, stick and slip) it left without any progress (PDAS cycles on P-matrices that are
 //    not M-matrices; Coulomb friction is not even monotone). A branch set that repeats one of the
@@ -75,6 +76,12 @@ inline constexpr double kArmijo = 1e-4;
 /// ||R_trial||^2 <= reference^2 - 2 sigma alpha ||R_k||^2.
 bool sufficient_decrease(double trial, double reference, double current, double alpha);
 
+/// The watchdog's extension (contact_newton.hpp): whether a step that took the merit from
+/// `before` to `now` contracted it fast enough that kWatchSteps more steps at that rate would
+/// repay a raise that started at `start` (Armijo's test against it). A path converging linearly
+/// after a cold start's raise is let go on; one that rises or crawls is not.
+bool rate_repays(double now, double before, double start);
+
 /// Detects cycles of the branch sets (header).
 class CycleGuard {
 public:
@@ -125,7 +132,9 @@ inline constexpr int kMeritWindow = 5;
 inline constexpr double kRelaxation = 10;
 /// Steps after a relaxed step that raised the merit within which it must fall below the merit
 /// that step started from (the watchdog of contact_newton.hpp): while that merit is still one
-/// of the kMeritWindow the nonmonotone reference remembers.
+/// of the kMeritWindow the nonmonotone reference remembers. A path whose rate promises the
+/// repayment (rate_repays) gets one step more at a time, kWatchSteps at most: by then the start
+/// has left the window, which does not matter, since a return restores the window as it was.
 inline constexpr int kWatchSteps = kMeritWindow - 1;
 /// Iterations a branch set is remembered for the cycle test.
 inline constexpr int kCycleWindow = 30;
